@@ -1,0 +1,38 @@
+// gapfem: run an Abaqus input deck.  Usage: gapfem [options] job.inp
+#include "app/job.hpp"
+#include "common/log.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+  CLI::App app{"gapfem: nonlinear finite elements with Abaqus gap contact elements"};
+  gapfem::JobOptions options;
+  std::string deck;
+  bool no_vtu = false;
+  app.add_option("deck", deck, "Abaqus input deck (job.inp)")->required();
+  app.add_option("-o,--output-dir", options.output_dir, "directory for job.dat, job.sta, …");
+  app.add_option("-j,--job", options.job_name, "job name (default: the deck's stem)");
+  app.add_flag("--ignore-unknown", options.ignore_unknown,
+               "report unknown keywords and parameters as warnings instead of errors");
+  app.add_flag("--no-vtu", no_vtu, "do not write ParaView files");
+  app.add_flag("-q,--quiet", options.quiet, "no progress lines on the terminal");
+  app.set_version_flag("--version", std::string("gapfem ") + GAPFEM_VERSION);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : gapfem::kExitInputError;
+  }
+  options.deck = deck;
+  options.write_vtu = !no_vtu;
+  options.keep_frames = false;
+  try {
+    const gapfem::JobResult result = gapfem::run_job(options);
+    return result.exit_code;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gapfem: internal error: %s\n", e.what());
+    return gapfem::kExitInternal;
+  }
+}

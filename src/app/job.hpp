@@ -1,0 +1,45 @@
+#pragma once
+/// @file job.hpp
+/// Running one deck end to end: read, build, analyse, write results. Used by the gapfem executable
+/// and by the tests (which inspect the in-memory results).
+#include "output/results.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+struct JobOptions {
+  std::filesystem::path deck;
+  std::filesystem::path output_dir; ///< default: the deck's directory
+  std::string job_name;             ///< default: the deck's stem
+  bool ignore_unknown = false;      ///< unknown keywords/parameters become warnings
+  bool write_files = true;          ///< .dat, .sta, .results.json, ParaView
+  bool write_vtu = true;
+  bool quiet = false;               ///< no terminal progress
+  bool keep_frames = true;          ///< keep every output frame in JobResult (tests)
+};
+
+/// Exit statuses of gapfem (docs/conventions.md).
+enum ExitStatus : int { kExitOk = 0, kExitInputError = 1, kExitNoConvergence = 2, kExitInternal = 3 };
+
+struct JobResult {
+  int exit_code = kExitOk;
+  std::string error; ///< the message printed for a non-zero exit
+  std::shared_ptr<const struct Model> model;
+  std::vector<StepSummary> steps;
+  std::vector<Frame> frames;           ///< every frame written (when keep_frames)
+  std::vector<IncrementInfo> increments;
+  RunSummary run;
+
+  /// The last frame of step `step` (1-based), or nullptr.
+  const Frame* step_end(int step) const;
+  /// Node / element lookups by deck label in a frame.
+  static NodeId node(const Model& model, Label label);
+};
+
+JobResult run_job(const JobOptions& options);
+
+} // namespace gapfem

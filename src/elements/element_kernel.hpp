@@ -1,0 +1,194 @@
+#pragma once
+/// @file element_kernel.hpp
+/// The element contract. A kernel sees only local data (reference coordinates, local DOF values,
+/// its own history and multipliers) and returns residual and tangent together in one pass. It never
+/// touches global numbering or the global matrix: the assembler gathers and scatters.
+///
+/// Sign conventions (docs/conventions.md):
+///   residual r_e = f_int - f_body(element-generated)  + sum_i lambda_i * dg_i/du
+///   tangent  K_e = d r_e / d u_e  (row-major, n_dofs x n_dofs), including lambda_i * d2g_i/du2
+///   constraint rows g_i(u) = 0 with multipliers lambda_i (Lagrange-multiplier "extra variables").
+/// External loads (distributed) come from load(): f_ext positive in the load direction.
+#include "common/error.hpp"
+#include "common/types.hpp"
+#include "model/element_types.hpp"
+#include "model/loads.hpp"
+#include "model/output_request.hpp"
+#include "model/section.hpp"
+#include "model/step.hpp"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gapfem {
+
+struct Model;
+struct PhysicalConstants;
+
+/// What every element evaluation in one assembly pass shares.
+struct StepContext {
+  Procedure procedure = Procedure::Static;
+  bool nlgeom = false;
+  bool transient = false;    ///< transient heat transfer / coupled step
+  double step_time = 0.0;    ///< step time at the end of the increment being solved
+  double step_period = 1.0;
+  double total_time = 0.0;   ///< total time at the end of the increment
+  double dt = 0.0;           ///< increment size
+  ModelSpace space = ModelSpace::ThreeD;
+  double model_size = 1.0;   ///< bounding-box diagonal, for tolerances
+  const PhysicalConstants* constants = nullptr;
+};
+
+/// Local data of one element.
+struct ElementInput {
+  ElemId elem = -1;
+  Label label = 0;
+  LocalIndex block_index = 0;          ///< position of the element in its block
+  std::span<const Vec3> X;             ///< reference coordinates of the element's nodes
+  std::span<const double> u;           ///< trial total values of the local DOFs (node-major)
+  std::span<const double> u_start;     ///< values at the start of the increment (committed)
+  std::span<const double> temperature; ///< predefined nodal temperatures now (stress elements), or empty
+  std::span<const double> temperature_start;   ///< … at the start of the increment
+  std::span<const double> initial_temperature; ///< *INITIAL CONDITIONS temperatures (thermal-strain reference)
+  std::span<const double> state_start; ///< committed history (n_state)
+  std::span<double> state;             ///< trial history, written by evaluate()
+  std::span<double> multipliers;       ///< trial Lagrange multipliers (n_multipliers)
+  double interference = 0.0;           ///< gap elements: allowable interference v(t) now
+  const StepContext* ctx = nullptr;
+};
+
+/// What one evaluation returns. The caller sizes the spans and zeroes residual and tangent.
+struct ElementOutput {
+  std::span<double> residual; ///< n_dofs
+  std::span<double> tangent;  ///< n_dofs * n_dofs, row-major
+  bool want_tangent = true;
+
+  // Active constraint rows (gap contact, Lagrange friction). Capacity n_multipliers.
+  int n_constraints = 0;
+  std::span<int> constraint_slot;     ///< which multiplier of the element each row belongs to
+  std::span<double> constraint_value; ///< g_i(u); the solver drives it to 0
+  std::span<double> constraint_coeff; ///< row-major n_multipliers x n_dofs: dg_i/du
+
+  int status_changes = 0;   ///< contact status flips decided in this evaluation
+  bool unsymmetric = false; ///< tangent is not symmetric (friction slip, coupled terms)
+
+  void add_constraint(int slot, double value, std::span<const double> coeff) {
+    const auto n = residual.size();
+    constraint_slot[n_constraints] = slot;
+    constraint_value[n_constraints] = value;
+    for (std::size_t i = 0; i < n; ++i) constraint_coeff[n_constraints * n + i] = coeff[i];
+    ++n_constraints;
+  }
+};
+
+/// Contact status of a gap (reported; the kernels keep their own encoding in state).
+enum class ContactStatus : std::uint8_t { Open, Closed, Stick, Slip };
+std::string_view contact_status_name(ContactStatus s);
+
+/// The per-gap output record (JSON "gap", *EL PRINT S/E for gaps, self-checks).
+struct GapRecord {
+  ContactStatus status = ContactStatus::Open;
+  double clearance = 0.0;    ///< h (E11)
+  double normal_force = 0.0; ///< compressive force, >= 0 for hard contact
+  double pressure = 0.0;     ///< normal_force / area (S11)
+  Vec3 direction{}, t1{}, t2{};
+  std::array<double, 2> slip{};           ///< accumulated slip E12, E13
+  std::array<double, 2> shear{};          ///< S12, S13 (force/area)
+  std::array<double, 2> friction_force{}; ///< friction forces in t1, t2
+  double damping_force = 0.0;
+  double dissipation = 0.0;               ///< accumulated frictional dissipation
+  bool thermal = false;
+  double heat_flux = 0.0;   ///< HFL1: per area, positive from node 1 to node 2
+  double heat_flow = 0.0;   ///< heat_flux * area
+  double conductance = 0.0;
+  double area = 1.0;
+};
+
+/// One requested output quantity of one element: `n_points` rows of `names.size()` components.
+struct OutputBlock {
+  ElemVar var = ElemVar::S;
+  std::span<const std::string_view> names; ///< component names, e.g. S11 S22 S33 S12 S13 S23
+  int n_points = 0;
+  std::vector<double> values; ///< n_points * names.size()
+};
+
+/// Everything an element can report for output. Kernels fill what they support.
+struct ElementRecovery {
+  std::vector<OutputBlock> blocks;
+  std::optional<GapRecord> gap;
+  void clear() {
+    blocks.clear();
+    gap.reset();
+  }
+  const OutputBlock* find(ElemVar v) const {
+    for (const auto& b : blocks)
+      if (b.var == v) return &b;
+    return nullptr;
+  }
+};
+
+/// The kernel of one element block (one element type with one property). Kernels are immutable
+/// after construction and may be called concurrently for different elements.
+class ElementKernel {
+public:
+  virtual ~ElementKernel() = default;
+  virtual ElementType type() const = 0;
+  int n_nodes() const { return element_info(type()).n_nodes; }
+  /// DOFs carried at local node `local_node` (in the order they appear in u and residual).
+  virtual std::span<const DofType> node_dofs(int local_node) const = 0;
+  int n_dofs() const {
+    int n = 0;
+    for (int a = 0; a < n_nodes(); ++a) n += static_cast<int>(node_dofs(a).size());
+    return n;
+  }
+  virtual int n_state() const { return 0; }
+  virtual int n_multipliers() const { return 0; }
+  /// Does the element read the predefined temperature field (thermal strain in stress elements)?
+  virtual bool uses_temperature_field() const { return false; }
+
+  /// Check the element's geometry before the analysis; return an empty string if fine, otherwise a
+  /// sentence the user can act on (the caller adds file, line and label).
+  virtual std::string validate(const ElementInput& in) const { return {}; }
+  /// Write the initial history into in.state (called once before the first step).
+  virtual void initialize(const ElementInput& in) const {}
+  /// Residual and tangent at the trial state; writes the trial history.
+  virtual void evaluate(const ElementInput& in, ElementOutput& out) const = 0;
+
+  /// Can the element carry this distributed load on this face (0 = body)?
+  virtual bool supports_load(DistLoadKind kind, int face) const { return false; }
+  /// Equivalent nodal load of a distributed load with the given current magnitude: adds to f_ext
+  /// (n_dofs) and, when the load depends on the solution (follower pressure, film), adds
+  /// -d f_ext / du to tangent.
+  virtual void load(const ElementInput& in, const DistributedLoad& load, double magnitude,
+                    double sink_temperature, std::span<double> f_ext,
+                    std::span<double> tangent) const {}
+
+  /// Which element output variables the element has.
+  virtual bool supports_output(ElemVar var) const { return false; }
+  /// Fill the output quantities at the current (converged) state.
+  virtual void recover(const ElementInput& in, ElementRecovery& out) const {}
+};
+
+/// What a kernel factory receives.
+struct KernelContext {
+  const Model& model;
+  ElementType type;
+  PropertyRef property;
+  std::span<const ElemId> elements; ///< the block's elements, for per-element precomputation
+};
+
+/// Element type + property → kernel; InputError for unsupported combinations.
+std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx);
+
+// Family factories (elements/<family>/…), called by make_element_kernel.
+std::unique_ptr<ElementKernel> make_continuum_kernel(const KernelContext& ctx);
+std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx);
+std::unique_ptr<ElementKernel> make_gap_kernel(const KernelContext& ctx);
+std::unique_ptr<ElementKernel> make_heat_kernel(const KernelContext& ctx);
+
+} // namespace gapfem

@@ -1,0 +1,30 @@
+#include "elements/element_kernel.hpp"
+#include "model/model.hpp"
+
+#include <fmt/format.h>
+
+namespace gapfem {
+
+std::string_view contact_status_name(ContactStatus s) {
+  switch (s) {
+  case ContactStatus::Open: return "open";
+  case ContactStatus::Closed: return "closed";
+  case ContactStatus::Stick: return "stick";
+  case ContactStatus::Slip: return "slip";
+  }
+  return "?";
+}
+
+std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
+  switch (element_info(ctx.type).family) {
+  case ElementFamily::Spring:
+  case ElementFamily::Truss:
+  case ElementFamily::Beam: return make_structural_kernel(ctx);
+  case ElementFamily::Continuum: return make_continuum_kernel(ctx);
+  case ElementFamily::Gap: return make_gap_kernel(ctx);
+  case ElementFamily::HeatTransfer: return make_heat_kernel(ctx);
+  }
+  throw InternalError("unknown element family");
+}
+
+} // namespace gapfem

@@ -1,0 +1,55 @@
+#pragma once
+/// @file linear_solver.hpp
+/// Sparse direct solvers behind one interface: analyse a pattern once (symbolic factorisation,
+/// fill-reducing ordering), factorise many times, solve many times. A distributed backend would
+/// implement the same interface on its owned rows.
+#include "linalg/csr_matrix.hpp"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gapfem {
+
+/// The matrix is singular (or not positive definite where that is required). `equations` lists the
+/// equations whose pivots vanished, so the caller can name nodes and DOFs.
+class SingularSystem : public std::runtime_error {
+public:
+  SingularSystem(std::string what, std::vector<LocalIndex> equations, bool indefinite = false)
+      : std::runtime_error(std::move(what)), _equations(std::move(equations)),
+        _indefinite(indefinite) {}
+  const std::vector<LocalIndex>& equations() const { return _equations; }
+  /// A negative pivot (matrix indefinite) rather than a zero one.
+  bool indefinite() const { return _indefinite; }
+
+private:
+  std::vector<LocalIndex> _equations;
+  bool _indefinite;
+};
+
+class LinearSolver {
+public:
+  virtual ~LinearSolver() = default;
+  virtual std::string_view name() const = 0;
+  /// True when the solver assumes (and uses only one triangle of) a symmetric matrix.
+  virtual bool symmetric() const = 0;
+  /// Symbolic analysis of a pattern: once per pattern.
+  virtual void analyze(const SparsityPattern& pattern) = 0;
+  /// Numeric factorisation; throws SingularSystem.
+  virtual void factorize(const CsrMatrix& matrix) = 0;
+  /// x = A^{-1} b with the current factor (b and x may not alias).
+  virtual void solve(std::span<const double> b, std::span<double> x) = 0;
+  /// Solve for several right-hand sides at once (column-major n x k); default loops.
+  virtual void solve_many(std::span<const double> b, std::span<double> x, int k);
+  /// Bytes held by the factor (for reports).
+  virtual std::size_t factor_bytes() const { return 0; }
+};
+
+/// CHOLMOD supernodal Cholesky with METIS/AMD ordering (symmetric positive definite).
+std::unique_ptr<LinearSolver> make_cholmod_solver();
+/// UMFPACK LU (any nonsingular matrix).
+std::unique_ptr<LinearSolver> make_umfpack_solver();
+
+} // namespace gapfem

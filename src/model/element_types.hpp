@@ -1,0 +1,53 @@
+#pragma once
+/// @file element_types.hpp
+/// The element types gapfem knows, with their static properties (nodes, family, model space).
+#include "common/types.hpp"
+
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace gapfem {
+
+enum class ElementType : std::uint8_t {
+  // structural
+  SPRING1, SPRING2, SPRINGA, T2D2, T3D2, B31,
+  // continuum stress/displacement
+  C3D8, C3D4, C3D10, CPS3, CPS4, CPE3, CPE4, CAX3, CAX4,
+  // gap contact
+  GAPUNI, GAPCYL, GAPSPHER, GAPUNIT, DGAP,
+  // heat transfer
+  DC1D2, DC2D3, DC2D4, DCAX3, DCAX4, DC3D4, DC3D8, DC3D10,
+  // coupled temperature-displacement
+  T2D2T, T3D2T, CPS4T, CPE4T, CAX4T, C3D4T, C3D8T,
+};
+
+enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };
+
+/// Which model space an element type requires.
+enum class SpaceRequirement : std::uint8_t { Any, Planar, Axisymmetric, ThreeD };
+
+/// The space the whole model lives in (decided from its elements).
+enum class ModelSpace : std::uint8_t { ThreeD, Planar, Axisymmetric };
+
+/// Plane/axisymmetric kinematics of a continuum element.
+enum class PlaneKind : std::uint8_t { None, PlaneStress, PlaneStrain, Axisymmetric };
+
+struct ElementTypeInfo {
+  ElementType type;
+  std::string_view name;
+  int n_nodes;
+  ElementFamily family;
+  SpaceRequirement space;
+  PlaneKind plane;
+  bool displacement; ///< carries displacement DOFs
+  bool temperature;  ///< carries DOF 11
+};
+
+const ElementTypeInfo& element_info(ElementType type);
+/// Case-insensitive lookup of an Abaqus element type name; nullopt if gapfem does not know it.
+std::optional<ElementType> element_type_from_name(std::string_view name);
+std::span<const ElementTypeInfo> all_element_types();
+std::string_view model_space_name(ModelSpace s);
+
+} // namespace gapfem

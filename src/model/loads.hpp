@@ -1,0 +1,74 @@
+#pragma once
+/// @file loads.hpp
+/// History data of one step, fully resolved by the model builder: the complete set of boundary
+/// conditions and loads active in the step (after OP=MOD/NEW and propagation from earlier steps).
+#include "common/error.hpp"
+#include "common/types.hpp"
+
+#include <vector>
+
+namespace gapfem {
+
+/// *BOUNDARY entry: prescribed value of one DOF.
+struct BoundaryEntry {
+  NodeId node = -1;
+  DofType dof = DofType::U1;
+  double value = 0.0;
+  int amplitude = -1;     ///< index into Model::amplitudes, -1: the step's default variation
+  bool fixed = false;     ///< *BOUNDARY, FIXED: hold the value reached at the start of the step
+  bool propagated = false; ///< carried over unchanged from the previous step (held constant)
+  SourceLocation loc;
+};
+
+/// *CLOAD (DOF 1-6) or *CFLUX (DOF 11) entry.
+struct NodalLoad {
+  NodeId node = -1;
+  DofType dof = DofType::U1;
+  double value = 0.0;
+  int amplitude = -1;
+  bool propagated = false;
+  SourceLocation loc;
+};
+
+enum class DistLoadKind : std::uint8_t {
+  Pressure,    ///< P (beams/2-D edges, DSLOAD P) or Pn on face n: pressure on a face
+  Gravity,     ///< GRAV: magnitude g, direction vector; force = rho * g * dir per volume
+  BodyForce,   ///< BX, BY, BZ: force per unit volume in a global direction (direction = unit axis)
+  BodyFlux,    ///< BF: heat per unit volume per time
+  SurfaceFlux, ///< Sn / DSFLUX S: heat flux into face n per area
+  Film,        ///< Fn / SFILM F: film coefficient h (magnitude), sink temperature
+};
+
+/// *DLOAD / *DSLOAD / *DFLUX / *DSFLUX / *FILM / *SFILM entry, per element (and face).
+struct DistributedLoad {
+  ElemId elem = -1;
+  DistLoadKind kind = DistLoadKind::Pressure;
+  int face = 0;                  ///< 1-based face (Pn, Sn, Fn, surface faces), 0: body or whole element
+  double magnitude = 0.0;        ///< pressure, g, body force, flux, film coefficient
+  Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
+  double sink_temperature = 0.0; ///< Film
+  int amplitude = -1;            ///< magnitude amplitude (film: sink temperature amplitude)
+  int film_amplitude = -1;       ///< film coefficient amplitude
+  bool propagated = false;
+  SourceLocation loc;
+};
+
+/// *TEMPERATURE entry: prescribed nodal temperature (predefined field) in a stress analysis.
+struct NodalTemperature {
+  NodeId node = -1;
+  double value = 0.0;
+  int amplitude = -1;
+  bool propagated = false;
+  SourceLocation loc;
+};
+
+/// *CONTACT INTERFERENCE, TYPE=ELEMENT entry (one gap element).
+struct InterferenceEntry {
+  ElemId elem = -1;
+  double allowance = 0.0; ///< v: allowable interference at amplitude 1
+  bool shrink = false;    ///< SHRINK: v = the element's own initial overclosure
+  int amplitude = -1;     ///< -1: ramp from 1 at step start to 0 at step end
+  SourceLocation loc;
+};
+
+} // namespace gapfem

@@ -1,0 +1,54 @@
+#pragma once
+/// @file mesh.hpp
+/// Nodes and elements as read from the deck: labels, reference coordinates and connectivity, in
+/// structure-of-arrays form, with label → internal index maps. Immutable after model building.
+#include "common/error.hpp"
+#include "common/types.hpp"
+#include "model/element_types.hpp"
+
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace gapfem {
+
+/// Compact deck location of an entity: index into Model::source_files plus line and keyword id.
+struct SourceRef {
+  std::int32_t file = -1;
+  std::int32_t line = 0;
+};
+
+struct Mesh {
+  // nodes
+  std::vector<Label> node_labels;
+  std::vector<Vec3> coords; ///< reference coordinates X (2-D models: z = 0)
+  std::unordered_map<Label, NodeId> node_index;
+
+  // elements
+  std::vector<Label> elem_labels;
+  std::vector<ElementType> elem_types;
+  std::vector<std::int64_t> conn_offset{0}; ///< element e has nodes conn[conn_offset[e] .. conn_offset[e+1])
+  std::vector<NodeId> conn;
+  std::vector<SourceRef> elem_src; ///< where each element was defined (*ELEMENT data line)
+  std::unordered_map<Label, ElemId> elem_index;
+
+  std::int32_t n_nodes() const { return static_cast<std::int32_t>(node_labels.size()); }
+  std::int32_t n_elements() const { return static_cast<std::int32_t>(elem_labels.size()); }
+
+  /// Internal index of a node label, or -1.
+  NodeId find_node(Label label) const {
+    auto it = node_index.find(label);
+    return it == node_index.end() ? -1 : it->second;
+  }
+  /// Internal index of an element label, or -1.
+  ElemId find_element(Label label) const {
+    auto it = elem_index.find(label);
+    return it == elem_index.end() ? -1 : it->second;
+  }
+  std::span<const NodeId> element_nodes(ElemId e) const {
+    return {conn.data() + conn_offset[e], static_cast<std::size_t>(conn_offset[e + 1] - conn_offset[e])};
+  }
+};
+
+} // namespace gapfem

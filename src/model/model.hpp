@@ -1,0 +1,73 @@
+#pragma once
+/// @file model.hpp
+/// The Model aggregate: mesh, sets, materials, sections, amplitudes and steps. Built once by the
+/// input layer (io/inp/model_builder) and read-only afterwards.
+#include "model/amplitude.hpp"
+#include "model/material.hpp"
+#include "model/mesh.hpp"
+#include "model/section.hpp"
+#include "model/step.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+/// An element-based surface (*SURFACE, TYPE=ELEMENT): element faces (1-based face numbers).
+struct Surface {
+  struct Face {
+    ElemId elem = -1;
+    int face = 0;
+  };
+  std::string name;
+  std::vector<Face> faces;
+  SourceLocation loc;
+};
+
+/// *PHYSICAL CONSTANTS.
+struct PhysicalConstants {
+  std::optional<double> absolute_zero;
+  std::optional<double> stefan_boltzmann;
+  SourceLocation loc;
+};
+
+struct Model {
+  std::string heading;
+  std::string job_name;
+  std::vector<std::string> source_files; ///< indexed by SourceRef::file; [0] is the main deck
+
+  Mesh mesh;
+  ModelSpace space = ModelSpace::ThreeD;
+
+  /// Sets by upper-case name; members sorted and unique.
+  std::map<std::string, std::vector<NodeId>> nsets;
+  std::map<std::string, std::vector<ElemId>> elsets;
+  std::map<std::string, Surface> surfaces;
+
+  std::vector<Material> materials;
+  std::vector<SolidSection> solid_sections;
+  std::vector<BeamSection> beam_sections;
+  std::vector<SpringSection> spring_sections;
+  std::vector<GapSection> gap_sections;
+  std::vector<PropertyRef> element_property; ///< per element
+
+  std::vector<Amplitude> amplitudes;
+
+  std::vector<double> initial_temperature; ///< per node (0 where not given)
+  bool has_initial_temperature = false;
+  PhysicalConstants constants;
+
+  std::vector<Step> steps;
+  std::vector<std::string> warnings; ///< non-fatal input remarks, listed at the end of the run
+
+  /// Deck location of an element's definition line.
+  SourceLocation element_location(ElemId e) const;
+  Label node_label(NodeId n) const { return mesh.node_labels[n]; }
+  Label element_label(ElemId e) const { return mesh.elem_labels[e]; }
+  /// Characteristic model size: the diagonal of the bounding box of all nodes (>0).
+  double model_size() const;
+};
+
+} // namespace gapfem

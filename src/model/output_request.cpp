@@ -1,0 +1,39 @@
+#include "model/output_request.hpp"
+
+#include <array>
+#include <utility>
+
+namespace gapfem {
+namespace {
+constexpr std::array<std::pair<std::string_view, NodeVar>, 9> kNodeVars = {{
+    {"U", NodeVar::U}, {"UR", NodeVar::UR}, {"RF", NodeVar::RF}, {"RM", NodeVar::RM},
+    {"CF", NodeVar::CF}, {"CM", NodeVar::CM}, {"NT", NodeVar::NT}, {"RFL", NodeVar::RFL},
+    {"CFL", NodeVar::CFL},
+}};
+constexpr std::array<std::pair<std::string_view, ElemVar>, 4> kElemVars = {{
+    {"S", ElemVar::S}, {"E", ElemVar::E}, {"SF", ElemVar::SF}, {"HFL", ElemVar::HFL},
+}};
+} // namespace
+
+std::optional<NodeVar> node_var_from_name(std::string_view name) {
+  for (auto [n, v] : kNodeVars)
+    if (n == name) return v;
+  return std::nullopt;
+}
+std::optional<ElemVar> elem_var_from_name(std::string_view name) {
+  for (auto [n, v] : kElemVars)
+    if (n == name) return v;
+  return std::nullopt;
+}
+std::string_view node_var_name(NodeVar v) {
+  for (auto [n, x] : kNodeVars)
+    if (x == v) return n;
+  return "?";
+}
+std::string_view elem_var_name(ElemVar v) {
+  for (auto [n, x] : kElemVars)
+    if (x == v) return n;
+  return "?";
+}
+
+} // namespace gapfem

@@ -1,0 +1,60 @@
+#pragma once
+/// @file output_request.hpp
+/// Output requests, turned into typed ids once, in the input layer.
+#include "common/error.hpp"
+#include "common/types.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace gapfem {
+
+enum class NodeVar : std::uint8_t { U, UR, RF, RM, CF, CM, NT, RFL, CFL };
+enum class ElemVar : std::uint8_t {
+  S,   ///< stress (gaps: S11 contact pressure, S12/S13 friction shear)
+  E,   ///< strain (gaps: E11 clearance, E12/E13 accumulated slip)
+  SF,  ///< section forces and moments (beams), axial force (trusses), spring force
+  HFL, ///< heat flux (gaps: HFL1 across the gap)
+};
+
+std::optional<NodeVar> node_var_from_name(std::string_view name);
+std::optional<ElemVar> elem_var_from_name(std::string_view name);
+std::string_view node_var_name(NodeVar v);
+std::string_view elem_var_name(ElemVar v);
+
+/// *NODE PRINT
+struct NodePrintRequest {
+  std::string nset; ///< empty: all nodes
+  std::vector<NodeId> nodes;
+  int frequency = 1; ///< every n-th increment (0: never except the last increment of the step)
+  std::vector<NodeVar> vars;
+  bool totals = false;
+  bool summary = true;
+  SourceLocation loc;
+};
+
+enum class ElPosition : std::uint8_t { IntegrationPoints, Centroidal, Averaged };
+
+/// *EL PRINT
+struct ElPrintRequest {
+  std::string elset; ///< empty: all elements
+  std::vector<ElemId> elements;
+  int frequency = 1;
+  std::vector<ElemVar> vars;
+  bool totals = false;
+  bool summary = true;
+  ElPosition position = ElPosition::IntegrationPoints;
+  SourceLocation loc;
+};
+
+/// *OUTPUT, FIELD with its *NODE OUTPUT / *ELEMENT OUTPUT: drives ParaView (VTU) frames.
+struct FieldOutputRequest {
+  int frequency = 1; ///< every n-th increment; the last increment of a step is always written
+  std::vector<NodeVar> node_vars;
+  std::vector<ElemVar> elem_vars;
+  SourceLocation loc;
+};
+
+} // namespace gapfem

@@ -1,0 +1,148 @@
+#pragma once
+/// @file section.hpp
+/// Section and property records that bind an element set to a material or a gap definition.
+#include "common/error.hpp"
+#include "common/types.hpp"
+#include "model/element_types.hpp"
+#include "model/table.hpp"
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+/// *SOLID SECTION: continuum, truss and heat-transfer elements.
+struct SolidSection {
+  std::string elset;
+  int material = -1;
+  double thickness = 1.0; ///< plane thickness (CPS/CPE), truss cross-section area; 1 if not given
+  bool thickness_given = false;
+  SourceLocation loc;
+};
+
+/// *BEAM SECTION (B31).
+struct BeamSection {
+  enum class Shape { Rect, Circ, Pipe };
+  std::string elset;
+  int material = -1;
+  Shape shape = Shape::Rect;
+  std::vector<double> dims; ///< RECT: a (local 1), b (local 2); CIRC: r; PIPE: r (outer), t
+  Vec3 n1{0.0, 0.0, -1.0};  ///< approximate local 1-direction (Abaqus default (0,0,-1))
+  bool n1_given = false;
+  SourceLocation loc;
+};
+
+/// *SPRING (SPRING1, SPRING2, SPRINGA): linear stiffness, optionally temperature dependent.
+struct SpringSection {
+  std::string elset;
+  int dof1 = 0; ///< Abaqus DOF number at node 1 (SPRING1/SPRING2); 0 for SPRINGA
+  int dof2 = 0; ///< Abaqus DOF number at node 2 (SPRING2)
+  PropertyTable stiffness; ///< k; key temperature
+  SourceLocation loc;
+};
+
+// ---------------------------------------------------------------- gap contact properties
+
+enum class PressureOverclosure { Hard, Exponential, Linear, Tabular };
+enum class ContactMethod { Direct, Penalty, AugmentedLagrange };
+
+/// *SURFACE BEHAVIOR after *GAP (normal behaviour). Pressure means force/area (force if no area).
+struct SurfaceBehavior {
+  bool given = false;
+  PressureOverclosure law = PressureOverclosure::Hard;
+  ContactMethod method = ContactMethod::Direct;
+  bool no_separation = false;
+  double c0 = 0.0, p0 = 0.0;         ///< EXPONENTIAL: clearance at zero pressure, pressure at zero clearance
+  double slope = 0.0;                ///< LINEAR: pressure per unit overclosure
+  std::vector<double> table_p, table_g; ///< TABULAR: pressure vs overclosure, ascending overclosure
+  double penalty_stiffness = 0.0;    ///< PENALTY / AUGMENTED LAGRANGE stiffness; 0 = automatic
+  double max_stiffness = 0.0;        ///< K_max (EXPONENTIAL), 0 = none
+  SourceLocation loc;
+};
+
+/// *FRICTION after *GAP (isotropic Coulomb).
+struct FrictionSpec {
+  bool given = false;
+  bool rough = false;
+  bool lagrange = false;
+  std::optional<double> elastic_slip; ///< ELASTIC SLIP= absolute
+  double slip_tolerance = 0.005;      ///< SLIP TOLERANCE= fraction of characteristic length
+  double taumax = std::numeric_limits<double>::infinity();
+  /// Data lines: mu, slip rate, contact pressure, temperature (dependencies as tabulated).
+  struct Row {
+    double mu = 0, slip_rate = 0, pressure = 0, temperature = 0;
+  };
+  std::vector<Row> rows;
+  int n_columns = 1; ///< how many of (mu, slip rate, pressure, temperature) the data lines use
+  SourceLocation loc;
+};
+
+/// *CONTACT DAMPING after *GAP.
+struct ContactDampingSpec {
+  bool given = false;
+  double coefficient = 0.0;    ///< force per unit relative velocity (per area if an area is given)
+  double clearance = 0.0;      ///< c0: damping zero for clearance >= c0, full at contact
+  double fraction = 0.0;       ///< fraction of c0 over which the coefficient stays at full value
+  double tangent_fraction = 0.0;
+  SourceLocation loc;
+};
+
+/// *GAP CONDUCTANCE after *GAP.
+struct GapConductanceSpec {
+  bool given = false;
+  bool pressure = false; ///< PRESSURE: k as a function of contact pressure instead of clearance
+  struct Row {
+    double k = 0, x = 0, temperature = 0, mass_flow = 0;
+  };
+  std::vector<Row> rows;
+  bool temperature_dependent = false;
+  SourceLocation loc;
+};
+
+/// *GAP RADIATION after *GAP.
+struct GapRadiationSpec {
+  bool given = false;
+  double emissivity_a = 0.0, emissivity_b = 0.0;
+  std::vector<double> view_factor, clearance; ///< F(d), clearance ascending
+  SourceLocation loc;
+};
+
+/// *GAP HEAT GENERATION after *GAP.
+struct GapHeatGenerationSpec {
+  bool given = false;
+  double eta = 1.0;     ///< fraction of dissipated energy converted to heat
+  double fraction = 0.5; ///< f: share of node 1 (the rest to node 2)
+  SourceLocation loc;
+};
+
+/// *GAP, ELSET=… and the sub-options that follow it.
+struct GapSection {
+  std::string elset;
+  double d = 0.0;                ///< clearance / min or max separation
+  Vec3 direction{0.0, 0.0, 0.0}; ///< GAPUNI/GAPUNIT direction, GAPCYL axis (as given)
+  bool direction_given = false;  ///< some of fields 2-4 non-zero
+  double area = 1.0;
+  bool area_given = false;
+  bool ccx_penalty = false;      ///< CalculiX field 6 given: penalty gap of ccx
+  double ccx_stiffness = 1e12;   ///< field 6
+  double ccx_tension = 1e-3;     ///< field 7
+  SurfaceBehavior behavior;
+  FrictionSpec friction;
+  ContactDampingSpec damping;
+  GapConductanceSpec conductance;
+  GapRadiationSpec radiation;
+  GapHeatGenerationSpec heat_generation;
+  SourceLocation loc;
+};
+
+/// Which property record an element uses.
+struct PropertyRef {
+  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap };
+  Kind kind = Kind::None;
+  std::int32_t index = -1;
+  friend bool operator==(const PropertyRef&, const PropertyRef&) = default;
+};
+
+} // namespace gapfem

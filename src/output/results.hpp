@@ -1,0 +1,110 @@
+#pragma once
+/// @file results.hpp
+/// What the analysis hands to the result writers: frames (the committed state at an output point),
+/// step summaries with self-checks, and the run summary. Writers format; they never compute physics.
+#include "common/timer.hpp"
+#include "common/types.hpp"
+#include "elements/element_kernel.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+struct Model;
+
+/// Nodal values of all nodes (index = NodeId). Vectors are sized n_nodes; entries of nodes that do
+/// not carry a DOF are zero, and `has_*` tell which nodes carry which field.
+struct NodeResults {
+  std::vector<Vec3> U, UR, RF, RM, CF, CM;
+  std::vector<double> NT, RFL, CFL;
+  std::vector<std::uint8_t> dof_mask; ///< per node: bit dof_bit(DofType) set when the DOF is active
+  bool any_rotation = false;
+  bool any_temperature = false;
+  bool any_displacement = false;
+};
+
+/// One element's output at a frame.
+struct ElementResult {
+  ElemId elem = -1;
+  ElementRecovery data;
+};
+
+/// Self-checks after each step (.dat block, terminal summary, JSON "checks").
+struct StepChecks {
+  int n_gaps = 0, n_open = 0, n_closed = 0, n_stick = 0, n_slip = 0;
+  double max_penetration = 0.0;       ///< max(-h) over closed gaps beyond the interference allowance
+  Label max_penetration_elem = 0;
+  double max_tensile_force = 0.0;     ///< max tension carried by a closed gap (hard contact: 0)
+  Label max_tensile_elem = 0;
+  std::array<double, 3> reaction_sum{}; ///< sum of reaction forces RF
+  std::array<double, 3> applied_sum{};  ///< sum of applied concentrated + distributed loads
+  double equilibrium_error = 0.0;       ///< |RF_sum + applied_sum| (translational)
+  double force_scale = 0.0;             ///< for judging equilibrium_error
+  bool thermal = false;
+  double reaction_flux_sum = 0.0, applied_flux_sum = 0.0, stored_heat = 0.0, heat_balance_error = 0.0;
+  double max_damping_force = 0.0;
+};
+
+/// The committed state at one output point, with what is due at this point.
+struct Frame {
+  int step = 0;
+  int increment = 0;
+  double step_time = 0.0, total_time = 0.0, dt = 0.0;
+  bool last_in_step = false;
+  NodeResults nodes;
+  /// Element output for the elements needed by the due requests (all elements at the last frame).
+  std::vector<ElementResult> elements;
+  std::vector<std::int32_t> element_slot; ///< per ElemId: index into `elements` or -1
+
+  std::vector<bool> node_print_due; ///< per Step::node_prints
+  std::vector<bool> el_print_due;   ///< per Step::el_prints
+  bool field_due = false;           ///< ParaView frame due
+
+  const ElementResult* element(ElemId e) const {
+    if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0) return nullptr;
+    return &elements[element_slot[e]];
+  }
+};
+
+struct IncrementInfo {
+  int step = 0, increment = 0, attempts = 0, iterations = 0, severe_discontinuities = 0;
+  double step_time = 0.0, total_time = 0.0, dt = 0.0;
+  bool converged = true;
+};
+
+struct StepSummary {
+  int step = 0;
+  std::string name;
+  std::string procedure;
+  bool converged = true;
+  std::string failure; ///< reason when not converged
+  int increments = 0;
+  int attempts = 0;
+  int iterations = 0;
+  StepChecks checks;
+};
+
+struct RunSummary {
+  bool completed = true;
+  std::string failure;
+  double wall_seconds = 0.0;
+  RunStatistics stats;
+  std::vector<std::string> warnings;
+  long peak_memory_kb = 0;
+};
+
+/// Receives the committed state at output points. Implementations: .dat, .sta, JSON, VTU.
+class ResultWriter {
+public:
+  virtual ~ResultWriter() = default;
+  virtual void begin(const Model& model) {}
+  virtual void begin_step(const Model& model, int step_index) {}
+  virtual void increment(const IncrementInfo& info) {}
+  virtual void frame(const Model& model, int step_index, const Frame& frame) {}
+  virtual void end_step(const Model& model, int step_index, const StepSummary& summary) {}
+  virtual void end(const Model& model, const RunSummary& summary) {}
+};
+
+} // namespace gapfem
