@@ -1,0 +1,187 @@
+#include "fem/assembler.hpp"
+
+#include "common/error.hpp"
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace gapfem {
+
+int default_thread_count() {
+  if (const char* env = std::getenv("GAPFEM_THREADS")) {
+    const int n = std::atoi(env);
+    if (n > 0) return n;
+  }
+  const unsigned hw = std::thread::hardware_concurrency();
+  return static_cast<int>(std::clamp(hw, 1u, 2u));
+}
+
+Assembler::Assembler(Discretization& disc, int threads)
+    : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
+      _thread_constraints(static_cast<std::size_t>(_threads)),
+      _thread_f(static_cast<std::size_t>(_threads)) {}
+
+namespace {
+/// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
+template <typename Body>
+void parallel_chunks(int threads, std::size_t n, Body&& body) {
+  if (threads <= 1 || n < 2000) {
+    body(0, std::size_t{0}, n);
+    return;
+  }
+  std::vector<std::thread> pool;
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const std::size_t chunk = (n + threads - 1) / threads;
+  for (int t = 0; t < threads; ++t) {
+    const std::size_t b = t * chunk, e = std::min(n, b + chunk);
+    if (b >= e) break;
+    pool.emplace_back([&, t, b, e] {
+      try {
+        body(t, b, e);
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+    });
+  }
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+}
+} // namespace
+
+AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
+                                   std::span<double> f_int, CsrMatrix* K, ConstraintBlock* C) {
+  const DofMap& dofs = _disc.dofs();
+  std::fill(f_int.begin(), f_int.end(), 0.0);
+  if (K) K->set_zero();
+  if (C) C->clear();
+  AssemblyResult total;
+  std::vector<AssemblyResult> partial(static_cast<std::size_t>(_threads));
+  for (auto& blk : _disc.blocks()) {
+    ElementBlock* block = &blk;
+    const int nd = block->n_dofs;
+    const bool multi = _threads > 1 && block->size() >= 2000;
+    for (int t = 0; t < _threads; ++t) {
+      _thread_constraints[t].clear();
+      if (multi) _thread_f[t].assign(f_int.size(), 0.0);
+    }
+    parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
+      ElementGather& g = _scratch[t];
+      AssemblyResult& res = partial[t];
+      std::span<double> f = multi ? std::span<double>(_thread_f[t]) : f_int;
+      for (std::size_t i = b; i < e; ++i) {
+        ElementInput& in = g.gather(_disc, *block, i, fields, &ctx);
+        ElementOutput& out = g.output(*block, K != nullptr);
+        block->kernel->evaluate(in, out);
+        const auto slots = block->element_slots(i);
+        for (int k = 0; k < nd; ++k) {
+          const double r = out.residual[k];
+          if (!std::isfinite(r))
+            throw ConvergenceFailure("a non-finite force appeared in element " + std::to_string(in.label));
+          f[slots[k]] += r;
+          const int fld = static_cast<int>(dofs.slot_field(slots[k]));
+          if (r != 0.0) {
+            res.flux_sum[fld] += std::abs(r);
+            ++res.flux_count[fld];
+          }
+        }
+        if (K) {
+          const auto eqs = block->element_eqs(i);
+          if (multi)
+            K->add_block_atomic(eqs, eqs, out.tangent);
+          else
+            K->add_block(eqs, eqs, out.tangent);
+        }
+        res.unsymmetric |= out.unsymmetric;
+        if (out.status_changes) {
+          res.status_changes += out.status_changes;
+          res.changed.push_back(block->elements[i]);
+        }
+        if (C)
+          for (int c = 0; c < out.n_constraints; ++c)
+            _thread_constraints[t].add_row(
+                block->element_eqs(i), out.constraint_coeff.subspan(static_cast<std::size_t>(c) * nd, nd),
+                out.constraint_value[c],
+                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult + out.constraint_slot[c]);
+      }
+    });
+    if (multi)
+      for (int t = 0; t < _threads; ++t)
+        for (std::size_t s = 0; s < f_int.size(); ++s) f_int[s] += _thread_f[t][s];
+    if (C)
+      for (int t = 0; t < _threads; ++t) {
+        const auto& tc = _thread_constraints[t];
+        for (int r = 0; r < tc.n_rows(); ++r) {
+          const auto b0 = tc.row_ptr[r], b1 = tc.row_ptr[r + 1];
+          C->col.insert(C->col.end(), tc.col.begin() + b0, tc.col.begin() + b1);
+          C->val.insert(C->val.end(), tc.val.begin() + b0, tc.val.begin() + b1);
+          C->row_ptr.push_back(static_cast<LocalIndex>(C->col.size()));
+          C->g.push_back(tc.g[r]);
+          C->multiplier.push_back(tc.multiplier[r]);
+        }
+      }
+  }
+  for (auto& p : partial) {
+    total.status_changes += p.status_changes;
+    total.unsymmetric |= p.unsymmetric;
+    for (int f = 0; f < kNumFields; ++f) {
+      total.flux_sum[f] += p.flux_sum[f];
+      total.flux_count[f] += p.flux_count[f];
+    }
+    total.changed.insert(total.changed.end(), p.changed.begin(), p.changed.end());
+  }
+  return total;
+}
+
+void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
+                               const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K) {
+  ElementGather& g = _scratch[0];
+  std::vector<double> fe, Ke;
+  for (const ActiveLoad& al : loads) {
+    const auto [bi, idx] = _disc.locate(al.load->elem);
+    ElementBlock& block = _disc.blocks()[bi];
+    ElementInput& in = g.gather(_disc, block, static_cast<std::size_t>(idx), fields, &ctx);
+    const auto nd = static_cast<std::size_t>(block.n_dofs);
+    fe.assign(nd, 0.0);
+    Ke.assign(nd * nd, 0.0);
+    block.kernel->load(in, *al.load, al.magnitude, al.sink_temperature, fe, Ke);
+    const auto slots = block.element_slots(static_cast<std::size_t>(idx));
+    for (std::size_t k = 0; k < nd; ++k) f_ext[slots[k]] += fe[k];
+    if (K) {
+      bool any = false;
+      for (double v : Ke) any |= v != 0.0;
+      if (any) K->add_block(block.element_eqs(static_cast<std::size_t>(idx)),
+                            block.element_eqs(static_cast<std::size_t>(idx)), Ke);
+    }
+  }
+}
+
+void Assembler::element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
+                                 std::vector<double>& out, std::vector<LocalIndex>& slots) {
+  const auto [bi, idx] = _disc.locate(e);
+  ElementBlock& block = _disc.blocks()[bi];
+  ElementGather& g = _scratch[0];
+  ElementInput& in = g.gather(_disc, block, static_cast<std::size_t>(idx), fields, &ctx);
+  ElementOutput& o = g.output(block, false);
+  block.kernel->evaluate(in, o);
+  out.assign(o.residual.begin(), o.residual.end());
+  const auto s = block.element_slots(static_cast<std::size_t>(idx));
+  slots.assign(s.begin(), s.end());
+}
+
+void Assembler::recover(ElemId e, const FieldView& fields, const StepContext& ctx,
+                        ElementRecovery& out) {
+  const auto [bi, idx] = _disc.locate(e);
+  ElementBlock& block = _disc.blocks()[bi];
+  ElementInput& in = _scratch[0].gather(_disc, block, static_cast<std::size_t>(idx), fields, &ctx);
+  out.clear();
+  block.kernel->recover(in, out);
+}
+
+} // namespace gapfem

@@ -1,0 +1,59 @@
+#pragma once
+/// @file assembler.hpp
+/// Loops over element blocks, gathers local data, calls kernels and scatters residual, tangent and
+/// constraint rows into global storage. Threaded over element chunks with per-thread scratch.
+#include "fem/element_gather.hpp"
+#include "linalg/constraint_block.hpp"
+#include "linalg/csr_matrix.hpp"
+
+#include <array>
+#include <vector>
+
+namespace gapfem {
+
+struct AssemblyResult {
+  int status_changes = 0;
+  bool unsymmetric = false;
+  std::array<double, kNumFields> flux_sum{}; ///< sum of |element residual entries| per field
+  std::array<long, kNumFields> flux_count{};
+  std::vector<ElemId> changed; ///< elements whose contact status changed in this evaluation
+};
+
+/// A distributed load with its magnitude evaluated at the current time.
+struct ActiveLoad {
+  const DistributedLoad* load = nullptr;
+  double magnitude = 0.0;
+  double sink_temperature = 0.0;
+};
+
+class Assembler {
+public:
+  explicit Assembler(Discretization& disc, int threads = 1);
+  int threads() const { return _threads; }
+
+  /// Internal forces per slot (f_int, overwritten), tangent over equations (if K, overwritten) and
+  /// active constraint rows (if C, overwritten).
+  AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
+                          CsrMatrix* K, ConstraintBlock* C);
+  /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
+  /// loads add -df/du to K if given.
+  void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
+                      const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K);
+  /// Residual of one element at the given state (no tangent); out has n_dofs entries.
+  void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
+                        std::vector<double>& out, std::vector<LocalIndex>& slots);
+  /// Output quantities of one element at the given state.
+  void recover(ElemId e, const FieldView& fields, const StepContext& ctx, ElementRecovery& out);
+
+private:
+  Discretization& _disc;
+  int _threads;
+  std::vector<ElementGather> _scratch;
+  std::vector<ConstraintBlock> _thread_constraints;
+  std::vector<std::vector<double>> _thread_f;
+};
+
+/// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads, 2).
+int default_thread_count();
+
+} // namespace gapfem

@@ -1,0 +1,75 @@
+#pragma once
+/// @file discretization.hpp
+/// The runtime view of a Model: element blocks (one kernel per element type and property), the
+/// DOF map, per-element gather lists, and the model-owned flat history and multiplier storage with a
+/// committed and a trial copy (style.md §3-4). Built once per analysis.
+#include "elements/element_kernel.hpp"
+#include "fem/dof_map.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace gapfem {
+
+struct Model;
+
+struct ElementBlock {
+  ElementType type{};
+  PropertyRef property;
+  std::unique_ptr<ElementKernel> kernel;
+  std::vector<ElemId> elements;
+  int n_nodes = 0, n_dofs = 0, n_state = 0, n_mult = 0;
+  bool uses_temperature = false;
+  std::vector<LocalIndex> slots;       ///< elements.size() x n_dofs
+  std::vector<LocalIndex> eqs;         ///< per step: slot → equation
+  std::vector<double> state_committed, state_trial;  ///< elements.size() x n_state
+  std::vector<double> mult_committed, mult_trial;    ///< elements.size() x n_mult
+  std::int64_t mult_offset = 0;        ///< first global multiplier index of the block
+  std::vector<double> interference;    ///< per element, current allowance v(t) (gap blocks)
+
+  std::size_t size() const { return elements.size(); }
+  std::span<const LocalIndex> element_slots(std::size_t i) const {
+    return {slots.data() + i * n_dofs, static_cast<std::size_t>(n_dofs)};
+  }
+  std::span<const LocalIndex> element_eqs(std::size_t i) const {
+    return {eqs.data() + i * n_dofs, static_cast<std::size_t>(n_dofs)};
+  }
+};
+
+class Discretization {
+public:
+  /// Builds kernels, the DOF map and the storage; validates every element (InputError).
+  explicit Discretization(const Model& model);
+
+  const Model& model() const { return _model; }
+  const DofMap& dofs() const { return _dofs; }
+  std::vector<ElementBlock>& blocks() { return _blocks; }
+  const std::vector<ElementBlock>& blocks() const { return _blocks; }
+  /// (block, index in block) of an element.
+  std::pair<int, LocalIndex> locate(ElemId e) const { return {_elem_block[e], _elem_index[e]}; }
+  std::int64_t n_multipliers() const { return _n_mult; }
+  bool has_gaps() const { return _has_gaps; }
+  bool has_temperature_field() const { return _uses_temperature_field; }
+
+  /// Set per-step equation numbers in every block.
+  void set_equations(const EquationMap& eqmap);
+  /// Trial := committed (start of an increment attempt).
+  void reset_trial();
+  /// Committed := trial (increment accepted).
+  void commit();
+  /// Multiplier value by global index (trial).
+  double& multiplier_trial(std::int64_t index);
+
+private:
+  const Model& _model;
+  DofMap _dofs;
+  std::vector<ElementBlock> _blocks;
+  std::vector<int> _elem_block;
+  std::vector<LocalIndex> _elem_index;
+  std::vector<std::pair<int, std::int64_t>> _mult_blocks; ///< (block, offset) sorted by offset
+  std::int64_t _n_mult = 0;
+  bool _has_gaps = false;
+  bool _uses_temperature_field = false;
+};
+
+} // namespace gapfem

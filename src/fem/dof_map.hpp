@@ -1,0 +1,50 @@
+#pragma once
+/// @file dof_map.hpp
+/// (node, DOF type) → slot, and per step slot → equation. A slot is an active nodal DOF; an
+/// equation is a slot that is not prescribed in the current step. Solution vectors are slot-sized;
+/// matrices are equation-sized.
+#include "common/types.hpp"
+
+#include <bit>
+#include <span>
+#include <vector>
+
+namespace gapfem {
+
+class DofMap {
+public:
+  DofMap() = default;
+  /// masks[n]: bit dof_bit(d) set when node n carries DOF d.
+  explicit DofMap(std::vector<std::uint8_t> masks);
+
+  LocalIndex n_slots() const { return static_cast<LocalIndex>(_slot_node.size()); }
+  NodeId n_nodes() const { return static_cast<NodeId>(_mask.size()); }
+  std::uint8_t mask(NodeId n) const { return _mask[n]; }
+  bool has(NodeId n, DofType d) const { return (_mask[n] & dof_bit(d)) != 0; }
+  /// Slot of (node, dof), or -1 when the node does not carry that DOF.
+  LocalIndex slot(NodeId n, DofType d) const {
+    const std::uint8_t bit = dof_bit(d);
+    if (!(_mask[n] & bit)) return -1;
+    return _first[n] + std::popcount(static_cast<unsigned>(_mask[n] & (bit - 1u)));
+  }
+  NodeId slot_node(LocalIndex s) const { return _slot_node[s]; }
+  DofType slot_dof(LocalIndex s) const { return _slot_dof[s]; }
+  Field slot_field(LocalIndex s) const { return field_of(_slot_dof[s]); }
+
+private:
+  std::vector<std::uint8_t> _mask;
+  std::vector<LocalIndex> _first;
+  std::vector<NodeId> _slot_node;
+  std::vector<DofType> _slot_dof;
+};
+
+/// The equation numbering of one step.
+struct EquationMap {
+  std::vector<LocalIndex> slot_eq; ///< per slot: equation or -1 (prescribed)
+  std::vector<LocalIndex> eq_slot; ///< per equation: its slot
+  LocalIndex n_eq() const { return static_cast<LocalIndex>(eq_slot.size()); }
+  /// Number the free slots (prescribed[s] == true → -1) in slot order.
+  static EquationMap build(std::span<const std::uint8_t> prescribed);
+};
+
+} // namespace gapfem

@@ -1,0 +1,74 @@
+#include "fem/element_gather.hpp"
+
+#include "model/model.hpp"
+
+#include <algorithm>
+
+namespace gapfem {
+
+ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& block, std::size_t i,
+                                    const FieldView& f, const StepContext* ctx) {
+  const Model& model = disc.model();
+  const ElemId e = block.elements[i];
+  const auto nodes = model.mesh.element_nodes(e);
+  const auto nn = nodes.size();
+  _X.resize(nn);
+  for (std::size_t a = 0; a < nn; ++a) _X[a] = model.mesh.coords[nodes[a]];
+  const auto slots = block.element_slots(i);
+  _u.resize(slots.size());
+  _u0.resize(slots.size());
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    _u[k] = f.u[slots[k]];
+    _u0[k] = f.u_start.empty() ? _u[k] : f.u_start[slots[k]];
+  }
+  _in = ElementInput{};
+  _in.elem = e;
+  _in.label = model.mesh.elem_labels[e];
+  _in.block_index = static_cast<LocalIndex>(i);
+  _in.X = _X;
+  _in.u = _u;
+  _in.u_start = _u0;
+  if (block.uses_temperature && !f.temperature.empty()) {
+    _T.resize(nn);
+    _T0.resize(nn);
+    _Ti.resize(nn);
+    for (std::size_t a = 0; a < nn; ++a) {
+      _T[a] = f.temperature[nodes[a]];
+      _T0[a] = f.temperature_start.empty() ? _T[a] : f.temperature_start[nodes[a]];
+      _Ti[a] = f.initial_temperature.empty() ? 0.0 : f.initial_temperature[nodes[a]];
+    }
+    _in.temperature = _T;
+    _in.temperature_start = _T0;
+    _in.initial_temperature = _Ti;
+  }
+  if (block.n_state > 0) {
+    _in.state_start = {block.state_committed.data() + i * block.n_state,
+                       static_cast<std::size_t>(block.n_state)};
+    _in.state = {block.state_trial.data() + i * block.n_state, static_cast<std::size_t>(block.n_state)};
+  }
+  if (block.n_mult > 0)
+    _in.multipliers = {block.mult_trial.data() + i * block.n_mult, static_cast<std::size_t>(block.n_mult)};
+  if (!block.interference.empty()) _in.interference = block.interference[i];
+  _in.ctx = ctx;
+  return _in;
+}
+
+ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangent) {
+  const auto n = static_cast<std::size_t>(block.n_dofs);
+  _r.assign(n, 0.0);
+  _K.assign(want_tangent ? n * n : 0, 0.0);
+  const auto m = static_cast<std::size_t>(block.n_mult);
+  _cslot.assign(m, 0);
+  _cval.assign(m, 0.0);
+  _ccoef.assign(m * n, 0.0);
+  _out = ElementOutput{};
+  _out.residual = _r;
+  _out.tangent = _K;
+  _out.want_tangent = want_tangent;
+  _out.constraint_slot = _cslot;
+  _out.constraint_value = _cval;
+  _out.constraint_coeff = _ccoef;
+  return _out;
+}
+
+} // namespace gapfem

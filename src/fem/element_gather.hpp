@@ -1,0 +1,41 @@
+#pragma once
+/// @file element_gather.hpp
+/// Caller-owned scratch that gathers one element's local data (coordinates, DOF values,
+/// temperatures, state, multipliers) into an ElementInput and holds its output buffers. One per
+/// thread; no allocation after the first element of the largest type.
+#include "fem/discretization.hpp"
+
+#include <span>
+#include <vector>
+
+namespace gapfem {
+
+/// The solution-dependent fields an assembly pass reads (slot-sized vectors, node-sized temperatures).
+struct FieldView {
+  std::span<const double> u;                   ///< trial values per slot
+  std::span<const double> u_start;             ///< committed values per slot
+  std::span<const double> temperature;         ///< predefined temperature per node now (may be empty)
+  std::span<const double> temperature_start;   ///< … at the increment start
+  std::span<const double> initial_temperature; ///< per node
+};
+
+class ElementGather {
+public:
+  /// Fill `input` for element i of block b; spans point into this object's buffers.
+  ElementInput& gather(const Discretization& disc, ElementBlock& block, std::size_t i,
+                       const FieldView& fields, const StepContext* ctx);
+  /// Output buffers sized for the current block, zeroed.
+  ElementOutput& output(const ElementBlock& block, bool want_tangent);
+  ElementInput& input() { return _in; }
+
+private:
+  ElementInput _in;
+  ElementOutput _out;
+  std::vector<Vec3> _X;
+  std::vector<double> _u, _u0, _T, _T0, _Ti;
+  std::vector<double> _r, _K;
+  std::vector<int> _cslot;
+  std::vector<double> _cval, _ccoef;
+};
+
+} // namespace gapfem

@@ -1,0 +1,153 @@
+// CHOLMOD supernodal Cholesky behind the LinearSolver interface.
+#include "common/error.hpp"
+#include "linalg/linear_solver.hpp"
+
+#include <cholmod.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace gapfem {
+namespace {
+
+/// Pivots whose square falls below this fraction of the original diagonal mark a singular matrix.
+constexpr double kPivotRatio = 1e-12;
+
+class CholmodSolver final : public LinearSolver {
+public:
+  CholmodSolver() {
+    cholmod_start(&_c);
+    _c.supernodal = CHOLMOD_SUPERNODAL;
+    _c.final_ll = true;
+    _c.quick_return_if_not_posdef = true;
+    _c.print = 0;
+    _c.error_handler = nullptr;
+  }
+  ~CholmodSolver() override {
+    free_work();
+    if (_L) cholmod_free_factor(&_L, &_c);
+    cholmod_finish(&_c);
+  }
+  std::string_view name() const override { return "CHOLMOD (supernodal Cholesky)"; }
+  bool symmetric() const override { return true; }
+
+  void analyze(const SparsityPattern& p) override {
+    if (_L) cholmod_free_factor(&_L, &_c);
+    free_work();
+    _n = p.n;
+    cholmod_sparse A = view(p, nullptr);
+    if (p.n > 20000) {
+      _c.nmethods = 1;
+      _c.method[0].ordering = CHOLMOD_METIS;
+      _c.postorder = true;
+    } else {
+      _c.nmethods = 0; // AMD, then METIS if AMD's fill is poor
+    }
+    _L = cholmod_analyze(&A, &_c);
+    if (!_L || _c.status < CHOLMOD_OK)
+      throw AnalysisError(fmt::format("CHOLMOD could not analyse the matrix (status {})", _c.status));
+  }
+
+  void factorize(const CsrMatrix& M) override {
+    FE_CHECK(_L && M.n() == _n, "factorize before analyze");
+    cholmod_sparse A = view(M.pattern(), M.values().data());
+    const int ok = cholmod_factorize(&A, _L, &_c);
+    if (!ok || _c.status == CHOLMOD_NOT_POSDEF) {
+      const auto* perm = static_cast<const int*>(_L->Perm);
+      const auto k = static_cast<LocalIndex>(_L->minor);
+      std::vector<LocalIndex> eqs;
+      if (k < _n) eqs.push_back(perm ? perm[k] : k);
+      throw SingularSystem("the matrix is not positive definite", std::move(eqs),
+                           /*indefinite=*/k < _n && M.diagonal(eqs[0]) > 0);
+    }
+    if (_c.status < CHOLMOD_OK)
+      throw AnalysisError(fmt::format("CHOLMOD factorisation failed (status {})", _c.status));
+    check_pivots(M);
+  }
+
+  void solve(std::span<const double> b, std::span<double> x) override { solve_many(b, x, 1); }
+
+  void solve_many(std::span<const double> b, std::span<double> x, int k) override {
+    FE_CHECK(_L, "solve before factorize");
+    cholmod_dense B{};
+    B.nrow = static_cast<std::size_t>(_n);
+    B.ncol = static_cast<std::size_t>(k);
+    B.nzmax = B.nrow * B.ncol;
+    B.d = B.nrow;
+    B.x = const_cast<double*>(b.data());
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* X = nullptr;
+    if (!cholmod_solve2(CHOLMOD_A, _L, &B, nullptr, &X, nullptr, &_Y, &_E, &_c) || !X)
+      throw AnalysisError("CHOLMOD solve failed");
+    std::memcpy(x.data(), X->x, sizeof(double) * B.nzmax);
+    cholmod_free_dense(&X, &_c);
+  }
+
+  std::size_t factor_bytes() const override {
+    return _L ? static_cast<std::size_t>(_L->xsize) * sizeof(double) : 0;
+  }
+
+private:
+  cholmod_sparse view(const SparsityPattern& p, const double* values) {
+    cholmod_sparse A{};
+    A.nrow = A.ncol = static_cast<std::size_t>(p.n);
+    A.nzmax = p.nnz();
+    A.p = const_cast<LocalIndex*>(p.row_ptr.data());
+    A.i = const_cast<LocalIndex*>(p.col.data());
+    A.x = const_cast<double*>(values);
+    A.stype = 1; // symmetric, upper part of the column view (= lower part of our rows) used
+    A.itype = CHOLMOD_INT;
+    A.xtype = values ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+    A.dtype = CHOLMOD_DOUBLE;
+    A.sorted = true;
+    A.packed = true;
+    return A;
+  }
+
+  /// Near-zero pivots (singular positive semi-definite matrix) do not stop CHOLMOD; find them.
+  void check_pivots(const CsrMatrix& M) {
+    if (!_L->is_super) return;
+    const auto* super = static_cast<const int*>(_L->super);
+    const auto* pi = static_cast<const int*>(_L->pi);
+    const auto* px = static_cast<const int*>(_L->px);
+    const auto* Lx = static_cast<const double*>(_L->x);
+    const auto* perm = static_cast<const int*>(_L->Perm);
+    std::vector<LocalIndex> bad;
+    for (std::size_t s = 0; s < _L->nsuper; ++s) {
+      const int k1 = super[s], k2 = super[s + 1];
+      const int nrows = pi[s + 1] - pi[s];
+      for (int j = k1; j < k2; ++j) {
+        const double l = Lx[px[s] + (j - k1) + static_cast<std::size_t>(j - k1) * nrows];
+        const LocalIndex eq = perm ? perm[j] : j;
+        const double d = M.diagonal(eq);
+        if (!(l * l > kPivotRatio * d) || d <= 0) bad.push_back(eq);
+      }
+    }
+    if (!bad.empty()) throw SingularSystem("zero pivot", std::move(bad));
+  }
+
+  void free_work() {
+    if (_Y) cholmod_free_dense(&_Y, &_c);
+    if (_E) cholmod_free_dense(&_E, &_c);
+  }
+
+  cholmod_common _c{};
+  cholmod_factor* _L = nullptr;
+  cholmod_dense* _Y = nullptr;
+  cholmod_dense* _E = nullptr;
+  LocalIndex _n = 0;
+};
+
+} // namespace
+
+std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+
+void LinearSolver::solve_many(std::span<const double> b, std::span<double> x, int k) {
+  const auto n = b.size() / static_cast<std::size_t>(k);
+  for (int j = 0; j < k; ++j) solve(b.subspan(j * n, n), x.subspan(j * n, n));
+}
+
+} // namespace gapfem

@@ -1,0 +1,37 @@
+#include "linalg/constraint_block.hpp"
+
+namespace gapfem {
+
+bool ConstraintBlock::add_row(std::span<const LocalIndex> eqs, std::span<const double> coeff,
+                              double value, std::int64_t multiplier_index) {
+  const auto start = col.size();
+  for (std::size_t k = 0; k < eqs.size(); ++k)
+    if (eqs[k] >= 0 && coeff[k] != 0.0) {
+      col.push_back(eqs[k]);
+      val.push_back(coeff[k]);
+    }
+  if (col.size() == start) return false;
+  row_ptr.push_back(static_cast<LocalIndex>(col.size()));
+  g.push_back(value);
+  multiplier.push_back(multiplier_index);
+  return true;
+}
+
+void ConstraintBlock::multiply(std::span<const double> x, std::span<double> y) const {
+  for (int r = 0; r < n_rows(); ++r) {
+    double s = 0.0;
+    for (LocalIndex k = row_ptr[r]; k < row_ptr[r + 1]; ++k) s += val[k] * x[col[k]];
+    y[r] = s;
+  }
+}
+
+void ConstraintBlock::add_transpose_multiply(std::span<const double> y, double alpha,
+                                             std::span<double> x) const {
+  for (int r = 0; r < n_rows(); ++r) {
+    const double a = alpha * y[r];
+    if (a == 0.0) continue;
+    for (LocalIndex k = row_ptr[r]; k < row_ptr[r + 1]; ++k) x[col[k]] += val[k] * a;
+  }
+}
+
+} // namespace gapfem

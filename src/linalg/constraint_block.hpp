@@ -1,0 +1,38 @@
+#pragma once
+/// @file constraint_block.hpp
+/// The active constraint rows of one Newton iteration (closed hard-contact gaps, Lagrange stick):
+/// a sparse matrix C (rows = constraints, columns = equations), the constraint values g(u) and,
+/// per row, where its multiplier lives in the model's multiplier storage.
+#include "common/types.hpp"
+
+#include <span>
+#include <vector>
+
+namespace gapfem {
+
+struct ConstraintBlock {
+  std::vector<LocalIndex> row_ptr{0};
+  std::vector<LocalIndex> col;
+  std::vector<double> val;
+  std::vector<double> g;                  ///< g_i(u); the Newton step drives it to 0
+  std::vector<std::int64_t> multiplier;   ///< index of the row's multiplier in the model storage
+
+  int n_rows() const { return static_cast<int>(g.size()); }
+  void clear() {
+    row_ptr.assign(1, 0);
+    col.clear();
+    val.clear();
+    g.clear();
+    multiplier.clear();
+  }
+  /// Append a row: equation numbers (negative = prescribed DOF, skipped) and coefficients.
+  /// Returns false (and appends nothing) when no coefficient falls on a free equation.
+  bool add_row(std::span<const LocalIndex> eqs, std::span<const double> coeff, double value,
+               std::int64_t multiplier_index);
+  /// y = C x
+  void multiply(std::span<const double> x, std::span<double> y) const;
+  /// x += alpha * C^T y
+  void add_transpose_multiply(std::span<const double> y, double alpha, std::span<double> x) const;
+};
+
+} // namespace gapfem

@@ -1,0 +1,377 @@
+#include "solver/analysis.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "fem/assembler.hpp"
+#include "fem/discretization.hpp"
+#include "linalg/kkt_solver.hpp"
+#include "model/model.hpp"
+#include "solver/diagnostics.hpp"
+#include "solver/increment_control.hpp"
+#include "solver/newton.hpp"
+#include "solver/step_problem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <set>
+#include <string>
+
+namespace gapfem {
+
+long peak_memory_kb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
+  return 0;
+}
+
+struct Analysis::Impl {
+  const Model& model;
+  std::vector<ResultWriter*> writers;
+  Discretization disc;
+  Assembler assembler;
+  KktSolver kkt;
+  SolutionState st;
+  LoadHistory history;
+  RunStatistics stats;
+  std::vector<StepSummary> summaries;
+  Stopwatch watch;
+
+  Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
+      : model(m), writers(std::move(w)), disc(m),
+        assembler(disc, o.threads > 0 ? o.threads : default_thread_count()) {
+    const LocalIndex ns = disc.dofs().n_slots();
+    st.u.assign(static_cast<std::size_t>(ns), 0.0);
+    st.u_start = st.u;
+    st.f_int = st.u;
+    st.f_ext = st.u;
+    st.T_initial = m.initial_temperature;
+    st.T_initial.resize(static_cast<std::size_t>(m.mesh.n_nodes()), 0.0);
+    st.T = st.T_start = st.T_initial;
+    for (const Step& s : m.steps)
+      if (s.procedure != Procedure::Static)
+        throw InputError(s.loc, fmt::format("step {}", s.number),
+                         fmt::format("*{} steps are not available in this build", procedure_name(s.procedure)));
+  }
+
+  StepSummary run_step(int index);
+  void write_frame(int index, StepProblem& prob, int increment, bool last, double dt);
+  StepChecks checks(StepProblem& prob);
+};
+
+Analysis::Analysis(const Model& model, std::vector<ResultWriter*> writers, AnalysisOptions options)
+    : _impl(std::make_unique<Impl>(model, std::move(writers), options)) {}
+Analysis::~Analysis() = default;
+
+const std::vector<StepSummary>& Analysis::step_summaries() const { return _impl->summaries; }
+
+RunSummary Analysis::run() {
+  Impl& m = *_impl;
+  for (auto* w : m.writers) w->begin(m.model);
+  RunSummary run;
+  for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
+    StepSummary s = m.run_step(i);
+    m.summaries.push_back(s);
+    if (!s.converged) {
+      run.completed = false;
+      run.failure = fmt::format("step {}: {}", s.step, s.failure);
+      break;
+    }
+  }
+  run.wall_seconds = m.watch.seconds();
+  run.stats = m.stats;
+  run.warnings = m.model.warnings;
+  run.peak_memory_kb = peak_memory_kb();
+  for (auto* w : m.writers) w->end(m.model, run);
+  if (!run.completed) throw AnalysisError(run.failure);
+  return run;
+}
+
+StepSummary Analysis::Impl::run_step(int index) {
+  const Step& step = model.steps[index];
+  StepLoads loads(model, disc, index, history, st.u_start, st.total_time);
+  disc.set_equations(loads.equations());
+  std::shared_ptr<const SparsityPattern> pattern;
+  {
+    ScopedTimer t(&stats, TimeCategory::Assembly);
+    std::vector<std::span<const LocalIndex>> lists;
+    for (const auto& b : disc.blocks())
+      for (std::size_t i = 0; i < b.size(); ++i) lists.push_back(b.element_eqs(i));
+    pattern = build_pattern(loads.equations().n_eq(), lists);
+  }
+  kkt.analyze(pattern);
+
+  StepContext base;
+  base.procedure = step.procedure;
+  base.nlgeom = step.nlgeom;
+  base.transient = !step.inc.steady_state && step.procedure != Procedure::Static;
+  base.step_period = loads.period();
+  base.space = model.space;
+  base.model_size = model.model_size();
+  base.constants = &model.constants;
+  StepProblem prob(disc, assembler, loads, st, base, pattern);
+
+  // SHRINK fits take the element's own overclosure at the start of the step.
+  if (!loads.shrink_elements().empty()) {
+    prob.begin_increment(0.0, 0.0);
+    ElementRecovery rec;
+    for (ElemId e : loads.shrink_elements()) {
+      assembler.recover(e, prob.fields(), prob.context(), rec);
+      const double h = rec.gap ? rec.gap->clearance : 0.0;
+      const_cast<StepLoads&>(loads).set_shrink_allowance(e, std::max(-h, 0.0));
+    }
+  }
+
+  for (auto* w : writers) w->begin_step(model, index);
+  log::progress("Step {} ({}){}: {} equations, {} elements", step.number,
+                procedure_name(step.procedure), step.nlgeom ? ", NLGEOM" : "",
+                loads.equations().n_eq(), model.mesh.n_elements());
+  StepSummary sum;
+  sum.step = step.number;
+  sum.name = step.name;
+  sum.procedure = std::string(procedure_name(step.procedure));
+  IncrementController ctrl(step.inc, step.max_increments);
+  FluxHistory flux;
+  NewtonControls controls;
+  std::string last_problem;
+  while (!ctrl.finished()) {
+    if (ctrl.increment() >= step.max_increments) {
+      sum.converged = false;
+      sum.failure = fmt::format("the step needs more than {} increments; raise INC on *STEP "
+                                "(step time reached {:.6g} of {:.6g})",
+                                step.max_increments, ctrl.step_time(), ctrl.period());
+      break;
+    }
+    const double t0 = ctrl.step_time();
+    const double dt = ctrl.next();
+    prob.begin_increment(t0, dt);
+    NewtonResult res = solve_increment(prob, kkt, controls, flux, &stats);
+    ++stats.attempts;
+    ++sum.attempts;
+    sum.iterations += res.iterations;
+    IncrementInfo info;
+    info.step = step.number;
+    info.increment = ctrl.increment() + 1;
+    info.attempts = ctrl.attempt() + 1;
+    info.iterations = res.iterations;
+    info.severe_discontinuities = res.severe_iterations;
+    info.step_time = t0 + dt;
+    info.total_time = st.total_time + t0 + dt;
+    info.dt = dt;
+    info.converged = res.converged;
+    for (auto* w : writers) w->increment(info);
+    if (res.converged) {
+      prob.commit();
+      for (int f = 0; f < kNumFields; ++f) flux.sum[f] += res.flux[f];
+      ++flux.n;
+      ctrl.accept(res.iterations - res.severe_iterations);
+      ++stats.increments;
+      ++sum.increments;
+      write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
+      continue;
+    }
+    // Failed attempt: explain, cut back or stop.
+    if (res.singular) {
+      last_problem = describe_singularity(model, disc, assembler, prob, res.singular_equations);
+      if (!disc.has_gaps()) {
+        sum.converged = false;
+        sum.failure = last_problem;
+        break;
+      }
+    } else if (!res.chattering.empty()) {
+      last_problem = describe_chattering(model, res.chattering);
+    } else {
+      last_problem = res.reason;
+    }
+    log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
+                  last_problem);
+    if (!ctrl.reject()) {
+      sum.converged = false;
+      sum.failure = ctrl.failure() + ". Last problem: " + last_problem;
+      break;
+    }
+  }
+  if (!sum.converged) {
+    // Report the last converged state as the step's final frame.
+    prob.begin_increment(ctrl.step_time(), 0.0);
+    try {
+      prob.evaluate();
+    } catch (const ConvergenceFailure&) {
+    }
+    write_frame(index, prob, ctrl.increment(), true, 0.0);
+  } else {
+    loads.finish(ctrl.period(), prob.reactions(), history);
+  }
+  sum.checks = checks(prob);
+  for (auto* w : writers) w->end_step(model, index, sum);
+  st.total_time += ctrl.step_time();
+  return sum;
+}
+
+void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt) {
+  const Step& step = model.steps[index];
+  auto due = [&](int freq) { return freq > 0 && (increment % freq == 0 || last); };
+  Frame fr;
+  fr.step = step.number;
+  fr.increment = increment;
+  fr.step_time = prob.context().step_time;
+  fr.total_time = prob.context().total_time;
+  fr.dt = dt;
+  fr.last_in_step = last;
+  bool any = last;
+  for (const auto& r : step.node_prints) {
+    fr.node_print_due.push_back(due(r.frequency));
+    any |= fr.node_print_due.back();
+  }
+  for (const auto& r : step.el_prints) {
+    fr.el_print_due.push_back(due(r.frequency));
+    any |= fr.el_print_due.back();
+  }
+  bool field_elements = false;
+  if (step.field_outputs.empty()) {
+    fr.field_due = last;
+  } else {
+    for (const auto& r : step.field_outputs)
+      if (due(r.frequency)) {
+        fr.field_due = true;
+        field_elements |= !r.elem_vars.empty();
+      }
+  }
+  any |= fr.field_due;
+  if (!any) return;
+  ScopedTimer timer(&stats, TimeCategory::Output);
+
+  const DofMap& dofs = disc.dofs();
+  const NodeId nn = model.mesh.n_nodes();
+  NodeResults& nr = fr.nodes;
+  nr.U.assign(nn, Vec3{});
+  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
+  nr.NT.assign(nn, 0.0);
+  nr.RFL = nr.CFL = nr.NT;
+  nr.dof_mask.resize(nn);
+  const std::vector<double> reaction = prob.reactions();
+  const std::vector<double> cload = prob.concentrated_loads();
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const NodeId n = dofs.slot_node(s);
+    const int d = static_cast<int>(dofs.slot_dof(s));
+    const double u = st.u_start[s];
+    if (d < 3) {
+      nr.U[n][d] = u;
+      nr.RF[n][d] = reaction[s];
+      nr.CF[n][d] = cload[s];
+      nr.any_displacement = true;
+    } else if (d < 6) {
+      nr.UR[n][d - 3] = u;
+      nr.RM[n][d - 3] = reaction[s];
+      nr.CM[n][d - 3] = cload[s];
+      nr.any_rotation = true;
+    } else {
+      nr.NT[n] = u;
+      nr.RFL[n] = reaction[s];
+      nr.CFL[n] = cload[s];
+      nr.any_temperature = true;
+    }
+  }
+  for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);
+  // Stress analyses report the predefined temperature field as NT.
+  if (!nr.any_temperature && disc.has_temperature_field()) {
+    nr.NT = st.T_start;
+    nr.any_temperature = true;
+  }
+
+  // Elements needed by the due requests (every element at the last frame).
+  const ElemId ne = model.mesh.n_elements();
+  std::vector<char> need(static_cast<std::size_t>(ne), last || field_elements ? 1 : 0);
+  for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
+    if (!fr.el_print_due[k]) continue;
+    const auto& r = step.el_prints[k];
+    if (r.elset.empty())
+      std::fill(need.begin(), need.end(), 1);
+    else
+      for (ElemId e : r.elements) need[e] = 1;
+  }
+  fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
+  const FieldView fields = prob.fields();
+  for (ElemId e = 0; e < ne; ++e) {
+    if (!need[e]) continue;
+    fr.element_slot[e] = static_cast<std::int32_t>(fr.elements.size());
+    fr.elements.push_back({e, {}});
+    assembler.recover(e, fields, prob.context(), fr.elements.back().data);
+  }
+  for (auto* w : writers) w->frame(model, index, fr);
+}
+
+StepChecks Analysis::Impl::checks(StepProblem& prob) {
+  StepChecks c;
+  const FieldView fields = prob.fields();
+  ElementRecovery rec;
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (!rec.gap) continue;
+      const GapRecord& g = *rec.gap;
+      ++c.n_gaps;
+      const Label label = model.element_label(b.elements[i]);
+      switch (g.status) {
+      case ContactStatus::Open: ++c.n_open; break;
+      case ContactStatus::Closed: ++c.n_closed; break;
+      case ContactStatus::Stick: ++c.n_stick; break;
+      case ContactStatus::Slip: ++c.n_slip; break;
+      }
+      const double allowance = b.interference.empty() ? 0.0 : b.interference[i];
+      const double pen = -(g.clearance + allowance);
+      if (g.status != ContactStatus::Open && pen > c.max_penetration) {
+        c.max_penetration = pen;
+        c.max_penetration_elem = label;
+      }
+      if (g.status != ContactStatus::Open && -g.normal_force > c.max_tensile_force) {
+        c.max_tensile_force = -g.normal_force;
+        c.max_tensile_elem = label;
+      }
+      c.max_damping_force = std::max(c.max_damping_force, std::abs(g.damping_force));
+    }
+  }
+  // Equilibrium: reactions + applied loads + forces of springs to ground.
+  const DofMap& dofs = disc.dofs();
+  const std::vector<double> reaction = prob.reactions();
+  double scale = 0.0;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const int d = static_cast<int>(dofs.slot_dof(s));
+    if (d >= 3) continue;
+    c.reaction_sum[d] += reaction[s];
+    c.applied_sum[d] += st.f_ext[s];
+    scale += std::abs(reaction[s]) + std::abs(st.f_ext[s]);
+  }
+  std::array<double, 3> ground{};
+  std::vector<double> r;
+  std::vector<LocalIndex> slots;
+  for (auto& b : disc.blocks()) {
+    if (b.type != ElementType::SPRING1) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.element_residual(b.elements[i], fields, prob.context(), r, slots);
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        const int d = static_cast<int>(dofs.slot_dof(slots[k]));
+        if (d < 3) {
+          ground[d] += r[k];
+          scale += std::abs(r[k]);
+        }
+      }
+    }
+  }
+  double err2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double e = c.reaction_sum[d] + c.applied_sum[d] - ground[d];
+    err2 += e * e;
+  }
+  c.equilibrium_error = std::sqrt(err2);
+  c.force_scale = scale;
+  return c;
+}
+
+} // namespace gapfem

@@ -1,0 +1,106 @@
+#include "solver/diagnostics.hpp"
+
+#include "fem/assembler.hpp"
+#include "model/model.hpp"
+#include "solver/step_problem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <deque>
+#include <set>
+
+namespace gapfem {
+namespace {
+
+std::string list_labels(const std::vector<Label>& labels, std::size_t max_count = 12) {
+  std::string out;
+  for (std::size_t i = 0; i < labels.size() && i < max_count; ++i)
+    out += (i ? ", " : "") + std::to_string(labels[i]);
+  if (labels.size() > max_count) out += fmt::format(", … ({} in all)", labels.size());
+  return out;
+}
+
+} // namespace
+
+std::string describe_singularity(const Model& model, Discretization& disc, Assembler& assembler,
+                                 StepProblem& prob, std::span<const LocalIndex> equations) {
+  const DofMap& dofs = disc.dofs();
+  const EquationMap& eqm = prob.equations();
+  std::vector<std::string> where;
+  std::set<NodeId> nodes;
+  for (LocalIndex eq : equations) {
+    if (eq < 0 || eq >= eqm.n_eq()) continue;
+    const LocalIndex s = eqm.eq_slot[eq];
+    nodes.insert(dofs.slot_node(s));
+    if (where.size() < 8)
+      where.push_back(fmt::format("node {} DOF {}", model.node_label(dofs.slot_node(s)),
+                                  abaqus_number(dofs.slot_dof(s))));
+  }
+  if (nodes.empty()) return "the system of equations is singular";
+  std::string at = where.front();
+  for (std::size_t i = 1; i < where.size(); ++i) at += ", " + where[i];
+  if (equations.size() > where.size()) at += fmt::format(" (and {} more)", equations.size() - where.size());
+
+  // The body around the first singular node: nodes connected through elements, open gaps excluded.
+  const Mesh& mesh = model.mesh;
+  std::vector<std::vector<ElemId>> node_elems(static_cast<std::size_t>(mesh.n_nodes()));
+  for (ElemId e = 0; e < mesh.n_elements(); ++e)
+    for (NodeId n : mesh.element_nodes(e)) node_elems[n].push_back(e);
+  const FieldView fields = prob.fields();
+  ElementRecovery rec;
+  auto is_open_gap = [&](ElemId e) {
+    if (element_info(mesh.elem_types[e]).family != ElementFamily::Gap) return false;
+    assembler.recover(e, fields, prob.context(), rec);
+    return rec.gap && rec.gap->status == ContactStatus::Open;
+  };
+  std::vector<char> in_body(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  std::deque<NodeId> queue{*nodes.begin()};
+  in_body[*nodes.begin()] = 1;
+  std::set<ElemId> open_gaps;
+  std::vector<Label> body;
+  while (!queue.empty()) {
+    const NodeId n = queue.front();
+    queue.pop_front();
+    body.push_back(model.node_label(n));
+    for (ElemId e : node_elems[n]) {
+      if (is_open_gap(e)) {
+        open_gaps.insert(e);
+        continue;
+      }
+      for (NodeId m : mesh.element_nodes(e))
+        if (!in_body[m]) {
+          in_body[m] = 1;
+          queue.push_back(m);
+        }
+    }
+  }
+  std::sort(body.begin(), body.end());
+  if (!open_gaps.empty()) {
+    std::vector<Label> gaps;
+    for (ElemId e : open_gaps) gaps.push_back(model.element_label(e));
+    std::sort(gaps.begin(), gaps.end());
+    return fmt::format(
+        "the system is singular at {}: the body made of nodes {} is held only by open gap "
+        "elements {}, so nothing resists its rigid-body motion. Remedies: start at least one of "
+        "these gaps closed (d = 0), add a soft spring (SPRING1/SPRING2) from the body to ground, "
+        "or add *CONTACT DAMPING after *GAP so the body is held while the gaps close",
+        at, list_labels(body), list_labels(gaps));
+  }
+  return fmt::format(
+      "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
+      "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "
+      "constrain it",
+      at, list_labels(body));
+}
+
+std::string describe_chattering(const Model& model, std::span<const ElemId> elements) {
+  std::vector<Label> labels;
+  for (ElemId e : elements) labels.push_back(model.element_label(e));
+  std::sort(labels.begin(), labels.end());
+  return fmt::format("the contact status of gap element(s) {} keeps switching between open and "
+                     "closed within the increment",
+                     list_labels(labels));
+}
+
+} // namespace gapfem

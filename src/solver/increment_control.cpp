@@ -1,0 +1,72 @@
+#include "solver/increment_control.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gapfem {
+
+IncrementController::IncrementController(const Incrementation& inc, int max_increments,
+                                         IncrementRules rules)
+    : _period(inc.period > 0 ? inc.period : 1.0), _direct(inc.direct),
+      _max_increments(max_increments > 0 ? max_increments : 100), _rules(rules) {
+  _dt = inc.initial > 0 ? std::min(inc.initial, _period) : _period;
+  _max = inc.maximum > 0 ? inc.maximum : _period;
+  _min = inc.minimum > 0 ? inc.minimum : std::min(_dt, 1e-5 * _period);
+  _dt = std::min(_dt, _max);
+}
+
+double IncrementController::next() const {
+  const double remaining = _period - _t;
+  double dt = std::min(_dt, remaining);
+  // Avoid leaving a sliver far below the current size for the last increment.
+  if (!_direct && remaining - dt > 0 && remaining - dt < 1e-6 * _period) dt = remaining;
+  return dt;
+}
+
+void IncrementController::accept(int iterations, double suggested_ratio) {
+  const double dt = next();
+  _t += dt;
+  if (_period - _t < 1e-12 * _period) _t = _period;
+  ++_increment;
+  _attempt = 0;
+  if (_direct) return;
+  _easy_streak = iterations <= _rules.easy_iterations ? _easy_streak + 1 : 0;
+  const double base = _dt; // the nominal size (a last increment may have been trimmed)
+  if (iterations > _rules.hard_iterations)
+    _dt = base * _rules.shrink;
+  else if (_easy_streak >= 2)
+    _dt = base * _rules.growth;
+  else
+    _dt = base;
+  if (suggested_ratio > 0) _dt = std::min(_dt, base * suggested_ratio);
+  _dt = std::clamp(_dt, _min, _max);
+}
+
+bool IncrementController::reject() {
+  ++_attempt;
+  _easy_streak = 0;
+  if (_direct) {
+    _failure = "the increment did not converge and DIRECT incrementation allows no cut-back; "
+               "use a smaller fixed increment or automatic incrementation";
+    return false;
+  }
+  if (_attempt >= _rules.max_attempts) {
+    _failure = fmt::format("{} attempts of increment {} failed (last size {:.4g}); the increment "
+                           "cannot be cut back further",
+                           _attempt, _increment + 1, _dt);
+    return false;
+  }
+  const double smaller = _dt * _rules.cutback;
+  if (smaller < _min * (1.0 - 1e-12)) {
+    _failure = fmt::format("the time increment required ({:.4g}) is less than the minimum ({:.4g}); "
+                           "lower the minimum increment on the procedure's data line, or change the "
+                           "loading",
+                           smaller, _min);
+    return false;
+  }
+  _dt = smaller;
+  return true;
+}
+
+} // namespace gapfem

@@ -1,0 +1,127 @@
+#include "solver/newton.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace gapfem {
+
+NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const NewtonControls& c,
+                             const FluxHistory& history, RunStatistics* stats) {
+  NewtonResult res;
+  std::unordered_map<ElemId, int> flips;
+  std::vector<double> du, dl;
+  double previous_ratio = std::numeric_limits<double>::infinity();
+  int increases = 0, equilibrium_iterations = 0;
+  Evaluation ev;
+  try {
+    ev = p.evaluate();
+  } catch (const ConvergenceFailure& e) {
+    res.reason = e.what();
+    return res;
+  }
+  for (;;) {
+    // ---- solve and update
+    const auto& C = p.constraints();
+    const auto b = p.rhs();
+    du.assign(b.size(), 0.0);
+    dl.assign(static_cast<std::size_t>(C.n_rows()), 0.0);
+    KktOptions opt;
+    opt.constraint_tolerance = 1e-3 * p.constraint_tolerance();
+    try {
+      solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+    } catch (const SingularSystem& e) {
+      res.singular = true;
+      res.singular_equations = e.equations();
+      res.reason = "the system of equations is singular";
+      return res;
+    }
+    p.apply(du, dl);
+    ++res.iterations;
+    if (stats) ++stats->iterations;
+    std::array<double, kNumFields> cmax{};
+    for (std::size_t i = 0; i < du.size(); ++i) {
+      const int f = static_cast<int>(p.equation_field(static_cast<LocalIndex>(i)));
+      cmax[f] = std::max(cmax[f], std::abs(du[i]));
+    }
+    // ---- evaluate at the new state
+    try {
+      ev = p.evaluate();
+    } catch (const ConvergenceFailure& e) {
+      res.reason = e.what();
+      return res;
+    }
+    if (ev.status_changes > 0) {
+      ++res.severe_iterations;
+      for (ElemId e : ev.changed)
+        if (++flips[e] >= c.chatter_flips) res.chattering.push_back(e);
+      if (!res.chattering.empty()) {
+        std::sort(res.chattering.begin(), res.chattering.end());
+        res.chattering.erase(std::unique(res.chattering.begin(), res.chattering.end()),
+                             res.chattering.end());
+        res.reason = "contact status is chattering";
+        return res;
+      }
+    } else {
+      ++equilibrium_iterations;
+    }
+    // ---- convergence check
+    const auto inc = p.increment_max();
+    bool converged = ev.status_changes == 0 && ev.constraint_max <= p.constraint_tolerance();
+    double worst_ratio = 0.0;
+    for (int f = 0; f < kNumFields; ++f) {
+      if (!ev.has_field[f]) continue;
+      const double qt = (history.sum[f] + ev.flux[f]) / (history.n + 1);
+      const double r = ev.residual_max[f];
+      const double ratio = qt > 0 ? r / qt : (r > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+      worst_ratio = std::max(worst_ratio, ratio);
+      bool ok;
+      if (qt <= 0)
+        ok = r == 0.0;
+      else if (r <= c.linear_ratio * qt)
+        ok = true;
+      else
+        ok = r <= c.residual_ratio * qt && cmax[f] <= c.correction_ratio * inc[f];
+      converged &= ok;
+    }
+    log::debug("  iteration {}: residual/flux {:.3e}, status changes {}, constraint {:.3e}",
+               res.iterations, worst_ratio, ev.status_changes, ev.constraint_max);
+    if (converged) {
+      res.converged = true;
+      res.flux = ev.flux;
+      return res;
+    }
+    if (!std::isfinite(worst_ratio)) {
+      res.reason = "the residual is not finite";
+      return res;
+    }
+    if (ev.status_changes == 0) {
+      if (worst_ratio > previous_ratio)
+        ++increases;
+      else
+        increases = 0;
+      if (equilibrium_iterations >= c.divergence_check_after && increases >= 2) {
+        res.reason = fmt::format("the solution is diverging (residual/flux {:.3e})", worst_ratio);
+        return res;
+      }
+    }
+    previous_ratio = worst_ratio;
+    if (equilibrium_iterations >= c.max_equilibrium_iterations) {
+      res.reason = fmt::format("no convergence in {} equilibrium iterations (residual/flux {:.3e})",
+                               equilibrium_iterations, worst_ratio);
+      return res;
+    }
+    if (res.severe_iterations > c.max_severe_iterations) {
+      res.reason = fmt::format("contact status did not settle in {} iterations",
+                               c.max_severe_iterations);
+      return res;
+    }
+  }
+}
+
+} // namespace gapfem

@@ -1,0 +1,46 @@
+#pragma once
+/// @file newton.hpp
+/// Newton–Raphson for one increment with Abaqus/Standard's default criteria (per field):
+///   residual:   r_max <= R_n * q~   (R_n = 0.005), with q~ the time-averaged flux of the step
+///   correction: c_max <= C_n * du_max (C_n = 0.01), du_max the largest increment of the field
+///   a field whose r_max <= 1e-8 q~ is converged regardless of the correction (linear increments)
+/// plus, with contact, no status change in the last evaluation and every closed gap within the
+/// clearance tolerance. Contact status changes make "severe discontinuity" iterations.
+#include "common/timer.hpp"
+#include "linalg/kkt_solver.hpp"
+#include "solver/nonlinear_problem.hpp"
+
+#include <string>
+
+namespace gapfem {
+
+struct NewtonControls {
+  double residual_ratio = 0.005;   ///< R_n
+  double correction_ratio = 0.01;  ///< C_n
+  double linear_ratio = 1e-8;      ///< epsilon_l
+  int max_equilibrium_iterations = 16; ///< I_C
+  int divergence_check_after = 4;      ///< I_0
+  int max_severe_iterations = 12;      ///< contact status iterations per attempt
+  int chatter_flips = 4;               ///< one element flipping this often is chattering
+};
+
+struct FluxHistory {
+  std::array<double, kNumFields> sum{}; ///< sum of converged increments' flux in this step
+  int n = 0;
+};
+
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;        ///< linear solves of the Newton system
+  int severe_iterations = 0; ///< iterations that changed contact status
+  std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
+  std::string reason;        ///< why it did not converge
+  std::vector<ElemId> chattering;
+  bool singular = false;
+  std::vector<LocalIndex> singular_equations;
+};
+
+NewtonResult solve_increment(NonlinearProblem& problem, KktSolver& solver, const NewtonControls& c,
+                             const FluxHistory& history, RunStatistics* stats);
+
+} // namespace gapfem

@@ -1,0 +1,46 @@
+#pragma once
+/// @file nonlinear_problem.hpp
+/// What Newton knows about the physics: evaluate at the trial state (residual, tangent, active
+/// constraints), apply a correction, and a few measures for the convergence criteria.
+#include "common/types.hpp"
+#include "linalg/constraint_block.hpp"
+#include "linalg/csr_matrix.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace gapfem {
+
+/// Result of one evaluation at the trial state.
+struct Evaluation {
+  std::array<double, kNumFields> residual_max{};  ///< max |r| over the free equations of each field
+  std::array<LocalIndex, kNumFields> residual_eq{-1, -1, -1};
+  std::array<double, kNumFields> flux{};          ///< average force/flux magnitude this iteration
+  std::array<bool, kNumFields> has_field{};       ///< the field has free equations
+  double constraint_max = 0.0;                    ///< max |g| of the active constraint rows
+  int status_changes = 0;
+  std::vector<ElemId> changed; ///< elements whose contact status changed
+  bool symmetric = true;
+};
+
+class NonlinearProblem {
+public:
+  virtual ~NonlinearProblem() = default;
+  /// Assemble residual, tangent and constraints at the trial state. May throw ConvergenceFailure.
+  virtual Evaluation evaluate() = 0;
+  /// The tangent over the free equations (valid after evaluate; the solver may overwrite it).
+  virtual CsrMatrix& matrix() = 0;
+  /// -residual over the free equations.
+  virtual std::span<const double> rhs() const = 0;
+  virtual const ConstraintBlock& constraints() const = 0;
+  /// u += du on the free equations; multipliers of the active rows += dl.
+  virtual void apply(std::span<const double> du, std::span<const double> dl) = 0;
+  virtual Field equation_field(LocalIndex eq) const = 0;
+  /// max |u - u_start| per field over all slots (the increment so far).
+  virtual std::array<double, kNumFields> increment_max() const = 0;
+  /// Closed-gap clearance tolerance (length).
+  virtual double constraint_tolerance() const = 0;
+};
+
+} // namespace gapfem

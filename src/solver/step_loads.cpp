@@ -1,0 +1,214 @@
+#include "solver/step_loads.hpp"
+
+#include "common/log.hpp"
+#include "fem/discretization.hpp"
+#include "model/model.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+
+namespace gapfem {
+
+StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_index,
+                     const LoadHistory& history, std::span<const double> u_now,
+                     double step_start_total_time)
+    : _model(model), _step(model.steps[step_index]), _period(_step.inc.period),
+      _step_start(step_start_total_time) {
+  const DofMap& dofs = disc.dofs();
+  const Step* prev = step_index > 0 ? &model.steps[step_index - 1] : nullptr;
+
+  // Boundary conditions.
+  _prescribed.assign(static_cast<std::size_t>(dofs.n_slots()), 0);
+  int ignored = 0;
+  std::string example;
+  for (const BoundaryEntry& bc : _step.boundary) {
+    const LocalIndex s = dofs.slot(bc.node, bc.dof);
+    if (s < 0) {
+      if (ignored++ == 0)
+        example = fmt::format("node {} DOF {} ({})", model.node_label(bc.node), abaqus_number(bc.dof),
+                              bc.loc.str());
+      continue;
+    }
+    Scalar sc;
+    sc.start = u_now[s];
+    sc.end = bc.fixed ? sc.start : bc.value;
+    sc.amplitude = bc.fixed ? -1 : bc.amplitude;
+    sc.constant = bc.fixed || bc.propagated;
+    if (bc.propagated) sc.start = u_now[s];
+    if (_prescribed[s]) {
+      for (auto& [slot, existing] : _bc)
+        if (slot == s) existing = sc;
+    } else {
+      _bc.emplace_back(s, sc);
+    }
+    _prescribed[s] = 1;
+  }
+  if (ignored > 0) {
+    const std::string msg = fmt::format(
+        "step {}: {} boundary condition(s) refer to DOFs that no element at the node has, e.g. {}; "
+        "they have no effect",
+        _step.number, ignored, example);
+    log::warning("{}", msg);
+  }
+  _eqmap = EquationMap::build(_prescribed);
+
+  // Concentrated loads (CLOAD, CFLUX), including removed ones (to zero).
+  std::set<std::pair<NodeId, int>> seen;
+  for (const NodalLoad& l : _step.cloads) {
+    const LocalIndex s = dofs.slot(l.node, l.dof);
+    if (s < 0)
+      throw InputError(l.loc, fmt::format("node {}", model.node_label(l.node)),
+                       fmt::format("no element at this node has DOF {}; the load cannot be applied",
+                                   abaqus_number(l.dof)));
+    const auto key = std::make_pair(l.node, static_cast<int>(l.dof));
+    Scalar sc;
+    auto it = history.nodal.find(key);
+    sc.start = it == history.nodal.end() ? 0.0 : it->second;
+    sc.end = l.value;
+    sc.amplitude = l.amplitude;
+    sc.constant = l.propagated;
+    _nodal.emplace_back(s, sc);
+    _nodal_keys.emplace_back(key, sc);
+    seen.insert(key);
+  }
+  for (const auto& [key, v] : history.nodal)
+    if (!seen.count(key) && v != 0.0) {
+      const LocalIndex s = dofs.slot(key.first, static_cast<DofType>(key.second));
+      Scalar sc{v, 0.0, -1, false};
+      _nodal.emplace_back(s, sc);
+      _nodal_keys.emplace_back(key, sc);
+    }
+  // Released boundary conditions: their reaction goes to zero like a removed load.
+  if (!history.prescribed.empty())
+    for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
+      if (history.prescribed[s] && !_prescribed[s] && history.reaction[s] != 0.0)
+        _nodal.emplace_back(s, Scalar{history.reaction[s], 0.0, -1, false});
+
+  // Distributed loads.
+  std::set<std::tuple<ElemId, int, int>> dseen;
+  for (const DistributedLoad& l : _step.dloads) {
+    const auto key = std::make_tuple(l.elem, static_cast<int>(l.kind), l.face);
+    auto it = history.distributed.find(key);
+    Dist d{&l, {}, {}, {}};
+    d.magnitude = Scalar{it == history.distributed.end() ? 0.0 : it->second.first, l.magnitude,
+                         l.kind == DistLoadKind::Film ? l.film_amplitude : l.amplitude, l.propagated};
+    d.sink = Scalar{it == history.distributed.end() ? l.sink_temperature : it->second.second,
+                    l.sink_temperature, l.kind == DistLoadKind::Film ? l.amplitude : -1, l.propagated};
+    _dist.push_back(d);
+    dseen.insert(key);
+  }
+  if (prev)
+    for (const DistributedLoad& l : prev->dloads) {
+      const auto key = std::make_tuple(l.elem, static_cast<int>(l.kind), l.face);
+      if (dseen.count(key)) continue;
+      auto it = history.distributed.find(key);
+      if (it == history.distributed.end() || it->second.first == 0.0) continue;
+      Dist d{nullptr, l, {}, {}};
+      d.magnitude = Scalar{it->second.first, 0.0, -1, false};
+      d.sink = Scalar{it->second.second, it->second.second, -1, true};
+      _dist.push_back(d);
+    }
+  for (auto& d : _dist)
+    if (!d.load) d.load = &d.removed;
+
+  // Predefined temperatures.
+  _has_temperature = disc.has_temperature_field();
+  _temp_base = history.temperature;
+  if (_temp_base.empty()) _temp_base = model.initial_temperature;
+  _temp_base.resize(static_cast<std::size_t>(model.mesh.n_nodes()), 0.0);
+  std::set<NodeId> tseen;
+  for (const NodalTemperature& t : _step.temperatures) {
+    _temp.emplace_back(t.node, Scalar{_temp_base[t.node], t.value, t.amplitude, t.propagated});
+    tseen.insert(t.node);
+  }
+  if (prev)
+    for (const NodalTemperature& t : prev->temperatures)
+      if (!tseen.count(t.node)) {
+        const double init = t.node < static_cast<NodeId>(model.initial_temperature.size())
+                                ? model.initial_temperature[t.node]
+                                : 0.0;
+        _temp.emplace_back(t.node, Scalar{_temp_base[t.node], init, -1, false});
+      }
+
+  // Interference fits.
+  for (const InterferenceEntry& e : _step.interference) {
+    _interf.push_back({e.elem, e.allowance, e.shrink ? -1 : e.amplitude});
+    if (e.shrink) _shrink_elems.push_back(e.elem);
+  }
+}
+
+double StepLoads::value(const Scalar& s, double step_time) const {
+  if (s.amplitude >= 0) {
+    const Amplitude& a = _model.amplitudes[s.amplitude];
+    if (s.constant && a.time == Amplitude::TimeBase::Step) return s.start;
+    const double v = a.value(step_time, _step_start);
+    return a.absolute ? v : s.end * v;
+  }
+  if (s.constant) return s.start;
+  if (!_step.ramp_default) return s.end;
+  const double f = _period > 0 ? std::clamp(step_time / _period, 0.0, 1.0) : 1.0;
+  return s.start + (s.end - s.start) * f;
+}
+
+void StepLoads::apply_prescribed(double step_time, std::span<double> u) const {
+  for (const auto& [s, sc] : _bc) u[s] = value(sc, step_time);
+}
+
+void StepLoads::add_nodal_loads(double step_time, std::span<double> f_ext) const {
+  for (const auto& [s, sc] : _nodal) f_ext[s] += value(sc, step_time);
+}
+
+void StepLoads::distributed_loads(double step_time, std::vector<ActiveLoad>& out) const {
+  out.clear();
+  for (const Dist& d : _dist) {
+    const double m = value(d.magnitude, step_time);
+    if (m == 0.0) continue;
+    out.push_back({d.load, m, value(d.sink, step_time)});
+  }
+}
+
+void StepLoads::temperatures(double step_time, std::span<double> T) const {
+  std::copy(_temp_base.begin(), _temp_base.end(), T.begin());
+  for (const auto& [n, sc] : _temp) T[n] = value(sc, step_time);
+}
+
+void StepLoads::interference(double step_time, Discretization& disc) const {
+  for (auto& b : disc.blocks()) std::fill(b.interference.begin(), b.interference.end(), 0.0);
+  for (const Interf& i : _interf) {
+    double factor;
+    if (i.amplitude >= 0) {
+      factor = _model.amplitudes[i.amplitude].value(step_time, _step_start);
+    } else {
+      factor = _period > 0 ? 1.0 - std::clamp(step_time / _period, 0.0, 1.0) : 0.0;
+    }
+    const auto [bi, idx] = disc.locate(i.elem);
+    auto& b = disc.blocks()[bi];
+    if (!b.interference.empty()) b.interference[idx] = i.allowance * factor;
+  }
+}
+
+void StepLoads::set_shrink_allowance(ElemId e, double v) {
+  for (Interf& i : _interf)
+    if (i.elem == e) i.allowance = v;
+}
+
+void StepLoads::finish(double t_end, std::span<const double> reaction, LoadHistory& h) const {
+  h.nodal.clear();
+  for (const auto& [key, sc] : _nodal_keys) {
+    const double v = value(sc, t_end);
+    if (v != 0.0) h.nodal[key] = v;
+  }
+  h.distributed.clear();
+  for (const Dist& d : _dist) {
+    if (d.load == &d.removed) continue;
+    h.distributed[std::make_tuple(d.load->elem, static_cast<int>(d.load->kind), d.load->face)] = {
+        value(d.magnitude, t_end), value(d.sink, t_end)};
+  }
+  h.temperature = _temp_base;
+  for (const auto& [n, sc] : _temp) h.temperature[n] = value(sc, t_end);
+  h.prescribed = _prescribed;
+  h.reaction.assign(reaction.begin(), reaction.end());
+}
+
+} // namespace gapfem

@@ -1,0 +1,95 @@
+#pragma once
+/// @file step_loads.hpp
+/// Values of boundary conditions, loads, predefined temperatures and interference allowances at a
+/// step time, following Abaqus: without an amplitude a new or changed value is ramped from the value
+/// at the end of the previous step (RAMP, the default in static steps) or applied at once (STEP);
+/// with an amplitude the magnitude is scaled by a(t) (VALUE=ABSOLUTE: a(t) itself); unchanged
+/// (propagated) values stay constant; removed values go to zero (temperatures to the initial
+/// condition) with the step's default variation; the reaction of a released boundary condition is
+/// applied as a load that follows the same variation down to zero.
+#include "fem/assembler.hpp"
+#include "fem/dof_map.hpp"
+
+#include <map>
+#include <tuple>
+#include <vector>
+
+namespace gapfem {
+
+struct Model;
+struct Step;
+class Discretization;
+
+/// What a step leaves behind for the next one.
+struct LoadHistory {
+  std::map<std::pair<NodeId, int>, double> nodal;                  ///< CLOAD/CFLUX values at step end
+  std::map<std::tuple<ElemId, int, int>, std::pair<double, double>> distributed; ///< magnitude, sink
+  std::vector<double> temperature;                                  ///< predefined field per node
+  std::vector<std::uint8_t> prescribed;                             ///< per slot, in the last step
+  std::vector<double> reaction;                                     ///< per slot, at the end of the last step
+};
+
+class StepLoads {
+public:
+  /// u_now: solution per slot at the start of the step.
+  StepLoads(const Model& model, const Discretization& disc, int step_index, const LoadHistory& history,
+            std::span<const double> u_now, double step_start_total_time);
+
+  const EquationMap& equations() const { return _eqmap; }
+  std::span<const std::uint8_t> prescribed() const { return _prescribed; }
+  double period() const { return _period; }
+
+  /// Write the prescribed values at `step_time` into u (prescribed slots only).
+  void apply_prescribed(double step_time, std::span<double> u) const;
+  /// Add the concentrated loads (and released-reaction loads) at `step_time` to f_ext (per slot).
+  void add_nodal_loads(double step_time, std::span<double> f_ext) const;
+  /// The distributed loads active at `step_time`.
+  void distributed_loads(double step_time, std::vector<ActiveLoad>& out) const;
+  /// Predefined temperature per node at `step_time` (empty span: none in this model).
+  void temperatures(double step_time, std::span<double> T) const;
+  bool has_temperature_field() const { return _has_temperature; }
+  /// Interference allowance of each gap element at `step_time` (0 where none).
+  void interference(double step_time, Discretization& disc) const;
+  /// SHRINK allowances need the clearance at the step start: set v for element e.
+  void set_shrink_allowance(ElemId e, double v);
+  const std::vector<ElemId>& shrink_elements() const { return _shrink_elems; }
+
+  /// Record the end-of-step values (call after the last increment).
+  void finish(double step_period_time, std::span<const double> reaction, LoadHistory& history) const;
+
+private:
+  struct Scalar {
+    double start = 0.0, end = 0.0;
+    int amplitude = -1;
+    bool constant = false;
+  };
+  double value(const Scalar& s, double step_time) const;
+
+  const Model& _model;
+  const Step& _step;
+  double _period = 1.0;
+  double _step_start = 0.0;
+  EquationMap _eqmap;
+  std::vector<std::uint8_t> _prescribed;
+  std::vector<std::pair<LocalIndex, Scalar>> _bc;
+  std::vector<std::pair<LocalIndex, Scalar>> _nodal;
+  std::vector<std::pair<std::pair<NodeId, int>, Scalar>> _nodal_keys;
+  struct Dist {
+    const DistributedLoad* load;
+    DistributedLoad removed; ///< storage for removed loads (load points here)
+    Scalar magnitude, sink;
+  };
+  std::vector<Dist> _dist;
+  std::vector<std::pair<NodeId, Scalar>> _temp;
+  std::vector<double> _temp_base;
+  bool _has_temperature = false;
+  struct Interf {
+    ElemId elem;
+    double allowance;
+    int amplitude;
+  };
+  std::vector<Interf> _interf;
+  std::vector<ElemId> _shrink_elems;
+};
+
+} // namespace gapfem

@@ -1,0 +1,121 @@
+#include "solver/step_problem.hpp"
+
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gapfem {
+
+StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
+                         SolutionState& state, const StepContext& base,
+                         std::shared_ptr<const SparsityPattern> pattern)
+    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)),
+      _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
+      _constraint_tol(1e-10 * base.model_size) {}
+
+void StepProblem::begin_increment(double t0, double dt) {
+  _ctx.dt = dt;
+  _ctx.step_time = t0 + dt;
+  _ctx.total_time = _s.total_time + t0 + dt;
+  std::copy(_s.u_start.begin(), _s.u_start.end(), _s.u.begin());
+  _disc.reset_trial();
+  _loads.apply_prescribed(_ctx.step_time, _s.u);
+  if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
+  _loads.interference(_ctx.step_time, _disc);
+}
+
+void StepProblem::commit() {
+  _s.u_start = _s.u;
+  _s.T_start = _s.T;
+  _disc.commit();
+}
+
+FieldView StepProblem::fields() const {
+  FieldView f;
+  f.u = _s.u;
+  f.u_start = _s.u_start;
+  if (_loads.has_temperature_field()) {
+    f.temperature = _s.T;
+    f.temperature_start = _s.T_start;
+    f.initial_temperature = _s.T_initial;
+  }
+  return f;
+}
+
+Evaluation StepProblem::evaluate() {
+  const FieldView f = fields();
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, &_K, &_C);
+  std::fill(_s.f_ext.begin(), _s.f_ext.end(), 0.0);
+  _loads.add_nodal_loads(_ctx.step_time, _s.f_ext);
+  _loads.distributed_loads(_ctx.step_time, _active);
+  bool follower = false;
+  if (!_active.empty()) {
+    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_K);
+    for (const auto& a : _active) follower |= _ctx.nlgeom && a.load->kind == DistLoadKind::Pressure;
+  }
+  Evaluation ev;
+  ev.status_changes = ar.status_changes;
+  ev.changed = std::move(ar.changed);
+  ev.symmetric = !ar.unsymmetric && !follower;
+  const DofMap& dofs = _disc.dofs();
+  const EquationMap& eqm = _loads.equations();
+  for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    const double r = _s.f_int[s] - _s.f_ext[s];
+    _rhs[i] = -r;
+    const int fld = static_cast<int>(dofs.slot_field(s));
+    ev.has_field[fld] = true;
+    if (std::abs(r) > ev.residual_max[fld]) {
+      ev.residual_max[fld] = std::abs(r);
+      ev.residual_eq[fld] = i;
+    }
+  }
+  std::array<double, kNumFields> sum = ar.flux_sum;
+  std::array<long, kNumFields> cnt = ar.flux_count;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
+    if (_s.f_ext[s] != 0.0) {
+      const int fld = static_cast<int>(dofs.slot_field(s));
+      sum[fld] += std::abs(_s.f_ext[s]);
+      ++cnt[fld];
+    }
+  for (int fld = 0; fld < kNumFields; ++fld) ev.flux[fld] = cnt[fld] > 0 ? sum[fld] / cnt[fld] : 0.0;
+  for (double g : _C.g) ev.constraint_max = std::max(ev.constraint_max, std::abs(g));
+  return ev;
+}
+
+void StepProblem::apply(std::span<const double> du, std::span<const double> dl) {
+  const EquationMap& eqm = _loads.equations();
+  for (LocalIndex i = 0; i < eqm.n_eq(); ++i) _s.u[eqm.eq_slot[i]] += du[i];
+  for (int r = 0; r < _C.n_rows(); ++r) _disc.multiplier_trial(_C.multiplier[r]) += dl[r];
+}
+
+Field StepProblem::equation_field(LocalIndex eq) const {
+  return _disc.dofs().slot_field(_loads.equations().eq_slot[eq]);
+}
+
+std::array<double, kNumFields> StepProblem::increment_max() const {
+  std::array<double, kNumFields> m{};
+  const DofMap& dofs = _disc.dofs();
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const int fld = static_cast<int>(dofs.slot_field(s));
+    m[fld] = std::max(m[fld], std::abs(_s.u[s] - _s.u_start[s]));
+  }
+  return m;
+}
+
+std::vector<double> StepProblem::reactions() const {
+  std::vector<double> r(_s.f_int.size(), 0.0);
+  const auto presc = _loads.prescribed();
+  for (std::size_t s = 0; s < r.size(); ++s)
+    if (presc[s]) r[s] = _s.f_int[s] - _s.f_ext[s];
+  return r;
+}
+
+std::vector<double> StepProblem::concentrated_loads() const {
+  std::vector<double> f(_s.f_int.size(), 0.0);
+  _loads.add_nodal_loads(_ctx.step_time, f);
+  return f;
+}
+
+} // namespace gapfem

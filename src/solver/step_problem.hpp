@@ -1,0 +1,64 @@
+#pragma once
+/// @file step_problem.hpp
+/// Adapts the discretization, the assembler and a step's loads to the NonlinearProblem interface:
+/// evaluation at the trial state of the current increment, corrections, reactions.
+#include "fem/assembler.hpp"
+#include "solver/nonlinear_problem.hpp"
+#include "solver/step_loads.hpp"
+
+#include <memory>
+
+namespace gapfem {
+
+/// The solution and its history: slot-sized displacement/temperature vectors and node-sized
+/// predefined temperatures, each with a trial and a committed copy.
+struct SolutionState {
+  std::vector<double> u, u_start;        ///< per slot: trial, committed
+  std::vector<double> T, T_start;        ///< predefined temperature per node: trial, committed
+  std::vector<double> T_initial;         ///< per node
+  std::vector<double> f_int, f_ext;      ///< per slot, at the last evaluation
+  double total_time = 0.0;               ///< total time at the start of the current step
+};
+
+class StepProblem final : public NonlinearProblem {
+public:
+  StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads, SolutionState& state,
+              const StepContext& base, std::shared_ptr<const SparsityPattern> pattern);
+
+  /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
+  /// values, temperatures and interference at t0 + dt.
+  void begin_increment(double t0, double dt);
+  /// Accept the trial state.
+  void commit();
+
+  Evaluation evaluate() override;
+  CsrMatrix& matrix() override { return _K; }
+  std::span<const double> rhs() const override { return _rhs; }
+  const ConstraintBlock& constraints() const override { return _C; }
+  void apply(std::span<const double> du, std::span<const double> dl) override;
+  Field equation_field(LocalIndex eq) const override;
+  std::array<double, kNumFields> increment_max() const override;
+  double constraint_tolerance() const override { return _constraint_tol; }
+
+  FieldView fields() const;
+  const EquationMap& equations() const { return _loads.equations(); }
+  const StepContext& context() const { return _ctx; }
+  /// f_int - f_ext at prescribed slots (0 elsewhere), at the last evaluation.
+  std::vector<double> reactions() const;
+  /// Concentrated loads per slot at the end of the current increment.
+  std::vector<double> concentrated_loads() const;
+
+private:
+  Discretization& _disc;
+  Assembler& _asm;
+  const StepLoads& _loads;
+  SolutionState& _s;
+  StepContext _ctx;
+  CsrMatrix _K;
+  ConstraintBlock _C;
+  std::vector<double> _rhs;
+  std::vector<ActiveLoad> _active;
+  double _constraint_tol;
+};
+
+} // namespace gapfem
