@@ -1,0 +1,64 @@
+#pragma once
+/// @file json_writer.hpp
+/// job.results.json, schema "gapfem.results/1" (docs/results.md). The document
+/// is streamed: each frame is formatted into a buffer and written in large
+/// chunks, and end() closes the structure.
+#include "output/output_file.hpp"
+#include "output/results.hpp"
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+/// Writes the machine-readable results file (job.results.json).
+class JsonWriter : public ResultWriter {
+public:
+  /// `path`: the file to create; `job`: the job name recorded in the file.
+  JsonWriter(std::filesystem::path path, std::string job);
+
+  void begin(const Model &model) override;
+  void begin_step(const Model &model, int step_index) override;
+  void frame(const Model &model, int step_index, const Frame &frame) override;
+  void end_step(const Model &model, int step_index,
+                const StepSummary &summary) override;
+  void end(const Model &model, const RunSummary &summary) override;
+
+private:
+  void write_node(const Model &model, const NodeResults &r, NodeId n,
+                  bool &first);
+  void write_element(const Model &model, const ElementResult &res, bool &first);
+  void close_step(const StepSummary *summary);
+  void note_components(ElementType type, const OutputBlock &block);
+
+  std::filesystem::path _path;
+  std::string _job;
+  output::OutputFile _out;
+  bool _step_open = false;
+  bool _first_step = true;
+  bool _first_frame = true;
+  int _open_step_number = 0;
+
+  std::vector<std::vector<NodeId>>
+      _node_lists; ///< per *NODE PRINT of the step, by label
+  std::vector<std::vector<ElemId>> _elem_lists; ///< per *EL PRINT of the step
+  std::vector<NodeId> _all_nodes;               ///< every node, by label
+  std::vector<std::uint8_t>
+      _node_mark; ///< scratch: nodes in the frame (per NodeId)
+  std::vector<NodeId> _frame_nodes; ///< scratch: nodes in the frame, by label
+  std::vector<ElemId>
+      _frame_elems; ///< scratch: elements in the frame, by label
+  std::vector<std::uint8_t> _elem_mark;
+  std::vector<double> _avg; ///< scratch: point averages
+
+  /// Component names seen per element type and variable (for "element_types").
+  struct TypeComponents {
+    std::array<std::vector<std::string>, 4> names; ///< indexed by ElemVar
+    bool seen = false;
+  };
+  std::vector<TypeComponents> _components; ///< indexed by ElementType
+};
+
+} // namespace gapfem

@@ -1,0 +1,60 @@
+#pragma once
+/// @file vtu_writer.hpp
+/// ParaView output: one VTK UnstructuredGrid file (job_<step>_<inc>.vtu, raw
+/// appended binary data, UInt64 block headers) per field frame, and the
+/// collection job.pvd listing them by total time.
+#include "output/output_file.hpp"
+#include "output/results.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+/// VTK cell type of an element with `n_nodes` nodes (1 vertex, 3 line, 5
+/// triangle, 9 quad, 10 tetra, 12 hexahedron, 24 quadratic tetra), or 0 when
+/// there is no matching VTK cell.
+int vtk_cell_type(ElementType type, int n_nodes);
+/// Position in the Abaqus connectivity of the node that VTK expects at position
+/// `vtk_index`. Abaqus and VTK order the nodes of every supported element the
+/// same way (corners, then C3D10 mid-edge nodes on edges 1-2, 2-3, 3-1, 1-4,
+/// 2-4, 3-4), so this is the identity; it is kept as the single place to change
+/// should an element with a different order be added.
+int vtk_node_from_abaqus(ElementType type, int vtk_index);
+
+/// Writes ParaView files for the frames with Frame::field_due.
+class VtuWriter : public ResultWriter {
+public:
+  /// Files go to `directory` and are named after `job`.
+  VtuWriter(std::filesystem::path directory, std::string job);
+
+  void begin(const Model &model) override;
+  void frame(const Model &model, int step_index, const Frame &frame) override;
+
+private:
+  struct PvdEntry {
+    double time = 0.0;
+    std::string file;
+  };
+  void write_pvd();
+
+  std::filesystem::path _dir;
+  std::string _job;
+  std::vector<PvdEntry> _entries;
+
+  // topology, built once in begin()
+  std::vector<std::int32_t> _connectivity;
+  std::vector<std::int64_t> _offsets;
+  std::vector<std::uint8_t> _cell_types;
+  std::vector<std::int32_t> _type_ids; ///< ElementType value per cell
+  bool _has_gaps = false;
+
+  // per-frame cell data (reused)
+  std::vector<double> _S, _E, _HFL, _gap_clearance, _gap_pressure;
+  std::vector<std::int32_t> _gap_status;
+  std::vector<double> _avg;
+  std::vector<double> _zeros;
+};
+
+} // namespace gapfem
