@@ -1,0 +1,97 @@
+#pragma once
+// Minimal in-memory models and a single-element driver for gap kernel unit tests.
+#include "elements/element_kernel.hpp"
+#include "model/model.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace gapfem::test {
+
+/// A model with two nodes and one gap element of `type` using `section`.
+inline Model two_node_gap_model(ElementType type, const Vec3& X1, const Vec3& X2, GapSection section,
+                                ModelSpace space = ModelSpace::ThreeD) {
+  Model m;
+  m.space = space;
+  m.source_files = {"unit.inp"};
+  m.mesh.node_labels = {1, 2};
+  m.mesh.coords = {X1, X2};
+  m.mesh.node_index = {{1, 0}, {2, 1}};
+  m.mesh.elem_labels = {10};
+  m.mesh.elem_types = {type};
+  m.mesh.conn = {0, 1};
+  m.mesh.conn_offset = {0, 2};
+  m.mesh.elem_src = {SourceRef{0, 5}};
+  m.mesh.elem_index = {{10, 0}};
+  section.elset = "G";
+  m.gap_sections = {section};
+  m.element_property = {PropertyRef{PropertyRef::Kind::Gap, 0}};
+  m.initial_temperature = {0.0, 0.0};
+  return m;
+}
+
+/// Evaluates one kernel on local data it owns.
+struct SingleElement {
+  std::unique_ptr<ElementKernel> kernel;
+  std::vector<Vec3> X;
+  std::vector<double> u, u0, state, state0, mult;
+  StepContext ctx;
+  std::vector<double> r, K, cval, ccoef;
+  std::vector<int> cslot;
+  int n_constraints = 0;
+  int status_changes = 0;
+  double interference = 0.0;
+
+  SingleElement(const Model& m, std::unique_ptr<ElementKernel> k) : kernel(std::move(k)) {
+    X = m.mesh.coords;
+    const int nd = kernel->n_dofs();
+    u.assign(nd, 0.0);
+    u0 = u;
+    state.assign(kernel->n_state(), 0.0);
+    mult.assign(kernel->n_multipliers(), 0.0);
+    ctx.space = m.space;
+    ctx.model_size = m.model_size();
+    auto in = input();
+    kernel->initialize(in);
+    state0 = state;
+  }
+  ElementInput input() {
+    ElementInput in;
+    in.X = X;
+    in.u = u;
+    in.u_start = u0;
+    in.state_start = state0;
+    in.state = state;
+    in.multipliers = mult;
+    in.interference = interference;
+    in.ctx = &ctx;
+    return in;
+  }
+  void evaluate() {
+    const auto nd = static_cast<std::size_t>(kernel->n_dofs());
+    const auto m = static_cast<std::size_t>(kernel->n_multipliers());
+    r.assign(nd, 0.0);
+    K.assign(nd * nd, 0.0);
+    cslot.assign(m, 0);
+    cval.assign(m, 0.0);
+    ccoef.assign(m * nd, 0.0);
+    ElementOutput out;
+    out.residual = r;
+    out.tangent = K;
+    out.constraint_slot = cslot;
+    out.constraint_value = cval;
+    out.constraint_coeff = ccoef;
+    auto in = input();
+    kernel->evaluate(in, out);
+    n_constraints = out.n_constraints;
+    status_changes = out.status_changes;
+  }
+  GapRecord record() {
+    ElementRecovery rec;
+    auto in = input();
+    kernel->recover(in, rec);
+    return *rec.gap;
+  }
+};
+
+} // namespace gapfem::test
