@@ -1,0 +1,52 @@
+#pragma once
+/// @file spring.hpp
+/// Linear spring elements with Abaqus semantics (Abaqus Analysis User's Manual 6.6, §26.1.1
+/// "Springs" and §26.1.2 "Spring element library"):
+///   SPRING1  one node, DOF i to ground:           relative displacement du = u_i
+///   SPRING2  node 1 DOF i to node 2 DOF j:         du = u_i(1) - u_j(2)
+///   SPRINGA  axial spring along the line joining the nodes; du = change of length. Without NLGEOM
+///            the line of action is the initial line, with NLGEOM the current one ("this line of
+///            action may rotate in large-displacement analysis").
+/// Force F = k(T) du, with k from *SPRING (temperature-dependent rows interpolated at the element's
+/// average predefined temperature). Output: S11 = F, E11 = du.
+#include "elements/element_kernel.hpp"
+#include "model/section.hpp"
+
+#include <array>
+
+namespace gapfem {
+
+/// SPRING1 / SPRING2 / SPRINGA kernel. Immutable; thread-safe.
+class SpringKernel final : public ElementKernel {
+ public:
+  /// `space` decides the DOFs of SPRINGA (1-2 in 2-D models, 1-3 in 3-D). The DOFs of
+  /// SPRING1/SPRING2 must have been checked against the space by the caller (the factory).
+  SpringKernel(ElementType type, const SpringSection& section, ModelSpace space);
+
+  ElementType type() const override { return _type; }
+  std::span<const DofType> node_dofs(int local_node) const override;
+  bool uses_temperature_field() const override { return _stiffness.n_rows() > 1; }
+  std::string validate(const ElementInput& in) const override;
+  void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  bool supports_output(ElemVar var) const override;
+  void recover(const ElementInput& in, ElementRecovery& out) const override;
+
+  /// Stiffness at the element's temperature (first table row without a temperature field).
+  double stiffness(const ElementInput& in) const;
+
+ private:
+  /// Relative displacement du and the SPRINGA kinematics flag.
+  double relative_displacement(const ElementInput& in) const;
+
+  ElementType _type;
+  PropertyTable _stiffness;
+  int _ndim = 3; ///< SPRINGA: translational DOFs per node
+  std::array<DofType, 3> _dofs0{}, _dofs1{};
+  int _n0 = 0, _n1 = 0;
+};
+
+/// Factory for SPRING1/SPRING2/SPRINGA blocks: checks the *SPRING property (stiffness given, DOFs
+/// valid in the model space) and throws InputError naming the *SPRING line otherwise.
+std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx);
+
+} // namespace gapfem

@@ -1,0 +1,101 @@
+// make_structural_kernel: SPRING1/SPRING2/SPRINGA, T2D2/T3D2 and B31 blocks.
+#include "elements/structural/structural_factory.hpp"
+
+#include "elements/structural/beam.hpp"
+#include "elements/structural/spring.hpp"
+#include "elements/structural/truss.hpp"
+#include "model/model.hpp"
+
+#include <fmt/format.h>
+#include <vector>
+
+namespace gapfem {
+
+namespace structural {
+
+namespace {
+ElemId first_element(const KernelContext& ctx) {
+  return ctx.elements.empty() ? -1 : ctx.elements[0];
+}
+
+std::string element_entity(const KernelContext& ctx) {
+  const ElemId e = first_element(ctx);
+  return e >= 0 ? fmt::format("element {}", ctx.model.element_label(e)) : std::string{};
+}
+
+[[noreturn]] void missing_property(const KernelContext& ctx, std::string_view keyword) {
+  throw InputError(ctx.model.element_location(first_element(ctx)), element_entity(ctx),
+                   fmt::format("{} elements need a {} property; add {}, ELSET=... for the element "
+                               "set that contains them",
+                               element_info(ctx.type).name, keyword, keyword));
+}
+} // namespace
+
+const SolidSection& solid_section_of(const KernelContext& ctx) {
+  const auto& list = ctx.model.solid_sections;
+  if (ctx.property.kind != PropertyRef::Kind::Solid || ctx.property.index < 0 ||
+      ctx.property.index >= static_cast<int>(list.size()))
+    missing_property(ctx, "*SOLID SECTION");
+  return list[ctx.property.index];
+}
+
+const BeamSection& beam_section_of(const KernelContext& ctx) {
+  const auto& list = ctx.model.beam_sections;
+  if (ctx.property.kind != PropertyRef::Kind::Beam || ctx.property.index < 0 ||
+      ctx.property.index >= static_cast<int>(list.size()))
+    missing_property(ctx, "*BEAM SECTION");
+  return list[ctx.property.index];
+}
+
+const Material& section_material(const Model& model, int material, const SourceLocation& loc,
+                                 const std::string& entity) {
+  if (material < 0 || material >= static_cast<int>(model.materials.size()))
+    throw InputError(loc, entity,
+                     "the section names no known material; give MATERIAL=<name> of a "
+                     "*MATERIAL defined in the deck");
+  const Material& m = model.materials[material];
+  if (!m.has_elastic())
+    throw InputError(m.loc, fmt::format("*MATERIAL, NAME={}", m.name),
+                     "the material has no *ELASTIC data, which this element needs; add *ELASTIC "
+                     "with Young's modulus and Poisson's ratio");
+  return m;
+}
+
+void check_density_for_gravity(const KernelContext& ctx, const Material& material) {
+  if (!material.density.empty() || ctx.elements.empty()) return;
+  std::vector<bool> in_block(static_cast<std::size_t>(ctx.model.mesh.n_elements()), false);
+  for (ElemId e : ctx.elements) in_block[e] = true;
+  for (const Step& step : ctx.model.steps)
+    for (const DistributedLoad& load : step.dloads)
+      if (load.kind == DistLoadKind::Gravity && load.elem >= 0 &&
+          load.elem < static_cast<ElemId>(in_block.size()) && in_block[load.elem])
+        throw InputError(load.loc, fmt::format("element {}", ctx.model.element_label(load.elem)),
+                         fmt::format("GRAV needs the mass density of material {}; add *DENSITY to "
+                                     "the material",
+                                     material.name));
+}
+
+} // namespace structural
+
+std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) {
+  switch (ctx.type) {
+  case ElementType::SPRING1:
+  case ElementType::SPRING2:
+  case ElementType::SPRINGA:
+    return make_spring_kernel(ctx);
+  case ElementType::T2D2:
+  case ElementType::T3D2:
+    return make_truss_kernel(ctx);
+  case ElementType::B31:
+    return make_beam_kernel(ctx);
+  default:
+    break;
+  }
+  const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
+  throw InputError(ctx.model.element_location(e),
+                   fmt::format("{} elements are not available yet; use {} in a stress analysis",
+                               element_info(ctx.type).name,
+                               ctx.type == ElementType::T2D2T ? "T2D2" : "T3D2"));
+}
+
+} // namespace gapfem
