@@ -1,0 +1,70 @@
+// StaWriter: Abaqus status-file layout, "U" on attempts that were cut back,
+// final line, and flushing after every line.
+#include "output/sta_writer.hpp"
+
+#include "writer_fixture.hpp"
+
+namespace gapfem {
+namespace {
+
+using namespace testing_output;
+
+TEST(OutputSta, LinesPerAttemptAndCompletion) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  StaWriter w(dir / "wt.sta");
+  run_standard(w, m);
+  const auto lines = read_lines(dir / "wt.sta");
+  ASSERT_GE(lines.size(), 8u);
+  EXPECT_EQ(lines[0].rfind("gapfem ", 0), 0u);
+  EXPECT_NE(lines[0].find("DATE "), std::string::npos);
+  EXPECT_EQ(lines[1], " SUMMARY OF JOB INFORMATION:");
+  EXPECT_EQ(
+      lines[2].rfind(
+          " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF", 0),
+      0u);
+  // Columns: STEP(4) INC(6) ATT(4) flag(1) SEVERE(5) EQUIL(6) TOTAL(6), two
+  // blanks, then total time, step time (11 wide, left-aligned) and increment.
+  // The first attempt of increment 1 was cut back: 8 iterations of which 1
+  // severe discontinuity iteration -> EQUIL 7.
+  EXPECT_EQ(lines[5],
+            "   1     1   1U    1     7     8  0.5        0.5        0.5");
+  EXPECT_EQ(lines[6],
+            "   1     1   2     1     2     3  0.5        0.5        0.5");
+  EXPECT_EQ(lines[7],
+            "   1     2   1     1     2     3  1          1          0.5");
+  EXPECT_EQ(lines.back(), " THE ANALYSIS HAS COMPLETED SUCCESSFULLY");
+}
+
+TEST(OutputSta, EveryLineIsFlushedAtOnce) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  StaWriter w(dir / "wt.sta");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.increment(inc_info(1, 1, true, 0.25));
+  // Read while the writer is still open (as `tail -f` would).
+  const auto lines = read_lines(dir / "wt.sta");
+  ASSERT_EQ(lines.size(), 6u);
+  EXPECT_EQ(lines[5].substr(0, 14), "   1     1   1");
+}
+
+TEST(OutputSta, FailedRun) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  StaWriter w(dir / "wt.sta");
+  w.begin(m);
+  w.increment(inc_info(1, 1, false, 0.0));
+  RunSummary run;
+  run.completed = false;
+  run.failure = "too many attempts";
+  w.end(m, run);
+  const auto lines = read_lines(dir / "wt.sta");
+  EXPECT_EQ(lines.back(), " THE ANALYSIS HAS NOT BEEN COMPLETED");
+  EXPECT_NE(
+      std::find(lines.begin(), lines.end(), " ***ERROR: too many attempts"),
+      lines.end());
+}
+
+} // namespace
+} // namespace gapfem

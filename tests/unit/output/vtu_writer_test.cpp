@@ -1,0 +1,286 @@
+// VtuWriter: well-formed VTK XML UnstructuredGrid with raw appended data
+// (UInt64 headers), values as handed over, and the .pvd collection.
+#include "output/vtu_writer.hpp"
+
+#include "writer_fixture.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <regex>
+
+namespace gapfem {
+namespace {
+
+using namespace testing_output;
+
+/// A parsed .vtu file: the declared arrays and the raw appended section.
+struct Vtu {
+  struct ArrayDecl {
+    std::string section; ///< PointData, CellData, Points, Cells
+    std::string type;
+    int components = 1;
+    std::uint64_t offset = 0;
+  };
+  std::string header;
+  std::map<std::string, ArrayDecl> arrays;
+  std::string raw; ///< bytes after '_' up to the closing tag
+  long points = -1, cells = -1;
+
+  std::uint64_t block_size(const std::string &name) const {
+    std::uint64_t n = 0;
+    std::memcpy(&n, raw.data() + arrays.at(name).offset, sizeof n);
+    return n;
+  }
+  template <typename T> std::vector<T> values(const std::string &name) const {
+    const auto &a = arrays.at(name);
+    const std::uint64_t n = block_size(name);
+    std::vector<T> v(n / sizeof(T));
+    std::memcpy(v.data(), raw.data() + a.offset + sizeof n, n);
+    return v;
+  }
+};
+
+Vtu parse_vtu(const std::filesystem::path &path) {
+  const std::string text = read_file(path);
+  Vtu v;
+  const std::string open_tag = "<AppendedData encoding=\"raw\">";
+  const auto app = text.find(open_tag);
+  EXPECT_NE(app, std::string::npos);
+  v.header = text.substr(0, app);
+  const auto underscore = text.find('_', app + open_tag.size());
+  const std::string close_tag = "\n  </AppendedData>\n</VTKFile>\n";
+  EXPECT_EQ(text.substr(text.size() - close_tag.size()), close_tag);
+  v.raw = text.substr(underscore + 1,
+                      text.size() - close_tag.size() - underscore - 1);
+
+  std::smatch m;
+  if (std::regex_search(
+          v.header, m,
+          std::regex("NumberOfPoints=\"(\\d+)\" NumberOfCells=\"(\\d+)\""))) {
+    v.points = std::stol(m[1]);
+    v.cells = std::stol(m[2]);
+  }
+  // Walk the header line by line, tracking the enclosing section.
+  std::string section;
+  const std::regex sec("<(PointData|CellData|Points|Cells)[ >]");
+  const std::regex arr("<DataArray type=\"(\\w+)\" Name=\"(\\w+)\"(?: "
+                       "NumberOfComponents=\"(\\d+)\")?"
+                       "[^>]* format=\"appended\" offset=\"(\\d+)\"/>");
+  std::istringstream in(v.header);
+  for (std::string line; std::getline(in, line);) {
+    if (std::regex_search(line, m, sec))
+      section = m[1];
+    if (std::regex_search(line, m, arr)) {
+      Vtu::ArrayDecl d;
+      d.section = section;
+      d.type = m[1];
+      d.components = m[3].matched ? std::stoi(m[3]) : 1;
+      d.offset = std::stoull(m[4]);
+      v.arrays[m[2]] = d;
+    }
+  }
+  return v;
+}
+
+std::size_t type_size(const std::string &t) {
+  if (t == "Float64" || t == "Int64" || t == "UInt64")
+    return 8;
+  if (t == "Int32" || t == "Float32")
+    return 4;
+  if (t == "UInt8" || t == "Int8")
+    return 1;
+  ADD_FAILURE() << "unexpected type " << t;
+  return 0;
+}
+
+TEST(OutputVtu, WellFormedAndSizesAddUp) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  VtuWriter w(dir, "wt");
+  run_standard(w, m);
+  const Vtu v = parse_vtu(dir / "wt_1_2.vtu");
+  EXPECT_NE(v.header.find("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\""),
+            std::string::npos);
+  EXPECT_NE(v.header.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_EQ(v.points, 9);
+  EXPECT_EQ(v.cells, 2);
+  // Each block: 8-byte size header + tuples * components * type size, blocks
+  // back to back, the last one ending where the appended section ends.
+  // Connectivity has 8 + 2 = 10 entries.
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> extents; // (offset, end)
+  for (const auto &[name, a] : v.arrays) {
+    std::uint64_t tuples = 0;
+    if (a.section == "PointData" || a.section == "Points")
+      tuples = 9;
+    else if (a.section == "CellData")
+      tuples = 2;
+    else if (name == "connectivity")
+      tuples = 10;
+    else
+      tuples = 2; // offsets, types
+    const std::uint64_t expected = tuples * a.components * type_size(a.type);
+    ASSERT_LT(a.offset + 8, v.raw.size() + 1) << name;
+    EXPECT_EQ(v.block_size(name), expected) << name;
+    extents.emplace_back(a.offset, a.offset + 8 + expected);
+  }
+  std::sort(extents.begin(), extents.end());
+  ASSERT_FALSE(extents.empty());
+  EXPECT_EQ(extents.front().first, 0u);
+  for (std::size_t k = 1; k < extents.size(); ++k)
+    EXPECT_EQ(extents[k].first, extents[k - 1].second);
+  EXPECT_EQ(extents.back().second, v.raw.size());
+  for (const char *name : {"U", "RF", "element_label", "element_type", "S", "E",
+                           "gap_status", "gap_clearance", "gap_pressure",
+                           "Points", "connectivity", "offsets", "types"})
+    EXPECT_TRUE(v.arrays.count(name)) << name;
+  EXPECT_FALSE(v.arrays.count("NT")) << "no temperature in this model";
+}
+
+TEST(OutputVtu, ValuesAndTopology) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  VtuWriter w(dir, "wt");
+  run_standard(w, m);
+  const Vtu v = parse_vtu(dir / "wt_1_2.vtu");
+  const auto u = v.values<double>("U");
+  ASSERT_EQ(u.size(), 27u);
+  for (int n = 0; n < 9; ++n) {
+    const Vec3 e = disp(kNodeLabels[n], 1.0);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(u[3 * n + c], e[c]);
+  }
+  EXPECT_EQ(v.values<double>("Points")[3 * 8 + 2], 1.1); // node 5 at z = 1.1
+  EXPECT_EQ(v.values<std::int32_t>("connectivity"),
+            (std::vector<std::int32_t>{0, 1, 2, 3, 4, 5, 6, 7, 4, 8}));
+  EXPECT_EQ(v.values<std::int64_t>("offsets"),
+            (std::vector<std::int64_t>{8, 10}));
+  EXPECT_EQ(v.values<std::uint8_t>("types"),
+            (std::vector<std::uint8_t>{12, 3})); // hex, line
+  EXPECT_EQ(v.values<std::int64_t>("element_label"),
+            (std::vector<std::int64_t>{7, 3}));
+  EXPECT_EQ(v.values<std::int32_t>("element_type"),
+            (std::vector<std::int32_t>{static_cast<int>(ElementType::C3D8),
+                                       static_cast<int>(ElementType::GAPUNI)}));
+  // S of the brick: point averages 45 + c. S of the gap (S11 S12 S13 = 50 2 0)
+  // lands in the Voigt slots 11, 12, 13 = 0, 3, 4; the slots it does not have
+  // are 0.
+  const auto s = v.values<double>("S");
+  for (int c = 0; c < 6; ++c)
+    EXPECT_DOUBLE_EQ(s[c], 45.0 + c);
+  EXPECT_EQ(std::vector<double>(s.begin() + 6, s.end()),
+            (std::vector<double>{50.0, 0.0, 0.0, 2.0, 0.0, 0.0}));
+  // Gap status: -1 for the brick, Stick (2) for the gap; clearance NaN for the
+  // brick.
+  EXPECT_EQ(v.values<std::int32_t>("gap_status"),
+            (std::vector<std::int32_t>{-1, 2}));
+  const auto h = v.values<double>("gap_clearance");
+  EXPECT_TRUE(std::isnan(h[0]));
+  EXPECT_EQ(h[1], 0.0);
+  EXPECT_EQ(v.values<double>("gap_pressure")[1], 50.0);
+
+  // Frame 1 has no element output for the brick: its S is NaN.
+  const Vtu v1 = parse_vtu(dir / "wt_1_1.vtu");
+  EXPECT_TRUE(std::isnan(v1.values<double>("S")[0]));
+  EXPECT_EQ(v1.values<double>("S")[6], 50.0);
+}
+
+TEST(OutputVtu, PvdListsFrames) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  VtuWriter w(dir, "wt");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.frame(m, 0, make_frame(m, 1, 0.5, false));
+  // The collection is rewritten after each frame.
+  std::string pvd = read_file(dir / "wt.pvd");
+  EXPECT_NE(pvd.find("<DataSet timestep=\"0.5\" group=\"\" part=\"0\" "
+                     "file=\"wt_1_1.vtu\"/>"),
+            std::string::npos);
+  EXPECT_EQ(pvd.find("wt_1_2.vtu"), std::string::npos);
+  Frame no_field = make_frame(m, 2, 0.75, false);
+  no_field.field_due = false;
+  w.frame(m, 0, no_field);
+  w.frame(m, 0, make_frame(m, 3, 1.0, true));
+  w.end(m, make_run());
+  pvd = read_file(dir / "wt.pvd");
+  EXPECT_NE(pvd.find("<VTKFile type=\"Collection\""), std::string::npos);
+  EXPECT_NE(
+      pvd.find("timestep=\"1\" group=\"\" part=\"0\" file=\"wt_1_3.vtu\""),
+      std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "wt_1_2.vtu"))
+      << "no field output due";
+  EXPECT_NE(pvd.find("</Collection>\n</VTKFile>"), std::string::npos);
+}
+
+TEST(OutputVtu, CellTypes) {
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D8, 8), 12);
+  EXPECT_EQ(vtk_cell_type(ElementType::DC3D8, 8), 12);
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D4, 4), 10);
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D10, 10), 24);
+  EXPECT_EQ(vtk_cell_type(ElementType::CPS3, 3), 5);
+  EXPECT_EQ(vtk_cell_type(ElementType::CAX4, 4), 9);
+  EXPECT_EQ(vtk_cell_type(ElementType::DC2D4, 4), 9);
+  EXPECT_EQ(vtk_cell_type(ElementType::T3D2, 2), 3);
+  EXPECT_EQ(vtk_cell_type(ElementType::B31, 2), 3);
+  EXPECT_EQ(vtk_cell_type(ElementType::GAPUNI, 2), 3);
+  EXPECT_EQ(vtk_cell_type(ElementType::SPRING2, 2), 3);
+  EXPECT_EQ(vtk_cell_type(ElementType::SPRING1, 1), 1);
+}
+
+// C3D10 nodes in Abaqus order: corners 1-4, then mid-edge nodes of edges 1-2,
+// 2-3, 3-1, 1-4, 2-4, 3-4 (Abaqus element library). VTK_QUADRATIC_TETRA expects
+// mid-edge nodes of edges (0,1), (1,2), (2,0), (0,3), (1,3), (2,3)
+// (vtkQuadraticTetra documentation). Written points must sit at the midpoints
+// of the VTK edges.
+TEST(OutputVtu, QuadraticTetraNodeOrder) {
+  Model m;
+  m.job_name = "tet";
+  const std::vector<Vec3> corners = {
+      {0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 5}};
+  const int abaqus_edges[6][2] = {{0, 1}, {1, 2}, {2, 0},
+                                  {0, 3}, {1, 3}, {2, 3}};
+  std::vector<Vec3> x = corners;
+  for (const auto &e : abaqus_edges) {
+    Vec3 mid;
+    for (int c = 0; c < 3; ++c)
+      mid[c] = 0.5 * (corners[e[0]][c] + corners[e[1]][c]);
+    x.push_back(mid);
+  }
+  for (int i = 0; i < 10; ++i) {
+    m.mesh.node_labels.push_back(100 + i);
+    m.mesh.coords.push_back(x[i]);
+    m.mesh.node_index[100 + i] = i;
+  }
+  m.mesh.elem_labels = {1};
+  m.mesh.elem_types = {ElementType::C3D10};
+  m.mesh.conn = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  m.mesh.conn_offset = {0, 10};
+  m.mesh.elem_src = {{0, 1}};
+  m.mesh.elem_index[1] = 0;
+  Frame fr;
+  fr.step = fr.increment = 1;
+  fr.field_due = true;
+  fr.element_slot = {-1};
+
+  const auto dir = fresh_dir();
+  VtuWriter w(dir, "tet");
+  w.begin(m);
+  w.frame(m, 0, fr);
+  const Vtu v = parse_vtu(dir / "tet_1_1.vtu");
+  const auto conn = v.values<std::int32_t>("connectivity");
+  const auto pts = v.values<double>("Points");
+  ASSERT_EQ(conn.size(), 10u);
+  EXPECT_EQ(v.values<std::uint8_t>("types")[0], 24);
+  const int vtk_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  for (int k = 0; k < 6; ++k)
+    for (int c = 0; c < 3; ++c) {
+      const double a = pts[3 * conn[vtk_edges[k][0]] + c],
+                   b = pts[3 * conn[vtk_edges[k][1]] + c];
+      EXPECT_EQ(pts[3 * conn[4 + k] + c], 0.5 * (a + b)) << "VTK edge " << k;
+    }
+  EXPECT_FALSE(v.arrays.count("U")) << "no nodal results in this frame";
+}
+
+} // namespace
+} // namespace gapfem
