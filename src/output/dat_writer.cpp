@@ -22,24 +22,18 @@ constexpr std::array<std::string_view, 3> kCM = {"CM1", "CM2", "CM3"};
 /// The columns of one nodal variable: which array, which components, which
 /// nodes carry it.
 struct NodeColumns {
-  const std::vector<Vec3> *vec = nullptr;      ///< vector fields
-  const std::vector<double> *scalar = nullptr; ///< scalar fields (NT, RFL, CFL)
+  const std::vector<Vec3>* vec = nullptr;      ///< vector fields
+  const std::vector<double>* scalar = nullptr; ///< scalar fields (NT, RFL, CFL)
   std::array<std::string_view, 3> names{};
   std::array<int, 3> comp{};
   int n = 0;
-  enum class Carrier {
-    Displacement,
-    Rotation,
-    Temperature
-  } carrier = Carrier::Displacement;
+  enum class Carrier { Displacement, Rotation, Temperature } carrier = Carrier::Displacement;
 };
 
-NodeColumns node_columns(const Model &model, const NodeResults &r,
-                         NodeVar var) {
+NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) {
   NodeColumns c;
   const int nt = output::n_translations(model.space);
-  auto translations = [&](const std::vector<Vec3> &v,
-                          const std::array<std::string_view, 3> &nm) {
+  auto translations = [&](const std::vector<Vec3>& v, const std::array<std::string_view, 3>& nm) {
     c.vec = &v;
     c.n = nt;
     for (int i = 0; i < nt; ++i) {
@@ -48,8 +42,7 @@ NodeColumns node_columns(const Model &model, const NodeResults &r,
     }
     c.carrier = NodeColumns::Carrier::Displacement;
   };
-  auto rotations = [&](const std::vector<Vec3> &v,
-                       const std::array<std::string_view, 3> &nm) {
+  auto rotations = [&](const std::vector<Vec3>& v, const std::array<std::string_view, 3>& nm) {
     c.vec = &v;
     c.carrier = NodeColumns::Carrier::Rotation;
     if (model.space == ModelSpace::ThreeD) {
@@ -64,7 +57,7 @@ NodeColumns node_columns(const Model &model, const NodeResults &r,
       c.comp[0] = 2;
     }
   };
-  auto scalar = [&](const std::vector<double> &v, std::string_view nm) {
+  auto scalar = [&](const std::vector<double>& v, std::string_view nm) {
     c.scalar = &v;
     c.n = 1;
     c.names[0] = nm;
@@ -102,7 +95,7 @@ NodeColumns node_columns(const Model &model, const NodeResults &r,
   return c;
 }
 
-bool carries(const NodeResults &r, NodeId n, NodeColumns::Carrier carrier) {
+bool carries(const NodeResults& r, NodeId n, NodeColumns::Carrier carrier) {
   const auto f = output::node_fields(r, n);
   switch (carrier) {
   case NodeColumns::Carrier::Displacement:
@@ -122,14 +115,12 @@ std::string_view position_text(ElPosition p) {
 
 std::string upper(std::string_view s) {
   std::string u(s);
-  for (auto &ch : u)
-    ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  for (auto& ch : u) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   return u;
 }
 
-void reset_summary(std::vector<double> &mx, std::vector<double> &mn,
-                   std::vector<double> &tot, std::vector<Label> &mx_at,
-                   std::vector<Label> &mn_at, std::size_t n) {
+void reset_summary(std::vector<double>& mx, std::vector<double>& mn, std::vector<double>& tot,
+                   std::vector<Label>& mx_at, std::vector<Label>& mn_at, std::size_t n) {
   mx.assign(n, -std::numeric_limits<double>::infinity());
   mn.assign(n, std::numeric_limits<double>::infinity());
   tot.assign(n, 0.0);
@@ -137,11 +128,9 @@ void reset_summary(std::vector<double> &mx, std::vector<double> &mn,
   mn_at.assign(n, 0);
 }
 
-void track(std::size_t c, double v, Label at, std::vector<double> &mx,
-           std::vector<double> &mn, std::vector<double> &tot,
-           std::vector<Label> &mx_at, std::vector<Label> &mn_at) {
-  if (std::isnan(v))
-    return;
+void track(std::size_t c, double v, Label at, std::vector<double>& mx, std::vector<double>& mn,
+           std::vector<double>& tot, std::vector<Label>& mx_at, std::vector<Label>& mn_at) {
+  if (std::isnan(v)) return;
   if (v > mx[c]) {
     mx[c] = v;
     mx_at[c] = at;
@@ -157,103 +146,83 @@ void track(std::size_t c, double v, Label at, std::vector<double> &mx,
 
 DatWriter::DatWriter(std::filesystem::path path) : _path(std::move(path)) {}
 
-void DatWriter::begin(const Model &model) {
+void DatWriter::begin(const Model& model) {
   _out.open(_path);
   auto out = std::back_inserter(_out.buffer());
   fmt::format_to(out, "\n\n{:>30}{}\n\n", "", output::spaced("gapfem"));
   fmt::format_to(out, "{:>30}VERSION {}\n\n\n", "", GAPFEM_VERSION);
-  if (!model.heading.empty())
-    fmt::format_to(out, " {}\n\n\n", model.heading);
-  if (!model.job_name.empty())
-    fmt::format_to(out, " JOB NAME    {}\n", model.job_name);
-  if (!model.source_files.empty())
-    fmt::format_to(out, " INPUT DECK  {}\n", model.source_files[0]);
+  if (!model.heading.empty()) fmt::format_to(out, " {}\n\n\n", model.heading);
+  if (!model.job_name.empty()) fmt::format_to(out, " JOB NAME    {}\n", model.job_name);
+  if (!model.source_files.empty()) fmt::format_to(out, " INPUT DECK  {}\n", model.source_files[0]);
   fmt::format_to(out, "\n\n{:>20}{}\n\n", "", output::spaced("PROBLEM SIZE"));
-  fmt::format_to(out, " NUMBER OF ELEMENTS IS {:>24}\n",
-                 model.mesh.n_elements());
+  fmt::format_to(out, " NUMBER OF ELEMENTS IS {:>24}\n", model.mesh.n_elements());
   fmt::format_to(out, " NUMBER OF NODES IS {:>27}\n", model.mesh.n_nodes());
-  fmt::format_to(out, " MODEL SPACE IS {:>31}\n",
-                 upper(model_space_name(model.space)));
+  fmt::format_to(out, " MODEL SPACE IS {:>31}\n", upper(model_space_name(model.space)));
   fmt::format_to(out, " NUMBER OF STEPS IS {:>27}\n", model.steps.size());
   _out.flush();
 }
 
-void DatWriter::begin_step(const Model &model, int step_index) {
-  const Step &step = model.steps[step_index];
+void DatWriter::begin_step(const Model& model, int step_index) {
+  const Step& step = model.steps[step_index];
   auto out = std::back_inserter(_out.buffer());
-  fmt::format_to(out, "\n\n\n{:>19}{}{:>5}     {}\n\n", "",
-                 output::spaced("STEP"), step.number,
-                 output::spaced(fmt::format("{} ANALYSIS",
-                                            procedure_name(step.procedure))));
-  if (!step.name.empty())
-    fmt::format_to(out, "\n{:>10}{}\n\n", "", step.name);
-  const auto &inc = step.inc;
+  fmt::format_to(out, "\n\n\n{:>19}{}{:>5}     {}\n\n", "", output::spaced("STEP"), step.number,
+                 output::spaced(fmt::format("{} ANALYSIS", procedure_name(step.procedure))));
+  if (!step.name.empty()) fmt::format_to(out, "\n{:>10}{}\n\n", "", step.name);
+  const auto& inc = step.inc;
   const double initial = inc.initial > 0 ? inc.initial : inc.period;
   if (inc.direct) {
     fmt::format_to(out, "{:>10}FIXED TIME INCREMENTS\n", "");
     fmt::format_to(out, "{:>10}TIME INCREMENT IS {:>35.4E}\n", "", initial);
   } else {
     fmt::format_to(out, "{:>10}AUTOMATIC TIME CONTROL\n", "");
-    fmt::format_to(out, "{:>10}INITIAL TIME INCREMENT {:>30.4E}\n", "",
-                   initial);
+    fmt::format_to(out, "{:>10}INITIAL TIME INCREMENT {:>30.4E}\n", "", initial);
     if (inc.minimum > 0)
-      fmt::format_to(out, "{:>10}MINIMUM TIME INCREMENT {:>30.4E}\n", "",
-                     inc.minimum);
+      fmt::format_to(out, "{:>10}MINIMUM TIME INCREMENT {:>30.4E}\n", "", inc.minimum);
     fmt::format_to(out, "{:>10}MAXIMUM TIME INCREMENT {:>30.4E}\n", "",
                    inc.maximum > 0 ? inc.maximum : inc.period);
   }
   fmt::format_to(out, "{:>10}TIME PERIOD IS {:>38.4E}\n", "", inc.period);
-  fmt::format_to(out, "{:>10}MAXIMUM NUMBER OF INCREMENTS {:>24}\n", "",
-                 step.max_increments);
-  if (step.nlgeom)
-    fmt::format_to(out, "{:>10}LARGE DISPLACEMENT THEORY (NLGEOM)\n", "");
+  fmt::format_to(out, "{:>10}MAXIMUM NUMBER OF INCREMENTS {:>24}\n", "", step.max_increments);
+  if (step.nlgeom) fmt::format_to(out, "{:>10}LARGE DISPLACEMENT THEORY (NLGEOM)\n", "");
   if (step.procedure != Procedure::Static)
-    fmt::format_to(out, "{:>10}{}\n", "",
-                   inc.steady_state ? "STEADY STATE" : "TRANSIENT");
+    fmt::format_to(out, "{:>10}{}\n", "", inc.steady_state ? "STEADY STATE" : "TRANSIENT");
 
   _node_lists.clear();
-  for (const auto &req : step.node_prints)
-    _node_lists.push_back(
-        output::request_nodes_by_label(model, req.nset, req.nodes));
+  for (const auto& req : step.node_prints)
+    _node_lists.push_back(output::request_nodes_by_label(model, req.nset, req.nodes));
   _elem_lists.clear();
-  for (const auto &req : step.el_prints)
-    _elem_lists.push_back(
-        output::request_elements_by_type(model, req.elset, req.elements));
+  for (const auto& req : step.el_prints)
+    _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
   _out.flush();
 }
 
-void DatWriter::increment(const IncrementInfo &) {}
+void DatWriter::increment(const IncrementInfo&) {}
 
-void DatWriter::write_increment_header(const Model &model, int step_index,
-                                       const Frame &frame) {
+void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame) {
   auto out = std::back_inserter(_out.buffer());
   const std::string heading = model.heading.substr(0, 60);
-  fmt::format_to(out, "\n\n{:<66}STEP {:>4}  INCREMENT {:>4}\n", heading,
-                 frame.step, frame.increment);
-  fmt::format_to(out, "{:<66}TIME COMPLETED IN THIS STEP {:>11.4E}\n\n", "",
-                 frame.step_time);
-  fmt::format_to(out, "\n{:>32}INCREMENT {:>5} SUMMARY\n\n\n", "",
+  fmt::format_to(out, "\n\n{:<66}STEP {:>4}  INCREMENT {:>4}\n", heading, frame.step,
                  frame.increment);
+  fmt::format_to(out, "{:<66}TIME COMPLETED IN THIS STEP {:>11.4E}\n\n", "", frame.step_time);
+  fmt::format_to(out, "\n{:>32}INCREMENT {:>5} SUMMARY\n\n\n", "", frame.increment);
   fmt::format_to(out,
                  " TIME INCREMENT COMPLETED {:>11.4E},  FRACTION OF STEP "
                  "COMPLETED {:>11.4E}\n",
-                 frame.dt,
-                 output::step_fraction(model, step_index, frame.step_time));
+                 frame.dt, output::step_fraction(model, step_index, frame.step_time));
   fmt::format_to(out,
                  " STEP TIME COMPLETED      {:>11.4E},  TOTAL TIME COMPLETED   "
                  "    {:>11.4E}\n",
                  frame.step_time, frame.total_time);
 }
 
-void DatWriter::frame(const Model &model, int step_index, const Frame &frame) {
-  const Step &step = model.steps[step_index];
+void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
+  const Step& step = model.steps[step_index];
   bool any_node = false, any_el = false;
   for (std::size_t k = 0; k < step.node_prints.size(); ++k)
     any_node |= k < frame.node_print_due.size() && frame.node_print_due[k];
   for (std::size_t k = 0; k < step.el_prints.size(); ++k)
     any_el |= k < frame.el_print_due.size() && frame.el_print_due[k];
-  if (!any_node && !any_el)
-    return;
+  if (!any_node && !any_el) return;
 
   write_increment_header(model, step_index, frame);
   if (any_el) {
@@ -269,19 +238,17 @@ void DatWriter::frame(const Model &model, int step_index, const Frame &frame) {
     for (std::size_t k = 0; k < step.node_prints.size(); ++k)
       if (k < frame.node_print_due.size() && frame.node_print_due[k])
         for (NodeVar var : step.node_prints[k].vars)
-          write_node_table(model, frame, step.node_prints[k], _node_lists[k],
-                           var);
+          write_node_table(model, frame, step.node_prints[k], _node_lists[k], var);
   }
   _out.flush();
 }
 
-void DatWriter::write_node_table(const Model &model, const Frame &frame,
-                                 const NodePrintRequest &request,
-                                 const std::vector<NodeId> &nodes,
+void DatWriter::write_node_table(const Model& model, const Frame& frame,
+                                 const NodePrintRequest& request, const std::vector<NodeId>& nodes,
                                  NodeVar var) {
-  const NodeResults &r = frame.nodes;
+  const NodeResults& r = frame.nodes;
   const NodeColumns cols = node_columns(model, r, var);
-  auto &buf = _out.buffer();
+  auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
   const std::size_t n_avail = cols.vec ? cols.vec->size() : cols.scalar->size();
 
@@ -292,29 +259,24 @@ void DatWriter::write_node_table(const Model &model, const Frame &frame,
                    "NODE SET {}\n",
                    upper(request.nset));
   else if (!request.nodes.empty())
-    fmt::format_to(
-        out, "   THE FOLLOWING TABLE IS PRINTED FOR THE REQUESTED NODES\n");
+    fmt::format_to(out, "   THE FOLLOWING TABLE IS PRINTED FOR THE REQUESTED NODES\n");
   else
     fmt::format_to(out, "   THE FOLLOWING TABLE IS PRINTED FOR ALL NODES\n");
 
   // header
   fmt::format_to(out, "\n       NODE FOOT-   ");
-  for (int c = 0; c < cols.n; ++c)
-    fmt::format_to(out, "{:<12}", cols.names[c]);
-  while (buf.size() && buf[buf.size() - 1] == ' ')
-    buf.resize(buf.size() - 1);
+  for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:<12}", cols.names[c]);
+  while (buf.size() && buf[buf.size() - 1] == ' ') buf.resize(buf.size() - 1);
   fmt::format_to(out, "\n            NOTE\n\n");
 
   reset_summary(_max, _min, _total, _max_at, _min_at, cols.n);
   std::size_t rows = 0;
   for (NodeId n : nodes) {
-    if (static_cast<std::size_t>(n) >= n_avail || !carries(r, n, cols.carrier))
-      continue;
+    if (static_cast<std::size_t>(n) >= n_avail || !carries(r, n, cols.carrier)) continue;
     const Label label = model.node_label(n);
     fmt::format_to(out, "{:>11}    ", label);
     for (int c = 0; c < cols.n; ++c) {
-      const double v =
-          cols.vec ? (*cols.vec)[n][cols.comp[c]] : (*cols.scalar)[n];
+      const double v = cols.vec ? (*cols.vec)[n][cols.comp[c]] : (*cols.scalar)[n];
       append_e12(buf, v);
       track(c, v, label, _max, _min, _total, _max_at, _min_at);
     }
@@ -329,103 +291,82 @@ void DatWriter::write_node_table(const Model &model, const Frame &frame,
   }
   if (request.summary) {
     fmt::format_to(out, "\n MAXIMUM       ");
-    for (int c = 0; c < cols.n; ++c)
-      append_e12(buf, _max[c]);
+    for (int c = 0; c < cols.n; ++c) append_e12(buf, _max[c]);
     fmt::format_to(out, "\n AT NODE       ");
-    for (int c = 0; c < cols.n; ++c)
-      fmt::format_to(out, "{:>12}", _max_at[c]);
+    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", _max_at[c]);
     fmt::format_to(out, "\n\n MINIMUM       ");
-    for (int c = 0; c < cols.n; ++c)
-      append_e12(buf, _min[c]);
+    for (int c = 0; c < cols.n; ++c) append_e12(buf, _min[c]);
     fmt::format_to(out, "\n AT NODE       ");
-    for (int c = 0; c < cols.n; ++c)
-      fmt::format_to(out, "{:>12}", _min_at[c]);
+    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", _min_at[c]);
     buf.push_back('\n');
   }
   if (request.totals) {
     fmt::format_to(out, "\n TOTAL         ");
-    for (int c = 0; c < cols.n; ++c)
-      append_e12(buf, _total[c]);
+    for (int c = 0; c < cols.n; ++c) append_e12(buf, _total[c]);
     buf.push_back('\n');
   }
 }
 
-void DatWriter::write_element_tables(const Model &model, const Frame &frame,
-                                     const ElPrintRequest &request,
-                                     const std::vector<ElemId> &elements) {
-  const auto &types = model.mesh.elem_types;
+void DatWriter::write_element_tables(const Model& model, const Frame& frame,
+                                     const ElPrintRequest& request,
+                                     const std::vector<ElemId>& elements) {
+  const auto& types = model.mesh.elem_types;
   std::size_t begin = 0;
   while (begin < elements.size()) {
     std::size_t end = begin + 1;
-    while (end < elements.size() &&
-           types[elements[end]] == types[elements[begin]])
-      ++end;
+    while (end < elements.size() && types[elements[end]] == types[elements[begin]]) ++end;
     const std::span<const ElemId> group(elements.data() + begin, end - begin);
-    for (ElemVar var : request.vars)
-      write_element_table(model, frame, request, group, var);
+    for (ElemVar var : request.vars) write_element_table(model, frame, request, group, var);
     begin = end;
   }
 }
 
-void DatWriter::write_element_table(const Model &model, const Frame &frame,
-                                    const ElPrintRequest &request,
-                                    std::span<const ElemId> group,
+void DatWriter::write_element_table(const Model& model, const Frame& frame,
+                                    const ElPrintRequest& request, std::span<const ElemId> group,
                                     ElemVar var) {
   // Column names from the first element of the group that reports the variable.
-  const OutputBlock *first = nullptr;
+  const OutputBlock* first = nullptr;
   for (ElemId e : group) {
-    const ElementResult *res = frame.element(e);
-    if (res && (first = res->data.find(var)))
-      break;
+    const ElementResult* res = frame.element(e);
+    if (res && (first = res->data.find(var))) break;
   }
-  if (!first || first->names.empty())
-    return;
+  if (!first || first->names.empty()) return;
   const std::size_t nc = first->names.size();
   const bool at_points = request.position == ElPosition::IntegrationPoints;
-  const std::string_view type_name =
-      element_info(model.mesh.elem_types[group[0]]).name;
+  const std::string_view type_name = element_info(model.mesh.elem_types[group[0]]).name;
 
-  auto &buf = _out.buffer();
+  auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
   if (!request.elset.empty())
     fmt::format_to(out,
                    "\n\n THE FOLLOWING TABLE IS PRINTED {} FOR ELEMENT TYPE {} "
                    "AND ELEMENT "
                    "SET {}\n",
-                   position_text(request.position), type_name,
-                   upper(request.elset));
+                   position_text(request.position), type_name, upper(request.elset));
   else
     fmt::format_to(out,
                    "\n\n THE FOLLOWING TABLE IS PRINTED FOR ALL ELEMENTS WITH "
                    "TYPE {} {}\n",
                    type_name, position_text(request.position));
   if (request.position == ElPosition::Averaged)
-    fmt::format_to(
-        out,
-        " (AVERAGED AT NODES IS NOT AVAILABLE: ELEMENT CENTROID VALUES ARE "
-        "PRINTED INSTEAD)\n");
-  fmt::format_to(out, "\n    ELEMENT  {} FOOT-       ",
-                 at_points ? "PT" : "  ");
-  for (auto name : first->names)
-    fmt::format_to(out, "{:<12}", name);
-  while (buf.size() && buf[buf.size() - 1] == ' ')
-    buf.resize(buf.size() - 1);
+    fmt::format_to(out, " (AVERAGED AT NODES IS NOT AVAILABLE: ELEMENT CENTROID VALUES ARE "
+                        "PRINTED INSTEAD)\n");
+  fmt::format_to(out, "\n    ELEMENT  {} FOOT-       ", at_points ? "PT" : "  ");
+  for (auto name : first->names) fmt::format_to(out, "{:<12}", name);
+  while (buf.size() && buf[buf.size() - 1] == ' ') buf.resize(buf.size() - 1);
   fmt::format_to(out, "\n                NOTE\n\n");
 
   reset_summary(_max, _min, _total, _max_at, _min_at, nc);
   for (ElemId e : group) {
-    const ElementResult *res = frame.element(e);
-    const OutputBlock *block = res ? res->data.find(var) : nullptr;
-    if (!block)
-      continue;
+    const ElementResult* res = frame.element(e);
+    const OutputBlock* block = res ? res->data.find(var) : nullptr;
+    if (!block) continue;
     const Label label = model.element_label(e);
     const std::size_t ncols = std::min(nc, block->names.size());
-    if (ncols == 0)
-      continue;
+    if (ncols == 0) continue;
     if (at_points) {
       const std::size_t bn = block->names.size();
-      const std::size_t np =
-          std::min<std::size_t>(block->n_points, block->values.size() / bn);
+      const std::size_t np = std::min<std::size_t>(block->n_points, block->values.size() / bn);
       for (std::size_t p = 0; p < np; ++p) {
         fmt::format_to(out, "{:>12}{:>4}       ", label, p + 1);
         for (std::size_t c = 0; c < ncols; ++c) {
@@ -448,54 +389,44 @@ void DatWriter::write_element_table(const Model &model, const Frame &frame,
   }
   if (request.summary) {
     fmt::format_to(out, "\n MAXIMUM               ");
-    for (std::size_t c = 0; c < nc; ++c)
-      append_e12(buf, _max[c]);
+    for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _max[c]);
     fmt::format_to(out, "\n ELEMENT               ");
-    for (std::size_t c = 0; c < nc; ++c)
-      fmt::format_to(out, "{:>12}", _max_at[c]);
+    for (std::size_t c = 0; c < nc; ++c) fmt::format_to(out, "{:>12}", _max_at[c]);
     fmt::format_to(out, "\n\n MINIMUM               ");
-    for (std::size_t c = 0; c < nc; ++c)
-      append_e12(buf, _min[c]);
+    for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _min[c]);
     fmt::format_to(out, "\n ELEMENT               ");
-    for (std::size_t c = 0; c < nc; ++c)
-      fmt::format_to(out, "{:>12}", _min_at[c]);
+    for (std::size_t c = 0; c < nc; ++c) fmt::format_to(out, "{:>12}", _min_at[c]);
     buf.push_back('\n');
   }
   if (request.totals) {
     fmt::format_to(out, "\n TOTAL                 ");
-    for (std::size_t c = 0; c < nc; ++c)
-      append_e12(buf, _total[c]);
+    for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _total[c]);
     buf.push_back('\n');
   }
 }
 
-void DatWriter::end_step(const Model &model, int step_index,
-                         const StepSummary &summary) {
+void DatWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {
   write_checks(model, step_index, summary);
   _out.flush();
 }
 
-void DatWriter::write_checks(const Model &model, int step_index,
-                             const StepSummary &s) {
-  const StepChecks &c = s.checks;
-  auto &buf = _out.buffer();
+void DatWriter::write_checks(const Model& model, int step_index, const StepSummary& s) {
+  const StepChecks& c = s.checks;
+  auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
-  const bool mechanical =
-      step_index < 0 || step_index >= static_cast<int>(model.steps.size()) ||
-      model.steps[step_index].procedure != Procedure::HeatTransfer;
+  const bool mechanical = step_index < 0 || step_index >= static_cast<int>(model.steps.size()) ||
+                          model.steps[step_index].procedure != Procedure::HeatTransfer;
   fmt::format_to(out, "\n\n\n{:>19}{}\n\n", "",
                  output::spaced(fmt::format("STEP {} SELF-CHECKS", s.step)));
   if (s.converged)
-    fmt::format_to(
-        out,
-        " STEP {} COMPLETED: {} INCREMENTS ({} ATTEMPTS), {} ITERATIONS\n\n",
-        s.step, s.increments, s.attempts, s.iterations);
+    fmt::format_to(out, " STEP {} COMPLETED: {} INCREMENTS ({} ATTEMPTS), {} ITERATIONS\n\n",
+                   s.step, s.increments, s.attempts, s.iterations);
   else
     fmt::format_to(out,
                    " STEP {} WAS NOT COMPLETED: {}\n   ({} INCREMENTS, {} "
                    "ATTEMPTS, {} ITERATIONS)\n\n",
-                   s.step, s.failure.empty() ? "no reason given" : s.failure,
-                   s.increments, s.attempts, s.iterations);
+                   s.step, s.failure.empty() ? "no reason given" : s.failure, s.increments,
+                   s.attempts, s.iterations);
 
   if (c.n_gaps > 0) {
     fmt::format_to(out, " GAP ELEMENTS {:>33}\n", c.n_gaps);
@@ -509,18 +440,15 @@ void DatWriter::write_checks(const Model &model, int step_index,
       fmt::format_to(out, "   AT ELEMENT {}", c.max_penetration_elem);
     fmt::format_to(out, "\n MAXIMUM TENSILE FORCE IN A CLOSED GAP");
     append_e12(buf, c.max_tensile_force);
-    if (c.max_tensile_elem != 0)
-      fmt::format_to(out, "   AT ELEMENT {}", c.max_tensile_elem);
+    if (c.max_tensile_elem != 0) fmt::format_to(out, "   AT ELEMENT {}", c.max_tensile_elem);
     fmt::format_to(out, "\n\n");
   }
   if (mechanical) {
     fmt::format_to(out, " EQUILIBRIUM (FORCE COMPONENTS 1 2 3)\n");
     fmt::format_to(out, "   SUM OF REACTION FORCES RF         ");
-    for (double v : c.reaction_sum)
-      append_e12(buf, v);
+    for (double v : c.reaction_sum) append_e12(buf, v);
     fmt::format_to(out, "\n   SUM OF APPLIED LOADS              ");
-    for (double v : c.applied_sum)
-      append_e12(buf, v);
+    for (double v : c.applied_sum) append_e12(buf, v);
     fmt::format_to(out, "\n   ERROR |SUM RF + SUM LOADS|        ");
     append_e12(buf, c.equilibrium_error);
     fmt::format_to(out, "\n   FORCE SCALE                       ");
@@ -551,31 +479,25 @@ void DatWriter::write_checks(const Model &model, int step_index,
   }
 }
 
-void DatWriter::end(const Model &model, const RunSummary &summary) {
-  if (!_out.is_open())
-    return;
+void DatWriter::end(const Model& model, const RunSummary& summary) {
+  if (!_out.is_open()) return;
   auto out = std::back_inserter(_out.buffer());
-  fmt::format_to(out, "\n\n\n{:>19}{}\n\n", "",
-                 output::spaced("ANALYSIS SUMMARY"));
-  const RunStatistics &st = summary.stats;
-  fmt::format_to(out, " WALL CLOCK TIME (SECONDS) {:>20.2f}\n",
-                 summary.wall_seconds);
+  fmt::format_to(out, "\n\n\n{:>19}{}\n\n", "", output::spaced("ANALYSIS SUMMARY"));
+  const RunStatistics& st = summary.stats;
+  fmt::format_to(out, " WALL CLOCK TIME (SECONDS) {:>20.2f}\n", summary.wall_seconds);
   fmt::format_to(out, " INCREMENTS {:>35}\n", st.increments);
-  fmt::format_to(out, " INCREMENT ATTEMPTS (WITH CUT-BACKS) {:>10}\n",
-                 st.attempts);
+  fmt::format_to(out, " INCREMENT ATTEMPTS (WITH CUT-BACKS) {:>10}\n", st.attempts);
   fmt::format_to(out, " ITERATIONS {:>35}\n", st.iterations);
   fmt::format_to(out, " FACTORIZATIONS {:>31}\n", st.factorizations);
   if (!summary.warnings.empty()) {
     fmt::format_to(out, "\n {} WARNING(S):\n", summary.warnings.size());
-    for (const auto &w : summary.warnings)
-      fmt::format_to(out, "   {}\n", w);
+    for (const auto& w : summary.warnings) fmt::format_to(out, "   {}\n", w);
   }
   if (summary.completed)
     fmt::format_to(out, "\n\n{:>10}THE ANALYSIS HAS BEEN COMPLETED\n", "");
   else
-    fmt::format_to(
-        out, "\n\n ***ERROR: {}\n\n{:>10}THE ANALYSIS HAS NOT BEEN COMPLETED\n",
-        summary.failure.empty() ? "the analysis stopped" : summary.failure, "");
+    fmt::format_to(out, "\n\n ***ERROR: {}\n\n{:>10}THE ANALYSIS HAS NOT BEEN COMPLETED\n",
+                   summary.failure.empty() ? "the analysis stopped" : summary.failure, "");
   _out.close();
 }
 

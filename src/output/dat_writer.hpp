@@ -13,41 +13,33 @@ namespace gapfem {
 
 /// Writes the printed output file (job.dat).
 class DatWriter : public ResultWriter {
-public:
+ public:
   /// `path`: the file to create (truncated at begin()).
   explicit DatWriter(std::filesystem::path path);
 
-  void begin(const Model &model) override;
-  void begin_step(const Model &model, int step_index) override;
-  void increment(const IncrementInfo &info) override;
-  void frame(const Model &model, int step_index, const Frame &frame) override;
-  void end_step(const Model &model, int step_index,
-                const StepSummary &summary) override;
-  void end(const Model &model, const RunSummary &summary) override;
+  void begin(const Model& model) override;
+  void begin_step(const Model& model, int step_index) override;
+  void increment(const IncrementInfo& info) override;
+  void frame(const Model& model, int step_index, const Frame& frame) override;
+  void end_step(const Model& model, int step_index, const StepSummary& summary) override;
+  void end(const Model& model, const RunSummary& summary) override;
 
-private:
-  void write_increment_header(const Model &model, int step_index,
-                              const Frame &frame);
-  void write_node_table(const Model &model, const Frame &frame,
-                        const NodePrintRequest &request,
-                        const std::vector<NodeId> &nodes, NodeVar var);
-  void write_element_tables(const Model &model, const Frame &frame,
-                            const ElPrintRequest &request,
-                            const std::vector<ElemId> &elements);
-  void write_element_table(const Model &model, const Frame &frame,
-                           const ElPrintRequest &request,
+ private:
+  void write_increment_header(const Model& model, int step_index, const Frame& frame);
+  void write_node_table(const Model& model, const Frame& frame, const NodePrintRequest& request,
+                        const std::vector<NodeId>& nodes, NodeVar var);
+  void write_element_tables(const Model& model, const Frame& frame, const ElPrintRequest& request,
+                            const std::vector<ElemId>& elements);
+  void write_element_table(const Model& model, const Frame& frame, const ElPrintRequest& request,
                            std::span<const ElemId> group, ElemVar var);
-  void write_checks(const Model &model, int step_index,
-                    const StepSummary &summary);
+  void write_checks(const Model& model, int step_index, const StepSummary& summary);
 
   std::filesystem::path _path;
   output::OutputFile _out;
-  std::vector<std::vector<NodeId>>
-      _node_lists; ///< per *NODE PRINT of the current step, by label
-  std::vector<std::vector<ElemId>>
-      _elem_lists;          ///< per *EL PRINT, grouped by type, by label
-  std::vector<double> _avg; ///< scratch: point averages
-  std::vector<double> _max, _min, _total; ///< scratch: column summaries
+  std::vector<std::vector<NodeId>> _node_lists; ///< per *NODE PRINT of the current step, by label
+  std::vector<std::vector<ElemId>> _elem_lists; ///< per *EL PRINT, grouped by type, by label
+  std::vector<double> _avg;                     ///< scratch: point averages
+  std::vector<double> _max, _min, _total;       ///< scratch: column summaries
   std::vector<Label> _max_at, _min_at;
 };
 

@@ -24,13 +24,13 @@ std::string_view space_key(ModelSpace s) {
   return "3D";
 }
 
-void key(fmt::memory_buffer &b, std::string_view k) {
+void key(fmt::memory_buffer& b, std::string_view k) {
   b.push_back('"');
   b.append(k);
   b.append(std::string_view("\":"));
 }
 
-void number_field(fmt::memory_buffer &b, std::string_view k, double v) {
+void number_field(fmt::memory_buffer& b, std::string_view k, double v) {
   b.push_back(',');
   key(b, k);
   append_json_number(b, v);
@@ -39,30 +39,28 @@ void number_field(fmt::memory_buffer &b, std::string_view k, double v) {
 /// Writes a comma before every field but the first of an object.
 struct Separator {
   bool first = true;
-  void operator()(fmt::memory_buffer &b) {
-    if (!first)
-      b.push_back(',');
+  void operator()(fmt::memory_buffer& b) {
+    if (!first) b.push_back(',');
     first = false;
   }
 };
 
 /// Append the first `n` components of `v` (or component 2 alone when `only_z`).
-void vec_field(fmt::memory_buffer &b, Separator &sep, std::string_view k,
-               const Vec3 &v, int n, bool only_z) {
+void vec_field(fmt::memory_buffer& b, Separator& sep, std::string_view k, const Vec3& v, int n,
+               bool only_z) {
   sep(b);
   key(b, k);
   if (only_z)
     append_json_array(b, std::span<const double>(&v[2], 1));
   else
-    append_json_array(
-        b, std::span<const double>(v.data(), static_cast<std::size_t>(n)));
+    append_json_array(b, std::span<const double>(v.data(), static_cast<std::size_t>(n)));
 }
 
-bool nonzero(const Vec3 &v) {
+bool nonzero(const Vec3& v) {
   return v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0;
 }
 
-void label_or_null(fmt::memory_buffer &b, Label l) {
+void label_or_null(fmt::memory_buffer& b, Label l) {
   if (l == 0)
     b.append(std::string_view("null"));
   else
@@ -74,17 +72,15 @@ void label_or_null(fmt::memory_buffer &b, Label l) {
 JsonWriter::JsonWriter(std::filesystem::path path, std::string job)
     : _path(std::move(path)), _job(std::move(job)) {}
 
-void JsonWriter::begin(const Model &model) {
+void JsonWriter::begin(const Model& model) {
   _out.open(_path);
-  auto &b = _out.buffer();
+  auto& b = _out.buffer();
   b.append(std::string_view("{\"schema\":\"gapfem.results/1\",\"job\":"));
   append_json_string(b, _job.empty() ? model.job_name : _job);
   b.append(std::string_view(",\"heading\":"));
   append_json_string(b, model.heading);
-  fmt::format_to(fmt::appender(b),
-                 ",\"model\":{{\"space\":\"{}\",\"nodes\":{},\"elements\":{}}}",
-                 space_key(model.space), model.mesh.n_nodes(),
-                 model.mesh.n_elements());
+  fmt::format_to(fmt::appender(b), ",\"model\":{{\"space\":\"{}\",\"nodes\":{},\"elements\":{}}}",
+                 space_key(model.space), model.mesh.n_nodes(), model.mesh.n_elements());
   b.append(std::string_view(",\"steps\":["));
   _first_step = true;
   _step_open = false;
@@ -95,13 +91,11 @@ void JsonWriter::begin(const Model &model) {
   _out.flush();
 }
 
-void JsonWriter::begin_step(const Model &model, int step_index) {
-  if (_step_open)
-    close_step(nullptr);
-  const Step &step = model.steps[step_index];
-  auto &b = _out.buffer();
-  if (!_first_step)
-    b.push_back(',');
+void JsonWriter::begin_step(const Model& model, int step_index) {
+  if (_step_open) close_step(nullptr);
+  const Step& step = model.steps[step_index];
+  auto& b = _out.buffer();
+  if (!_first_step) b.push_back(',');
   _first_step = false;
   fmt::format_to(fmt::appender(b), "\n{{\"step\":{},\"name\":", step.number);
   append_json_string(b, step.name);
@@ -109,33 +103,28 @@ void JsonWriter::begin_step(const Model &model, int step_index) {
   append_json_string(b, procedure_name(step.procedure));
   b.append(std::string_view(",\"frames\":["));
   _node_lists.clear();
-  for (const auto &req : step.node_prints)
-    _node_lists.push_back(
-        output::request_nodes_by_label(model, req.nset, req.nodes));
+  for (const auto& req : step.node_prints)
+    _node_lists.push_back(output::request_nodes_by_label(model, req.nset, req.nodes));
   _elem_lists.clear();
-  for (const auto &req : step.el_prints)
-    _elem_lists.push_back(
-        output::request_elements_by_type(model, req.elset, req.elements));
+  for (const auto& req : step.el_prints)
+    _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
   _step_open = true;
   _first_frame = true;
   _open_step_number = step.number;
 }
 
-void JsonWriter::frame(const Model &model, int step_index, const Frame &frame) {
-  const auto &mesh = model.mesh;
+void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
+  const auto& mesh = model.mesh;
   _frame_nodes.clear();
   _frame_elems.clear();
   if (frame.last_in_step) {
     _frame_nodes = _all_nodes;
-    for (const auto &res : frame.elements)
-      if (res.elem >= 0 && res.elem < mesh.n_elements())
-        _frame_elems.push_back(res.elem);
+    for (const auto& res : frame.elements)
+      if (res.elem >= 0 && res.elem < mesh.n_elements()) _frame_elems.push_back(res.elem);
   } else {
     bool due = false;
-    for (std::size_t k = 0;
-         k < _node_lists.size() && k < frame.node_print_due.size(); ++k) {
-      if (!frame.node_print_due[k])
-        continue;
+    for (std::size_t k = 0; k < _node_lists.size() && k < frame.node_print_due.size(); ++k) {
+      if (!frame.node_print_due[k]) continue;
       due = true;
       for (NodeId n : _node_lists[k])
         if (!_node_mark[n]) {
@@ -143,10 +132,8 @@ void JsonWriter::frame(const Model &model, int step_index, const Frame &frame) {
           _frame_nodes.push_back(n);
         }
     }
-    for (std::size_t k = 0;
-         k < _elem_lists.size() && k < frame.el_print_due.size(); ++k) {
-      if (!frame.el_print_due[k])
-        continue;
+    for (std::size_t k = 0; k < _elem_lists.size() && k < frame.el_print_due.size(); ++k) {
+      if (!frame.el_print_due[k]) continue;
       due = true;
       for (ElemId e : _elem_lists[k])
         if (!_elem_mark[e] && frame.element(e)) {
@@ -154,25 +141,18 @@ void JsonWriter::frame(const Model &model, int step_index, const Frame &frame) {
           _frame_elems.push_back(e);
         }
     }
-    for (NodeId n : _frame_nodes)
-      _node_mark[n] = 0;
-    for (ElemId e : _frame_elems)
-      _elem_mark[e] = 0;
-    if (!due)
-      return;
+    for (NodeId n : _frame_nodes) _node_mark[n] = 0;
+    for (ElemId e : _frame_elems) _elem_mark[e] = 0;
+    if (!due) return;
   }
   if (!frame.last_in_step)
     std::sort(_frame_nodes.begin(), _frame_nodes.end(),
-              [&](NodeId a, NodeId c) {
-                return mesh.node_labels[a] < mesh.node_labels[c];
-              });
-  std::sort(_frame_elems.begin(), _frame_elems.end(), [&](ElemId a, ElemId c) {
-    return mesh.elem_labels[a] < mesh.elem_labels[c];
-  });
+              [&](NodeId a, NodeId c) { return mesh.node_labels[a] < mesh.node_labels[c]; });
+  std::sort(_frame_elems.begin(), _frame_elems.end(),
+            [&](ElemId a, ElemId c) { return mesh.elem_labels[a] < mesh.elem_labels[c]; });
 
-  auto &b = _out.buffer();
-  if (!_first_frame)
-    b.push_back(',');
+  auto& b = _out.buffer();
+  if (!_first_frame) b.push_back(',');
   _first_frame = false;
   fmt::format_to(fmt::appender(b), "\n{{\"increment\":{}", frame.increment);
   number_field(b, "step_time", frame.step_time);
@@ -189,20 +169,17 @@ void JsonWriter::frame(const Model &model, int step_index, const Frame &frame) {
   b.append(std::string_view("},\"elements\":{"));
   first = true;
   for (ElemId e : _frame_elems) {
-    if (const ElementResult *res = frame.element(e))
-      write_element(model, *res, first);
+    if (const ElementResult* res = frame.element(e)) write_element(model, *res, first);
     _out.maybe_flush();
   }
   b.append(std::string_view("}}"));
   _out.maybe_flush();
 }
 
-void JsonWriter::write_node(const Model &model, const NodeResults &r, NodeId n,
-                            bool &first) {
+void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, bool& first) {
   const auto f = output::node_fields(r, n);
-  auto &b = _out.buffer();
-  if (!first)
-    b.push_back(',');
+  auto& b = _out.buffer();
+  if (!first) b.push_back(',');
   first = false;
   fmt::format_to(fmt::appender(b), "\"{}\":{{", model.node_label(n));
   const auto idx = static_cast<std::size_t>(n);
@@ -215,53 +192,40 @@ void JsonWriter::write_node(const Model &model, const NodeResults &r, NodeId n,
     append_json_number(b, v);
   };
   if (f.displacement) {
-    if (idx < r.U.size())
-      vec_field(b, sep, "U", r.U[idx], nt, false);
-    if (idx < r.RF.size())
-      vec_field(b, sep, "RF", r.RF[idx], nt, false);
-    if (idx < r.CF.size() && nonzero(r.CF[idx]))
-      vec_field(b, sep, "CF", r.CF[idx], nt, false);
+    if (idx < r.U.size()) vec_field(b, sep, "U", r.U[idx], nt, false);
+    if (idx < r.RF.size()) vec_field(b, sep, "RF", r.RF[idx], nt, false);
+    if (idx < r.CF.size() && nonzero(r.CF[idx])) vec_field(b, sep, "CF", r.CF[idx], nt, false);
   }
   if (f.rotation) {
-    if (idx < r.UR.size())
-      vec_field(b, sep, "UR", r.UR[idx], 3, planar);
-    if (idx < r.RM.size())
-      vec_field(b, sep, "RM", r.RM[idx], 3, planar);
-    if (idx < r.CM.size() && nonzero(r.CM[idx]))
-      vec_field(b, sep, "CM", r.CM[idx], 3, planar);
+    if (idx < r.UR.size()) vec_field(b, sep, "UR", r.UR[idx], 3, planar);
+    if (idx < r.RM.size()) vec_field(b, sep, "RM", r.RM[idx], 3, planar);
+    if (idx < r.CM.size() && nonzero(r.CM[idx])) vec_field(b, sep, "CM", r.CM[idx], 3, planar);
   }
   if (f.temperature) {
-    if (idx < r.NT.size())
-      scalar("NT", r.NT[idx]);
-    if (idx < r.RFL.size())
-      scalar("RFL", r.RFL[idx]);
-    if (idx < r.CFL.size() && r.CFL[idx] != 0.0)
-      scalar("CFL", r.CFL[idx]);
+    if (idx < r.NT.size()) scalar("NT", r.NT[idx]);
+    if (idx < r.RFL.size()) scalar("RFL", r.RFL[idx]);
+    if (idx < r.CFL.size() && r.CFL[idx] != 0.0) scalar("CFL", r.CFL[idx]);
   }
   b.push_back('}');
 }
 
-void JsonWriter::note_components(ElementType type, const OutputBlock &block) {
-  auto &tc = _components[static_cast<std::size_t>(type)];
-  auto &names = tc.names[static_cast<std::size_t>(block.var)];
+void JsonWriter::note_components(ElementType type, const OutputBlock& block) {
+  auto& tc = _components[static_cast<std::size_t>(type)];
+  auto& names = tc.names[static_cast<std::size_t>(block.var)];
   tc.seen = true;
-  if (!names.empty() || block.names.empty())
-    return;
-  for (auto nm : block.names)
-    names.emplace_back(nm);
+  if (!names.empty() || block.names.empty()) return;
+  for (auto nm : block.names) names.emplace_back(nm);
 }
 
-void JsonWriter::write_element(const Model &model, const ElementResult &res,
-                               bool &first) {
-  auto &b = _out.buffer();
-  if (!first)
-    b.push_back(',');
+void JsonWriter::write_element(const Model& model, const ElementResult& res, bool& first) {
+  auto& b = _out.buffer();
+  if (!first) b.push_back(',');
   first = false;
   const ElementType type = model.mesh.elem_types[res.elem];
-  fmt::format_to(fmt::appender(b), "\"{}\":{{\"type\":\"{}\"",
-                 model.element_label(res.elem), element_info(type).name);
+  fmt::format_to(fmt::appender(b), "\"{}\":{{\"type\":\"{}\"", model.element_label(res.elem),
+                 element_info(type).name);
   _components[static_cast<std::size_t>(type)].seen = true;
-  for (const OutputBlock &block : res.data.blocks) {
+  for (const OutputBlock& block : res.data.blocks) {
     output::average_block(block, _avg);
     b.push_back(',');
     key(b, elem_var_name(block.var));
@@ -269,7 +233,7 @@ void JsonWriter::write_element(const Model &model, const ElementResult &res,
     note_components(type, block);
   }
   if (res.data.gap) {
-    const GapRecord &g = *res.data.gap;
+    const GapRecord& g = *res.data.gap;
     b.append(std::string_view(",\"gap\":{\"status\":"));
     append_json_string(b, contact_status_name(g.status));
     number_field(b, "clearance", g.clearance);
@@ -300,19 +264,16 @@ void JsonWriter::write_element(const Model &model, const ElementResult &res,
   b.push_back('}');
 }
 
-void JsonWriter::end_step(const Model &model, int step_index,
-                          const StepSummary &summary) {
-  if (_step_open)
-    close_step(&summary);
+void JsonWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {
+  if (_step_open) close_step(&summary);
   _out.flush();
 }
 
-void JsonWriter::close_step(const StepSummary *s) {
-  auto &b = _out.buffer();
+void JsonWriter::close_step(const StepSummary* s) {
+  auto& b = _out.buffer();
   b.push_back(']');
   if (!s) {
-    b.append(std::string_view(
-        ",\"converged\":false,\"failure\":\"the step was not finished\"}"));
+    b.append(std::string_view(",\"converged\":false,\"failure\":\"the step was not finished\"}"));
     _step_open = false;
     return;
   }
@@ -323,10 +284,9 @@ void JsonWriter::close_step(const StepSummary *s) {
   if (s->converged && s->failure.empty())
     b.append(std::string_view("null"));
   else
-    append_json_string(b, s->failure.empty() ? "the step did not converge"
-                                             : s->failure);
+    append_json_string(b, s->failure.empty() ? "the step did not converge" : s->failure);
 
-  const StepChecks &c = s->checks;
+  const StepChecks& c = s->checks;
   fmt::format_to(fmt::appender(b),
                  ",\"checks\":{{\"gaps\":{{\"total\":{},\"open\":{},\"closed\":"
                  "{},\"stick\":{},"
@@ -367,45 +327,36 @@ void JsonWriter::close_step(const StepSummary *s) {
   _step_open = false;
 }
 
-void JsonWriter::end(const Model &model, const RunSummary &summary) {
-  if (!_out.is_open())
-    return;
-  if (_step_open)
-    close_step(nullptr);
-  auto &b = _out.buffer();
+void JsonWriter::end(const Model& model, const RunSummary& summary) {
+  if (!_out.is_open()) return;
+  if (_step_open) close_step(nullptr);
+  auto& b = _out.buffer();
   b.append(std::string_view("],\n\"element_types\":{"));
   bool first_type = true;
   for (std::size_t t = 0; t < _components.size(); ++t) {
-    const auto &tc = _components[t];
-    if (!tc.seen)
-      continue;
-    if (!first_type)
-      b.push_back(',');
+    const auto& tc = _components[t];
+    if (!tc.seen) continue;
+    if (!first_type) b.push_back(',');
     first_type = false;
-    fmt::format_to(fmt::appender(b), "\"{}\":{{",
-                   element_info(static_cast<ElementType>(t)).name);
+    fmt::format_to(fmt::appender(b), "\"{}\":{{", element_info(static_cast<ElementType>(t)).name);
     bool first_var = true;
     for (std::size_t v = 0; v < tc.names.size(); ++v) {
-      if (tc.names[v].empty())
-        continue;
-      if (!first_var)
-        b.push_back(',');
+      if (tc.names[v].empty()) continue;
+      if (!first_var) b.push_back(',');
       first_var = false;
       key(b, elem_var_name(static_cast<ElemVar>(v)));
       b.push_back('[');
       for (std::size_t i = 0; i < tc.names[v].size(); ++i) {
-        if (i)
-          b.push_back(',');
+        if (i) b.push_back(',');
         append_json_string(b, tc.names[v][i]);
       }
       b.push_back(']');
     }
     b.push_back('}');
   }
-  const RunStatistics &st = summary.stats;
-  fmt::format_to(
-      fmt::appender(b),
-      "}},\n\"summary\":{{\"completed\":{},\"failure\":", summary.completed);
+  const RunStatistics& st = summary.stats;
+  fmt::format_to(fmt::appender(b),
+                 "}},\n\"summary\":{{\"completed\":{},\"failure\":", summary.completed);
   if (summary.completed && summary.failure.empty())
     b.append(std::string_view("null"));
   else
@@ -415,19 +366,17 @@ void JsonWriter::end(const Model &model, const RunSummary &summary) {
                  ",\"increments\":{},\"attempts\":{},\"iterations\":{},"
                  "\"factorizations\":{},"
                  "\"linear_solves\":{},\"peak_memory_kb\":{},\"seconds\":{{",
-                 st.increments, st.attempts, st.iterations, st.factorizations,
-                 st.linear_solves, summary.peak_memory_kb);
+                 st.increments, st.attempts, st.iterations, st.factorizations, st.linear_solves,
+                 summary.peak_memory_kb);
   for (int c = 0; c < kNumTimeCategories; ++c) {
-    if (c)
-      b.push_back(',');
+    if (c) b.push_back(',');
     append_json_string(b, time_category_name(static_cast<TimeCategory>(c)));
     b.push_back(':');
     append_json_number(b, st.seconds[c]);
   }
   b.append(std::string_view("},\"warnings\":["));
   for (std::size_t i = 0; i < summary.warnings.size(); ++i) {
-    if (i)
-      b.push_back(',');
+    if (i) b.push_back(',');
     append_json_string(b, summary.warnings[i]);
   }
   b.append(std::string_view("]}}\n"));

@@ -15,23 +15,21 @@ namespace gapfem {
 
 /// Writes the machine-readable results file (job.results.json).
 class JsonWriter : public ResultWriter {
-public:
+ public:
   /// `path`: the file to create; `job`: the job name recorded in the file.
   JsonWriter(std::filesystem::path path, std::string job);
 
-  void begin(const Model &model) override;
-  void begin_step(const Model &model, int step_index) override;
-  void frame(const Model &model, int step_index, const Frame &frame) override;
-  void end_step(const Model &model, int step_index,
-                const StepSummary &summary) override;
-  void end(const Model &model, const RunSummary &summary) override;
+  void begin(const Model& model) override;
+  void begin_step(const Model& model, int step_index) override;
+  void frame(const Model& model, int step_index, const Frame& frame) override;
+  void end_step(const Model& model, int step_index, const StepSummary& summary) override;
+  void end(const Model& model, const RunSummary& summary) override;
 
-private:
-  void write_node(const Model &model, const NodeResults &r, NodeId n,
-                  bool &first);
-  void write_element(const Model &model, const ElementResult &res, bool &first);
-  void close_step(const StepSummary *summary);
-  void note_components(ElementType type, const OutputBlock &block);
+ private:
+  void write_node(const Model& model, const NodeResults& r, NodeId n, bool& first);
+  void write_element(const Model& model, const ElementResult& res, bool& first);
+  void close_step(const StepSummary* summary);
+  void note_components(ElementType type, const OutputBlock& block);
 
   std::filesystem::path _path;
   std::string _job;
@@ -41,15 +39,12 @@ private:
   bool _first_frame = true;
   int _open_step_number = 0;
 
-  std::vector<std::vector<NodeId>>
-      _node_lists; ///< per *NODE PRINT of the step, by label
+  std::vector<std::vector<NodeId>> _node_lists; ///< per *NODE PRINT of the step, by label
   std::vector<std::vector<ElemId>> _elem_lists; ///< per *EL PRINT of the step
   std::vector<NodeId> _all_nodes;               ///< every node, by label
-  std::vector<std::uint8_t>
-      _node_mark; ///< scratch: nodes in the frame (per NodeId)
-  std::vector<NodeId> _frame_nodes; ///< scratch: nodes in the frame, by label
-  std::vector<ElemId>
-      _frame_elems; ///< scratch: elements in the frame, by label
+  std::vector<std::uint8_t> _node_mark;         ///< scratch: nodes in the frame (per NodeId)
+  std::vector<NodeId> _frame_nodes;             ///< scratch: nodes in the frame, by label
+  std::vector<ElemId> _frame_elems;             ///< scratch: elements in the frame, by label
   std::vector<std::uint8_t> _elem_mark;
   std::vector<double> _avg; ///< scratch: point averages
 

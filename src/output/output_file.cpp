@@ -17,62 +17,53 @@ namespace gapfem::output {
 OutputFile::~OutputFile() {
   // Destructors must not throw: write what we can and close quietly.
   if (_file) {
-    if (_buffer.size() > 0)
-      std::fwrite(_buffer.data(), 1, _buffer.size(), _file);
+    if (_buffer.size() > 0) std::fwrite(_buffer.data(), 1, _buffer.size(), _file);
     std::fclose(_file);
   }
 }
 
-void OutputFile::open(const std::filesystem::path &path) {
+void OutputFile::open(const std::filesystem::path& path) {
   close();
   _path = path;
   _file = std::fopen(path.string().c_str(), "wb");
-  if (!_file)
-    fail("cannot create");
+  if (!_file) fail("cannot create");
   _buffer.clear();
 }
 
-void OutputFile::fail(const char *what) const {
-  throw AnalysisError(
-      fmt::format("{} results file '{}': {}; check that the output directory "
-                  "exists, is writable and has free space",
-                  what, _path.string(), std::strerror(errno)));
+void OutputFile::fail(const char* what) const {
+  throw AnalysisError(fmt::format("{} results file '{}': {}; check that the output directory "
+                                  "exists, is writable and has free space",
+                                  what, _path.string(), std::strerror(errno)));
 }
 
 void OutputFile::drain() {
-  if (!_file || _buffer.size() == 0)
-    return;
-  if (std::fwrite(_buffer.data(), 1, _buffer.size(), _file) != _buffer.size())
-    fail("cannot write");
+  if (!_file || _buffer.size() == 0) return;
+  if (std::fwrite(_buffer.data(), 1, _buffer.size(), _file) != _buffer.size()) fail("cannot write");
   _buffer.clear();
 }
 
-void OutputFile::write_bytes(const void *data, std::size_t n) {
+void OutputFile::write_bytes(const void* data, std::size_t n) {
   if (n < kChunk / 4) {
-    const auto *p = static_cast<const char *>(data);
+    const auto* p = static_cast<const char*>(data);
     _buffer.append(p, p + n);
     maybe_flush();
     return;
   }
   drain();
-  if (_file && n > 0 && std::fwrite(data, 1, n, _file) != n)
-    fail("cannot write");
+  if (_file && n > 0 && std::fwrite(data, 1, n, _file) != n) fail("cannot write");
 }
 
 void OutputFile::flush() {
   drain();
-  if (_file && std::fflush(_file) != 0)
-    fail("cannot write");
+  if (_file && std::fflush(_file) != 0) fail("cannot write");
 }
 
 void OutputFile::close() {
-  if (!_file)
-    return;
+  if (!_file) return;
   drain();
   const int rc = std::fclose(_file);
   _file = nullptr;
-  if (rc != 0)
-    fail("cannot close");
+  if (rc != 0) fail("cannot close");
 }
 
 // ---------------------------------------------------------------- formatting
@@ -83,19 +74,17 @@ std::string spaced(std::string_view text) {
   bool first = true;
   for (char c : text) {
     if (c == ' ') {
-      if (!out.empty() && out.back() != ' ')
-        out += "   "; // words: three blanks
+      if (!out.empty() && out.back() != ' ') out += "   "; // words: three blanks
       continue;
     }
-    if (!first && out.back() != ' ')
-      out += ' ';
+    if (!first && out.back() != ' ') out += ' ';
     out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     first = false;
   }
   return out;
 }
 
-void append_json_number(fmt::memory_buffer &out, double v) {
+void append_json_number(fmt::memory_buffer& out, double v) {
   if (!std::isfinite(v)) {
     out.append(std::string_view("null"));
     return;
@@ -104,18 +93,16 @@ void append_json_number(fmt::memory_buffer &out, double v) {
                  v); // shortest round-trip representation
 }
 
-void append_json_array(fmt::memory_buffer &out,
-                       std::span<const double> values) {
+void append_json_array(fmt::memory_buffer& out, std::span<const double> values) {
   out.push_back('[');
   for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i)
-      out.push_back(',');
+    if (i) out.push_back(',');
     append_json_number(out, values[i]);
   }
   out.push_back(']');
 }
 
-void append_xml_text(fmt::memory_buffer &out, std::string_view s) {
+void append_xml_text(fmt::memory_buffer& out, std::string_view s) {
   for (char c : s) {
     switch (c) {
     case '&':
@@ -153,25 +140,19 @@ std::size_t utf8_length(std::string_view s, std::size_t i) {
     n = 4;
   else
     return 0;
-  if (i + n > s.size())
-    return 0;
+  if (i + n > s.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80)
-      return 0;
+    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
   const auto b1 = static_cast<unsigned char>(s[i + 1]);
-  if (b0 == 0xE0 && b1 < 0xA0)
-    return 0; // overlong
-  if (b0 == 0xED && b1 > 0x9F)
-    return 0; // surrogates
-  if (b0 == 0xF0 && b1 < 0x90)
-    return 0; // overlong
-  if (b0 == 0xF4 && b1 > 0x8F)
-    return 0; // > U+10FFFF
+  if (b0 == 0xE0 && b1 < 0xA0) return 0; // overlong
+  if (b0 == 0xED && b1 > 0x9F) return 0; // surrogates
+  if (b0 == 0xF0 && b1 < 0x90) return 0; // overlong
+  if (b0 == 0xF4 && b1 > 0x8F) return 0; // > U+10FFFF
   return n;
 }
 } // namespace
 
-void append_json_string(fmt::memory_buffer &out, std::string_view s) {
+void append_json_string(fmt::memory_buffer& out, std::string_view s) {
   out.push_back('"');
   for (std::size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
@@ -216,14 +197,13 @@ void append_json_string(fmt::memory_buffer &out, std::string_view s) {
 // ---------------------------------------------------------------- model /
 // frame queries
 
-NodeFields node_fields(const NodeResults &r, NodeId n) {
+NodeFields node_fields(const NodeResults& r, NodeId n) {
   NodeFields f;
   if (n >= 0 && static_cast<std::size_t>(n) < r.dof_mask.size()) {
     const std::uint8_t m = r.dof_mask[n];
-    f.displacement = (m & (dof_bit(DofType::U1) | dof_bit(DofType::U2) |
-                           dof_bit(DofType::U3))) != 0;
-    f.rotation = (m & (dof_bit(DofType::UR1) | dof_bit(DofType::UR2) |
-                       dof_bit(DofType::UR3))) != 0;
+    f.displacement =
+        (m & (dof_bit(DofType::U1) | dof_bit(DofType::U2) | dof_bit(DofType::U3))) != 0;
+    f.rotation = (m & (dof_bit(DofType::UR1) | dof_bit(DofType::UR2) | dof_bit(DofType::UR3))) != 0;
     f.temperature = (m & dof_bit(DofType::NT)) != 0;
     return f;
   }
@@ -237,97 +217,77 @@ int n_translations(ModelSpace space) {
   return space == ModelSpace::ThreeD ? 3 : 2;
 }
 
-void average_block(const OutputBlock &block, std::vector<double> &out) {
+void average_block(const OutputBlock& block, std::vector<double>& out) {
   const std::size_t nc = block.names.size();
   out.assign(nc, 0.0);
-  if (nc == 0 || block.n_points <= 0)
-    return;
-  const std::size_t np =
-      std::min<std::size_t>(block.n_points, block.values.size() / nc);
-  if (np == 0)
-    return;
+  if (nc == 0 || block.n_points <= 0) return;
+  const std::size_t np = std::min<std::size_t>(block.n_points, block.values.size() / nc);
+  if (np == 0) return;
   for (std::size_t p = 0; p < np; ++p)
-    for (std::size_t c = 0; c < nc; ++c)
-      out[c] += block.values[p * nc + c];
-  for (auto &v : out)
-    v /= static_cast<double>(np);
+    for (std::size_t c = 0; c < nc; ++c) out[c] += block.values[p * nc + c];
+  for (auto& v : out) v /= static_cast<double>(np);
 }
 
 int voigt_slot(std::string_view name) {
-  if (name.size() != 3 || (name[0] != 'S' && name[0] != 'E'))
-    return -1;
+  if (name.size() != 3 || (name[0] != 'S' && name[0] != 'E')) return -1;
   const std::string_view ij = name.substr(1);
-  if (ij == "11")
-    return 0;
-  if (ij == "22")
-    return 1;
-  if (ij == "33")
-    return 2;
-  if (ij == "12")
-    return 3;
-  if (ij == "13")
-    return 4;
-  if (ij == "23")
-    return 5;
+  if (ij == "11") return 0;
+  if (ij == "22") return 1;
+  if (ij == "33") return 2;
+  if (ij == "12") return 3;
+  if (ij == "13") return 4;
+  if (ij == "23") return 5;
   return -1;
 }
 
 namespace {
 std::string upper(std::string_view s) {
   std::string u(s);
-  for (auto &c : u)
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (auto& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return u;
 }
 } // namespace
 
-std::vector<NodeId> request_nodes_by_label(const Model &model,
-                                           const std::string &nset,
-                                           const std::vector<NodeId> &nodes) {
+std::vector<NodeId> request_nodes_by_label(const Model& model, const std::string& nset,
+                                           const std::vector<NodeId>& nodes) {
   std::vector<NodeId> out;
   if (!nodes.empty()) {
     out = nodes;
   } else if (!nset.empty()) {
-    if (auto it = model.nsets.find(upper(nset)); it != model.nsets.end())
-      out = it->second;
+    if (auto it = model.nsets.find(upper(nset)); it != model.nsets.end()) out = it->second;
   } else {
     out.resize(model.mesh.n_nodes());
     std::iota(out.begin(), out.end(), NodeId{0});
   }
-  const auto &labels = model.mesh.node_labels;
-  std::sort(out.begin(), out.end(),
-            [&](NodeId a, NodeId b) { return labels[a] < labels[b]; });
+  const auto& labels = model.mesh.node_labels;
+  std::sort(out.begin(), out.end(), [&](NodeId a, NodeId b) { return labels[a] < labels[b]; });
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
-std::vector<ElemId>
-request_elements_by_type(const Model &model, const std::string &elset,
-                         const std::vector<ElemId> &elements) {
+std::vector<ElemId> request_elements_by_type(const Model& model, const std::string& elset,
+                                             const std::vector<ElemId>& elements) {
   std::vector<ElemId> out;
   if (!elements.empty()) {
     out = elements;
   } else if (!elset.empty()) {
-    if (auto it = model.elsets.find(upper(elset)); it != model.elsets.end())
-      out = it->second;
+    if (auto it = model.elsets.find(upper(elset)); it != model.elsets.end()) out = it->second;
   } else {
     out.resize(model.mesh.n_elements());
     std::iota(out.begin(), out.end(), ElemId{0});
   }
-  const auto &types = model.mesh.elem_types;
-  const auto &labels = model.mesh.elem_labels;
+  const auto& types = model.mesh.elem_types;
+  const auto& labels = model.mesh.elem_labels;
   std::sort(out.begin(), out.end(), [&](ElemId a, ElemId b) {
-    if (types[a] != types[b])
-      return types[a] < types[b];
+    if (types[a] != types[b]) return types[a] < types[b];
     return labels[a] < labels[b];
   });
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
-double step_fraction(const Model &model, int step_index, double step_time) {
-  if (step_index < 0 || step_index >= static_cast<int>(model.steps.size()))
-    return 0.0;
+double step_fraction(const Model& model, int step_index, double step_time) {
+  if (step_index < 0 || step_index >= static_cast<int>(model.steps.size())) return 0.0;
   const double period = model.steps[step_index].inc.period;
   return period > 0.0 ? step_time / period : 1.0;
 }

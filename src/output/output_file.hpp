@@ -8,10 +8,11 @@
 #include "elements/element_kernel.hpp"
 #include "output/results.hpp"
 
-#include <fmt/format.h>
-
 #include <cstdio>
 #include <filesystem>
+#include <fmt/compile.h>
+#include <fmt/compile.h>
+#include <fmt/format.h>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,30 +24,27 @@ namespace gapfem::output {
 /// buffer() with fmt::format_to and handed to the operating system in chunks of
 /// about `chunk` bytes. Errors raise AnalysisError naming the file.
 class OutputFile {
-public:
+ public:
   OutputFile() = default;
   ~OutputFile();
-  OutputFile(const OutputFile &) = delete;
-  OutputFile &operator=(const OutputFile &) = delete;
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
 
   /// Create (truncate) `path` for writing.
-  void open(const std::filesystem::path &path);
+  void open(const std::filesystem::path& path);
   bool is_open() const { return _file != nullptr; }
-  const std::filesystem::path &path() const { return _path; }
+  const std::filesystem::path& path() const { return _path; }
 
   /// The buffer to format into; call maybe_flush() now and then.
-  fmt::memory_buffer &buffer() { return _buffer; }
+  fmt::memory_buffer& buffer() { return _buffer; }
   /// Append text.
-  void write(std::string_view text) {
-    _buffer.append(text.data(), text.data() + text.size());
-  }
+  void write(std::string_view text) { _buffer.append(text.data(), text.data() + text.size()); }
   /// Append raw bytes, bypassing the buffer when the block is large.
-  void write_bytes(const void *data, std::size_t n);
+  void write_bytes(const void* data, std::size_t n);
   /// Hand the buffer to the operating system when it holds more than the chunk
   /// size.
   void maybe_flush() {
-    if (_buffer.size() >= kChunk)
-      drain();
+    if (_buffer.size() >= kChunk) drain();
   }
   /// Write everything buffered and flush the C stream (for files users tail
   /// -f).
@@ -56,11 +54,11 @@ public:
 
   static constexpr std::size_t kChunk = std::size_t{1} << 22; ///< 4 MiB
 
-private:
+ private:
   void drain();
-  void fail(const char *what) const;
+  void fail(const char* what) const;
 
-  std::FILE *_file = nullptr;
+  std::FILE* _file = nullptr;
   std::filesystem::path _path;
   fmt::memory_buffer _buffer;
 };
@@ -71,21 +69,21 @@ std::string spaced(std::string_view text);
 
 /// Append `v` in Abaqus 1P E-format, width 12 including a leading blank
 /// (" 1.2346E-03").
-inline void append_e12(fmt::memory_buffer &out, double v) {
-  fmt::format_to(std::back_inserter(out), " {:>11.4E}", v);
+inline void append_e12(fmt::memory_buffer& out, double v) {
+  fmt::format_to(fmt::appender(out), FMT_COMPILE(" {:>11.4E}"), v);
 }
 
 /// Append a JSON number with full round-trip precision, or null when not
 /// finite.
-void append_json_number(fmt::memory_buffer &out, double v);
+void append_json_number(fmt::memory_buffer& out, double v);
 /// Append a JSON string literal (quoted, escaped; invalid UTF-8 bytes become
 /// U+FFFD).
-void append_json_string(fmt::memory_buffer &out, std::string_view s);
+void append_json_string(fmt::memory_buffer& out, std::string_view s);
 /// Append text for an XML attribute value or element content (&, <, >, " and '
 /// escaped).
-void append_xml_text(fmt::memory_buffer &out, std::string_view s);
+void append_xml_text(fmt::memory_buffer& out, std::string_view s);
 /// Append a JSON array of numbers.
-void append_json_array(fmt::memory_buffer &out, std::span<const double> values);
+void append_json_array(fmt::memory_buffer& out, std::span<const double> values);
 
 /// Which result fields a node carries (from NodeResults::dof_mask, or the any_*
 /// flags when the mask is absent).
@@ -94,7 +92,7 @@ struct NodeFields {
   bool rotation = false;
   bool temperature = false;
 };
-NodeFields node_fields(const NodeResults &r, NodeId n);
+NodeFields node_fields(const NodeResults& r, NodeId n);
 
 /// Number of translational components in the model space: 3 in 3-D, 2
 /// otherwise.
@@ -102,7 +100,7 @@ int n_translations(ModelSpace space);
 
 /// Average of an output block over its points (component order of
 /// OutputBlock::names) into `out` (resized to names.size()).
-void average_block(const OutputBlock &block, std::vector<double> &out);
+void average_block(const OutputBlock& block, std::vector<double>& out);
 
 /// Voigt slot (0..5 for 11 22 33 12 13 23) of a stress/strain component name
 /// such as "S12" or "E33"; -1 if the name is not of that form.
@@ -110,17 +108,15 @@ int voigt_slot(std::string_view component);
 
 /// Nodes of a print request: explicit list, else the named set, else all nodes;
 /// sorted by label.
-std::vector<NodeId> request_nodes_by_label(const Model &model,
-                                           const std::string &nset,
-                                           const std::vector<NodeId> &nodes);
+std::vector<NodeId> request_nodes_by_label(const Model& model, const std::string& nset,
+                                           const std::vector<NodeId>& nodes);
 /// Elements of a print request (explicit list, else set, else all), grouped by
 /// element type (in ElementType order) and sorted by label inside each type.
-std::vector<ElemId>
-request_elements_by_type(const Model &model, const std::string &elset,
-                         const std::vector<ElemId> &elements);
+std::vector<ElemId> request_elements_by_type(const Model& model, const std::string& elset,
+                                             const std::vector<ElemId>& elements);
 
 /// Fraction of the step completed (step_time / period, guarded for a zero
 /// period).
-double step_fraction(const Model &model, int step_index, double step_time);
+double step_fraction(const Model& model, int step_index, double step_time);
 
 } // namespace gapfem::output

@@ -10,52 +10,44 @@ namespace gapfem {
 
 StaWriter::StaWriter(std::filesystem::path path) : _path(std::move(path)) {}
 
-void StaWriter::begin(const Model &model) {
+void StaWriter::begin(const Model& model) {
   _out.open(_path);
-  const std::time_t now =
-      std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm tm{};
   localtime_r(&now, &tm);
   char date[64];
   std::strftime(date, sizeof date, "DATE %d-%b-%Y TIME %H:%M:%S", &tm);
   auto out = std::back_inserter(_out.buffer());
-  fmt::format_to(out, "{:<42}{}\n", fmt::format("gapfem {}", GAPFEM_VERSION),
-                 date);
+  fmt::format_to(out, "{:<42}{}\n", fmt::format("gapfem {}", GAPFEM_VERSION), date);
   fmt::format_to(out, " SUMMARY OF JOB INFORMATION:\n");
-  fmt::format_to(
-      out, " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF\n");
-  fmt::format_to(
-      out, "               DISCON ITERS ITERS  TIME       TIME       TIME\n");
+  fmt::format_to(out, " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF\n");
+  fmt::format_to(out, "               DISCON ITERS ITERS  TIME       TIME       TIME\n");
   fmt::format_to(out, "               ITERS\n");
   _out.flush();
 }
 
-void StaWriter::increment(const IncrementInfo &info) {
-  if (!_out.is_open())
-    return;
+void StaWriter::increment(const IncrementInfo& info) {
+  if (!_out.is_open()) return;
   const int severe = std::max(0, info.severe_discontinuities);
   const int equil = std::max(0, info.iterations - severe);
   // Abaqus marks an attempt that did not converge (and was cut back) with "U"
   // after ATT.
-  fmt::format_to(
-      std::back_inserter(_out.buffer()),
-      "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}\n", info.step,
-      info.increment, info.attempts, info.converged ? ' ' : 'U', severe, equil,
-      info.iterations, fmt::format("{:.5G}", info.total_time),
-      fmt::format("{:.5G}", info.step_time), fmt::format("{:.5G}", info.dt));
+  fmt::format_to(std::back_inserter(_out.buffer()),
+                 "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}\n", info.step, info.increment,
+                 info.attempts, info.converged ? ' ' : 'U', severe, equil, info.iterations,
+                 fmt::format("{:.5G}", info.total_time), fmt::format("{:.5G}", info.step_time),
+                 fmt::format("{:.5G}", info.dt));
   _out.flush();
 }
 
-void StaWriter::end(const Model &model, const RunSummary &summary) {
-  if (!_out.is_open())
-    return;
+void StaWriter::end(const Model& model, const RunSummary& summary) {
+  if (!_out.is_open()) return;
   auto out = std::back_inserter(_out.buffer());
   if (summary.completed) {
     fmt::format_to(out, "\n\n THE ANALYSIS HAS COMPLETED SUCCESSFULLY\n");
   } else {
     fmt::format_to(out, "\n\n ***ERROR: {}\n",
-                   summary.failure.empty() ? "the analysis stopped"
-                                           : summary.failure);
+                   summary.failure.empty() ? "the analysis stopped" : summary.failure);
     fmt::format_to(out, "\n THE ANALYSIS HAS NOT BEEN COMPLETED\n");
   }
   _out.close();

@@ -11,15 +11,15 @@ namespace gapfem {
 
 /// Writes the status file (job.sta).
 class StaWriter : public ResultWriter {
-public:
+ public:
   /// `path`: the file to create (truncated at begin()).
   explicit StaWriter(std::filesystem::path path);
 
-  void begin(const Model &model) override;
-  void increment(const IncrementInfo &info) override;
-  void end(const Model &model, const RunSummary &summary) override;
+  void begin(const Model& model) override;
+  void increment(const IncrementInfo& info) override;
+  void end(const Model& model, const RunSummary& summary) override;
 
-private:
+ private:
   std::filesystem::path _path;
   output::OutputFile _out;
 };

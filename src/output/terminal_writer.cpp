@@ -5,66 +5,57 @@
 
 namespace gapfem {
 
-void TerminalWriter::begin(const Model &model) {
+void TerminalWriter::begin(const Model& model) {
   log::info("{}: {} nodes, {} elements, {} step(s)",
-            model.job_name.empty() ? "job" : model.job_name,
-            model.mesh.n_nodes(), model.mesh.n_elements(), model.steps.size());
+            model.job_name.empty() ? "job" : model.job_name, model.mesh.n_nodes(),
+            model.mesh.n_elements(), model.steps.size());
 }
 
-void TerminalWriter::begin_step(const Model &model, int step_index) {
-  const Step &step = model.steps[step_index];
-  log::info("Step {}{}{}: {}, time period {:g}", step.number,
-            step.name.empty() ? "" : " ", step.name,
-            procedure_name(step.procedure), step.inc.period);
+void TerminalWriter::begin_step(const Model& model, int step_index) {
+  const Step& step = model.steps[step_index];
+  log::info("Step {}{}{}: {}, time period {:g}", step.number, step.name.empty() ? "" : " ",
+            step.name, procedure_name(step.procedure), step.inc.period);
 }
 
-void TerminalWriter::increment(const IncrementInfo &info) {
+void TerminalWriter::increment(const IncrementInfo& info) {
   log::progress("  step {} inc {:>4} att {}  step time {:<11.5g} dt {:<11.4g} "
                 "{:>3} iterations{}",
-                info.step, info.increment, info.attempts, info.step_time,
-                info.dt, info.iterations,
+                info.step, info.increment, info.attempts, info.step_time, info.dt, info.iterations,
                 info.converged ? "" : "  not converged: cut back");
 }
 
-void TerminalWriter::end_step(const Model &model, int step_index,
-                              const StepSummary &s) {
+void TerminalWriter::end_step(const Model& model, int step_index, const StepSummary& s) {
   if (s.converged)
-    log::info("Step {} completed: {} increments ({} attempts), {} iterations",
-              s.step, s.increments, s.attempts, s.iterations);
+    log::info("Step {} completed: {} increments ({} attempts), {} iterations", s.step, s.increments,
+              s.attempts, s.iterations);
   else
     log::info("Step {} NOT completed: {}", s.step,
               s.failure.empty() ? "no reason given" : s.failure);
-  const StepChecks &c = s.checks;
+  const StepChecks& c = s.checks;
   if (c.n_gaps > 0) {
     log::info("  gaps: {} open, {} closed, {} stick, {} slip; max penetration "
               "{:.4g}{}",
               c.n_open, c.n_closed, c.n_stick, c.n_slip, c.max_penetration,
-              c.max_penetration_elem
-                  ? fmt::format(" (element {})", c.max_penetration_elem)
-                  : "");
+              c.max_penetration_elem ? fmt::format(" (element {})", c.max_penetration_elem) : "");
     if (c.max_tensile_force > 0)
-      log::info("  max tensile force in a closed gap {:.4g} (element {})",
-                c.max_tensile_force, c.max_tensile_elem);
+      log::info("  max tensile force in a closed gap {:.4g} (element {})", c.max_tensile_force,
+                c.max_tensile_elem);
   }
-  const bool mechanical =
-      step_index < 0 || step_index >= static_cast<int>(model.steps.size()) ||
-      model.steps[step_index].procedure != Procedure::HeatTransfer;
+  const bool mechanical = step_index < 0 || step_index >= static_cast<int>(model.steps.size()) ||
+                          model.steps[step_index].procedure != Procedure::HeatTransfer;
   if (mechanical) {
     if (c.force_scale > 0)
-      log::info("  equilibrium error {:.3e} ({:.2e} of force scale {:.4g})",
-                c.equilibrium_error, c.equilibrium_error / c.force_scale,
-                c.force_scale);
+      log::info("  equilibrium error {:.3e} ({:.2e} of force scale {:.4g})", c.equilibrium_error,
+                c.equilibrium_error / c.force_scale, c.force_scale);
     else
       log::info("  equilibrium error {:.3e}", c.equilibrium_error);
   }
-  if (c.thermal)
-    log::info("  heat balance error {:.3e}", c.heat_balance_error);
-  if (c.max_damping_force != 0.0)
-    log::info("  max damping force {:.4g}", c.max_damping_force);
+  if (c.thermal) log::info("  heat balance error {:.3e}", c.heat_balance_error);
+  if (c.max_damping_force != 0.0) log::info("  max damping force {:.4g}", c.max_damping_force);
 }
 
-void TerminalWriter::end(const Model &model, const RunSummary &s) {
-  const RunStatistics &st = s.stats;
+void TerminalWriter::end(const Model& model, const RunSummary& s) {
+  const RunStatistics& st = s.stats;
   if (s.completed)
     log::info("Analysis completed in {:.2f} s", s.wall_seconds);
   else
@@ -72,23 +63,19 @@ void TerminalWriter::end(const Model &model, const RunSummary &s) {
               s.failure.empty() ? "no reason given" : s.failure);
   log::info("  {} increments ({} attempts), {} iterations, {} factorizations, "
             "{} solves",
-            st.increments, st.attempts, st.iterations, st.factorizations,
-            st.linear_solves);
+            st.increments, st.attempts, st.iterations, st.factorizations, st.linear_solves);
   double total = 0.0;
-  for (double t : st.seconds)
-    total += t;
+  for (double t : st.seconds) total += t;
   if (total > 0)
     for (int c = 0; c < kNumTimeCategories; ++c)
       if (st.seconds[c] > 0)
         log::info("  {:<14}{:>10.2f} s {:>6.1f} %",
-                  time_category_name(static_cast<TimeCategory>(c)),
-                  st.seconds[c], 100.0 * st.seconds[c] / total);
-  if (s.peak_memory_kb > 0)
-    log::info("  peak memory {:.1f} MiB", s.peak_memory_kb / 1024.0);
+                  time_category_name(static_cast<TimeCategory>(c)), st.seconds[c],
+                  100.0 * st.seconds[c] / total);
+  if (s.peak_memory_kb > 0) log::info("  peak memory {:.1f} MiB", s.peak_memory_kb / 1024.0);
   if (!s.warnings.empty()) {
     log::info("{} warning(s):", s.warnings.size());
-    for (const auto &w : s.warnings)
-      log::info("  {}", w);
+    for (const auto& w : s.warnings) log::info("  {}", w);
   }
 }
 

@@ -9,13 +9,12 @@ namespace gapfem {
 
 /// Reports the run's progress through log::progress / log::info.
 class TerminalWriter : public ResultWriter {
-public:
-  void begin(const Model &model) override;
-  void begin_step(const Model &model, int step_index) override;
-  void increment(const IncrementInfo &info) override;
-  void end_step(const Model &model, int step_index,
-                const StepSummary &summary) override;
-  void end(const Model &model, const RunSummary &summary) override;
+ public:
+  void begin(const Model& model) override;
+  void begin_step(const Model& model, int step_index) override;
+  void increment(const IncrementInfo& info) override;
+  void end_step(const Model& model, int step_index, const StepSummary& summary) override;
+  void end(const Model& model, const RunSummary& summary) override;
 };
 
 } // namespace gapfem

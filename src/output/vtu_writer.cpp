@@ -11,8 +11,7 @@
 namespace gapfem {
 namespace {
 
-static_assert(sizeof(Vec3) == 3 * sizeof(double),
-              "Vec3 must be three packed doubles");
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
 static_assert(std::endian::native == std::endian::little ||
               std::endian::native == std::endian::big);
 
@@ -25,37 +24,32 @@ struct Array {
   std::string_view name;
   std::string_view type; ///< VTK type name
   int components = 1;
-  const void *data = nullptr;
+  const void* data = nullptr;
   std::size_t bytes = 0;
-  std::string_view
-      component_names; ///< pre-formatted ComponentName attributes, or empty
+  std::string_view component_names; ///< pre-formatted ComponentName attributes, or empty
 };
 
 constexpr std::string_view kVoigt =
     R"( ComponentName0="11" ComponentName1="22" ComponentName2="33" ComponentName3="12" ComponentName4="13" ComponentName5="23")";
 
-void declare(fmt::memory_buffer &b, const Array &a, std::uint64_t &offset) {
-  fmt::format_to(fmt::appender(b), "        <DataArray type=\"{}\" Name=\"{}\"",
-                 a.type, a.name);
+void declare(fmt::memory_buffer& b, const Array& a, std::uint64_t& offset) {
+  fmt::format_to(fmt::appender(b), "        <DataArray type=\"{}\" Name=\"{}\"", a.type, a.name);
   if (a.components > 1)
-    fmt::format_to(fmt::appender(b), " NumberOfComponents=\"{}\"",
-                   a.components);
+    fmt::format_to(fmt::appender(b), " NumberOfComponents=\"{}\"", a.components);
   b.append(a.component_names);
-  fmt::format_to(fmt::appender(b), " format=\"appended\" offset=\"{}\"/>\n",
-                 offset);
+  fmt::format_to(fmt::appender(b), " format=\"appended\" offset=\"{}\"/>\n", offset);
   offset += sizeof(std::uint64_t) + a.bytes;
 }
 
 template <typename T>
-Array make_array(std::string_view name, std::string_view type, int comps,
-                 const std::vector<T> &v) {
+Array make_array(std::string_view name, std::string_view type, int comps, const std::vector<T>& v) {
   return Array{name, type, comps, v.data(), v.size() * sizeof(T), {}};
 }
 
 } // namespace
 
 int vtk_cell_type(ElementType type, int n_nodes) {
-  const auto &info = element_info(type);
+  const auto& info = element_info(type);
   switch (n_nodes) {
   case 1:
     return 1; // VTK_VERTEX (SPRING1, grounded gap)
@@ -64,8 +58,7 @@ int vtk_cell_type(ElementType type, int n_nodes) {
   case 3:
     return 5; // VTK_TRIANGLE
   case 4:
-    return info.space == SpaceRequirement::ThreeD ? 10
-                                                  : 9; // VTK_TETRA : VTK_QUAD
+    return info.space == SpaceRequirement::ThreeD ? 10 : 9; // VTK_TETRA : VTK_QUAD
   case 8:
     return 12; // VTK_HEXAHEDRON
   case 10:
@@ -75,13 +68,15 @@ int vtk_cell_type(ElementType type, int n_nodes) {
   }
 }
 
-int vtk_node_from_abaqus(ElementType, int vtk_index) { return vtk_index; }
+int vtk_node_from_abaqus(ElementType, int vtk_index) {
+  return vtk_index;
+}
 
 VtuWriter::VtuWriter(std::filesystem::path directory, std::string job)
     : _dir(std::move(directory)), _job(std::move(job)) {}
 
-void VtuWriter::begin(const Model &model) {
-  const Mesh &mesh = model.mesh;
+void VtuWriter::begin(const Model& model) {
+  const Mesh& mesh = model.mesh;
   const auto ne = static_cast<std::size_t>(mesh.n_elements());
   _entries.clear();
   _connectivity.clear();
@@ -90,31 +85,34 @@ void VtuWriter::begin(const Model &model) {
   _cell_types.resize(ne);
   _type_ids.resize(ne);
   _has_gaps = false;
+  std::vector<bool> present(all_element_types().size(), false);
   for (std::size_t e = 0; e < ne; ++e) {
     const ElementType type = mesh.elem_types[e];
     const auto nodes = mesh.element_nodes(static_cast<ElemId>(e));
     const int n = static_cast<int>(nodes.size());
     const int cell = vtk_cell_type(type, n);
-    FE_CHECK(cell != 0,
-             fmt::format("no VTK cell for element {} ({} with {} nodes)",
-                         mesh.elem_labels[e], element_info(type).name, n));
-    for (int i = 0; i < n; ++i)
-      _connectivity.push_back(nodes[vtk_node_from_abaqus(type, i)]);
+    FE_CHECK(cell != 0, fmt::format("no VTK cell for element {} ({} with {} nodes)",
+                                    mesh.elem_labels[e], element_info(type).name, n));
+    for (int i = 0; i < n; ++i) _connectivity.push_back(nodes[vtk_node_from_abaqus(type, i)]);
     _offsets[e] = static_cast<std::int64_t>(_connectivity.size());
     _cell_types[e] = static_cast<std::uint8_t>(cell);
     _type_ids[e] = static_cast<std::int32_t>(type);
     _has_gaps |= element_info(type).family == ElementFamily::Gap;
+    present[static_cast<std::size_t>(type)] = true;
   }
+  _type_legend.clear();
+  for (std::size_t t = 0; t < present.size(); ++t)
+    if (present[t])
+      _type_legend += fmt::format(" {}={}", t, element_info(static_cast<ElementType>(t)).name);
   write_pvd();
 }
 
-void VtuWriter::frame(const Model &model, int step_index, const Frame &frame) {
-  if (!frame.field_due)
-    return;
-  const Mesh &mesh = model.mesh;
+void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
+  if (!frame.field_due) return;
+  const Mesh& mesh = model.mesh;
   const auto nn = static_cast<std::size_t>(mesh.n_nodes());
   const auto ne = static_cast<std::size_t>(mesh.n_elements());
-  const NodeResults &r = frame.nodes;
+  const NodeResults& r = frame.nodes;
 
   // Cell data: point averages of S, E, HFL in Voigt slots; gap status,
   // clearance, pressure.
@@ -127,34 +125,28 @@ void VtuWriter::frame(const Model &model, int step_index, const Frame &frame) {
     _gap_clearance.assign(ne, kNaN);
     _gap_pressure.assign(ne, kNaN);
   }
-  for (const ElementResult &res : frame.elements) {
-    if (res.elem < 0 || static_cast<std::size_t>(res.elem) >= ne)
-      continue;
+  for (const ElementResult& res : frame.elements) {
+    if (res.elem < 0 || static_cast<std::size_t>(res.elem) >= ne) continue;
     const auto e = static_cast<std::size_t>(res.elem);
-    for (const OutputBlock &block : res.data.blocks) {
-      if (block.var == ElemVar::SF)
-        continue;
+    for (const OutputBlock& block : res.data.blocks) {
+      if (block.var == ElemVar::SF) continue;
       output::average_block(block, _avg);
       for (std::size_t c = 0; c < block.names.size(); ++c) {
         const std::string_view name = block.names[c];
         if (block.var == ElemVar::HFL) {
-          if (name.size() == 4 && name.substr(0, 3) == "HFL" &&
-              name[3] >= '1' && name[3] <= '3') {
-            if (std::isnan(_HFL[3 * e]))
-              std::fill_n(_HFL.begin() + 3 * e, 3, 0.0);
+          if (name.size() == 4 && name.substr(0, 3) == "HFL" && name[3] >= '1' && name[3] <= '3') {
+            if (std::isnan(_HFL[3 * e])) std::fill_n(_HFL.begin() + 3 * e, 3, 0.0);
             _HFL[3 * e + static_cast<std::size_t>(name[3] - '1')] = _avg[c];
             any_HFL = true;
           }
           continue;
         }
         const int slot = output::voigt_slot(name);
-        if (slot < 0)
-          continue;
-        auto &target = block.var == ElemVar::S ? _S : _E;
+        if (slot < 0) continue;
+        auto& target = block.var == ElemVar::S ? _S : _E;
         // An element that reports the tensor gets zeros in the components it
         // does not have.
-        if (std::isnan(target[6 * e]))
-          std::fill_n(target.begin() + 6 * e, 6, 0.0);
+        if (std::isnan(target[6 * e])) std::fill_n(target.begin() + 6 * e, 6, 0.0);
         target[6 * e + slot] = _avg[c];
         (block.var == ElemVar::S ? any_S : any_E) = true;
       }
@@ -167,14 +159,12 @@ void VtuWriter::frame(const Model &model, int step_index, const Frame &frame) {
   }
 
   std::vector<Array> point_arrays;
-  auto vec_point = [&](std::string_view name, const std::vector<Vec3> &v) {
+  auto vec_point = [&](std::string_view name, const std::vector<Vec3>& v) {
     if (v.size() == nn)
-      point_arrays.push_back(
-          Array{name, "Float64", 3, v.data(), nn * sizeof(Vec3), {}});
+      point_arrays.push_back(Array{name, "Float64", 3, v.data(), nn * sizeof(Vec3), {}});
   };
-  auto scalar_point = [&](std::string_view name, const std::vector<double> &v) {
-    if (v.size() == nn)
-      point_arrays.push_back(make_array(name, "Float64", 1, v));
+  auto scalar_point = [&](std::string_view name, const std::vector<double>& v) {
+    if (v.size() == nn) point_arrays.push_back(make_array(name, "Float64", 1, v));
   };
   vec_point("U", r.U);
   vec_point("RF", r.RF);
@@ -188,8 +178,7 @@ void VtuWriter::frame(const Model &model, int step_index, const Frame &frame) {
   }
 
   std::vector<Array> cell_arrays;
-  cell_arrays.push_back(
-      make_array("element_label", "Int64", 1, mesh.elem_labels));
+  cell_arrays.push_back(make_array("element_label", "Int64", 1, mesh.elem_labels));
   cell_arrays.push_back(make_array("element_type", "Int32", 1, _type_ids));
   if (any_S) {
     cell_arrays.push_back(make_array("S", "Float64", 6, _S));
@@ -199,72 +188,55 @@ void VtuWriter::frame(const Model &model, int step_index, const Frame &frame) {
     cell_arrays.push_back(make_array("E", "Float64", 6, _E));
     cell_arrays.back().component_names = kVoigt;
   }
-  if (any_HFL)
-    cell_arrays.push_back(make_array("HFL", "Float64", 3, _HFL));
+  if (any_HFL) cell_arrays.push_back(make_array("HFL", "Float64", 3, _HFL));
   if (_has_gaps) {
     cell_arrays.push_back(make_array("gap_status", "Int32", 1, _gap_status));
-    cell_arrays.push_back(
-        make_array("gap_clearance", "Float64", 1, _gap_clearance));
-    cell_arrays.push_back(
-        make_array("gap_pressure", "Float64", 1, _gap_pressure));
+    cell_arrays.push_back(make_array("gap_clearance", "Float64", 1, _gap_clearance));
+    cell_arrays.push_back(make_array("gap_pressure", "Float64", 1, _gap_pressure));
   }
-  const Array points{"Points",           "Float64",         3,
-                     mesh.coords.data(), nn * sizeof(Vec3), {}};
-  const std::vector<Array> cells = {
-      make_array("connectivity", "Int32", 1, _connectivity),
-      make_array("offsets", "Int64", 1, _offsets),
-      make_array("types", "UInt8", 1, _cell_types)};
+  const Array points{"Points", "Float64", 3, mesh.coords.data(), nn * sizeof(Vec3), {}};
+  const std::vector<Array> cells = {make_array("connectivity", "Int32", 1, _connectivity),
+                                    make_array("offsets", "Int64", 1, _offsets),
+                                    make_array("types", "UInt8", 1, _cell_types)};
 
-  const std::string file =
-      fmt::format("{}_{}_{}.vtu", _job, frame.step, frame.increment);
+  const std::string file = fmt::format("{}_{}_{}.vtu", _job, frame.step, frame.increment);
   output::OutputFile out;
   out.open(_dir / file);
-  auto &b = out.buffer();
+  auto& b = out.buffer();
   std::uint64_t offset = 0;
-  fmt::format_to(
-      fmt::appender(b),
-      "<?xml version=\"1.0\"?>\n"
-      "<!-- gapfem {}: step {} increment {}, step time {}, total time {}.\n"
-      "     element_type: gapfem ElementType value (docs/results.md); "
-      "gap_status: -1 not "
-      "a gap, 0 open, 1 closed, 2 stick, 3 slip -->\n"
-      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
-      "header_type=\"UInt64\">\n  <UnstructuredGrid>\n    <FieldData>\n"
-      "      <DataArray type=\"Float64\" Name=\"TimeValue\" "
-      "NumberOfTuples=\"1\" "
-      "format=\"ascii\">{}</DataArray>\n    </FieldData>\n"
-      "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
-      GAPFEM_VERSION, frame.step, frame.increment, frame.step_time,
-      frame.total_time, kByteOrder, frame.total_time, nn, ne);
-  b.append(std::string_view(point_arrays.empty()
-                                ? "      <PointData>\n"
-                                : "      <PointData Vectors=\"U\">\n"));
-  for (const auto &a : point_arrays)
-    declare(b, a, offset);
-  b.append(std::string_view(
-      "      </PointData>\n      <CellData Scalars=\"element_label\">\n"));
-  for (const auto &a : cell_arrays)
-    declare(b, a, offset);
+  fmt::format_to(fmt::appender(b),
+                 "<?xml version=\"1.0\"?>\n"
+                 "<!-- gapfem {}: step {} increment {}, step time {}, total time {}.\n"
+                 "     element_type ids:{}\n"
+                 "     gap_status: -1 not a gap, 0 open, 1 closed, 2 stick, 3 slip -->\n"
+                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"{}\" "
+                 "header_type=\"UInt64\">\n  <UnstructuredGrid>\n    <FieldData>\n"
+                 "      <DataArray type=\"Float64\" Name=\"TimeValue\" "
+                 "NumberOfTuples=\"1\" "
+                 "format=\"ascii\">{}</DataArray>\n    </FieldData>\n"
+                 "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                 GAPFEM_VERSION, frame.step, frame.increment, frame.step_time, frame.total_time,
+                 _type_legend, kByteOrder, frame.total_time, nn, ne);
+  b.append(std::string_view(point_arrays.empty() ? "      <PointData>\n"
+                                                 : "      <PointData Vectors=\"U\">\n"));
+  for (const auto& a : point_arrays) declare(b, a, offset);
+  b.append(std::string_view("      </PointData>\n      <CellData Scalars=\"element_label\">\n"));
+  for (const auto& a : cell_arrays) declare(b, a, offset);
   b.append(std::string_view("      </CellData>\n      <Points>\n"));
   declare(b, points, offset);
   b.append(std::string_view("      </Points>\n      <Cells>\n"));
-  for (const auto &a : cells)
-    declare(b, a, offset);
-  b.append(
-      std::string_view("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-                       "  <AppendedData encoding=\"raw\">\n   _"));
-  auto emit = [&](const Array &a) {
+  for (const auto& a : cells) declare(b, a, offset);
+  b.append(std::string_view("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+                            "  <AppendedData encoding=\"raw\">\n   _"));
+  auto emit = [&](const Array& a) {
     const std::uint64_t n = a.bytes;
     out.write_bytes(&n, sizeof n);
     out.write_bytes(a.data, a.bytes);
   };
-  for (const auto &a : point_arrays)
-    emit(a);
-  for (const auto &a : cell_arrays)
-    emit(a);
+  for (const auto& a : point_arrays) emit(a);
+  for (const auto& a : cell_arrays) emit(a);
   emit(points);
-  for (const auto &a : cells)
-    emit(a);
+  for (const auto& a : cells) emit(a);
   out.write("\n  </AppendedData>\n</VTKFile>\n");
   out.close();
 
@@ -279,13 +251,12 @@ void VtuWriter::write_pvd() {
   {
     output::OutputFile out;
     out.open(tmp);
-    auto &b = out.buffer();
-    fmt::format_to(
-        fmt::appender(b),
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
-        "byte_order=\"{}\">\n  <Collection>\n",
-        kByteOrder);
-    for (const auto &e : _entries) {
+    auto& b = out.buffer();
+    fmt::format_to(fmt::appender(b),
+                   "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                   "byte_order=\"{}\">\n  <Collection>\n",
+                   kByteOrder);
+    for (const auto& e : _entries) {
       b.append(std::string_view("    <DataSet timestep=\""));
       output::append_json_number(b, e.time);
       b.append(std::string_view("\" group=\"\" part=\"0\" file=\""));
@@ -299,8 +270,7 @@ void VtuWriter::write_pvd() {
   std::filesystem::rename(tmp, path, ec);
   if (ec)
     throw AnalysisError(
-        fmt::format("cannot replace ParaView collection '{}': {}",
-                    path.string(), ec.message()));
+        fmt::format("cannot replace ParaView collection '{}': {}", path.string(), ec.message()));
 }
 
 } // namespace gapfem

@@ -25,14 +25,14 @@ int vtk_node_from_abaqus(ElementType type, int vtk_index);
 
 /// Writes ParaView files for the frames with Frame::field_due.
 class VtuWriter : public ResultWriter {
-public:
+ public:
   /// Files go to `directory` and are named after `job`.
   VtuWriter(std::filesystem::path directory, std::string job);
 
-  void begin(const Model &model) override;
-  void frame(const Model &model, int step_index, const Frame &frame) override;
+  void begin(const Model& model) override;
+  void frame(const Model& model, int step_index, const Frame& frame) override;
 
-private:
+ private:
   struct PvdEntry {
     double time = 0.0;
     std::string file;
@@ -49,6 +49,7 @@ private:
   std::vector<std::uint8_t> _cell_types;
   std::vector<std::int32_t> _type_ids; ///< ElementType value per cell
   bool _has_gaps = false;
+  std::string _type_legend; ///< " 6=C3D8 15=GAPUNI": the element_type ids present in the model
 
   // per-frame cell data (reused)
   std::vector<double> _S, _E, _HFL, _gap_clearance, _gap_pressure;

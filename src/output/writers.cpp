@@ -8,36 +8,27 @@
 #include "output/vtu_writer.hpp"
 
 #include <fmt/format.h>
-
 #include <system_error>
 
 namespace gapfem {
 
-std::vector<std::unique_ptr<ResultWriter>>
-make_result_writers(const WriterOptions &options) {
+std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options) {
   std::vector<std::unique_ptr<ResultWriter>> writers;
-  const std::filesystem::path dir =
-      options.directory.empty() ? "." : options.directory;
+  const std::filesystem::path dir = options.directory.empty() ? "." : options.directory;
   const std::string job = options.job.empty() ? "job" : options.job;
   if (options.dat || options.sta || options.json || options.vtu) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec)
       throw AnalysisError(
-          fmt::format("cannot create the output directory '{}': {}",
-                      dir.string(), ec.message()));
+          fmt::format("cannot create the output directory '{}': {}", dir.string(), ec.message()));
   }
-  if (options.dat)
-    writers.push_back(std::make_unique<DatWriter>(dir / (job + ".dat")));
-  if (options.sta)
-    writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
+  if (options.dat) writers.push_back(std::make_unique<DatWriter>(dir / (job + ".dat")));
+  if (options.sta) writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
   if (options.json)
-    writers.push_back(
-        std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
-  if (options.vtu)
-    writers.push_back(std::make_unique<VtuWriter>(dir, job));
-  if (options.terminal)
-    writers.push_back(std::make_unique<TerminalWriter>());
+    writers.push_back(std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
+  if (options.vtu) writers.push_back(std::make_unique<VtuWriter>(dir, job));
+  if (options.terminal) writers.push_back(std::make_unique<TerminalWriter>());
   return writers;
 }
 

@@ -13,21 +13,18 @@ namespace gapfem {
 
 /// Which result files to write, and where.
 struct WriterOptions {
-  std::filesystem::path
-      directory;    ///< created if missing; empty: the current directory
-  std::string job;  ///< file stem: job.dat, job.sta, job.results.json, job.pvd
-  bool dat = true;  ///< *NODE PRINT / *EL PRINT tables, self-checks (job.dat)
-  bool sta = true;  ///< status file, one line per increment attempt (job.sta)
-  bool json = true; ///< machine-readable results (job.results.json)
-  bool vtu = true;  ///< ParaView frames (job_<step>_<inc>.vtu, job.pvd)
-  bool terminal =
-      false; ///< also add a TerminalWriter (progress through gapfem::log)
+  std::filesystem::path directory; ///< created if missing; empty: the current directory
+  std::string job;                 ///< file stem: job.dat, job.sta, job.results.json, job.pvd
+  bool dat = true;                 ///< *NODE PRINT / *EL PRINT tables, self-checks (job.dat)
+  bool sta = true;                 ///< status file, one line per increment attempt (job.sta)
+  bool json = true;                ///< machine-readable results (job.results.json)
+  bool vtu = true;                 ///< ParaView frames (job_<step>_<inc>.vtu, job.pvd)
+  bool terminal = false;           ///< also add a TerminalWriter (progress through gapfem::log)
 };
 
 /// The writers selected by `options`, in the order dat, sta, json, vtu,
 /// terminal. Files are opened in begin(); errors opening or writing them raise
 /// AnalysisError.
-std::vector<std::unique_ptr<ResultWriter>>
-make_result_writers(const WriterOptions &options);
+std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);
 
 } // namespace gapfem

@@ -7,57 +7,52 @@
 // in columns 1-12, the point in 13-16, 7 blanks, then value fields from column
 // 24 (24-35, 36-47, ...). Values are 1P E-format with 4 decimals.
 #include "output/dat_writer.hpp"
-
 #include "writer_fixture.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 
 namespace gapfem {
 namespace {
 
 using namespace testing_output;
 
-std::vector<std::string> run_dat(const Model &m,
-                                 const std::filesystem::path &dir) {
+std::vector<std::string> run_dat(const Model& m, const std::filesystem::path& dir) {
   DatWriter w(dir / "wt.dat");
   run_standard(w, m);
   return read_lines(dir / "wt.dat");
 }
 
 /// Index of the first line at or after `from` containing `text`, or -1.
-int find_line(const std::vector<std::string> &lines, std::string_view text,
-              int from = 0) {
+int find_line(const std::vector<std::string>& lines, std::string_view text, int from = 0) {
   for (int i = std::max(from, 0); i < static_cast<int>(lines.size()); ++i)
-    if (lines[i].find(text) != std::string::npos)
-      return i;
+    if (lines[i].find(text) != std::string::npos) return i;
   return -1;
 }
 
-int count_lines(const std::vector<std::string> &lines, std::string_view text) {
-  return static_cast<int>(
-      std::count_if(lines.begin(), lines.end(), [&](const std::string &l) {
-        return l.find(text) != std::string::npos;
-      }));
+int count_lines(const std::vector<std::string>& lines, std::string_view text) {
+  return static_cast<int>(std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
+    return l.find(text) != std::string::npos;
+  }));
 }
 
 /// Field `k` (0-based) of a node row: 12 columns starting at column 16
 /// (1-based).
-std::string node_field(const std::string &row, int k) {
+std::string node_field(const std::string& row, int k) {
   return row.substr(15 + 12 * k, 12);
 }
 /// Field `k` of an element row: 12 columns starting at column 24.
-std::string elem_field(const std::string &row, int k) {
+std::string elem_field(const std::string& row, int k) {
   return row.substr(23 + 12 * k, 12);
 }
-std::string e12(double v) { return fmt::format(" {:>11.4E}", v); }
+std::string e12(double v) {
+  return fmt::format(" {:>11.4E}", v);
+}
 
 TEST(OutputDat, StepAndIncrementHeadings) {
   const auto lines = run_dat(make_model(), fresh_dir());
   EXPECT_GE(find_line(lines, "Writer test: cube with a gap"), 0);
-  EXPECT_GE(find_line(lines, "S T E P    1     S T A T I C   A N A L Y S I S"),
-            0);
+  EXPECT_GE(find_line(lines, "S T E P    1     S T A T I C   A N A L Y S I S"), 0);
   // Both frames had something due.
   EXPECT_EQ(count_lines(lines, "INCREMENT     1 SUMMARY"), 1);
   EXPECT_EQ(count_lines(lines, "INCREMENT     2 SUMMARY"), 1);
@@ -80,7 +75,7 @@ TEST(OutputDat, NodeTableColumnsAndSummaryRows) {
   const int inc2 = find_line(lines, "INCREMENT     2 SUMMARY");
   const int t = find_line(lines, "FOR NODES BELONGING TO NODE SET TOP", inc2);
   ASSERT_GE(t, 0);
-  const std::string &header = lines[t + 2];
+  const std::string& header = lines[t + 2];
   EXPECT_EQ(header.find("NODE FOOT-"), 7u);
   EXPECT_EQ(header.find("U1"), 20u); // column 21, as in Abaqus
   EXPECT_EQ(header.find("U2"), 32u);
@@ -89,11 +84,10 @@ TEST(OutputDat, NodeTableColumnsAndSummaryRows) {
   // Rows for labels 50, 60, 70, 80 in ascending order; U = disp(label, 1).
   const std::vector<Label> top = {50, 60, 70, 80};
   for (std::size_t k = 0; k < top.size(); ++k) {
-    const std::string &row = lines[t + 5 + k];
+    const std::string& row = lines[t + 5 + k];
     EXPECT_EQ(row.substr(0, 11), fmt::format("{:>11}", top[k]));
     const Vec3 u = disp(top[k], 1.0);
-    for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(node_field(row, c), e12(u[c])) << row;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(node_field(row, c), e12(u[c])) << row;
   }
   // U1 = 1e-3 * label: maximum 8.0000E-02 at node 80, minimum 5.0000E-02 at
   // node 50. U2 = -2e-3 * label: maximum at node 50, minimum at node 80.
@@ -121,10 +115,8 @@ TEST(OutputDat, NodeTableColumnsAndSummaryRows) {
 TEST(OutputDat, AllNodesTableOnlyWhenDueAndInLabelOrder) {
   const auto lines = run_dat(make_model(), fresh_dir());
   // Request 1 (all nodes, FREQUENCY=0) is due only at the last increment.
-  EXPECT_EQ(count_lines(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES"),
-            1);
-  const int t =
-      find_line(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES");
+  EXPECT_EQ(count_lines(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES"), 1);
+  const int t = find_line(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES");
   ASSERT_GT(t, find_line(lines, "INCREMENT     2 SUMMARY"));
   // Node 5 was defined last but has the smallest label: it comes first.
   EXPECT_EQ(lines[t + 5].substr(0, 11), fmt::format("{:>11}", 5));
@@ -139,21 +131,19 @@ TEST(OutputDat, AllNodesTableOnlyWhenDueAndInLabelOrder) {
 
 TEST(OutputDat, ElementTablesByTypeAtIntegrationPoints) {
   const auto lines = run_dat(make_model(), fresh_dir());
-  const int t = find_line(
-      lines, "THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR "
-             "ELEMENT TYPE C3D8 AND ELEMENT SET ALL");
+  const int t = find_line(lines, "THE FOLLOWING TABLE IS PRINTED AT THE INTEGRATION POINTS FOR "
+                                 "ELEMENT TYPE C3D8 AND ELEMENT SET ALL");
   ASSERT_GE(t, 0);
-  const std::string &header = lines[t + 2];
+  const std::string& header = lines[t + 2];
   EXPECT_EQ(header.find("ELEMENT  PT FOOT-"), 4u);
   EXPECT_EQ(header.find("S11"), 28u); // column 29, as in Abaqus
   EXPECT_EQ(header.find("S23"), 28u + 5 * 12);
   // 8 rows: element 7, points 1..8; S_c at point p = 10*(p+1) + c (load
   // fraction 1).
   for (int p = 0; p < 8; ++p) {
-    const std::string &row = lines[t + 5 + p];
+    const std::string& row = lines[t + 5 + p];
     EXPECT_EQ(row.substr(0, 16), fmt::format("{:>12}{:>4}", 7, p + 1));
-    for (int c = 0; c < 6; ++c)
-      EXPECT_EQ(elem_field(row, c), e12(c3d8_stress(p, c))) << row;
+    for (int c = 0; c < 6; ++c) EXPECT_EQ(elem_field(row, c), e12(c3d8_stress(p, c))) << row;
   }
   // Maximum S11 = 80 (point 8), minimum 10 (point 1), both in element 7.
   const int mx = find_line(lines, " MAXIMUM", t);
@@ -165,16 +155,14 @@ TEST(OutputDat, ElementTablesByTypeAtIntegrationPoints) {
 
   // Same request: the E table of C3D8 and then the GAPUNI tables (element types
   // in order).
-  const int e_table =
-      find_line(lines, "ELEMENT TYPE C3D8 AND ELEMENT SET ALL", t + 1);
+  const int e_table = find_line(lines, "ELEMENT TYPE C3D8 AND ELEMENT SET ALL", t + 1);
   ASSERT_GT(e_table, t);
   EXPECT_EQ(lines[e_table + 2].find("E11"), 28u);
-  const int gap =
-      find_line(lines, "ELEMENT TYPE GAPUNI AND ELEMENT SET ALL", t);
+  const int gap = find_line(lines, "ELEMENT TYPE GAPUNI AND ELEMENT SET ALL", t);
   ASSERT_GT(gap, e_table);
   EXPECT_EQ(lines[gap + 2].find("S11"), 28u);
   EXPECT_EQ(lines[gap + 2].find("S12"), 40u);
-  const std::string &grow = lines[gap + 5];
+  const std::string& grow = lines[gap + 5];
   EXPECT_EQ(grow.substr(0, 16), fmt::format("{:>12}{:>4}", 3, 1));
   EXPECT_EQ(elem_field(grow, 0),
             e12(50.0)); // contact pressure, positive in compression
@@ -183,14 +171,13 @@ TEST(OutputDat, ElementTablesByTypeAtIntegrationPoints) {
 
 TEST(OutputDat, CentroidalTableHasNoPointColumn) {
   const auto lines = run_dat(make_model(), fresh_dir());
-  const std::string heading =
-      "THE FOLLOWING TABLE IS PRINTED AT THE CENTROID OF THE ELEMENT FOR "
-      "ELEMENT TYPE GAPUNI AND ELEMENT SET GAPS";
+  const std::string heading = "THE FOLLOWING TABLE IS PRINTED AT THE CENTROID OF THE ELEMENT FOR "
+                              "ELEMENT TYPE GAPUNI AND ELEMENT SET GAPS";
   // Request 1 is due at both increments.
   EXPECT_EQ(count_lines(lines, heading), 2);
   const int t = find_line(lines, heading);
   EXPECT_EQ(lines[t + 2].find("ELEMENT     FOOT-"), 4u);
-  const std::string &row = lines[t + 5];
+  const std::string& row = lines[t + 5];
   EXPECT_EQ(row.substr(0, 16), fmt::format("{:>12}{:>4}", 3, ""));
   EXPECT_EQ(elem_field(row, 0), e12(50.0));
   EXPECT_EQ(elem_field(row, 2), e12(0.0));
@@ -200,26 +187,20 @@ TEST(OutputDat, SelfChecksAndSummary) {
   const auto lines = run_dat(make_model(), fresh_dir());
   const int c = find_line(lines, "S T E P   1   S E L F - C H E C K S");
   ASSERT_GE(c, 0);
-  EXPECT_GE(
-      find_line(lines,
-                "STEP 1 COMPLETED: 2 INCREMENTS (3 ATTEMPTS), 7 ITERATIONS", c),
-      0);
+  EXPECT_GE(find_line(lines, "STEP 1 COMPLETED: 2 INCREMENTS (3 ATTEMPTS), 7 ITERATIONS", c), 0);
   const int gaps = find_line(lines, " GAP ELEMENTS", c);
   ASSERT_GE(gaps, 0);
   EXPECT_NE(lines[gaps].find(" 1"), std::string::npos);
-  EXPECT_NE(lines[find_line(lines, "CLOSED, STICKING", c)].find(" 1"),
-            std::string::npos);
-  const std::string &pen =
-      lines[find_line(lines, "MAXIMUM PENETRATION OF A CLOSED GAP", c)];
+  EXPECT_NE(lines[find_line(lines, "CLOSED, STICKING", c)].find(" 1"), std::string::npos);
+  const std::string& pen = lines[find_line(lines, "MAXIMUM PENETRATION OF A CLOSED GAP", c)];
   EXPECT_NE(pen.find(e12(2.5e-7)), std::string::npos);
   EXPECT_NE(pen.find("AT ELEMENT 3"), std::string::npos);
-  const std::string &rel = lines[find_line(lines, "RELATIVE ERROR", c)];
+  const std::string& rel = lines[find_line(lines, "RELATIVE ERROR", c)];
   EXPECT_NE(rel.find(e12(1e-11)), std::string::npos); // 1e-9 / force scale 100
   EXPECT_LT(find_line(lines, "HEAT BALANCE", c), 0) << "not a thermal step";
   EXPECT_LT(find_line(lines, "DAMPING", c), 0) << "no damping force";
   EXPECT_GE(find_line(lines, "A N A L Y S I S   S U M M A R Y", c), 0);
-  EXPECT_NE(lines[find_line(lines, " ITERATIONS ", c + 5)].find("7"),
-            std::string::npos);
+  EXPECT_NE(lines[find_line(lines, " ITERATIONS ", c + 5)].find("7"), std::string::npos);
   EXPECT_GE(find_line(lines, "*GAP: area not given; S11 is a force"), 0);
   EXPECT_EQ(lines.back(), "          THE ANALYSIS HAS BEEN COMPLETED");
 }
@@ -239,10 +220,7 @@ TEST(OutputDat, FailedRunSaysSo) {
   run.failure = "step 1 did not converge";
   w.end(m, run);
   const auto lines = read_lines(dir / "f.dat");
-  EXPECT_GE(
-      find_line(lines,
-                "STEP 1 WAS NOT COMPLETED: time increment below the minimum"),
-      0);
+  EXPECT_GE(find_line(lines, "STEP 1 WAS NOT COMPLETED: time increment below the minimum"), 0);
   EXPECT_GE(find_line(lines, "***ERROR: step 1 did not converge"), 0);
   EXPECT_EQ(lines.back(), "          THE ANALYSIS HAS NOT BEEN COMPLETED");
 }

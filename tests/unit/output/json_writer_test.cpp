@@ -1,14 +1,12 @@
 // JsonWriter: schema "gapfem.results/1" (docs/results.md) on the hand-built
 // model of writer_fixture.hpp.
 #include "output/json_writer.hpp"
-
 #include "output/writers.hpp"
 #include "writer_fixture.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 namespace gapfem {
 namespace {
@@ -16,11 +14,10 @@ namespace {
 using namespace testing_output;
 using nlohmann::json;
 
-json run_and_parse(const Model &m, const std::filesystem::path &dir) {
+json run_and_parse(const Model& m, const std::filesystem::path& dir) {
   JsonWriter w(dir / "wt.results.json", "wt");
   run_standard(w, m);
-  return json::parse(
-      read_file(dir / "wt.results.json")); // throws if not valid JSON
+  return json::parse(read_file(dir / "wt.results.json")); // throws if not valid JSON
 }
 
 TEST(OutputJson, TopLevelSchemaAndModel) {
@@ -33,7 +30,7 @@ TEST(OutputJson, TopLevelSchemaAndModel) {
   EXPECT_EQ(j["model"]["nodes"], 9);
   EXPECT_EQ(j["model"]["elements"], 2);
   ASSERT_EQ(j["steps"].size(), 1u);
-  const json &s = j["steps"][0];
+  const json& s = j["steps"][0];
   EXPECT_EQ(s["step"], 1);
   EXPECT_EQ(s["name"], "Load");
   EXPECT_EQ(s["procedure"], "STATIC");
@@ -46,24 +43,22 @@ TEST(OutputJson, TopLevelSchemaAndModel) {
   EXPECT_EQ(j["summary"]["factorizations"], 7);
   EXPECT_DOUBLE_EQ(j["summary"]["wall_seconds"].get<double>(), 1.25);
   ASSERT_EQ(j["summary"]["warnings"].size(), 1u);
-  EXPECT_EQ(j["summary"]["warnings"][0],
-            "*GAP: area not given; S11 is a force");
+  EXPECT_EQ(j["summary"]["warnings"][0], "*GAP: area not given; S11 is a force");
 }
 
 TEST(OutputJson, IntermediateFrameHoldsOnlyDueRequests) {
   const Model m = make_model();
   const json j = run_and_parse(m, fresh_dir());
-  const json &frames = j["steps"][0]["frames"];
+  const json& frames = j["steps"][0]["frames"];
   ASSERT_EQ(frames.size(), 2u);
-  const json &f1 = frames[0];
+  const json& f1 = frames[0];
   EXPECT_EQ(f1["increment"], 1);
   EXPECT_DOUBLE_EQ(f1["step_time"].get<double>(), 0.5);
   EXPECT_EQ(f1["last_in_step"], false);
   // Frame 1: *NODE PRINT on NSET TOP (labels 50..80) and *EL PRINT on ELSET
   // GAPS (label 3).
   std::vector<std::string> node_keys;
-  for (const auto &[k, v] : f1["nodes"].items())
-    node_keys.push_back(k);
+  for (const auto& [k, v] : f1["nodes"].items()) node_keys.push_back(k);
   std::sort(node_keys.begin(), node_keys.end());
   EXPECT_EQ(node_keys, (std::vector<std::string>{"50", "60", "70", "80"}));
   ASSERT_EQ(f1["elements"].size(), 1u);
@@ -73,18 +68,17 @@ TEST(OutputJson, IntermediateFrameHoldsOnlyDueRequests) {
 TEST(OutputJson, LastFrameIsCompleteWithExactValues) {
   const Model m = make_model();
   const json j = run_and_parse(m, fresh_dir());
-  const json &f2 = j["steps"][0]["frames"][1];
+  const json& f2 = j["steps"][0]["frames"][1];
   EXPECT_EQ(f2["last_in_step"], true);
   ASSERT_EQ(f2["nodes"].size(), 9u);
   ASSERT_EQ(f2["elements"].size(), 2u);
   // Round-trip precision: the doubles read back are bit-identical to the ones
   // handed over.
   for (Label label : kNodeLabels) {
-    const json &n = f2["nodes"][std::to_string(label)];
+    const json& n = f2["nodes"][std::to_string(label)];
     const Vec3 u = disp(label, 1.0);
     ASSERT_EQ(n["U"].size(), 3u) << label;
-    for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(n["U"][c].get<double>(), u[c]) << label;
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(n["U"][c].get<double>(), u[c]) << label;
     EXPECT_EQ(n["RF"].size(), 3u);
     EXPECT_FALSE(n.contains("UR")) << "node without rotational DOFs";
     EXPECT_FALSE(n.contains("NT")) << "node without temperature";
@@ -94,34 +88,29 @@ TEST(OutputJson, LastFrameIsCompleteWithExactValues) {
   EXPECT_EQ(f2["nodes"]["70"]["CF"][2].get<double>(), -100.0);
   EXPECT_FALSE(f2["nodes"]["10"].contains("CF"));
 
-  const json &brick = f2["elements"]["7"];
+  const json& brick = f2["elements"]["7"];
   EXPECT_EQ(brick["type"], "C3D8");
   // S averaged over the 8 points: mean of 10*(p+1) + c over p = 10*4.5 + c.
   ASSERT_EQ(brick["S"].size(), 6u);
-  for (int c = 0; c < 6; ++c)
-    EXPECT_DOUBLE_EQ(brick["S"][c].get<double>(), 45.0 + c);
+  for (int c = 0; c < 6; ++c) EXPECT_DOUBLE_EQ(brick["S"][c].get<double>(), 45.0 + c);
   // E: mean of 1e-4*(p+1)*(c+1) = 4.5e-4*(c+1).
-  for (int c = 0; c < 6; ++c)
-    EXPECT_NEAR(brick["E"][c].get<double>(), 4.5e-4 * (c + 1), 1e-18);
+  for (int c = 0; c < 6; ++c) EXPECT_NEAR(brick["E"][c].get<double>(), 4.5e-4 * (c + 1), 1e-18);
   EXPECT_FALSE(brick.contains("gap"));
 
-  const json &el_types = j["element_types"];
-  EXPECT_EQ(
-      el_types["C3D8"]["S"],
-      (std::vector<std::string>{"S11", "S22", "S33", "S12", "S13", "S23"}));
-  EXPECT_EQ(el_types["GAPUNI"]["S"],
-            (std::vector<std::string>{"S11", "S12", "S13"}));
-  EXPECT_EQ(el_types["GAPUNI"]["E"],
-            (std::vector<std::string>{"E11", "E12", "E13"}));
+  const json& el_types = j["element_types"];
+  EXPECT_EQ(el_types["C3D8"]["S"],
+            (std::vector<std::string>{"S11", "S22", "S33", "S12", "S13", "S23"}));
+  EXPECT_EQ(el_types["GAPUNI"]["S"], (std::vector<std::string>{"S11", "S12", "S13"}));
+  EXPECT_EQ(el_types["GAPUNI"]["E"], (std::vector<std::string>{"E11", "E12", "E13"}));
 }
 
 TEST(OutputJson, GapRecordFields) {
   const Model m = make_model();
   const json j = run_and_parse(m, fresh_dir());
-  const json &gap_el = j["steps"][0]["frames"][1]["elements"]["3"];
+  const json& gap_el = j["steps"][0]["frames"][1]["elements"]["3"];
   EXPECT_EQ(gap_el["type"], "GAPUNI");
   EXPECT_EQ(gap_el["S"], (std::vector<double>{50.0, 2.0, 0.0}));
-  const json &g = gap_el["gap"];
+  const json& g = gap_el["gap"];
   EXPECT_EQ(g["status"], "stick");
   EXPECT_EQ(g["clearance"].get<double>(), 0.0);
   EXPECT_EQ(g["normal_force"].get<double>(), 50.0);
@@ -148,7 +137,7 @@ TEST(OutputJson, ThermalGapHasHeatFields) {
   w.end_step(m, 0, make_summary());
   w.end(m, make_run());
   const json j = json::parse(read_file(dir / "t.results.json"));
-  const json &g = j["steps"][0]["frames"][0]["elements"]["3"]["gap"];
+  const json& g = j["steps"][0]["frames"][0]["elements"]["3"]["gap"];
   EXPECT_EQ(g["heat_flux"].get<double>(), 12.5);
   EXPECT_EQ(g["heat_flow"].get<double>(), 12.5);
   EXPECT_EQ(g["conductance"].get<double>(), 4.0);
@@ -157,14 +146,13 @@ TEST(OutputJson, ThermalGapHasHeatFields) {
 TEST(OutputJson, StepChecks) {
   const Model m = make_model();
   const json j = run_and_parse(m, fresh_dir());
-  const json &c = j["steps"][0]["checks"];
+  const json& c = j["steps"][0]["checks"];
   EXPECT_EQ(c["gaps"]["total"], 1);
   EXPECT_EQ(c["gaps"]["stick"], 1);
   EXPECT_EQ(c["gaps"]["open"], 0);
   EXPECT_EQ(c["max_penetration"]["value"].get<double>(), 2.5e-7);
   EXPECT_EQ(c["max_penetration"]["element"], 3);
-  EXPECT_TRUE(c["max_tensile_force"]["element"].is_null())
-      << "label 0 means no element";
+  EXPECT_TRUE(c["max_tensile_force"]["element"].is_null()) << "label 0 means no element";
   EXPECT_EQ(c["equilibrium"]["reaction_sum"], (std::vector<double>{0, 0, 100}));
   // relative error = 1e-9 / 100
   EXPECT_DOUBLE_EQ(c["equilibrium"]["relative_error"].get<double>(), 1e-11);
@@ -196,8 +184,7 @@ TEST(OutputJson, ValidWhenTheRunStopsInsideAStep) {
   w.begin(m);
   w.begin_step(m, 0);
   Frame fr = make_frame(m, 1, 0.5, false);
-  fr.nodes.U[4][0] =
-      std::numeric_limits<double>::quiet_NaN(); // non-finite -> null
+  fr.nodes.U[4][0] = std::numeric_limits<double>::quiet_NaN(); // non-finite -> null
   fr.nodes.U[4][1] = std::numeric_limits<double>::infinity();
   w.frame(m, 0, fr);
   RunSummary run = make_run();
@@ -251,8 +238,7 @@ TEST(OutputJson, PlanarModelHasTwoDisplacementComponents) {
   w.end(m, RunSummary{});
   const json j = json::parse(read_file(dir / "p.results.json"));
   EXPECT_EQ(j["model"]["space"], "planar");
-  EXPECT_EQ(j["steps"][0]["frames"][0]["nodes"]["3"]["U"],
-            (std::vector<double>{1.0, 2.0}));
+  EXPECT_EQ(j["steps"][0]["frames"][0]["nodes"]["3"]["U"], (std::vector<double>{1.0, 2.0}));
   EXPECT_EQ(j["steps"][0]["frames"][0]["nodes"]["3"]["RF"].size(), 2u);
 }
 
@@ -264,19 +250,13 @@ TEST(OutputJson, FactoryWritesAllFiles) {
   opt.job = "wt";
   auto writers = make_result_writers(opt);
   ASSERT_EQ(writers.size(), 4u);
-  for (auto &w : writers)
-    w->begin(m);
-  for (auto &w : writers)
-    w->begin_step(m, 0);
+  for (auto& w : writers) w->begin(m);
+  for (auto& w : writers) w->begin_step(m, 0);
   const Frame fr = make_frame(m, 1, 1.0, true);
-  for (auto &w : writers)
-    w->frame(m, 0, fr);
-  for (auto &w : writers)
-    w->end_step(m, 0, make_summary());
-  for (auto &w : writers)
-    w->end(m, make_run());
-  for (const char *name :
-       {"wt.dat", "wt.sta", "wt.results.json", "wt.pvd", "wt_1_1.vtu"})
+  for (auto& w : writers) w->frame(m, 0, fr);
+  for (auto& w : writers) w->end_step(m, 0, make_summary());
+  for (auto& w : writers) w->end(m, make_run());
+  for (const char* name : {"wt.dat", "wt.sta", "wt.results.json", "wt.pvd", "wt_1_1.vtu"})
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
   EXPECT_NO_THROW((void)json::parse(read_file(dir / "wt.results.json")));
 }

@@ -1,22 +1,22 @@
 // Formatting helpers shared by the writers (output/output_file.hpp).
 #include "output/output_file.hpp"
 
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
+#include <nlohmann/json.hpp>
 
 namespace gapfem::output {
 namespace {
 
-std::string str(const fmt::memory_buffer &b) { return fmt::to_string(b); }
+std::string str(const fmt::memory_buffer& b) {
+  return fmt::to_string(b);
+}
 
 TEST(OutputFormat, SpacedCapitals) {
   EXPECT_EQ(spaced("STATIC ANALYSIS"), "S T A T I C   A N A L Y S I S");
   EXPECT_EQ(spaced("node output"), "N O D E   O U T P U T");
-  EXPECT_EQ(spaced("TEMPERATURE-DISPLACEMENT"),
-            "T E M P E R A T U R E - D I S P L A C E M E N T");
+  EXPECT_EQ(spaced("TEMPERATURE-DISPLACEMENT"), "T E M P E R A T U R E - D I S P L A C E M E N T");
 }
 
 TEST(OutputFormat, AbaqusE12) {
@@ -32,9 +32,8 @@ TEST(OutputFormat, AbaqusE12) {
   append_e12(b, 0.0);
   EXPECT_EQ(str(b), "  0.0000E+00");
   b.clear();
-  append_e12(
-      b,
-      -1e-100); // three-digit exponent: wider, but still separated by a blank
+  append_e12(b,
+             -1e-100); // three-digit exponent: wider, but still separated by a blank
   EXPECT_EQ(str(b), " -1.0000E-100");
 }
 
@@ -60,8 +59,7 @@ TEST(OutputFormat, JsonNumbersRoundTrip) {
 }
 
 TEST(OutputFormat, JsonStringsEscaped) {
-  const std::string s =
-      "quote \" backslash \\ tab \t newline \n bell \x07 euro \xE2\x82\xAC";
+  const std::string s = "quote \" backslash \\ tab \t newline \n bell \x07 euro \xE2\x82\xAC";
   fmt::memory_buffer b;
   append_json_string(b, s);
   EXPECT_EQ(nlohmann::json::parse(str(b)).get<std::string>(), s);
@@ -70,9 +68,8 @@ TEST(OutputFormat, JsonStringsEscaped) {
   b.clear();
   append_json_string(b, "Temp \xB0"
                         "C");
-  EXPECT_EQ(nlohmann::json::parse(str(b)).get<std::string>(),
-            "Temp \xEF\xBF\xBD"
-            "C");
+  EXPECT_EQ(nlohmann::json::parse(str(b)).get<std::string>(), "Temp \xEF\xBF\xBD"
+                                                              "C");
 }
 
 TEST(OutputFormat, VoigtSlots) {

@@ -1,7 +1,6 @@
 // StaWriter: Abaqus status-file layout, "U" on attempts that were cut back,
 // final line, and flushing after every line.
 #include "output/sta_writer.hpp"
-
 #include "writer_fixture.hpp"
 
 namespace gapfem {
@@ -19,20 +18,15 @@ TEST(OutputSta, LinesPerAttemptAndCompletion) {
   EXPECT_EQ(lines[0].rfind("gapfem ", 0), 0u);
   EXPECT_NE(lines[0].find("DATE "), std::string::npos);
   EXPECT_EQ(lines[1], " SUMMARY OF JOB INFORMATION:");
-  EXPECT_EQ(
-      lines[2].rfind(
-          " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF", 0),
-      0u);
+  EXPECT_EQ(lines[2].rfind(" STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF", 0),
+            0u);
   // Columns: STEP(4) INC(6) ATT(4) flag(1) SEVERE(5) EQUIL(6) TOTAL(6), two
   // blanks, then total time, step time (11 wide, left-aligned) and increment.
   // The first attempt of increment 1 was cut back: 8 iterations of which 1
   // severe discontinuity iteration -> EQUIL 7.
-  EXPECT_EQ(lines[5],
-            "   1     1   1U    1     7     8  0.5        0.5        0.5");
-  EXPECT_EQ(lines[6],
-            "   1     1   2     1     2     3  0.5        0.5        0.5");
-  EXPECT_EQ(lines[7],
-            "   1     2   1     1     2     3  1          1          0.5");
+  EXPECT_EQ(lines[5], "   1     1   1U    1     7     8  0.5        0.5        0.5");
+  EXPECT_EQ(lines[6], "   1     1   2     1     2     3  0.5        0.5        0.5");
+  EXPECT_EQ(lines[7], "   1     2   1     1     2     3  1          1          0.5");
   EXPECT_EQ(lines.back(), " THE ANALYSIS HAS COMPLETED SUCCESSFULLY");
 }
 
@@ -61,9 +55,7 @@ TEST(OutputSta, FailedRun) {
   w.end(m, run);
   const auto lines = read_lines(dir / "wt.sta");
   EXPECT_EQ(lines.back(), " THE ANALYSIS HAS NOT BEEN COMPLETED");
-  EXPECT_NE(
-      std::find(lines.begin(), lines.end(), " ***ERROR: too many attempts"),
-      lines.end());
+  EXPECT_NE(std::find(lines.begin(), lines.end(), " ***ERROR: too many attempts"), lines.end());
 }
 
 } // namespace

@@ -1,7 +1,6 @@
 // VtuWriter: well-formed VTK XML UnstructuredGrid with raw appended data
 // (UInt64 headers), values as handed over, and the .pvd collection.
 #include "output/vtu_writer.hpp"
-
 #include "writer_fixture.hpp"
 
 #include <cmath>
@@ -27,13 +26,14 @@ struct Vtu {
   std::string raw; ///< bytes after '_' up to the closing tag
   long points = -1, cells = -1;
 
-  std::uint64_t block_size(const std::string &name) const {
+  std::uint64_t block_size(const std::string& name) const {
     std::uint64_t n = 0;
     std::memcpy(&n, raw.data() + arrays.at(name).offset, sizeof n);
     return n;
   }
-  template <typename T> std::vector<T> values(const std::string &name) const {
-    const auto &a = arrays.at(name);
+  template <typename T>
+  std::vector<T> values(const std::string& name) const {
+    const auto& a = arrays.at(name);
     const std::uint64_t n = block_size(name);
     std::vector<T> v(n / sizeof(T));
     std::memcpy(v.data(), raw.data() + a.offset + sizeof n, n);
@@ -41,7 +41,7 @@ struct Vtu {
   }
 };
 
-Vtu parse_vtu(const std::filesystem::path &path) {
+Vtu parse_vtu(const std::filesystem::path& path) {
   const std::string text = read_file(path);
   Vtu v;
   const std::string open_tag = "<AppendedData encoding=\"raw\">";
@@ -51,13 +51,11 @@ Vtu parse_vtu(const std::filesystem::path &path) {
   const auto underscore = text.find('_', app + open_tag.size());
   const std::string close_tag = "\n  </AppendedData>\n</VTKFile>\n";
   EXPECT_EQ(text.substr(text.size() - close_tag.size()), close_tag);
-  v.raw = text.substr(underscore + 1,
-                      text.size() - close_tag.size() - underscore - 1);
+  v.raw = text.substr(underscore + 1, text.size() - close_tag.size() - underscore - 1);
 
   std::smatch m;
-  if (std::regex_search(
-          v.header, m,
-          std::regex("NumberOfPoints=\"(\\d+)\" NumberOfCells=\"(\\d+)\""))) {
+  if (std::regex_search(v.header, m,
+                        std::regex("NumberOfPoints=\"(\\d+)\" NumberOfCells=\"(\\d+)\""))) {
     v.points = std::stol(m[1]);
     v.cells = std::stol(m[2]);
   }
@@ -69,8 +67,7 @@ Vtu parse_vtu(const std::filesystem::path &path) {
                        "[^>]* format=\"appended\" offset=\"(\\d+)\"/>");
   std::istringstream in(v.header);
   for (std::string line; std::getline(in, line);) {
-    if (std::regex_search(line, m, sec))
-      section = m[1];
+    if (std::regex_search(line, m, sec)) section = m[1];
     if (std::regex_search(line, m, arr)) {
       Vtu::ArrayDecl d;
       d.section = section;
@@ -83,13 +80,10 @@ Vtu parse_vtu(const std::filesystem::path &path) {
   return v;
 }
 
-std::size_t type_size(const std::string &t) {
-  if (t == "Float64" || t == "Int64" || t == "UInt64")
-    return 8;
-  if (t == "Int32" || t == "Float32")
-    return 4;
-  if (t == "UInt8" || t == "Int8")
-    return 1;
+std::size_t type_size(const std::string& t) {
+  if (t == "Float64" || t == "Int64" || t == "UInt64") return 8;
+  if (t == "Int32" || t == "Float32") return 4;
+  if (t == "UInt8" || t == "Int8") return 1;
   ADD_FAILURE() << "unexpected type " << t;
   return 0;
 }
@@ -100,16 +94,18 @@ TEST(OutputVtu, WellFormedAndSizesAddUp) {
   VtuWriter w(dir, "wt");
   run_standard(w, m);
   const Vtu v = parse_vtu(dir / "wt_1_2.vtu");
-  EXPECT_NE(v.header.find("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\""),
-            std::string::npos);
+  EXPECT_NE(v.header.find("<VTKFile type=\"UnstructuredGrid\" version=\"1.0\""), std::string::npos);
   EXPECT_NE(v.header.find("header_type=\"UInt64\""), std::string::npos);
+  // The file names the element type ids it uses (the values of gapfem's ElementType, listed in
+  // docs/results.md).
+  EXPECT_NE(v.header.find("element_type ids: 6=C3D8 15=GAPUNI\n"), std::string::npos);
   EXPECT_EQ(v.points, 9);
   EXPECT_EQ(v.cells, 2);
   // Each block: 8-byte size header + tuples * components * type size, blocks
   // back to back, the last one ending where the appended section ends.
   // Connectivity has 8 + 2 = 10 entries.
   std::vector<std::pair<std::uint64_t, std::uint64_t>> extents; // (offset, end)
-  for (const auto &[name, a] : v.arrays) {
+  for (const auto& [name, a] : v.arrays) {
     std::uint64_t tuples = 0;
     if (a.section == "PointData" || a.section == "Points")
       tuples = 9;
@@ -130,9 +126,9 @@ TEST(OutputVtu, WellFormedAndSizesAddUp) {
   for (std::size_t k = 1; k < extents.size(); ++k)
     EXPECT_EQ(extents[k].first, extents[k - 1].second);
   EXPECT_EQ(extents.back().second, v.raw.size());
-  for (const char *name : {"U", "RF", "element_label", "element_type", "S", "E",
-                           "gap_status", "gap_clearance", "gap_pressure",
-                           "Points", "connectivity", "offsets", "types"})
+  for (const char* name :
+       {"U", "RF", "element_label", "element_type", "S", "E", "gap_status", "gap_clearance",
+        "gap_pressure", "Points", "connectivity", "offsets", "types"})
     EXPECT_TRUE(v.arrays.count(name)) << name;
   EXPECT_FALSE(v.arrays.count("NT")) << "no temperature in this model";
 }
@@ -147,18 +143,14 @@ TEST(OutputVtu, ValuesAndTopology) {
   ASSERT_EQ(u.size(), 27u);
   for (int n = 0; n < 9; ++n) {
     const Vec3 e = disp(kNodeLabels[n], 1.0);
-    for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(u[3 * n + c], e[c]);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(u[3 * n + c], e[c]);
   }
   EXPECT_EQ(v.values<double>("Points")[3 * 8 + 2], 1.1); // node 5 at z = 1.1
   EXPECT_EQ(v.values<std::int32_t>("connectivity"),
             (std::vector<std::int32_t>{0, 1, 2, 3, 4, 5, 6, 7, 4, 8}));
-  EXPECT_EQ(v.values<std::int64_t>("offsets"),
-            (std::vector<std::int64_t>{8, 10}));
-  EXPECT_EQ(v.values<std::uint8_t>("types"),
-            (std::vector<std::uint8_t>{12, 3})); // hex, line
-  EXPECT_EQ(v.values<std::int64_t>("element_label"),
-            (std::vector<std::int64_t>{7, 3}));
+  EXPECT_EQ(v.values<std::int64_t>("offsets"), (std::vector<std::int64_t>{8, 10}));
+  EXPECT_EQ(v.values<std::uint8_t>("types"), (std::vector<std::uint8_t>{12, 3})); // hex, line
+  EXPECT_EQ(v.values<std::int64_t>("element_label"), (std::vector<std::int64_t>{7, 3}));
   EXPECT_EQ(v.values<std::int32_t>("element_type"),
             (std::vector<std::int32_t>{static_cast<int>(ElementType::C3D8),
                                        static_cast<int>(ElementType::GAPUNI)}));
@@ -166,14 +158,12 @@ TEST(OutputVtu, ValuesAndTopology) {
   // lands in the Voigt slots 11, 12, 13 = 0, 3, 4; the slots it does not have
   // are 0.
   const auto s = v.values<double>("S");
-  for (int c = 0; c < 6; ++c)
-    EXPECT_DOUBLE_EQ(s[c], 45.0 + c);
+  for (int c = 0; c < 6; ++c) EXPECT_DOUBLE_EQ(s[c], 45.0 + c);
   EXPECT_EQ(std::vector<double>(s.begin() + 6, s.end()),
             (std::vector<double>{50.0, 0.0, 0.0, 2.0, 0.0, 0.0}));
   // Gap status: -1 for the brick, Stick (2) for the gap; clearance NaN for the
   // brick.
-  EXPECT_EQ(v.values<std::int32_t>("gap_status"),
-            (std::vector<std::int32_t>{-1, 2}));
+  EXPECT_EQ(v.values<std::int32_t>("gap_status"), (std::vector<std::int32_t>{-1, 2}));
   const auto h = v.values<double>("gap_clearance");
   EXPECT_TRUE(std::isnan(h[0]));
   EXPECT_EQ(h[1], 0.0);
@@ -205,11 +195,9 @@ TEST(OutputVtu, PvdListsFrames) {
   w.end(m, make_run());
   pvd = read_file(dir / "wt.pvd");
   EXPECT_NE(pvd.find("<VTKFile type=\"Collection\""), std::string::npos);
-  EXPECT_NE(
-      pvd.find("timestep=\"1\" group=\"\" part=\"0\" file=\"wt_1_3.vtu\""),
-      std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(dir / "wt_1_2.vtu"))
-      << "no field output due";
+  EXPECT_NE(pvd.find("timestep=\"1\" group=\"\" part=\"0\" file=\"wt_1_3.vtu\""),
+            std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "wt_1_2.vtu")) << "no field output due";
   EXPECT_NE(pvd.find("</Collection>\n</VTKFile>"), std::string::npos);
 }
 
@@ -236,15 +224,12 @@ TEST(OutputVtu, CellTypes) {
 TEST(OutputVtu, QuadraticTetraNodeOrder) {
   Model m;
   m.job_name = "tet";
-  const std::vector<Vec3> corners = {
-      {0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 5}};
-  const int abaqus_edges[6][2] = {{0, 1}, {1, 2}, {2, 0},
-                                  {0, 3}, {1, 3}, {2, 3}};
+  const std::vector<Vec3> corners = {{0, 0, 0}, {2, 0, 0}, {0, 3, 0}, {0, 0, 5}};
+  const int abaqus_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
   std::vector<Vec3> x = corners;
-  for (const auto &e : abaqus_edges) {
+  for (const auto& e : abaqus_edges) {
     Vec3 mid;
-    for (int c = 0; c < 3; ++c)
-      mid[c] = 0.5 * (corners[e[0]][c] + corners[e[1]][c]);
+    for (int c = 0; c < 3; ++c) mid[c] = 0.5 * (corners[e[0]][c] + corners[e[1]][c]);
     x.push_back(mid);
   }
   for (int i = 0; i < 10; ++i) {
@@ -275,8 +260,7 @@ TEST(OutputVtu, QuadraticTetraNodeOrder) {
   const int vtk_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
   for (int k = 0; k < 6; ++k)
     for (int c = 0; c < 3; ++c) {
-      const double a = pts[3 * conn[vtk_edges[k][0]] + c],
-                   b = pts[3 * conn[vtk_edges[k][1]] + c];
+      const double a = pts[3 * conn[vtk_edges[k][0]] + c], b = pts[3 * conn[vtk_edges[k][1]] + c];
       EXPECT_EQ(pts[3 * conn[4 + k] + c], 0.5 * (a + b)) << "VTK edge " << k;
     }
   EXPECT_FALSE(v.arrays.count("U")) << "no nodal results in this frame";

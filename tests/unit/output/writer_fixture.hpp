@@ -16,11 +16,10 @@
 #include "model/model.hpp"
 #include "output/results.hpp"
 
-#include <gtest/gtest.h>
-
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -28,21 +27,18 @@
 
 namespace gapfem::testing_output {
 
-inline constexpr std::array<std::string_view, 6> kSNames = {
-    "S11", "S22", "S33", "S12", "S13", "S23"};
-inline constexpr std::array<std::string_view, 6> kENames = {
-    "E11", "E22", "E33", "E12", "E13", "E23"};
-inline constexpr std::array<std::string_view, 3> kGapSNames = {"S11", "S12",
-                                                               "S13"};
-inline constexpr std::array<std::string_view, 3> kGapENames = {"E11", "E12",
-                                                               "E13"};
+inline constexpr std::array<std::string_view, 6> kSNames = {"S11", "S22", "S33",
+                                                            "S12", "S13", "S23"};
+inline constexpr std::array<std::string_view, 6> kENames = {"E11", "E22", "E33",
+                                                            "E12", "E13", "E23"};
+inline constexpr std::array<std::string_view, 3> kGapSNames = {"S11", "S12", "S13"};
+inline constexpr std::array<std::string_view, 3> kGapENames = {"E11", "E12", "E13"};
 
 inline constexpr std::uint8_t kAllU =
     dof_bit(DofType::U1) | dof_bit(DofType::U2) | dof_bit(DofType::U3);
 
 /// Node labels by NodeId.
-inline const std::vector<Label> kNodeLabels = {10, 20, 30, 40, 50,
-                                               60, 70, 80, 5};
+inline const std::vector<Label> kNodeLabels = {10, 20, 30, 40, 50, 60, 70, 80, 5};
 
 inline Model make_model() {
   Model m;
@@ -50,9 +46,8 @@ inline Model make_model() {
   m.job_name = "wt";
   m.source_files = {"wt.inp"};
   m.space = ModelSpace::ThreeD;
-  const std::vector<Vec3> x = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
-                               {0, 1, 0}, {0, 0, 1}, {1, 0, 1},
-                               {1, 1, 1}, {0, 1, 1}, {0, 0, 1.1}};
+  const std::vector<Vec3> x = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},  {0, 0, 1},
+                               {1, 0, 1}, {1, 1, 1}, {0, 1, 1}, {0, 0, 1.1}};
   for (std::size_t i = 0; i < x.size(); ++i) {
     m.mesh.node_labels.push_back(kNodeLabels[i]);
     m.mesh.coords.push_back(x[i]);
@@ -108,7 +103,9 @@ inline Vec3 disp(Label label, double f) {
 }
 
 /// C3D8 stress at point p (0-based), component c: 10*(p+1) + c.
-inline double c3d8_stress(int p, int c) { return 10.0 * (p + 1) + c; }
+inline double c3d8_stress(int p, int c) {
+  return 10.0 * (p + 1) + c;
+}
 
 inline ElementResult c3d8_result(double f) {
   ElementResult r;
@@ -127,10 +124,8 @@ inline ElementResult c3d8_result(double f) {
 inline ElementResult gap_result(bool thermal = false) {
   ElementResult r;
   r.elem = 1;
-  r.data.blocks.push_back(
-      OutputBlock{ElemVar::S, kGapSNames, 1, {50.0, 2.0, 0.0}});
-  r.data.blocks.push_back(
-      OutputBlock{ElemVar::E, kGapENames, 1, {0.0, 1e-3, 0.0}});
+  r.data.blocks.push_back(OutputBlock{ElemVar::S, kGapSNames, 1, {50.0, 2.0, 0.0}});
+  r.data.blocks.push_back(OutputBlock{ElemVar::E, kGapENames, 1, {0.0, 1e-3, 0.0}});
   GapRecord g;
   g.status = ContactStatus::Stick;
   g.clearance = 0.0;
@@ -150,8 +145,7 @@ inline ElementResult gap_result(bool thermal = false) {
   return r;
 }
 
-inline Frame make_frame(const Model &m, int increment, double step_time,
-                        bool last) {
+inline Frame make_frame(const Model& m, int increment, double step_time, bool last) {
   Frame fr;
   fr.step = 1;
   fr.increment = increment;
@@ -160,7 +154,7 @@ inline Frame make_frame(const Model &m, int increment, double step_time,
   fr.dt = 0.5;
   fr.last_in_step = last;
   const auto n = static_cast<std::size_t>(m.mesh.n_nodes());
-  auto &r = fr.nodes;
+  auto& r = fr.nodes;
   r.U.resize(n);
   r.UR.resize(n);
   r.RF.resize(n);
@@ -172,16 +166,13 @@ inline Frame make_frame(const Model &m, int increment, double step_time,
   r.CFL.resize(n);
   r.dof_mask.assign(n, kAllU);
   r.any_displacement = true;
-  for (std::size_t i = 0; i < n; ++i)
-    r.U[i] = disp(m.mesh.node_labels[i], step_time);
+  for (std::size_t i = 0; i < n; ++i) r.U[i] = disp(m.mesh.node_labels[i], step_time);
   // Reactions at the four bottom nodes (10..40) balance a load of -100 * f in
   // direction 3.
-  for (std::size_t i = 0; i < 4; ++i)
-    r.RF[i] = {0.0, 0.0, 25.0 * step_time};
+  for (std::size_t i = 0; i < 4; ++i) r.RF[i] = {0.0, 0.0, 25.0 * step_time};
   r.CF[6] = {0.0, 0.0, -100.0 * step_time};
   fr.element_slot.assign(m.mesh.n_elements(), -1);
-  if (last)
-    fr.elements.push_back(c3d8_result(step_time));
+  if (last) fr.elements.push_back(c3d8_result(step_time));
   fr.elements.push_back(gap_result());
   for (std::size_t k = 0; k < fr.elements.size(); ++k)
     fr.element_slot[fr.elements[k].elem] = static_cast<std::int32_t>(k);
@@ -199,7 +190,7 @@ inline StepSummary make_summary() {
   s.increments = 2;
   s.attempts = 3;
   s.iterations = 7;
-  auto &c = s.checks;
+  auto& c = s.checks;
   c.n_gaps = 1;
   c.n_stick = 1;
   c.max_penetration = 2.5e-7;
@@ -222,8 +213,7 @@ inline RunSummary make_run() {
   return r;
 }
 
-inline IncrementInfo inc_info(int increment, int attempt, bool converged,
-                              double step_time) {
+inline IncrementInfo inc_info(int increment, int attempt, bool converged, double step_time) {
   IncrementInfo i;
   i.step = 1;
   i.increment = increment;
@@ -240,7 +230,7 @@ inline IncrementInfo inc_info(int increment, int attempt, bool converged,
 /// A fresh, empty directory under the test temp dir, named after the running
 /// test.
 inline std::filesystem::path fresh_dir() {
-  const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   auto dir = std::filesystem::path(::testing::TempDir()) / "gapfem_output" /
              (std::string(info->test_suite_name()) + "_" + info->name());
   std::filesystem::remove_all(dir);
@@ -248,23 +238,22 @@ inline std::filesystem::path fresh_dir() {
   return dir;
 }
 
-inline std::string read_file(const std::filesystem::path &p) {
+inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
 
-inline std::vector<std::string> read_lines(const std::filesystem::path &p) {
+inline std::vector<std::string> read_lines(const std::filesystem::path& p) {
   std::vector<std::string> lines;
   std::ifstream in(p);
-  for (std::string line; std::getline(in, line);)
-    lines.push_back(line);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
 }
 
 /// Drive one writer through the standard two-frame run.
-inline void run_standard(ResultWriter &w, const Model &m) {
+inline void run_standard(ResultWriter& w, const Model& m) {
   w.begin(m);
   w.begin_step(m, 0);
   w.increment(inc_info(1, 1, false, 0.5));
