@@ -164,6 +164,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     info.total_time = st.total_time + t0 + dt;
     info.dt = dt;
     info.converged = res.converged;
+    info.residual_history = res.residual_history;
     for (auto* w : writers) w->increment(info);
     if (res.converged) {
       prob.commit();

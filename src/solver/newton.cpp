@@ -89,6 +89,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
         ok = r <= c.residual_ratio * qt && cmax[f] <= c.correction_ratio * inc[f];
       converged &= ok;
     }
+    res.residual_history.push_back(worst_ratio);
     log::debug("  iteration {}: residual/flux {:.3e}, status changes {}, constraint {:.3e}",
                res.iterations, worst_ratio, ev.status_changes, ev.constraint_max);
     if (converged) {

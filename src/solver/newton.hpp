@@ -36,6 +36,7 @@ struct NewtonResult {
   std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
   std::string reason;        ///< why it did not converge
   std::vector<ElemId> chattering;
+  std::vector<double> residual_history; ///< worst residual/flux ratio after each iteration
   bool singular = false;
   std::vector<LocalIndex> singular_equations;
 };

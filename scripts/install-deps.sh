@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs gapfem's build and test dependencies from Debian 12 packages (idempotent: only what is
+# missing is installed). Needs root (or sudo) when something is missing.
+set -euo pipefail
+packages=(build-essential cmake ninja-build pkg-config
+          libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
+          libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+          calculix-ccx python3 time)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "gapfem: all dependencies are installed"
+  exit 0
+fi
+echo "gapfem: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
