@@ -1,0 +1,456 @@
+#pragma once
+/// @file continuum_kernel.hpp
+/// The stress/displacement continuum element kernels (C3D8, C3D4, C3D10, CPS3, CPS4, CPE3, CPE4,
+/// CAX3, CAX4) as one template over the element traits. Theory: docs/theory/continuum.md.
+///
+/// Formulation, per integration point q with reference volume weight dV_q (w det J, times the
+/// thickness for plane elements or 2 pi R for axisymmetric ones):
+///   small strain  eps = sym(H),                       sigma = C : (eps - eps_th I)
+///   NLGEOM        E = sym(H) + 1/2 H^T H (total Lagrangian), S = C : (E - eps_th I)
+///   residual      r = sum_q B^T s dV_q,   tangent K = sum_q (B^T D B + geometric) dV_q
+/// B-bar (C3D8, CPE4, CAX4; Abaqus's fully integrated first-order elements use selectively reduced
+/// integration of the volumetric part, Abaqus Theory Guide, "Solid isoparametric quadrilaterals
+/// and hexahedra", section "Fully integrated first-order isoparametric elements"): the volumetric
+/// part of the strain (the trace over the three normal components, which includes the hoop strain
+/// of CAX4) is replaced by its element mean, Ebar = E + (Theta_bar - tr E)/3 I. Under NLGEOM the
+/// same substitution is applied to the Green-Lagrange strain; the element energy is a function of
+/// Ebar(u), so the tangent is its Hessian and stays symmetric.
+#include "elements/element_kernel.hpp"
+#include "elements/solid/continuum_law.hpp"
+#include "elements/solid/continuum_loads.hpp"
+#include "fem/element_faces.hpp"
+#include "fem/quadrature.hpp"
+#include "fem/shape_functions.hpp"
+#include "model/material.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <numbers>
+#include <string_view>
+
+namespace gapfem {
+
+/// What a continuum kernel needs from the model.
+struct ContinuumSetup {
+  Material material;      ///< copy of the section's material
+  double thickness = 1.0; ///< plane elements
+  bool needs_temperature = false;
+};
+
+/// Compile-time description of one continuum element type.
+template <ElementType T, Shape S, Kinematics K, bool BBar>
+struct ContinuumTraits {
+  static constexpr ElementType type = T;
+  static constexpr Shape shape = S;
+  static constexpr Kinematics kin = K;
+  static constexpr bool bbar = BBar;
+};
+
+namespace continuum_detail {
+inline constexpr std::array<DofType, 3> kDofs3{DofType::U1, DofType::U2, DofType::U3};
+inline constexpr std::array<DofType, 2> kDofs2{DofType::U1, DofType::U2};
+inline constexpr std::array<std::string_view, 6> kS3{"S11", "S22", "S33", "S12", "S13", "S23"};
+inline constexpr std::array<std::string_view, 6> kE3{"E11", "E22", "E33", "E12", "E13", "E23"};
+inline constexpr std::array<std::string_view, 4> kS4{"S11", "S22", "S33", "S12"};
+inline constexpr std::array<std::string_view, 4> kE4{"E11", "E22", "E33", "E12"};
+inline constexpr std::array<std::string_view, 3> kSps{"S11", "S22", "S12"};
+inline constexpr std::array<std::string_view, 3> kEps{"E11", "E22", "E12"};
+
+constexpr int n_strain(Kinematics k) {
+  return k == Kinematics::ThreeD ? 6 : (k == Kinematics::PlaneStress ? 3 : 4);
+}
+constexpr int n_normal(Kinematics k) {
+  return k == Kinematics::PlaneStress ? 2 : 3;
+}
+constexpr int n_points(Shape s) {
+  switch (s) {
+  case Shape::Hex8:
+    return 8;
+  case Shape::Tet10:
+    return 4;
+  case Shape::Quad4:
+    return 4;
+  default:
+    return 1;
+  }
+}
+} // namespace continuum_detail
+
+template <class Tr>
+class ContinuumKernel final : public ElementKernel {
+ public:
+  static constexpr Kinematics kKin = Tr::kin;
+  static constexpr int NN = shape_n_nodes(Tr::shape);
+  static constexpr int ND = kKin == Kinematics::ThreeD ? 3 : 2;
+  static constexpr int NS = continuum_detail::n_strain(kKin);
+  static constexpr int NNRM = continuum_detail::n_normal(kKin);
+  static constexpr int NDOF = NN * ND;
+  static constexpr int NIP = continuum_detail::n_points(Tr::shape);
+  static constexpr bool kAxi = kKin == Kinematics::Axisymmetric;
+
+  using VecS = Eigen::Matrix<double, NS, 1>;
+  using MatB = Eigen::Matrix<double, NS, NDOF>;
+  using VecD = Eigen::Matrix<double, NDOF, 1>;
+  using MatK = Eigen::Matrix<double, NDOF, NDOF, Eigen::RowMajor>;
+  using MatG = Eigen::Matrix<double, NN, ND>;
+  using MatF = Eigen::Matrix<double, ND, ND>;
+
+  explicit ContinuumKernel(ContinuumSetup setup) : _setup(std::move(setup)) {
+    const auto rule = full_integration_rule(Tr::shape);
+    FE_CHECK(static_cast<int>(rule.size()) == NIP, "continuum rule size mismatch");
+    for (int q = 0; q < NIP; ++q) {
+      _w[q] = rule[q].weight;
+      double N[NN], dN[NN * ND];
+      ShapeFunctions<Tr::shape>::eval(rule[q].xi.data(), N, dN);
+      for (int a = 0; a < NN; ++a) {
+        _N[q](a) = N[a];
+        for (int k = 0; k < ND; ++k) _dN[q](a, k) = dN[a * ND + k];
+      }
+    }
+    _const_elastic =
+        _setup.material.elastic.n_rows() <= 1 || _setup.material.elastic.keys.size() <= 1;
+    if (_const_elastic) _setup.material.elastic_at(0.0, _E0, _nu0);
+  }
+
+  ElementType type() const override { return Tr::type; }
+  std::span<const DofType> node_dofs(int) const override {
+    if constexpr (ND == 3)
+      return continuum_detail::kDofs3;
+    else
+      return continuum_detail::kDofs2;
+  }
+  bool uses_temperature_field() const override { return _setup.needs_temperature; }
+
+  std::string validate(const ElementInput& in) const override {
+    for (int q = 0; q < NIP; ++q) {
+      MatG g;
+      double detJ = 0.0;
+      reference_gradients(in, q, g, detJ);
+      if (!(detJ > 0.0))
+        return fmt::format("element is inverted or degenerate (Jacobian <= 0 at integration point "
+                           "{}); check the node order",
+                           q + 1);
+      if constexpr (kAxi) {
+        if (!(radius(in, q) > 0.0))
+          return fmt::format("axisymmetric element has integration point {} at r <= 0; "
+                             "axisymmetric models must lie in x >= 0",
+                             q + 1);
+      }
+    }
+    if (_setup.thickness <= 0.0) return "the *SOLID SECTION thickness must be positive";
+    return {};
+  }
+
+  void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    Work w;
+    compute(in, w);
+    Eigen::Map<VecD> r(out.residual.data());
+    const bool want_K = out.want_tangent && out.tangent.size() == NDOF * NDOF;
+    MatK K;
+    if (want_K) K.setZero();
+    const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    MatB DB;
+    for (int q = 0; q < NIP; ++q) {
+      const Ip& p = w.ip[q];
+      r.noalias() += p.dV * (p.B.transpose() * p.S);
+      if (!want_K) continue;
+      p.law.apply(NNRM, p.B, DB);
+      K.noalias() += p.dV * (p.B.transpose() * DB);
+      if (nlgeom) add_geometric(p, w, q, K);
+    }
+    if (want_K) {
+      Eigen::Map<MatK> Kout(out.tangent.data());
+      Kout += K;
+    }
+  }
+
+  bool supports_load(DistLoadKind kind, int face) const override {
+    if (kind == DistLoadKind::Pressure)
+      return face >= 1 && face <= static_cast<int>(element_faces(Tr::shape).size());
+    return (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce) && face == 0;
+  }
+
+  void load(const ElementInput& in, const DistributedLoad& ld, double magnitude, double,
+            std::span<double> f_ext, std::span<double> tangent) const override {
+    LoadGeometry g{kKin, Tr::shape, in.X, in.u, ND, _setup.thickness};
+    const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    switch (ld.kind) {
+    case DistLoadKind::Pressure:
+      continuum_face_pressure(g, ld.face, magnitude, nlgeom, f_ext, tangent);
+      return;
+    case DistLoadKind::Gravity: {
+      if (_setup.material.density.empty())
+        throw InputError(ld.loc, fmt::format("element {}", in.label),
+                         fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label,
+                                     _setup.material.name));
+      const double rho = _setup.material.density.value(mean_temperature(in));
+      continuum_body_force(g,
+                           {rho * magnitude * ld.direction[0], rho * magnitude * ld.direction[1],
+                            rho * magnitude * ld.direction[2]},
+                           f_ext);
+      return;
+    }
+    case DistLoadKind::BodyForce:
+      continuum_body_force(
+          g,
+          {magnitude * ld.direction[0], magnitude * ld.direction[1], magnitude * ld.direction[2]},
+          f_ext);
+      return;
+    default:
+      return;
+    }
+  }
+
+  bool supports_output(ElemVar var) const override {
+    return var == ElemVar::S || var == ElemVar::E;
+  }
+
+  void recover(const ElementInput& in, ElementRecovery& out) const override {
+    Work w;
+    compute(in, w);
+    const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    OutputBlock sb, eb;
+    sb.var = ElemVar::S;
+    eb.var = ElemVar::E;
+    if constexpr (kKin == Kinematics::ThreeD) {
+      sb.names = continuum_detail::kS3;
+      eb.names = continuum_detail::kE3;
+    } else if constexpr (kKin == Kinematics::PlaneStress) {
+      sb.names = continuum_detail::kSps;
+      eb.names = continuum_detail::kEps;
+    } else {
+      sb.names = continuum_detail::kS4;
+      eb.names = continuum_detail::kE4;
+    }
+    sb.n_points = eb.n_points = NIP;
+    sb.values.resize(NIP * NS);
+    eb.values.resize(NIP * NS);
+    for (int q = 0; q < NIP; ++q) {
+      const Ip& p = w.ip[q];
+      VecS sig = p.S;
+      if (nlgeom) sig = cauchy(p);
+      for (int c = 0; c < NS; ++c) {
+        sb.values[q * NS + c] = sig(c);
+        eb.values[q * NS + c] = p.E(c);
+      }
+    }
+    out.blocks.push_back(std::move(sb));
+    out.blocks.push_back(std::move(eb));
+  }
+
+ private:
+  /// Per integration point state of one evaluation.
+  struct Ip {
+    MatG g; ///< dN/dX
+    double dV = 0.0;
+    double R = 1.0; ///< reference radius (axisymmetric)
+    MatF F;         ///< in-plane deformation gradient (identity for small strain)
+    double F33 = 1.0;
+    VecS E; ///< (modified) strain, engineering shears
+    MatB B; ///< d E / d u (modified for B-bar)
+    VecS S; ///< stress conjugate to E (second Piola-Kirchhoff under NLGEOM)
+    ElasticPoint law;
+  };
+  struct Work {
+    std::array<Ip, NIP> ip;
+    double p_bar = 0.0; ///< element mean of the mean normal stress (B-bar)
+  };
+
+  static constexpr std::array<std::array<int, 2>, NS> comps() {
+    if constexpr (kKin == Kinematics::ThreeD)
+      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
+    else if constexpr (kKin == Kinematics::PlaneStress)
+      return {{{0, 0}, {1, 1}, {0, 1}}};
+    else
+      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}}};
+  }
+
+  void reference_gradients(const ElementInput& in, int q, MatG& g, double& detJ) const {
+    MatF J = MatF::Zero();
+    for (int a = 0; a < NN; ++a)
+      for (int k = 0; k < ND; ++k)
+        for (int l = 0; l < ND; ++l) J(k, l) += in.X[a][k] * _dN[q](a, l);
+    detJ = J.determinant();
+    g.noalias() = _dN[q] * J.inverse();
+  }
+
+  double radius(const ElementInput& in, int q) const {
+    double R = 0.0;
+    for (int a = 0; a < NN; ++a) R += _N[q](a) * in.X[a][0];
+    return R;
+  }
+
+  double mean_temperature(const ElementInput& in) const {
+    const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
+    if (T.empty()) return 0.0;
+    double s = 0.0;
+    for (double t : T) s += t;
+    return s / static_cast<double>(T.size());
+  }
+
+  ElasticPoint point_law(const ElementInput& in, int q) const {
+    double E = _E0, nu = _nu0, eth = 0.0;
+    double T = 0.0, Ti = 0.0;
+    const bool thermal = !in.temperature.empty();
+    if (thermal || !_const_elastic) {
+      for (int a = 0; a < NN; ++a) {
+        if (thermal) T += _N[q](a) * in.temperature[a];
+        if (!in.initial_temperature.empty()) Ti += _N[q](a) * in.initial_temperature[a];
+      }
+      if (!thermal) T = Ti;
+    }
+    if (!_const_elastic) _setup.material.elastic_at(T, E, nu);
+    if (thermal) eth = _setup.material.thermal_strain(T, Ti);
+    return ElasticPoint::make(kKin, E, nu, eth);
+  }
+
+  /// Kinematics, (B-bar) strains and stresses at all points.
+  void compute(const ElementInput& in, Work& w) const {
+    const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    MatG U;
+    for (int a = 0; a < NN; ++a)
+      for (int i = 0; i < ND; ++i) U(a, i) = in.u[a * ND + i];
+    constexpr auto C = comps();
+    double V = 0.0, theta_bar = 0.0;
+    VecD b_bar = VecD::Zero();
+    for (int q = 0; q < NIP; ++q) {
+      Ip& p = w.ip[q];
+      double detJ = 0.0;
+      reference_gradients(in, q, p.g, detJ);
+      p.dV = _w[q] * detJ;
+      double hoop = 0.0; // u_r / R
+      if constexpr (kAxi) {
+        p.R = radius(in, q);
+        p.dV *= 2.0 * std::numbers::pi * p.R;
+        double ur = 0.0;
+        for (int a = 0; a < NN; ++a) ur += _N[q](a) * U(a, 0);
+        hoop = ur / p.R;
+      } else if constexpr (ND == 2) {
+        p.dV *= _setup.thickness;
+      }
+      const MatF H = U.transpose() * p.g; // H_iJ = du_i/dX_J
+      p.F = MatF::Identity();
+      p.F33 = 1.0;
+      if (nlgeom) {
+        p.F += H;
+        if constexpr (kAxi) p.F33 = 1.0 + hoop;
+        const double detF = p.F.determinant() * p.F33;
+        if (!(detF > 0.0))
+          throw ConvergenceFailure(fmt::format(
+              "element {}: the deformation gradient has det F = {:.3g} <= 0 at integration point "
+              "{} (element turned inside out); cutting back",
+              in.label, detF, q + 1));
+      }
+      for (int c = 0; c < NS; ++c) {
+        const int I = C[c][0], J = C[c][1];
+        if (I == J && I >= ND) { // out-of-plane normal: hoop (CAX) or zero (CPE)
+          p.B.row(c).setZero();
+          p.E(c) = 0.0;
+          if constexpr (kAxi) {
+            p.E(c) = nlgeom ? hoop + 0.5 * hoop * hoop : hoop;
+            for (int a = 0; a < NN; ++a) p.B(c, a * ND) = p.F33 * _N[q](a) / p.R;
+          }
+          continue;
+        }
+        if (I == J) {
+          double e = H(I, I);
+          if (nlgeom)
+            for (int k = 0; k < ND; ++k) e += 0.5 * H(k, I) * H(k, I);
+          p.E(c) = e;
+          for (int a = 0; a < NN; ++a)
+            for (int i = 0; i < ND; ++i) p.B(c, a * ND + i) = p.F(i, I) * p.g(a, I);
+        } else {
+          double e = H(I, J) + H(J, I);
+          if (nlgeom)
+            for (int k = 0; k < ND; ++k) e += H(k, I) * H(k, J);
+          p.E(c) = e;
+          for (int a = 0; a < NN; ++a)
+            for (int i = 0; i < ND; ++i)
+              p.B(c, a * ND + i) = p.F(i, I) * p.g(a, J) + p.F(i, J) * p.g(a, I);
+        }
+      }
+      p.law = point_law(in, q);
+      if constexpr (Tr::bbar) {
+        V += p.dV;
+        theta_bar += p.dV * (p.E(0) + p.E(1) + p.E(2));
+        b_bar.noalias() += p.dV * (p.B.row(0) + p.B.row(1) + p.B.row(2)).transpose();
+      }
+    }
+    if constexpr (Tr::bbar) {
+      theta_bar /= V;
+      b_bar /= V;
+      double p_sum = 0.0;
+      for (int q = 0; q < NIP; ++q) {
+        Ip& p = w.ip[q];
+        const double dtheta = (theta_bar - (p.E(0) + p.E(1) + p.E(2))) / 3.0;
+        const auto db = ((b_bar.transpose() - (p.B.row(0) + p.B.row(1) + p.B.row(2))) / 3.0).eval();
+        for (int c = 0; c < 3; ++c) {
+          p.E(c) += dtheta;
+          p.B.row(c) += db;
+        }
+        p.law.stress(NNRM, p.E, p.S);
+        p_sum += p.dV * (p.S(0) + p.S(1) + p.S(2)) / 3.0;
+      }
+      w.p_bar = p_sum / V;
+    } else {
+      for (int q = 0; q < NIP; ++q) w.ip[q].law.stress(NNRM, w.ip[q].E, w.ip[q].S);
+    }
+  }
+
+  /// Geometric stiffness sum_q dV S* : d2E/du2 with S* = S (B-bar: S - p + p_bar on the normals).
+  void add_geometric(const Ip& p, const Work& w, int q, MatK& K) const {
+    constexpr auto C = comps();
+    Eigen::Matrix<double, ND, ND> Sm = Eigen::Matrix<double, ND, ND>::Zero();
+    double S33 = 0.0;
+    double shift = 0.0;
+    if constexpr (Tr::bbar) shift = w.p_bar - (p.S(0) + p.S(1) + p.S(2)) / 3.0;
+    for (int c = 0; c < NS; ++c) {
+      const int I = C[c][0], J = C[c][1];
+      if (I == J && I >= ND) {
+        S33 = p.S(c) + shift;
+        continue;
+      }
+      const double v = p.S(c) + (I == J && c < 3 ? shift : 0.0);
+      Sm(I, J) = v;
+      Sm(J, I) = v;
+    }
+    const Eigen::Matrix<double, NN, NN> G = p.dV * (p.g * Sm * p.g.transpose());
+    for (int a = 0; a < NN; ++a)
+      for (int b = 0; b < NN; ++b) {
+        for (int i = 0; i < ND; ++i) K(a * ND + i, b * ND + i) += G(a, b);
+        if constexpr (kAxi) K(a * ND, b * ND) += p.dV * S33 * _N[q](a) * _N[q](b) / (p.R * p.R);
+      }
+  }
+
+  /// Cauchy stress sigma = F S F^T / det F in the output component order.
+  VecS cauchy(const Ip& p) const {
+    constexpr auto C = comps();
+    Eigen::Matrix3d S = Eigen::Matrix3d::Zero(), F = Eigen::Matrix3d::Identity();
+    for (int c = 0; c < NS; ++c) {
+      const int I = C[c][0], J = C[c][1];
+      S(I, J) = S(J, I) = p.S(c);
+    }
+    F.topLeftCorner<ND, ND>() = p.F;
+    if constexpr (kKin == Kinematics::PlaneStress) {
+      const double e33 = p.law.plane_stress_e33(p.E(0) + p.E(1));
+      F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * e33, 0.0));
+    } else if constexpr (ND == 2) {
+      F(2, 2) = p.F33;
+    }
+    const Eigen::Matrix3d sig = F * S * F.transpose() / F.determinant();
+    VecS out;
+    for (int c = 0; c < NS; ++c) out(c) = sig(C[c][0], C[c][1]);
+    return out;
+  }
+
+  ContinuumSetup _setup;
+  bool _const_elastic = true;
+  double _E0 = 0.0, _nu0 = 0.0;
+  std::array<double, NIP> _w{};
+  std::array<Eigen::Matrix<double, NN, 1>, NIP> _N{};
+  std::array<MatG, NIP> _dN{};
+};
+
+} // namespace gapfem

@@ -1,0 +1,170 @@
+#include "elements/solid/continuum_loads.hpp"
+
+#include "common/error.hpp"
+#include "fem/element_faces.hpp"
+#include "fem/quadrature.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace gapfem {
+namespace {
+
+constexpr int kMaxNodes = 10;
+
+int displacement_dofs(Kinematics k) {
+  return k == Kinematics::ThreeD ? 3 : 2;
+}
+
+/// Current (or reference) coordinates of local node a.
+std::array<double, 3> node_position(const LoadGeometry& g, int a, bool deformed) {
+  std::array<double, 3> x = g.X[a];
+  if (deformed && !g.u.empty()) {
+    const int nd = displacement_dofs(g.kin);
+    for (int i = 0; i < nd; ++i) x[i] += g.u[a * g.dofs_per_node + i];
+  }
+  return x;
+}
+
+/// Rule used for body loads: exact for the straight-sided cell with a linear radius weight.
+std::span<const QuadraturePoint> body_rule(Shape cell) {
+  switch (cell) {
+  case Shape::Tri3:
+    return kTri3;
+  case Shape::Tet4:
+    return kTet4;
+  default:
+    return full_integration_rule(cell);
+  }
+}
+
+} // namespace
+
+void continuum_face_pressure(const LoadGeometry& g, int face, double p, bool follower,
+                             std::span<double> f, std::span<double> tangent) {
+  const auto faces = element_faces(g.cell);
+  FE_CHECK(face >= 1 && face <= static_cast<int>(faces.size()), "face number out of range");
+  const FaceDef& fd = faces[face - 1];
+  const int nf = fd.n_nodes;
+  const int stride = g.dofs_per_node;
+  const std::size_t n_dofs = f.size();
+  const bool add_tangent = follower && tangent.size() == n_dofs * n_dofs;
+  auto K = [&](int row, int col) -> double& { return tangent[row * n_dofs + col]; };
+
+  std::array<std::array<double, 3>, kMaxNodes> x{};
+  for (int j = 0; j < nf; ++j) x[j] = node_position(g, fd.nodes[j], follower);
+
+  std::array<double, kMaxNodes> N{};
+  std::array<double, 2 * kMaxNodes> dN{};
+  const int fdim = shape_dim(fd.shape);
+
+  for (const QuadraturePoint& q : face_load_rule(fd.shape)) {
+    shape_eval(fd.shape, q.xi, N, dN);
+    if (g.kin == Kinematics::ThreeD) {
+      std::array<double, 3> t1{}, t2{};
+      for (int j = 0; j < nf; ++j)
+        for (int i = 0; i < 3; ++i) {
+          t1[i] += x[j][i] * dN[fdim * j];
+          t2[i] += x[j][i] * dN[fdim * j + 1];
+        }
+      // n = t1 x t2 points into the element for Abaqus face orderings (element_faces.hpp).
+      const std::array<double, 3> n{t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2],
+                                    t1[0] * t2[1] - t1[1] * t2[0]};
+      for (int a = 0; a < nf; ++a)
+        for (int i = 0; i < 3; ++i) f[fd.nodes[a] * stride + i] += p * q.weight * N[a] * n[i];
+      if (!add_tangent) continue;
+      // d n / d x_b = -dN_b,xi [t2]x + dN_b,eta [t1]x, with [v]x w = v x w.
+      for (int b = 0; b < nf; ++b) {
+        const double s = dN[fdim * b], r = dN[fdim * b + 1];
+        double M[3][3];
+        const std::array<double, 3> v{-s * t2[0] + r * t1[0], -s * t2[1] + r * t1[1],
+                                      -s * t2[2] + r * t1[2]};
+        M[0][0] = 0, M[0][1] = -v[2], M[0][2] = v[1];
+        M[1][0] = v[2], M[1][1] = 0, M[1][2] = -v[0];
+        M[2][0] = -v[1], M[2][1] = v[0], M[2][2] = 0;
+        for (int a = 0; a < nf; ++a)
+          for (int i = 0; i < 3; ++i)
+            for (int k = 0; k < 3; ++k)
+              K(fd.nodes[a] * stride + i, fd.nodes[b] * stride + k) -=
+                  p * q.weight * N[a] * M[i][k];
+      }
+    } else {
+      double xp = 0.0, yp = 0.0, r = 0.0;
+      for (int j = 0; j < nf; ++j) {
+        xp += x[j][0] * dN[j];
+        yp += x[j][1] * dN[j];
+        r += x[j][0] * N[j];
+      }
+      const double scale =
+          g.kin == Kinematics::Axisymmetric ? 2.0 * std::numbers::pi * r : g.thickness;
+      // Inward normal times edge length: the tangent rotated by +90 degrees.
+      const double nx = -yp, ny = xp;
+      for (int a = 0; a < nf; ++a) {
+        f[fd.nodes[a] * stride + 0] += p * q.weight * N[a] * scale * nx;
+        f[fd.nodes[a] * stride + 1] += p * q.weight * N[a] * scale * ny;
+      }
+      if (!add_tangent) continue;
+      for (int a = 0; a < nf; ++a)
+        for (int b = 0; b < nf; ++b) {
+          const double c = p * q.weight * N[a];
+          const int ra = fd.nodes[a] * stride, cb = fd.nodes[b] * stride;
+          // d(scale * n)/dx_b: scale * dn/dx_b (+ n * dscale/dx_b for axisymmetric).
+          K(ra + 0, cb + 1) -= c * scale * (-dN[b]);
+          K(ra + 1, cb + 0) -= c * scale * dN[b];
+          if (g.kin == Kinematics::Axisymmetric) {
+            const double ds = 2.0 * std::numbers::pi * N[b];
+            K(ra + 0, cb + 0) -= c * nx * ds;
+            K(ra + 1, cb + 0) -= c * ny * ds;
+          }
+        }
+    }
+  }
+}
+
+void continuum_body_force(const LoadGeometry& g, const Vec3& b, std::span<double> f) {
+  const int n = shape_n_nodes(g.cell);
+  const int dim = shape_dim(g.cell);
+  const int nd = displacement_dofs(g.kin);
+  std::array<double, kMaxNodes> N{};
+  std::array<double, 3 * kMaxNodes> dN{};
+  for (const QuadraturePoint& q : body_rule(g.cell)) {
+    shape_eval(g.cell, q.xi, N, dN);
+    double J[3][3] = {};
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < dim; ++i)
+        for (int k = 0; k < dim; ++k) J[i][k] += g.X[a][i] * dN[dim * a + k];
+    double det = 0.0, weight = 1.0;
+    if (dim == 3) {
+      det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+            J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+            J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    } else {
+      det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+      if (g.kin == Kinematics::Axisymmetric) {
+        double r = 0.0;
+        for (int a = 0; a < n; ++a) r += N[a] * g.X[a][0];
+        weight = 2.0 * std::numbers::pi * r;
+      } else {
+        weight = g.thickness;
+      }
+    }
+    const double dV = q.weight * det * weight;
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < nd; ++i) f[a * g.dofs_per_node + i] += N[a] * b[i] * dV;
+  }
+}
+
+double continuum_reference_volume(const LoadGeometry& g) {
+  // The first component of the integral of N_a * (1, 1, 1) summed over nodes.
+  const int n = shape_n_nodes(g.cell);
+  std::array<double, 3 * kMaxNodes> f{};
+  LoadGeometry g1 = g;
+  g1.dofs_per_node = 3;
+  continuum_body_force(g1, {1.0, 1.0, 1.0}, std::span<double>(f.data(), 3 * n));
+  double v = 0.0;
+  for (int a = 0; a < n; ++a) v += f[3 * a];
+  return v;
+}
+
+} // namespace gapfem

@@ -1,0 +1,39 @@
+#pragma once
+/// @file continuum_loads.hpp
+/// Equivalent nodal forces of distributed loads on continuum elements (face pressure, body forces),
+/// shared by the stress/displacement and (later) the coupled temperature-displacement elements.
+/// Not on the hot path: sizes are dynamic, scratch is small and on the stack.
+#include "common/types.hpp"
+#include "elements/solid/continuum_law.hpp"
+#include "fem/shape_functions.hpp"
+
+#include <span>
+
+namespace gapfem {
+
+/// Geometry and DOF layout of one element for load integration.
+struct LoadGeometry {
+  Kinematics kin = Kinematics::ThreeD;
+  Shape cell = Shape::Hex8;
+  std::span<const Vec3> X;   ///< reference coordinates
+  std::span<const double> u; ///< displacements at the element's DOFs (node-major)
+  int dofs_per_node = 3;     ///< stride of u, f and tangent per node (>= displacement DOFs)
+  double thickness = 1.0;    ///< plane elements
+};
+
+/// Pressure p on face `face` (1-based, Abaqus numbering); positive pressure pushes into the
+/// element. With `follower` the load acts on the current face (X + u) and -df/du is added to
+/// `tangent` (row-major, n_dofs x n_dofs); otherwise the reference face carries it and tangent is
+/// untouched. Plane elements: per unit thickness times the thickness; axisymmetric: around 2*pi*r.
+void continuum_face_pressure(const LoadGeometry& g, int face, double p, bool follower,
+                             std::span<double> f, std::span<double> tangent);
+
+/// Body force b (per unit reference volume, `density_at(T)` already applied by the caller when the
+/// load is GRAV) integrated with the shape functions over the reference volume.
+void continuum_body_force(const LoadGeometry& g, const Vec3& b, std::span<double> f);
+
+/// Volume (3-D), area x thickness (plane) or 2*pi*r-weighted area (axisymmetric) of the reference
+/// element; used by the tests and for density-weighted loads.
+double continuum_reference_volume(const LoadGeometry& g);
+
+} // namespace gapfem
