@@ -68,6 +68,7 @@ struct InterferenceEntry {
   double allowance = 0.0; ///< v: allowable interference at amplitude 1
   bool shrink = false;    ///< SHRINK: v = the element's own initial overclosure
   int amplitude = -1;     ///< -1: ramp from 1 at step start to 0 at step end
+  bool propagated = false; ///< carried over unchanged from the previous step
   SourceLocation loc;
 };
 

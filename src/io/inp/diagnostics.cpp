@@ -1,0 +1,40 @@
+#include "io/inp/diagnostics.hpp"
+
+#include <fmt/format.h>
+
+namespace gapfem::inp {
+
+void Diagnostics::error(const InputError& e) {
+  _errors.push_back(e);
+  if (static_cast<int>(_errors.size()) >= _max_errors) throw TooManyErrors{};
+}
+
+void Diagnostics::warning(const SourceLocation& loc, const std::string& message) {
+  std::string out;
+  if (!loc.file.empty())
+    out += loc.file + (loc.line > 0 ? fmt::format(":{}", loc.line) : "") + ": ";
+  if (!loc.keyword.empty()) out += loc.keyword + ": ";
+  out += message;
+  _warnings.push_back(std::move(out));
+}
+
+void Diagnostics::throw_if_errors() const {
+  if (_errors.empty()) return;
+  if (_errors.size() == 1) throw _errors.front();
+  std::string list;
+  for (const auto& e : _errors) {
+    list += '\n';
+    list += e.what();
+  }
+  const bool capped = static_cast<int>(_errors.size()) >= _max_errors;
+  std::string head =
+      capped ? fmt::format("the deck has at least {} input errors (reading "
+                           "stopped there); fix these "
+                           "first and run again:",
+                           _errors.size())
+             : fmt::format("the deck has {} input errors; fix each of them:", _errors.size());
+  const InputError& first = _errors.front();
+  throw InputError(first.location(), "", head + list);
+}
+
+} // namespace gapfem::inp

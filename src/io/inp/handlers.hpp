@@ -1,0 +1,80 @@
+#pragma once
+/// @file handlers.hpp
+/// The keyword handlers (one function per keyword) called by the parser's
+/// keyword table. Each handler reads one keyword block into the BuildState; it
+/// reports per-line problems to the diagnostics and may throw InputError for
+/// problems of the keyword line itself.
+#include "io/inp/model_builder.hpp"
+
+namespace gapfem::inp {
+
+// handlers_mesh.cpp
+void handle_heading(BuildState& s, const Keyword& kw);
+void handle_preprint(BuildState& s, const Keyword& kw);
+void handle_node(BuildState& s, const Keyword& kw);
+void handle_element(BuildState& s, const Keyword& kw);
+void handle_nset(BuildState& s, const Keyword& kw);
+void handle_elset(BuildState& s, const Keyword& kw);
+void handle_surface(BuildState& s, const Keyword& kw);
+
+// handlers_material.cpp
+void handle_material(BuildState& s, const Keyword& kw);
+void handle_elastic(BuildState& s, const Keyword& kw);
+void handle_density(BuildState& s, const Keyword& kw);
+void handle_expansion(BuildState& s, const Keyword& kw);
+void handle_conductivity(BuildState& s, const Keyword& kw);
+void handle_specific_heat(BuildState& s, const Keyword& kw);
+void handle_amplitude(BuildState& s, const Keyword& kw);
+void handle_initial_conditions(BuildState& s, const Keyword& kw);
+void handle_physical_constants(BuildState& s, const Keyword& kw);
+
+// handlers_section.cpp
+void handle_solid_section(BuildState& s, const Keyword& kw);
+void handle_beam_section(BuildState& s, const Keyword& kw);
+void handle_spring(BuildState& s, const Keyword& kw);
+
+// handlers_gap.cpp
+void handle_gap(BuildState& s, const Keyword& kw);
+void handle_surface_behavior(BuildState& s, const Keyword& kw);
+void handle_friction(BuildState& s, const Keyword& kw);
+void handle_contact_damping(BuildState& s, const Keyword& kw);
+void handle_gap_conductance(BuildState& s, const Keyword& kw);
+void handle_gap_radiation(BuildState& s, const Keyword& kw);
+void handle_gap_heat_generation(BuildState& s, const Keyword& kw);
+/// Reads *FRICTION parameters and data (shared by *GAP and *CHANGE FRICTION).
+FrictionSpec read_friction(BuildState& s, const Keyword& kw);
+
+// handlers_step.cpp
+void handle_step(BuildState& s, const Keyword& kw);
+void handle_end_step(BuildState& s, const Keyword& kw);
+void handle_static(BuildState& s, const Keyword& kw);
+void handle_heat_transfer(BuildState& s, const Keyword& kw);
+void handle_coupled(BuildState& s, const Keyword& kw);
+void handle_change_friction(BuildState& s, const Keyword& kw);
+/// Closes an open step at the end of the deck or at a *STEP without *END STEP.
+void close_step(BuildState& s);
+
+// handlers_loads.cpp
+void handle_boundary(BuildState& s, const Keyword& kw);
+void handle_cload(BuildState& s, const Keyword& kw);
+void handle_cflux(BuildState& s, const Keyword& kw);
+void handle_dload(BuildState& s, const Keyword& kw);
+void handle_dsload(BuildState& s, const Keyword& kw);
+void handle_dflux(BuildState& s, const Keyword& kw);
+void handle_dsflux(BuildState& s, const Keyword& kw);
+void handle_film(BuildState& s, const Keyword& kw);
+void handle_sfilm(BuildState& s, const Keyword& kw);
+void handle_temperature(BuildState& s, const Keyword& kw);
+void handle_contact_interference(BuildState& s, const Keyword& kw);
+
+// handlers_output.cpp
+void handle_node_print(BuildState& s, const Keyword& kw);
+void handle_el_print(BuildState& s, const Keyword& kw);
+void handle_output(BuildState& s, const Keyword& kw);
+void handle_node_output(BuildState& s, const Keyword& kw);
+void handle_element_output(BuildState& s, const Keyword& kw);
+/// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is
+/// known.
+void resolve_preset_outputs(BuildState& s);
+
+} // namespace gapfem::inp

@@ -1,0 +1,514 @@
+// Boundary conditions and loads: *BOUNDARY, *CLOAD, *CFLUX, *DLOAD, *DSLOAD,
+// *DFLUX, *DSFLUX, *FILM, *SFILM, *TEMPERATURE, *CONTACT INTERFERENCE.
+//
+// Each keyword merges its entries into the step's active list (which starts as
+// the previous step's list with propagated = true):
+//   OP=MOD (default): an entry with the same key as an active entry of the same
+//   keyword family
+//     replaces it, other entries are added;
+//   OP=NEW: first removes every entry of the family inherited from earlier
+//   steps (propagated),
+//     then adds. Entries defined earlier in the same step are kept, so several
+//     OP=NEW keywords of one family in a step add up (CalculiX documents the
+//     same: OP=NEW acts once per step).
+// *BOUNDARY, OP=NEW also removes boundary conditions given in the model data:
+// the Abaqus Analysis User's Guide ("Boundary conditions", 34.3.1 in 2016
+// / 27.3.1 in 6.6) states that boundary conditions prescribed as model data
+// "can be modified or removed during analysis steps", and the *BOUNDARY keyword
+// page defines OP=NEW as removing all boundary conditions currently in effect;
+// model-data conditions are in effect, so they are removed as well.
+#include "io/inp/handlers.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <tuple>
+
+namespace gapfem::inp {
+namespace {
+
+bool op_new(const Keyword& kw) {
+  return enum_param(kw, "OP", {"MOD", "NEW"}, 0) == 1;
+}
+
+/// Merges `incoming` into `active` (see the file comment). `family` selects the
+/// entries of the keyword's family, `key` gives the identity of an entry.
+template <typename T, typename Family, typename Key>
+void merge(std::vector<T>& active, std::vector<T>& incoming, bool is_new, Family family, Key key) {
+  if (is_new) std::erase_if(active, [&](const T& e) { return family(e) && e.propagated; });
+  using K = decltype(key(incoming.front()));
+  std::map<K, std::size_t> where;
+  for (std::size_t i = 0; i < active.size(); ++i)
+    if (family(active[i])) where[key(active[i])] = i;
+  for (T& e : incoming) {
+    e.propagated = false;
+    const auto it = where.find(key(e));
+    if (it != where.end()) {
+      active[it->second] = std::move(e);
+    } else {
+      where[key(e)] = active.size();
+      active.push_back(std::move(e));
+    }
+  }
+}
+
+/// DOF lists of the boundary-condition types (Abaqus Analysis User's Guide,
+/// "Boundary conditions", type format).
+bool bc_type_dofs(const std::string& name, std::vector<int>& dofs) {
+  static const std::map<std::string, std::vector<int>> types = {
+      {"XSYMM", {1, 5, 6}},  {"YSYMM", {2, 4, 6}},
+      {"ZSYMM", {3, 4, 5}},  {"XASYMM", {2, 3, 4}},
+      {"YASYMM", {1, 3, 5}}, {"ZASYMM", {1, 2, 6}},
+      {"PINNED", {1, 2, 3}}, {"ENCASTRE", {1, 2, 3, 4, 5, 6}},
+  };
+  const auto it = types.find(name);
+  if (it == types.end()) return false;
+  dofs = it->second;
+  return true;
+}
+
+DofType to_dof(const FieldReader& r, long long n, std::size_t field) {
+  DofType d{};
+  if (n < 0 || n > 11 || !dof_from_abaqus(static_cast<int>(n), d))
+    r.fail(fmt::format("field {} (degree of freedom)", field + 1),
+           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 "
+                       "(displacements, rotations) "
+                       "and 11 (temperature)",
+                       n));
+  return d;
+}
+
+/// Element label written in field `field` (an element number rather than a set
+/// name)?
+bool is_label(const FieldReader& r, std::size_t field) {
+  return parse_integer(r.text(field)).has_value();
+}
+
+std::string elem_entity(const BuildState& s, ElemId e) {
+  return fmt::format("element {} ({})", s.model.element_label(e),
+                     element_info(s.model.mesh.elem_types[e]).name);
+}
+
+/// "P3" → 3 for prefix "P"; 0 for the bare prefix; -1 when the label has
+/// another form.
+int face_of(const std::string& label, std::string_view prefix) {
+  if (label.rfind(prefix, 0) != 0) return -1;
+  const std::string_view rest = std::string_view(label).substr(prefix.size());
+  if (rest.empty()) return 0;
+  const auto n = parse_integer(rest);
+  return n && *n >= 1 && *n <= 9 && rest[0] != '+' && rest[0] != '-' ? static_cast<int>(*n) : -1;
+}
+
+void check_face(const BuildState& s, const FieldReader& r, ElemId e, int face) {
+  const ElementType t = s.model.mesh.elem_types[e];
+  const int nf = n_faces(t);
+  if (face > nf)
+    r.fail(elem_entity(s, e), nf == 0 ? std::string("this element type has no faces for this load")
+                                      : fmt::format("face {} does not exist; this element type has "
+                                                    "faces 1-{}",
+                                                    face, nf));
+}
+
+const Surface& find_surface(BuildState& s, const FieldReader& r) {
+  const std::string name = to_upper(r.text(0));
+  const auto it = s.model.surfaces.find(name);
+  if (it == s.model.surfaces.end())
+    r.fail(fmt::format("surface {}", name),
+           "this surface is not defined; define it with *SURFACE, NAME=… in "
+           "the model data");
+  return it->second;
+}
+
+/// Common end of every distributed-load keyword: merge into the step's list.
+void merge_dloads(BuildState& s, const Keyword& kw, std::vector<DistributedLoad>& loads) {
+  const std::string family = kw.name;
+  merge(
+      s.step.dloads, loads, op_new(kw),
+      [&](const DistributedLoad& d) { return d.loc.keyword == family; },
+      [](const DistributedLoad& d) {
+        return std::tuple(d.elem, static_cast<int>(d.kind), d.face);
+      });
+}
+
+void require_temperature(const BuildState& s, const FieldReader& r, ElemId e) {
+  if (!element_info(s.model.mesh.elem_types[e]).temperature)
+    r.fail(elem_entity(s, e), "this element has no temperature DOF, so it cannot take a heat flux "
+                              "or film condition; use a heat-transfer or coupled element type");
+}
+void require_displacement(const BuildState& s, const FieldReader& r, ElemId e) {
+  if (!element_info(s.model.mesh.elem_types[e]).displacement)
+    r.fail(elem_entity(s, e), "this element has no displacement DOFs, so it cannot take a "
+                              "mechanical load");
+}
+
+} // namespace
+
+void handle_boundary(BuildState& s, const Keyword& kw) {
+  const bool history = s.in_step;
+  if (!history)
+    for (const char* p : {"OP", "AMPLITUDE", "FIXED"})
+      if (kw.has(p))
+        throw InputError(kw.loc, p,
+                         fmt::format("{} is a history-data parameter; use it on a *BOUNDARY inside "
+                                     "a step",
+                                     p));
+  const bool fixed = kw.has("FIXED");
+  const int amplitude = amplitude_param(s, kw);
+  const bool is_new = history && op_new(kw);
+  std::vector<BoundaryEntry> entries;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    std::vector<int> dofs;
+    double value = 0.0;
+    if (!r.blank(1) && !is_label(r, 1)) {
+      const std::string type = canonical(r.text(1));
+      if (!bc_type_dofs(type, dofs))
+        r.fail(fmt::format("field 2 ({})", r.text(1)),
+               "write a DOF number or one of ENCASTRE, PINNED, XSYMM, YSYMM, "
+               "ZSYMM, XASYMM, "
+               "YASYMM, ZASYMM");
+      r.at_most(2, "node or node set, boundary type");
+    } else {
+      r.at_most(4, "node or node set, first DOF, last DOF, value");
+      const long long first = r.integer(1, "first DOF");
+      const long long last = r.integer_or(2, first, "last DOF");
+      to_dof(r, first, 1);
+      to_dof(r, last, 2);
+      if (last < first)
+        r.fail("field 3 (last DOF)",
+               fmt::format("the last DOF {} is smaller than the first DOF {}", last, first));
+      if (first <= 6 && last >= 7)
+        r.fail(fmt::format("DOFs {}-{}", first, last),
+               "this range includes DOFs 7-10, which gapfem does not have; "
+               "give DOFs 1-6 and 11 on "
+               "separate lines");
+      for (long long d = first; d <= last; ++d) dofs.push_back(static_cast<int>(d));
+      value = r.real_or(3, 0.0, "value");
+      if (!history && value != 0.0)
+        r.fail("field 4 (value)", "model-data *BOUNDARY can only fix DOFs (value 0); prescribe "
+                                  "non-zero values with *BOUNDARY inside a step");
+    }
+    for (NodeId n : resolve_nodes(s, r, 0))
+      for (int d : dofs) {
+        BoundaryEntry b;
+        b.node = n;
+        dof_from_abaqus(d, b.dof);
+        b.value = fixed ? 0.0 : value;
+        b.amplitude = amplitude;
+        b.fixed = fixed;
+        b.loc = r.loc();
+        entries.push_back(b);
+      }
+  });
+  auto all = [](const BoundaryEntry&) { return true; };
+  auto key = [](const BoundaryEntry& b) { return std::pair(b.node, static_cast<int>(b.dof)); };
+  if (history)
+    merge(s.step.boundary, entries, is_new, all, key);
+  else
+    merge(s.model_boundary, entries, false, all, key);
+}
+
+/// *CLOAD (DOF 1-6) and *CFLUX (DOF 11) share the NodalLoad list; OP=NEW acts
+/// per keyword.
+static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<NodalLoad> entries;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(3, "node or node set, DOF, magnitude");
+    DofType dof = DofType::NT;
+    if (flux) {
+      if (!r.blank(1) && r.integer(1, "DOF") != 11)
+        r.fail("field 2 (DOF)", "a concentrated heat flux acts on DOF 11; "
+                                "write 11 or leave it blank");
+    } else {
+      const long long d = r.integer(1, "DOF");
+      if (d == 11) r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
+      if (d < 1 || d > 6)
+        r.fail("field 2 (DOF)", fmt::format("*CLOAD acts on DOFs 1-6, not {}", d));
+      dof_from_abaqus(static_cast<int>(d), dof);
+    }
+    const double value = r.real(2, "magnitude");
+    for (NodeId n : resolve_nodes(s, r, 0)) {
+      NodalLoad l;
+      l.node = n;
+      l.dof = dof;
+      l.value = value;
+      l.amplitude = amplitude;
+      l.loc = r.loc();
+      entries.push_back(l);
+    }
+  });
+  merge(
+      s.step.cloads, entries, op_new(kw),
+      [flux](const NodalLoad& l) { return (l.dof == DofType::NT) == flux; },
+      [](const NodalLoad& l) { return std::pair(l.node, static_cast<int>(l.dof)); });
+}
+
+void handle_cload(BuildState& s, const Keyword& kw) {
+  nodal_loads(s, kw, false);
+}
+void handle_cflux(BuildState& s, const Keyword& kw) {
+  nodal_loads(s, kw, true);
+}
+
+void handle_dload(BuildState& s, const Keyword& kw) {
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(6, "element or element set, load label, magnitude, direction x, y, z");
+    const std::string label = canonical(r.text(1));
+    const double mag = r.real(2, "magnitude");
+    const bool single = is_label(r, 0);
+    const auto elems = resolve_elements(s, r, 0);
+    DistributedLoad d;
+    d.magnitude = mag;
+    d.amplitude = amplitude;
+    d.loc = r.loc();
+    if (label == "GRAV") {
+      const Vec3 v{r.real_or(3, 0.0, "direction x"), r.real_or(4, 0.0, "direction y"),
+                   r.real_or(5, 0.0, "direction z")};
+      const double len = std::hypot(v[0], v[1], v[2]);
+      if (len == 0.0)
+        r.fail("fields 4-6 (direction)", "GRAV needs a non-zero direction vector, e.g. 0, 0, -1");
+      d.kind = DistLoadKind::Gravity;
+      d.direction = {v[0] / len, v[1] / len, v[2] / len};
+    } else if (label == "BX" || label == "BY" || label == "BZ") {
+      r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
+      d.kind = DistLoadKind::BodyForce;
+      d.direction[label[1] - 'X'] = 1.0;
+    } else if (const int face = face_of(label, "P"); face > 0) {
+      r.at_most(3, "element or element set, Pn, magnitude");
+      d.kind = DistLoadKind::Pressure;
+      d.face = face;
+    } else if (face == 0) {
+      r.fail("field 2 (P)", "give the face of the pressure: P1, P2, … (face numbers of the "
+                            "element type), or use *DSLOAD on a surface");
+    } else {
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "this load label is not supported by gapfem; use Pn (pressure on "
+             "face n), GRAV, BX, "
+             "BY or BZ");
+    }
+    for (ElemId e : elems) {
+      const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+      if (d.kind != DistLoadKind::Pressure) {
+        // body loads act on elements with volume; springs, gaps and heat-only
+        // elements in a set are skipped, named alone they are an error
+        const bool massless = info.family == ElementFamily::Spring ||
+                              info.family == ElementFamily::Gap || !info.displacement;
+        if (massless) {
+          if (single)
+            r.fail(elem_entity(s, e),
+                   "body loads need an element with volume and displacement DOFs");
+          continue;
+        }
+      } else {
+        require_displacement(s, r, e);
+        check_face(s, r, e, d.face);
+      }
+      d.elem = e;
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+void handle_dsload(BuildState& s, const Keyword& kw) {
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(3, "surface, P, magnitude");
+    if (canonical(r.text(1)) != "P")
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "*DSLOAD supports the label P (pressure) only");
+    const double mag = r.real(2, "magnitude");
+    for (const auto& f : find_surface(s, r).faces) {
+      require_displacement(s, r, f.elem);
+      DistributedLoad d;
+      d.elem = f.elem;
+      d.kind = DistLoadKind::Pressure;
+      d.face = f.face;
+      d.magnitude = mag;
+      d.amplitude = amplitude;
+      d.loc = r.loc();
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+void handle_dflux(BuildState& s, const Keyword& kw) {
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(3, "element or element set, BF or Sn, magnitude");
+    const std::string label = canonical(r.text(1));
+    DistributedLoad d;
+    d.magnitude = r.real(2, "magnitude");
+    d.amplitude = amplitude;
+    d.loc = r.loc();
+    if (label == "BF") {
+      d.kind = DistLoadKind::BodyFlux;
+    } else if (const int face = face_of(label, "S"); face > 0) {
+      d.kind = DistLoadKind::SurfaceFlux;
+      d.face = face;
+    } else {
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "use BF (body flux) or Sn (surface flux on face n)");
+    }
+    for (ElemId e : resolve_elements(s, r, 0)) {
+      require_temperature(s, r, e);
+      if (d.face > 0) check_face(s, r, e, d.face);
+      d.elem = e;
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+void handle_dsflux(BuildState& s, const Keyword& kw) {
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(3, "surface, S, magnitude");
+    if (canonical(r.text(1)) != "S")
+      r.fail(fmt::format("field 2 ({})", r.text(1)), "*DSFLUX supports the label S only");
+    const double mag = r.real(2, "magnitude");
+    for (const auto& f : find_surface(s, r).faces) {
+      require_temperature(s, r, f.elem);
+      DistributedLoad d;
+      d.elem = f.elem;
+      d.kind = DistLoadKind::SurfaceFlux;
+      d.face = f.face;
+      d.magnitude = mag;
+      d.amplitude = amplitude;
+      d.loc = r.loc();
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+/// *FILM (element faces Fn) and *SFILM (surface, F): sink temperature and film
+/// coefficient.
+static void film(BuildState& s, const Keyword& kw, bool surface) {
+  const int sink_amplitude = amplitude_param(s, kw);
+  const int film_amplitude = amplitude_param(s, kw, "FILM AMPLITUDE");
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(4, surface ? "surface, F, sink temperature, film coefficient"
+                         : "element or element set, Fn, sink temperature, film coefficient");
+    const std::string label = canonical(r.text(1));
+    DistributedLoad d;
+    d.kind = DistLoadKind::Film;
+    d.sink_temperature = r.real(2, "sink temperature");
+    d.magnitude = r.real(3, "film coefficient");
+    d.amplitude = sink_amplitude;
+    d.film_amplitude = film_amplitude;
+    d.loc = r.loc();
+    if (surface) {
+      if (label != "F")
+        r.fail(fmt::format("field 2 ({})", r.text(1)), "*SFILM supports the label F only");
+      for (const auto& f : find_surface(s, r).faces) {
+        require_temperature(s, r, f.elem);
+        d.elem = f.elem;
+        d.face = f.face;
+        loads.push_back(d);
+      }
+      return;
+    }
+    d.face = face_of(label, "F");
+    if (d.face <= 0)
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "write the film label as Fn (n = face number)");
+    for (ElemId e : resolve_elements(s, r, 0)) {
+      require_temperature(s, r, e);
+      check_face(s, r, e, d.face);
+      d.elem = e;
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+void handle_film(BuildState& s, const Keyword& kw) {
+  film(s, kw, false);
+}
+void handle_sfilm(BuildState& s, const Keyword& kw) {
+  film(s, kw, true);
+}
+
+void handle_temperature(BuildState& s, const Keyword& kw) {
+  reject_param(kw, "FILE", "give the temperatures on data lines (node or node set, value)");
+  const int amplitude = amplitude_param(s, kw);
+  std::vector<NodalTemperature> entries;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(2, "node or node set, temperature");
+    const double value = r.real(1, "temperature");
+    for (NodeId n : resolve_nodes(s, r, 0)) {
+      NodalTemperature t;
+      t.node = n;
+      t.value = value;
+      t.amplitude = amplitude;
+      t.loc = r.loc();
+      entries.push_back(t);
+    }
+  });
+  merge(
+      s.step.temperatures, entries, op_new(kw), [](const NodalTemperature&) { return true; },
+      [](const NodalTemperature& t) { return t.node; });
+}
+
+void handle_contact_interference(BuildState& s, const Keyword& kw) {
+  const int type = enum_param(kw, "TYPE", {"ELEMENT", "CONTACT PAIR"}, -1);
+  if (type < 0) throw InputError(kw.loc, "", "TYPE=ELEMENT is required (gap-element interference)");
+  if (type == 1)
+    throw InputError(kw.loc, "TYPE=CONTACT PAIR",
+                     "gapfem has no contact pairs; use TYPE=ELEMENT with gap elements");
+  const bool shrink = kw.has("SHRINK");
+  if (shrink && s.step.number != 1)
+    throw InputError(kw.loc, "SHRINK", "SHRINK can be used in the first step only (Abaqus rule)");
+  int amplitude = amplitude_param(s, kw);
+  if (shrink && amplitude >= 0) {
+    s.warn(kw.loc, "AMPLITUDE is ignored with SHRINK: the interference is "
+                   "removed linearly over "
+                   "the step");
+    amplitude = -1;
+  }
+  std::vector<InterferenceEntry> entries;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    double v = 0.0;
+    if (shrink) {
+      r.at_most(1, "element or element set (SHRINK takes no value)");
+    } else {
+      r.at_most(2, "element or element set, allowable interference v");
+      v = r.real(1, "allowable interference v");
+    }
+    for (ElemId e : resolve_elements(s, r, 0)) {
+      const ElementType t = s.model.mesh.elem_types[e];
+      if (element_info(t).family != ElementFamily::Gap || t == ElementType::DGAP)
+        r.fail(elem_entity(s, e), "*CONTACT INTERFERENCE, TYPE=ELEMENT applies to mechanical gap "
+                                  "elements (GAPUNI, GAPCYL, GAPSPHER, GAPUNIT) only");
+      InterferenceEntry i;
+      i.elem = e;
+      i.allowance = v;
+      i.shrink = shrink;
+      i.amplitude = amplitude;
+      i.loc = r.loc();
+      entries.push_back(i);
+    }
+  });
+  merge(
+      s.step.interference, entries, op_new(kw), [](const InterferenceEntry&) { return true; },
+      [](const InterferenceEntry& i) { return i.elem; });
+}
+
+} // namespace gapfem::inp

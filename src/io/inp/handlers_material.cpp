@@ -1,0 +1,161 @@
+// Material and other property keywords: *MATERIAL with *ELASTIC, *DENSITY,
+// *EXPANSION, *CONDUCTIVITY, *SPECIFIC HEAT; *AMPLITUDE, *INITIAL CONDITIONS,
+// *PHYSICAL CONSTANTS.
+#include "io/inp/handlers.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <numeric>
+
+namespace gapfem::inp {
+namespace {
+
+Material& current_material(BuildState& s) {
+  return s.model.materials[s.current_material];
+}
+
+/// Rejects a second use of the same material option.
+void once(BuildState& s, const Keyword& kw, const PropertyTable& t) {
+  if (!t.empty())
+    throw InputError(kw.loc, "",
+                     fmt::format("{} is given twice for material {}; keep one definition", kw.name,
+                                 current_material(s).name));
+}
+
+std::string positive_first(const std::vector<double>& v) {
+  return v[0] > 0 ? std::string() : fmt::format("the value must be positive, not {}", v[0]);
+}
+
+} // namespace
+
+void handle_material(BuildState& s, const Keyword& kw) {
+  s.current_material = -1;
+  const std::string name = name_param(kw, "NAME", true);
+  if (const auto it = s.material_index.find(name); it != s.material_index.end())
+    throw InputError(kw.loc, fmt::format("material {}", name),
+                     fmt::format("this material is defined twice (first at {}); use another NAME",
+                                 s.model.materials[it->second].loc.str()));
+  Material m;
+  m.name = name;
+  m.loc = kw.loc;
+  s.model.materials.push_back(std::move(m));
+  s.current_material = static_cast<int>(s.model.materials.size()) - 1;
+  s.material_index[name] = s.current_material;
+}
+
+void handle_elastic(BuildState& s, const Keyword& kw) {
+  if (s.current_material < 0) return; // *MATERIAL line was in error
+  const int type = enum_param(kw, "TYPE", {"ISOTROPIC"}, 0);
+  (void)type;
+  reject_param(kw, "MODULI", "give the instantaneous isotropic moduli E and nu");
+  once(s, kw, current_material(s).elastic);
+  current_material(s).elastic = read_property_table(
+      s, kw, kw.data, {"Young's modulus E", "Poisson's ratio nu"}, [](const auto& v) {
+        if (v[0] <= 0) return fmt::format("Young's modulus must be positive, not {}", v[0]);
+        if (v[1] <= -1.0 || v[1] >= 0.5)
+          return fmt::format("Poisson's ratio must lie between -1 and 0.5 (exclusive), not {}",
+                             v[1]);
+        return std::string();
+      });
+}
+
+void handle_density(BuildState& s, const Keyword& kw) {
+  if (s.current_material < 0) return;
+  once(s, kw, current_material(s).density);
+  current_material(s).density = read_property_table(s, kw, kw.data, {"density"}, positive_first);
+}
+
+void handle_expansion(BuildState& s, const Keyword& kw) {
+  if (s.current_material < 0) return;
+  enum_param(kw, "TYPE", {"ISO"}, 0);
+  once(s, kw, current_material(s).expansion);
+  current_material(s).expansion_zero = real_param(kw, "ZERO").value_or(0.0);
+  current_material(s).expansion =
+      read_property_table(s, kw, kw.data, {"expansion coefficient"}, nullptr);
+}
+
+void handle_conductivity(BuildState& s, const Keyword& kw) {
+  if (s.current_material < 0) return;
+  enum_param(kw, "TYPE", {"ISO"}, 0);
+  once(s, kw, current_material(s).conductivity);
+  current_material(s).conductivity =
+      read_property_table(s, kw, kw.data, {"conductivity"}, positive_first);
+}
+
+void handle_specific_heat(BuildState& s, const Keyword& kw) {
+  if (s.current_material < 0) return;
+  once(s, kw, current_material(s).specific_heat);
+  current_material(s).specific_heat =
+      read_property_table(s, kw, kw.data, {"specific heat"}, positive_first);
+}
+
+void handle_amplitude(BuildState& s, const Keyword& kw) {
+  const std::string name = name_param(kw, "NAME", true);
+  if (const auto it = s.amplitude_index.find(name); it != s.amplitude_index.end())
+    throw InputError(kw.loc, fmt::format("amplitude {}", name),
+                     fmt::format("this amplitude is defined twice (first at {}); use another NAME",
+                                 s.model.amplitudes[it->second].loc.str()));
+  Amplitude a;
+  a.name = name;
+  a.loc = kw.loc;
+  a.time = enum_param(kw, "TIME", {"STEP TIME", "TOTAL TIME"}, 0) == 0 ? Amplitude::TimeBase::Step
+                                                                       : Amplitude::TimeBase::Total;
+  a.absolute = enum_param(kw, "VALUE", {"RELATIVE", "ABSOLUTE"}, 0) == 1;
+  enum_param(kw, "DEFINITION", {"TABULAR"}, 0);
+  bool ok = true;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(8, "up to four pairs of time, amplitude");
+    std::size_t last = line.fields.size();
+    while (last > 0 && line.fields[last - 1].empty()) --last;
+    if (last % 2 != 0) {
+      ok = false;
+      r.fail("", "give time, amplitude pairs: this line has an odd number of values");
+    }
+    for (std::size_t i = 0; i < last; i += 2) {
+      const double t = r.real(i, "time");
+      const double v = r.real(i + 1, "amplitude");
+      if (!a.t.empty() && !(t > a.t.back())) {
+        ok = false;
+        r.fail(fmt::format("time {}", t),
+               fmt::format("amplitude times must increase strictly; {} follows {}", t, a.t.back()));
+      }
+      a.t.push_back(t);
+      a.a.push_back(v);
+    }
+  });
+  if (a.t.empty() && ok)
+    throw InputError(kw.loc, fmt::format("amplitude {}", name),
+                     "no time, amplitude pairs are given; add data lines t1, a1, t2, a2, …");
+  s.amplitude_index[name] = static_cast<int>(s.model.amplitudes.size());
+  s.model.amplitudes.push_back(std::move(a));
+}
+
+void handle_initial_conditions(BuildState& s, const Keyword& kw) {
+  const std::string type = canonical(param_value(kw, "TYPE", true));
+  if (type != "TEMPERATURE")
+    throw InputError(kw.loc, fmt::format("TYPE={}", kw.value("TYPE").value_or("")),
+                     "gapfem supports only TYPE=TEMPERATURE initial conditions");
+  s.model.has_initial_temperature = true;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(2, "node or node set, temperature");
+    const double value = r.real(1, "temperature");
+    for (NodeId n : resolve_nodes(s, r, 0)) s.initial_temperatures.emplace_back(n, value);
+  });
+}
+
+void handle_physical_constants(BuildState& s, const Keyword& kw) {
+  PhysicalConstants& c = s.model.constants;
+  c.loc = kw.loc;
+  for (const auto& p : kw.params) {
+    if (p.key == "ABSOLUTEZERO")
+      c.absolute_zero = real_param(kw, "ABSOLUTE ZERO");
+    else if (p.key == "STEFANBOLTZMANN")
+      c.stefan_boltzmann = real_param(kw, "STEFAN BOLTZMANN");
+    else
+      s.warn(kw.loc, fmt::format("parameter {} is not used by gapfem and was ignored", p.name));
+  }
+}
+
+} // namespace gapfem::inp

@@ -1,0 +1,220 @@
+// Output requests: *NODE PRINT, *EL PRINT (.dat tables) and *OUTPUT, FIELD with
+// *NODE OUTPUT / *ELEMENT OUTPUT (ParaView frames). Abaqus output keys become
+// typed ids here, once.
+#include "io/inp/handlers.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fmt/format.h>
+
+namespace gapfem::inp {
+namespace {
+
+/// "U" or a component such as "U1", "NT11", "S12": the parent variable name, or
+/// "" when the name does not have that form.
+template <typename V, typename Lookup>
+std::optional<V> lookup_with_components(std::string name, Lookup lookup) {
+  if (auto v = lookup(name)) return v;
+  while (!name.empty() && std::isdigit(static_cast<unsigned char>(name.back()))) name.pop_back();
+  if (name.empty()) return std::nullopt;
+  return lookup(name);
+}
+
+std::optional<NodeVar> node_var(const std::string& name) {
+  return lookup_with_components<NodeVar>(canonical(name), node_var_from_name);
+}
+std::optional<ElemVar> elem_var(const std::string& name) {
+  return lookup_with_components<ElemVar>(canonical(name), elem_var_from_name);
+}
+
+template <typename T>
+void add_unique(std::vector<T>& list, T v) {
+  if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
+}
+
+constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
+constexpr const char* kElemVarList = "S, E, SF, HFL";
+
+/// Reads variable names from all data lines; unknown names are errors
+/// (`strict`) or warnings.
+template <typename V, typename Parse>
+std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool strict,
+                         const char* known) {
+  std::vector<V> vars;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    for (std::size_t i = 0; i < line.fields.size(); ++i) {
+      if (line.fields[i].empty()) continue;
+      if (const auto v = parse(line.fields[i])) {
+        add_unique(vars, *v);
+        continue;
+      }
+      const std::string msg = fmt::format("gapfem does not know the output variable {}; it knows "
+                                          "{} (components such as U1 or S11 are accepted)",
+                                          line.fields[i], known);
+      if (strict) r.fail(fmt::format("variable {}", line.fields[i]), msg);
+      s.warn(r.loc(), msg + "; the variable was left out");
+    }
+  });
+  return vars;
+}
+
+int frequency_param(const Keyword& kw) {
+  const auto f = int_param(kw, "FREQUENCY");
+  if (f && *f < 0) throw InputError(kw.loc, "FREQUENCY", "the frequency must not be negative");
+  return f ? static_cast<int>(*f) : 1;
+}
+
+} // namespace
+
+void handle_node_print(BuildState& s, const Keyword& kw) {
+  NodePrintRequest req;
+  req.loc = kw.loc;
+  req.frequency = frequency_param(kw);
+  req.totals = yes_no_param(kw, "TOTALS", false);
+  req.summary = yes_no_param(kw, "SUMMARY", true);
+  yes_no_param(kw, "GLOBAL",
+               false); // accepted: all output is in global directions
+  req.nset = name_param(kw, "NSET", false);
+  if (req.nset.empty()) {
+    req.nodes.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()));
+    for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) req.nodes[n] = n;
+  } else {
+    const auto it = s.model.nsets.find(req.nset);
+    if (it == s.model.nsets.end())
+      throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
+                       "this node set is not defined; define it with *NSET in "
+                       "the model data");
+    req.nodes = it->second;
+  }
+  req.vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
+  if (req.vars.empty())
+    throw InputError(kw.loc, "",
+                     fmt::format("no output variables are listed; add a data line such "
+                                 "as U, RF (known: {})",
+                                 kNodeVarList));
+  s.scratch.node_print_given = true;
+  s.step.node_prints.push_back(std::move(req));
+}
+
+void handle_el_print(BuildState& s, const Keyword& kw) {
+  ElPrintRequest req;
+  req.loc = kw.loc;
+  req.frequency = frequency_param(kw);
+  req.totals = yes_no_param(kw, "TOTALS", false);
+  req.summary = yes_no_param(kw, "SUMMARY", true);
+  const int pos =
+      enum_param(kw, "POSITION", {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES"}, 0);
+  if (pos == 2)
+    throw InputError(kw.loc, "POSITION=AVERAGED AT NODES",
+                     "nodal averaging of element output is not supported in "
+                     "the .dat file; use "
+                     "INTEGRATION POINTS or CENTROIDAL");
+  req.position = pos == 0 ? ElPosition::IntegrationPoints : ElPosition::Centroidal;
+  req.elset = name_param(kw, "ELSET", false);
+  if (req.elset.empty()) {
+    req.elements.resize(static_cast<std::size_t>(s.model.mesh.n_elements()));
+    for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) req.elements[e] = e;
+  } else {
+    const auto* set = find_elset(s, req.elset);
+    if (!set)
+      throw InputError(kw.loc, fmt::format("ELSET={}", req.elset),
+                       "this element set is not defined; define it with *ELSET "
+                       "in the model data");
+    req.elements = *set;
+  }
+  req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList);
+  if (req.vars.empty())
+    throw InputError(kw.loc, "",
+                     fmt::format("no output variables are listed; add a data line such "
+                                 "as S, E (known: {})",
+                                 kElemVarList));
+  s.scratch.el_print_given = true;
+  s.step.el_prints.push_back(std::move(req));
+}
+
+void handle_output(BuildState& s, const Keyword& kw) {
+  s.current_field = -1;
+  s.parent = Parent::HistoryOutput; // until known: sub-options of a failed
+                                    // *OUTPUT are skipped
+  reject_param(kw, "NUMBER INTERVAL", "use FREQUENCY=n (every n-th increment)");
+  reject_param(kw, "TIME INTERVAL", "use FREQUENCY=n (every n-th increment)");
+  const bool field = kw.has("FIELD");
+  const bool history = kw.has("HISTORY");
+  if (field == history) throw InputError(kw.loc, "", "give either FIELD or HISTORY on *OUTPUT");
+  const int variable = enum_param(kw, "VARIABLE", {"PRESELECT", "ALL"}, -1);
+  if (history) {
+    s.parent = Parent::HistoryOutput;
+    if (!s.scratch.history_warned)
+      s.warn(kw.loc, "history output is not written by gapfem; the *OUTPUT, "
+                     "HISTORY request and "
+                     "its *NODE OUTPUT / *ELEMENT OUTPUT lines were ignored "
+                     "(use *NODE PRINT or "
+                     "*EL PRINT for tables over time)");
+    s.scratch.history_warned = true;
+    return;
+  }
+  s.parent = Parent::FieldOutput;
+  FieldOutputRequest req;
+  req.loc = kw.loc;
+  req.frequency = frequency_param(kw);
+  s.scratch.field_given = true;
+  s.step.field_outputs.push_back(std::move(req));
+  s.current_field = static_cast<int>(s.step.field_outputs.size()) - 1;
+  if (variable >= 0) s.scratch.preset_fields.emplace_back(s.current_field, variable == 1);
+}
+
+void handle_node_output(BuildState& s, const Keyword& kw) {
+  // NSET is accepted; the ParaView frames always hold the whole model
+  if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  auto& req = s.step.field_outputs[s.current_field];
+  for (NodeVar v : read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList))
+    add_unique(req.node_vars, v);
+}
+
+void handle_element_output(BuildState& s, const Keyword& kw) {
+  if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  auto& req = s.step.field_outputs[s.current_field];
+  for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList))
+    add_unique(req.elem_vars, v);
+}
+
+void resolve_preset_outputs(BuildState& s) {
+  Step& st = s.step;
+  const bool mech = st.procedure != Procedure::HeatTransfer;
+  const bool thermal = st.procedure != Procedure::Static;
+  for (auto [index, all] : s.scratch.preset_fields) {
+    FieldOutputRequest& req = st.field_outputs[index];
+    // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for
+    // thermal procedures); ALL: every variable gapfem can write for the
+    // procedure
+    if (mech) {
+      for (NodeVar v : {NodeVar::U, NodeVar::RF}) add_unique(req.node_vars, v);
+      for (ElemVar v : {ElemVar::S, ElemVar::E}) add_unique(req.elem_vars, v);
+      if (all) {
+        for (NodeVar v : {NodeVar::UR, NodeVar::RM, NodeVar::CF, NodeVar::CM})
+          add_unique(req.node_vars, v);
+        add_unique(req.elem_vars, ElemVar::SF);
+      }
+    }
+    if (thermal) {
+      add_unique(req.node_vars, NodeVar::NT);
+      add_unique(req.elem_vars, ElemVar::HFL);
+      if (all)
+        for (NodeVar v : {NodeVar::RFL, NodeVar::CFL}) add_unique(req.node_vars, v);
+    }
+  }
+  // a field request without any variable writes nothing: drop it and say so
+  for (auto it = st.field_outputs.begin(); it != st.field_outputs.end();) {
+    if (it->node_vars.empty() && it->elem_vars.empty()) {
+      s.warn(it->loc, "this *OUTPUT, FIELD request has no variables (add "
+                      "VARIABLE=PRESELECT or "
+                      "*NODE OUTPUT / *ELEMENT OUTPUT lines) and was ignored");
+      it = st.field_outputs.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+} // namespace gapfem::inp

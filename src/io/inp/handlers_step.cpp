@@ -1,0 +1,211 @@
+// History structure: *STEP … *END STEP, the procedures *STATIC, *HEAT TRANSFER
+// and *COUPLED TEMPERATURE-DISPLACEMENT, and *CHANGE FRICTION. A new step
+// starts from the complete active lists of the previous step (model-data
+// *BOUNDARY for step 1) with propagated = true; the load handlers then modify
+// them (handlers_loads.cpp).
+#include "io/inp/handlers.hpp"
+
+#include <fmt/format.h>
+
+namespace gapfem::inp {
+namespace {
+
+template <typename T>
+std::vector<T> carried(const std::vector<T>& prev) {
+  std::vector<T> out = prev;
+  for (auto& e : out) e.propagated = true;
+  return out;
+}
+
+void set_procedure(BuildState& s, const Keyword& kw, Procedure p) {
+  if (s.scratch.procedure_given)
+    throw InputError(kw.loc, fmt::format("step {}", s.step.number),
+                     fmt::format("a step has exactly one procedure and this step already has *{}; "
+                                 "start a new *STEP for this procedure",
+                                 procedure_name(s.step.procedure)));
+  s.scratch.procedure_given = true;
+  s.step.procedure = p;
+}
+
+/// initial, period, min, max (0 or blank = default; a blank period is 1).
+void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_fields) {
+  Incrementation& inc = s.step.inc;
+  for (const DataLine& line : kw.data) {
+    if (line.empty()) continue;
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(max_fields, "initial increment, time period, minimum increment, maximum increment");
+    inc.initial = r.real_or(0, 0.0, "initial increment");
+    inc.period = r.real_or(1, 1.0, "time period");
+    inc.minimum = r.real_or(2, 0.0, "minimum increment");
+    inc.maximum = r.real_or(3, 0.0, "maximum increment");
+    if (inc.period <= 0)
+      r.fail("field 2 (time period)",
+             fmt::format("the time period must be positive, not {}", inc.period));
+    const char* names[] = {"initial increment", "minimum increment", "maximum increment"};
+    const double vals[] = {inc.initial, inc.minimum, inc.maximum};
+    const int fields[] = {1, 3, 4};
+    for (int i = 0; i < 3; ++i)
+      if (vals[i] < 0)
+        r.fail(fmt::format("field {} ({})", fields[i], names[i]),
+               "increments must not be negative (0 or blank selects the default)");
+    if (inc.minimum > 0 && inc.maximum > 0 && inc.minimum > inc.maximum)
+      r.fail("field 3 (minimum increment)",
+             fmt::format("the minimum increment {} is larger than the maximum "
+                         "increment {}",
+                         inc.minimum, inc.maximum));
+    if (inc.initial > inc.period)
+      r.fail("field 1 (initial increment)",
+             fmt::format("the initial increment {} is larger than the time period {}", inc.initial,
+                         inc.period));
+    if (inc.maximum > 0 && inc.initial > inc.maximum)
+      r.fail("field 1 (initial increment)",
+             fmt::format("the initial increment {} is larger than the maximum "
+                         "increment {}",
+                         inc.initial, inc.maximum));
+    return; // one data line; further lines are not part of the procedure
+  }
+}
+
+/// STEADY STATE, DELTMX= and the CAE-written END=PERIOD (shared by heat
+/// transfer and coupled).
+void read_thermal_procedure(BuildState& s, const Keyword& kw) {
+  if (kw.has("END") && enum_param(kw, "END", {"PERIOD", "SS"}, 0) == 1)
+    throw InputError(kw.loc, "END=SS",
+                     "ending a step at steady state is not supported by "
+                     "gapfem; use END=PERIOD "
+                     "(default) or STEADY STATE");
+  const bool steady = kw.has("STEADY STATE");
+  s.step.inc.steady_state = steady;
+  s.scratch.transient = !steady;
+  if (auto d = real_param(kw, "DELTMX")) {
+    if (*d <= 0) throw InputError(kw.loc, "DELTMX", "DELTMX must be positive");
+    s.step.inc.deltmx = *d;
+  }
+  read_incrementation(s, kw, 5);
+}
+
+} // namespace
+
+void handle_step(BuildState& s, const Keyword& kw) {
+  if (s.in_step) {
+    s.error(kw.loc, fmt::format("step {}", s.step.number),
+            fmt::format("the step that starts at {} has no *END STEP; add *END "
+                        "STEP before this "
+                        "*STEP",
+                        s.step.loc.str()));
+    close_step(s);
+  }
+  if (!s.model_done) finish_model_data(s);
+  const Step* prev = s.model.steps.empty() ? nullptr : &s.model.steps.back();
+  s.step = Step{};
+  s.scratch = StepScratch{};
+  s.in_step = true;
+  s.parent = Parent::None;
+  s.current_field = s.current_change = -1;
+  Step& st = s.step;
+  st.number = static_cast<int>(s.model.steps.size()) + 1;
+  st.loc = kw.loc;
+  st.name = kw.has("NAME") ? std::string(trim(param_value(kw, "NAME", true)))
+                           : fmt::format("Step-{}", st.number);
+  st.boundary = carried(prev ? prev->boundary : s.model_boundary);
+  if (prev) {
+    st.cloads = carried(prev->cloads);
+    st.dloads = carried(prev->dloads);
+    st.temperatures = carried(prev->temperatures);
+    st.interference = carried(prev->interference);
+  }
+  reject_param(kw, "PERTURBATION", "gapfem runs general (nonlinear) steps only");
+  st.nlgeom = yes_no_param(kw, "NLGEOM", false);
+  yes_no_param(kw, "UNSYMM",
+               false); // accepted: the solver picks the unsymmetric solver itself
+  if (auto inc = int_param(kw, "INC")) {
+    if (*inc < 1)
+      throw InputError(kw.loc, "INC", "the maximum number of increments must be at least 1");
+    st.max_increments = static_cast<int>(*inc);
+  }
+  if (kw.has("AMPLITUDE")) {
+    s.scratch.amplitude_given = true;
+    st.ramp_default = enum_param(kw, "AMPLITUDE", {"RAMP", "STEP"}, 0) == 0;
+  }
+}
+
+void close_step(BuildState& s) {
+  Step& st = s.step;
+  if (!s.scratch.procedure_given)
+    s.error(st.loc, fmt::format("step {}", st.number),
+            "the step has no procedure; add *STATIC, *HEAT TRANSFER or *COUPLED "
+            "TEMPERATURE-DISPLACEMENT after *STEP");
+  // default variation of magnitudes: RAMP, except transient heat transfer /
+  // coupled steps (STEP)
+  if (!s.scratch.amplitude_given) st.ramp_default = !s.scratch.transient;
+  for (const auto& change : st.friction_changes)
+    if (!change.friction.given)
+      s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");
+  resolve_preset_outputs(s);
+  // output requests carry over from the previous step unless this step gives
+  // its own
+  if (!s.model.steps.empty()) {
+    const Step& prev = s.model.steps.back();
+    if (!s.scratch.node_print_given) st.node_prints = prev.node_prints;
+    if (!s.scratch.el_print_given) st.el_prints = prev.el_prints;
+    if (!s.scratch.field_given) st.field_outputs = prev.field_outputs;
+  }
+  s.model.steps.push_back(std::move(st));
+  s.step = Step{};
+  s.in_step = false;
+  s.parent = Parent::None;
+  s.current_field = s.current_change = -1;
+}
+
+void handle_end_step(BuildState& s, const Keyword& kw) {
+  if (!s.in_step)
+    throw InputError(kw.loc, "", "*END STEP without a matching *STEP; remove it or add *STEP");
+  close_step(s);
+}
+
+void handle_static(BuildState& s, const Keyword& kw) {
+  reject_param(kw, "RIKS", "use load or displacement control in a general *STATIC step");
+  set_procedure(s, kw, Procedure::Static);
+  s.step.inc.direct = kw.has("DIRECT");
+  s.step.inc.steady_state = true;
+  read_incrementation(s, kw, 4);
+}
+
+void handle_heat_transfer(BuildState& s, const Keyword& kw) {
+  set_procedure(s, kw, Procedure::HeatTransfer);
+  read_thermal_procedure(s, kw);
+}
+
+void handle_coupled(BuildState& s, const Keyword& kw) {
+  set_procedure(s, kw, Procedure::CoupledTempDisp);
+  enum_param(kw, "CREEP", {"NONE"},
+             0); // written by Abaqus/CAE; creep is not modelled
+  read_thermal_procedure(s, kw);
+}
+
+void handle_change_friction(BuildState& s, const Keyword& kw) {
+  s.current_change = -1;
+  reject_param(kw, "INTERACTION", "gapfem has element-based (gap) contact only; use ELSET=");
+  const std::string elset = name_param(kw, "ELSET", true);
+  const auto* set = find_elset(s, elset);
+  if (!set)
+    throw InputError(kw.loc, fmt::format("ELSET={}", elset),
+                     "this element set is not defined; define it with *ELSET "
+                     "in the model data");
+  FrictionChange change;
+  change.loc = kw.loc;
+  for (ElemId e : *set) {
+    const ElementType t = s.model.mesh.elem_types[e];
+    if (element_info(t).family != ElementFamily::Gap || t == ElementType::DGAP)
+      throw InputError(
+          kw.loc, fmt::format("element {} ({})", s.model.element_label(e), element_info(t).name),
+          fmt::format("*CHANGE FRICTION applies to mechanical gap elements only; "
+                      "remove this element from ELSET {}",
+                      elset));
+    change.elements.push_back(e);
+  }
+  s.step.friction_changes.push_back(std::move(change));
+  s.current_change = static_cast<int>(s.step.friction_changes.size()) - 1;
+}
+
+} // namespace gapfem::inp

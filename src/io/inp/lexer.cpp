@@ -1,0 +1,294 @@
+#include "io/inp/lexer.hpp"
+
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+namespace gapfem::inp {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Keywords whose data lines may come from another file via INPUT=.
+bool takes_input_file(std::string_view key) {
+  return key == "NODE" || key == "ELEMENT" || key == "NSET" || key == "ELSET" || key == "AMPLITUDE";
+}
+
+constexpr int kMaxIncludeDepth = 16;
+
+/// Lines of a text, with CR and trailing blanks removed (Windows line ends are
+/// fine).
+std::vector<std::string_view> split_lines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(start, end - start);
+    std::size_t e = line.size();
+    while (e > 0 && (line[e - 1] == '\r' || line[e - 1] == ' ' || line[e - 1] == '\t')) --e;
+    lines.push_back(line.substr(0, e));
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  // a final newline does not start another (empty) line
+  if (!lines.empty() && lines.back().empty() && !text.empty() && text.back() == '\n')
+    lines.pop_back();
+  return lines;
+}
+
+bool is_comment(std::string_view line) {
+  const std::string_view t = trim(line);
+  return t.size() >= 2 && t[0] == '*' && t[1] == '*';
+}
+bool is_keyword_line(std::string_view line) {
+  const std::string_view t = trim(line);
+  return !t.empty() && t[0] == '*' && !(t.size() >= 2 && t[1] == '*');
+}
+
+/// Splits at commas outside double quotes.
+std::vector<std::string> split_quoted(std::string_view text) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (char c : text) {
+    if (c == '"') quoted = !quoted;
+    if (c == ',' && !quoted) {
+      out.emplace_back();
+      continue;
+    }
+    out.back().push_back(c);
+  }
+  return out;
+}
+
+std::string unquote(std::string_view v) {
+  v = trim(v);
+  if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+  return std::string(v);
+}
+
+bool read_file(const fs::path& path, std::string& out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return true;
+}
+
+class Lexer {
+ public:
+  explicit Lexer(Diagnostics& diag) : _diag(diag) {}
+
+  Deck run(std::string_view text, const std::string& name, const fs::path& dir) {
+    _deck.files.push_back(name);
+    lex_text(text, 0, dir, 0);
+    return std::move(_deck);
+  }
+
+ private:
+  Diagnostics& _diag;
+  Deck _deck;
+  int _current = -1; ///< index of the keyword receiving data lines (spans
+                     ///< *INCLUDE boundaries)
+
+  SourceLocation loc(int file, int line, std::string keyword = {}) const {
+    return SourceLocation{_deck.files[file], line, std::move(keyword)};
+  }
+
+  int add_file(const fs::path& path) {
+    _deck.files.push_back(path.lexically_normal().string());
+    return static_cast<int>(_deck.files.size()) - 1;
+  }
+
+  void lex_text(std::string_view text, int file, const fs::path& dir, int depth) {
+    const auto lines = split_lines(text);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      const std::string_view line = lines[i];
+      const int lineno = static_cast<int>(i) + 1;
+      if (is_comment(line)) continue;
+      if (!is_keyword_line(line)) {
+        add_data_line(line, file, lineno);
+        continue;
+      }
+      // keyword line, possibly continued on following lines (trailing comma)
+      std::string full(trim(line));
+      while (!full.empty() && full.back() == ',' && i + 1 < lines.size()) {
+        std::size_t j = i + 1;
+        while (j < lines.size() && is_comment(lines[j])) ++j;
+        if (j >= lines.size() || is_keyword_line(lines[j]) || trim(lines[j]).empty()) break;
+        full += ' ';
+        full += trim(lines[j]);
+        i = j;
+      }
+      Keyword kw = parse_keyword_line(full, file, lineno);
+      if (kw.key.empty()) continue; // reported
+      if (kw.key == "INCLUDE") {
+        include(kw, dir, depth);
+        continue;
+      }
+      _deck.keywords.push_back(std::move(kw));
+      _current = static_cast<int>(_deck.keywords.size()) - 1;
+      const Keyword& added = _deck.keywords.back();
+      if (takes_input_file(added.key)) {
+        if (const Parameter* p = added.find("INPUT")) read_data_file(*p, dir);
+      }
+    }
+  }
+
+  void add_data_line(std::string_view line, int file, int lineno) {
+    if (_current < 0) {
+      if (trim(line).empty()) return;
+      _diag.error(loc(file, lineno), "",
+                  "data line before the first keyword; start the deck with a "
+                  "keyword line such as "
+                  "*HEADING");
+      return;
+    }
+    DataLine d = split_data_line(line);
+    d.file = file;
+    d.line = lineno;
+    _deck.keywords[_current].data.push_back(std::move(d));
+  }
+
+  Keyword parse_keyword_line(const std::string& text, int file, int lineno) {
+    Keyword kw;
+    kw.file = file;
+    kw.line = lineno;
+    auto tokens = split_quoted(std::string_view(text).substr(1));
+    kw.key = canonical(tokens[0]);
+    kw.name = std::string(1, '*');
+    kw.name += display_upper(tokens[0]);
+    kw.loc = loc(file, lineno, kw.name);
+    if (kw.key.empty()) {
+      _diag.error(loc(file, lineno), "",
+                  "keyword line without a keyword name; write e.g. *NODE, or "
+                  "start comments with **");
+      return kw;
+    }
+    for (std::size_t t = 1; t < tokens.size(); ++t) {
+      const std::string_view tok = trim(tokens[t]);
+      if (tok.empty()) continue;
+      Parameter p;
+      const auto eq = tok.find('=');
+      const std::string_view pname = eq == std::string_view::npos ? tok : tok.substr(0, eq);
+      p.key = canonical(pname);
+      p.name = display_upper(pname);
+      if (eq != std::string_view::npos) {
+        p.has_value = true;
+        p.value = unquote(tok.substr(eq + 1));
+      }
+      if (p.key.empty()) {
+        _diag.error(kw.loc, "", fmt::format("parameter '{}' has no name; write NAME=value", tok));
+        continue;
+      }
+      kw.params.push_back(std::move(p));
+    }
+    return kw;
+  }
+
+  /// Resolves a file named by INPUT= relative to `dir`; reports a missing file
+  /// at `at`.
+  bool open_relative(const Parameter* p, const fs::path& dir, const SourceLocation& at,
+                     fs::path& path, std::string& text) {
+    if (!p || !p->has_value || p->value.empty()) {
+      _diag.error(at, "", "INPUT= needs a file name; write INPUT=file.inp");
+      return false;
+    }
+    path = dir / p->value;
+    if (!read_file(path, text)) {
+      _diag.error(at, fmt::format("INPUT={}", p->value),
+                  fmt::format("cannot read file '{}'; check the name (paths "
+                              "are relative to the "
+                              "directory of the file that contains this line)",
+                              path.lexically_normal().string()));
+      return false;
+    }
+    return true;
+  }
+
+  void include(const Keyword& kw, const fs::path& dir, int depth) {
+    for (const auto& p : kw.params)
+      if (p.key != "INPUT" && p.key != "PASSWORD")
+        _diag.error(kw.loc, p.name, "unknown parameter of *INCLUDE; only INPUT= is supported");
+    if (depth >= kMaxIncludeDepth) {
+      _diag.error(kw.loc, "",
+                  fmt::format("*INCLUDE nested deeper than {} levels; does a "
+                              "file include itself?",
+                              kMaxIncludeDepth));
+      return;
+    }
+    fs::path path;
+    std::string text;
+    if (!open_relative(kw.find("INPUT"), dir, kw.loc, path, text)) return;
+    const int file = add_file(path);
+    lex_text(text, file, path.parent_path(), depth + 1);
+  }
+
+  void read_data_file(const Parameter& p, const fs::path& dir) {
+    Keyword& kw = _deck.keywords[_current];
+    fs::path path;
+    std::string text;
+    if (!open_relative(&p, dir, kw.loc, path, text)) return;
+    const int file = add_file(path);
+    const auto lines = split_lines(text);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      if (is_comment(lines[i])) continue;
+      const int lineno = static_cast<int>(i) + 1;
+      if (is_keyword_line(lines[i])) {
+        _diag.error(loc(file, lineno), "",
+                    fmt::format("keyword line in a data file read by {}, INPUT=; such a file "
+                                "holds "
+                                "data lines only (use *INCLUDE for files with keywords)",
+                                kw.name));
+        return;
+      }
+      DataLine d = split_data_line(lines[i]);
+      d.file = file;
+      d.line = lineno;
+      kw.data.push_back(std::move(d));
+    }
+  }
+};
+
+} // namespace
+
+DataLine split_data_line(std::string_view text) {
+  DataLine d;
+  d.text = std::string(text);
+  const std::string_view t = trim(text);
+  if (t.empty()) return d;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = t.find(',', start);
+    if (comma == std::string_view::npos) {
+      d.fields.emplace_back(trim(t.substr(start)));
+      break;
+    }
+    d.fields.emplace_back(trim(t.substr(start, comma - start)));
+    start = comma + 1;
+  }
+  if (t.back() == ',') {
+    d.trailing_comma = true;
+    d.fields.pop_back();
+  }
+  return d;
+}
+
+Deck lex_file(const fs::path& deck, Diagnostics& diag) {
+  std::string text;
+  if (!read_file(deck, text))
+    throw InputError(SourceLocation{deck.string(), 0, {}}, "",
+                     "cannot read the input deck; check the file name and that "
+                     "the file exists");
+  Lexer lexer(diag);
+  return lexer.run(text, deck.string(), deck.parent_path());
+}
+
+Deck lex_string(std::string_view text, const std::string& name, const fs::path& base_dir,
+                Diagnostics& diag) {
+  Lexer lexer(diag);
+  return lexer.run(text, name, base_dir);
+}
+
+} // namespace gapfem::inp

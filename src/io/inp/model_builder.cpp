@@ -1,0 +1,241 @@
+#include "io/inp/model_builder.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+
+namespace gapfem::inp {
+
+// ---------------------------------------------------------------- references
+
+std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field) {
+  const std::string& t = r.text(field);
+  if (t.empty())
+    r.fail(fmt::format("field {}", field + 1), "a node number or node set name is required here");
+  if (const auto label = parse_integer(t)) {
+    const NodeId n = s.model.mesh.find_node(*label);
+    if (n >= 0) return {n};
+    if (s.bad_nodes.count(*label)) return {};
+    r.fail(fmt::format("node {}", *label),
+           "this node is not defined; define it with *NODE before use");
+  }
+  const std::string name = to_upper(t);
+  const auto it = s.model.nsets.find(name);
+  if (it != s.model.nsets.end()) return it->second;
+  if (s.bad_sets.count(name)) return {};
+  r.fail(fmt::format("node set {}", name),
+         "this node set is not defined; define it with *NSET (or NSET= on "
+         "*NODE) before use, or "
+         "check the spelling");
+}
+
+std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field) {
+  const std::string& t = r.text(field);
+  if (t.empty())
+    r.fail(fmt::format("field {}", field + 1),
+           "an element number or element set name is required here");
+  if (const auto label = parse_integer(t)) {
+    const ElemId e = s.model.mesh.find_element(*label);
+    if (e >= 0) return {e};
+    if (s.bad_elements.count(*label)) return {};
+    r.fail(fmt::format("element {}", *label),
+           "this element is not defined; define it with *ELEMENT before use");
+  }
+  const std::string name = to_upper(t);
+  if (const auto* set = find_elset(s, name)) return *set;
+  if (s.bad_sets.count(name)) return {};
+  r.fail(fmt::format("element set {}", name),
+         "this element set is not defined; define it with *ELSET (or ELSET= on "
+         "*ELEMENT) before "
+         "use, or check the spelling");
+}
+
+const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name) {
+  const auto it = s.model.elsets.find(name);
+  return it == s.model.elsets.end() ? nullptr : &it->second;
+}
+
+int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param) {
+  if (!kw.has(param)) return -1;
+  const std::string name = name_param(kw, param, true);
+  const auto it = s.amplitude_index.find(name);
+  if (it == s.amplitude_index.end())
+    throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), name),
+                     fmt::format("amplitude {} is not defined; define it with *AMPLITUDE, NAME={} "
+                                 "before this keyword",
+                                 name, name));
+  return it->second;
+}
+
+// ---------------------------------------------------------------- parameters
+
+std::string param_value(const Keyword& kw, std::string_view param, bool required) {
+  const Parameter* p = kw.find(param);
+  if (!p) {
+    if (required)
+      throw InputError(kw.loc, "",
+                       fmt::format("the parameter {}= is required; add it to the keyword line",
+                                   display_upper(param)));
+    return {};
+  }
+  if (!p->has_value || p->value.empty())
+    throw InputError(kw.loc, p->name,
+                     fmt::format("the parameter {} needs a value; write {}=...", p->name, p->name));
+  return p->value;
+}
+
+std::string name_param(const Keyword& kw, std::string_view param, bool required) {
+  return to_upper(trim(param_value(kw, param, required)));
+}
+
+int enum_param(const Keyword& kw, std::string_view param,
+               std::initializer_list<std::string_view> choices, int def) {
+  const Parameter* p = kw.find(param);
+  if (!p) return def;
+  const std::string v = canonical(p->value);
+  int i = 0;
+  for (auto c : choices) {
+    if (canonical(c) == v) return i;
+    ++i;
+  }
+  std::string list;
+  for (auto c : choices) list += (list.empty() ? "" : ", ") + std::string(c);
+  throw InputError(kw.loc, fmt::format("{}={}", p->name, p->value),
+                   fmt::format("this value is not supported by gapfem; use one of: {}", list));
+}
+
+bool yes_no_param(const Keyword& kw, std::string_view param, bool def) {
+  const Parameter* p = kw.find(param);
+  if (!p) return def;
+  if (!p->has_value) return true;
+  const std::string v = canonical(p->value);
+  if (v == "YES" || v == "ON" || v == "TRUE") return true;
+  if (v == "NO" || v == "OFF" || v == "FALSE") return false;
+  throw InputError(kw.loc, fmt::format("{}={}", p->name, p->value), "write YES or NO");
+}
+
+std::optional<double> real_param(const Keyword& kw, std::string_view param) {
+  if (!kw.has(param)) return std::nullopt;
+  const std::string v = param_value(kw, param, true);
+  const auto x = parse_real(v);
+  if (!x)
+    throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), v),
+                     "the value is not a number; write it like 0.5 or 1.E-3");
+  return x;
+}
+
+std::optional<long long> int_param(const Keyword& kw, std::string_view param) {
+  if (!kw.has(param)) return std::nullopt;
+  const std::string v = param_value(kw, param, true);
+  const auto x = parse_integer(v);
+  if (!x)
+    throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), v),
+                     "the value is not an integer; write a whole number such as 10");
+  return x;
+}
+
+void reject_param(const Keyword& kw, std::string_view param, std::string_view why) {
+  if (const Parameter* p = kw.find(param))
+    throw InputError(kw.loc, p->has_value ? fmt::format("{}={}", p->name, p->value) : p->name,
+                     fmt::format("this parameter is not supported by gapfem; {}", why));
+}
+
+PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
+                                  std::vector<std::string_view> names, RowCheck check) {
+  if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
+    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
+                     "field-variable dependencies are not supported by gapfem; "
+                     "tabulate the data "
+                     "against temperature only");
+  const int nv = static_cast<int>(names.size());
+  std::string layout;
+  for (auto n : names) layout += std::string(n) + ", ";
+  layout += "temperature";
+  struct Row {
+    std::vector<double> v;
+    double t;
+    SourceLocation loc;
+  };
+  std::vector<Row> rows;
+  const int errors_before = s.diag.n_errors();
+  for_each_line(s, lines, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(nv + 1, layout);
+    Row row;
+    for (int i = 0; i < nv; ++i) row.v.push_back(r.real(i, names[i]));
+    row.t = r.real_or(nv, 0.0, "temperature");
+    row.loc = r.loc();
+    if (check) {
+      const std::string problem = check(row.v);
+      if (!problem.empty()) r.fail("", problem);
+    }
+    rows.push_back(std::move(row));
+  });
+  PropertyTable table;
+  table.n_values = nv;
+  if (rows.empty()) {
+    if (errors_before == s.diag.n_errors())
+      throw InputError(kw.loc, "", fmt::format("a data line is required: {}", layout));
+    return table;
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.t < b.t; });
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i].t == rows[i - 1].t)
+      throw InputError(rows[i].loc, "",
+                       fmt::format("two data lines are given for temperature {}; give each "
+                                   "temperature once (a blank temperature means 0)",
+                                   rows[i].t));
+  for (const Row& row : rows) {
+    table.values.insert(table.values.end(), row.v.begin(), row.v.end());
+    table.keys.push_back(row.t);
+  }
+  return table;
+}
+
+template <typename T>
+static void add_sorted(std::vector<T>& set, const std::vector<T>& add) {
+  set.insert(set.end(), add.begin(), add.end());
+  std::sort(set.begin(), set.end());
+  set.erase(std::unique(set.begin(), set.end()), set.end());
+}
+
+void add_to_nset(BuildState& s, const std::string& name, const std::vector<NodeId>& nodes) {
+  add_sorted(s.model.nsets[name], nodes);
+}
+void add_to_elset(BuildState& s, const std::string& name, const std::vector<ElemId>& elems) {
+  add_sorted(s.model.elsets[name], elems);
+}
+
+int n_faces(ElementType type) {
+  using T = ElementType;
+  switch (type) {
+  case T::C3D8:
+  case T::C3D8T:
+  case T::DC3D8:
+    return 6;
+  case T::C3D4:
+  case T::C3D10:
+  case T::C3D4T:
+  case T::DC3D4:
+  case T::DC3D10:
+    return 4;
+  case T::CPS4:
+  case T::CPE4:
+  case T::CAX4:
+  case T::CPS4T:
+  case T::CPE4T:
+  case T::CAX4T:
+  case T::DC2D4:
+  case T::DCAX4:
+    return 4;
+  case T::CPS3:
+  case T::CPE3:
+  case T::CAX3:
+  case T::DC2D3:
+  case T::DCAX3:
+    return 3;
+  default:
+    return 0;
+  }
+}
+
+} // namespace gapfem::inp

@@ -1,0 +1,176 @@
+#pragma once
+/// @file model_builder.hpp
+/// The state shared by the keyword handlers while a deck is turned into a
+/// Model, and the helpers they use: locations, node/element/set references,
+/// amplitudes, enumerated parameters. The builder also binds elements to their
+/// properties and validates the model once the model data is complete
+/// (finish_model_data), and resolves the steps (handlers_step.cpp).
+#include "io/inp/diagnostics.hpp"
+#include "io/inp/fields.hpp"
+#include "io/inp/keyword.hpp"
+#include "io/inp/reader.hpp"
+#include "model/model.hpp"
+
+#include <initializer_list>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_set>
+#include <vector>
+
+namespace gapfem::inp {
+
+/// Which block a sub-option keyword attaches to.
+enum class Parent : std::uint8_t {
+  None,
+  Material,
+  Gap,
+  FieldOutput,
+  HistoryOutput,
+  ChangeFriction
+};
+
+/// What a step has seen so far (for defaults and "exactly one" rules).
+struct StepScratch {
+  bool procedure_given = false;
+  bool amplitude_given = false; ///< *STEP, AMPLITUDE= was given
+  bool transient = false;       ///< transient heat transfer / coupled procedure
+  bool node_print_given = false, el_print_given = false, field_given = false;
+  bool history_warned = false;
+  /// Field-output requests of this step that asked for VARIABLE=PRESELECT or
+  /// ALL (index, all?).
+  std::vector<std::pair<int, bool>> preset_fields;
+};
+
+/// Everything the handlers read and write while building the model.
+struct BuildState {
+  BuildState(const ReadOptions& o, Diagnostics& d) : opts(o), diag(d) {}
+
+  const ReadOptions& opts;
+  Diagnostics& diag;
+  Model model;
+
+  // failed definitions: later references to these labels are skipped without
+  // another error
+  std::unordered_set<Label> bad_nodes, bad_elements;
+  std::unordered_set<std::string> bad_sets;
+  std::vector<SourceRef> node_src; ///< per node: its *NODE data line
+
+  /// *INITIAL CONDITIONS, TYPE=TEMPERATURE entries, applied when the model data
+  /// is complete.
+  std::vector<std::pair<NodeId, double>> initial_temperatures;
+
+  std::map<std::string, int> material_index;  ///< upper-case name → Model::materials
+  std::map<std::string, int> amplitude_index; ///< upper-case name → Model::amplitudes
+  std::vector<std::string> solid_material;    ///< per solid section: material name
+  std::vector<std::string> beam_material;     ///< per beam section: material name
+  /// Per spring section: its first data line (DOFs; blank for SPRINGA), read
+  /// once the element types of the ELSET are known.
+  std::vector<DataLine> spring_dof_line;
+
+  Parent parent = Parent::None;
+  int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;
+  bool gap_behavior_seen = false; ///< duplicate-sub-option checks for the current *GAP
+
+  std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
+  bool model_done = false;                   ///< finish_model_data() has run
+  bool in_step = false;
+  Step step;
+  StepScratch scratch;
+
+  // ---------------------------------------------------------------- helpers
+  /// Location of a data line of `kw`.
+  SourceLocation loc(const Keyword& kw, const DataLine& line) const {
+    return SourceLocation{model.source_files[line.file], line.line, kw.name};
+  }
+  SourceRef ref(const DataLine& line) const { return SourceRef{line.file, line.line}; }
+  /// Field reader for a data line of `kw`.
+  FieldReader reader(const Keyword& kw, const DataLine& line) const {
+    return FieldReader(line, loc(kw, line));
+  }
+  void warn(const SourceLocation& at, const std::string& message) { diag.warning(at, message); }
+  /// Records an error and continues.
+  void error(const SourceLocation& at, std::string entity, std::string message) {
+    diag.error(std::move(at), std::move(entity), std::move(message));
+  }
+};
+
+/// Calls f(line) for every non-empty data line of `lines`; an InputError thrown
+/// by f is recorded and the next line is read.
+template <typename F>
+void for_each_line(BuildState& s, std::span<const DataLine> lines, F&& f) {
+  for (const DataLine& line : lines) {
+    if (line.empty()) continue;
+    try {
+      f(line);
+    } catch (const InputError& e) {
+      s.diag.error(e);
+    }
+  }
+}
+/// for_each_line over all data lines of `kw`.
+template <typename F>
+void for_each_line(BuildState& s, const Keyword& kw, F&& f) {
+  for_each_line(s, std::span<const DataLine>(kw.data), std::forward<F>(f));
+}
+
+/// Checks the property values of one table row; returns an error sentence or
+/// "".
+using RowCheck = std::string (*)(const std::vector<double>& values);
+/// Reads rows of `names.size()` values plus an optional temperature column
+/// (Abaqus material-data layout) from `lines` into a table sorted by
+/// temperature. DEPENDENCIES > 0 on `kw` is rejected.
+PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
+                                  std::vector<std::string_view> names, RowCheck check);
+
+// ---------------------------------------------------------------- references
+/// Nodes named by a data field: a node label or an NSET name. Throws InputError
+/// naming the field when neither exists. Returns nothing (silently) for
+/// labels/sets whose definition already failed.
+std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
+/// Elements named by a data field: an element label or an ELSET name.
+std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field);
+/// Elements of an ELSET parameter value (upper-cased); throws when the set does
+/// not exist.
+const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name);
+/// Index of the amplitude named by the AMPLITUDE (or `param`) parameter, -1
+/// when absent.
+int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param = "AMPLITUDE");
+
+// ---------------------------------------------------------------- parameters
+/// Value of a parameter that must have one; throws InputError when
+/// missing/empty if required.
+std::string param_value(const Keyword& kw, std::string_view param, bool required);
+/// Upper-case name value (set, material and amplitude names): trimmed and upper
+/// case.
+std::string name_param(const Keyword& kw, std::string_view param, bool required);
+/// An enumerated parameter: returns the index of the matching choice (compared
+/// canonically) or `def` when the parameter is absent; throws listing the
+/// choices when the value is not one.
+int enum_param(const Keyword& kw, std::string_view param,
+               std::initializer_list<std::string_view> choices, int def);
+/// YES/NO parameter; a bare parameter (no value) means YES.
+bool yes_no_param(const Keyword& kw, std::string_view param, bool def);
+/// Real-valued parameter; nullopt when absent.
+std::optional<double> real_param(const Keyword& kw, std::string_view param);
+/// Integer-valued parameter; nullopt when absent.
+std::optional<long long> int_param(const Keyword& kw, std::string_view param);
+/// Throws "PARAM is not supported by gapfem" for a parameter that is present.
+void reject_param(const Keyword& kw, std::string_view param, std::string_view why);
+
+/// Adds nodes/elements to a set (creating it) and keeps it sorted and unique.
+void add_to_nset(BuildState& s, const std::string& name, const std::vector<NodeId>& nodes);
+void add_to_elset(BuildState& s, const std::string& name, const std::vector<ElemId>& elems);
+
+/// Face counts per element type for S1..Sn / Pn labels (0: no faces).
+int n_faces(ElementType type);
+
+/// Binds elements to properties, resolves materials, checks the model space and
+/// the gap definitions. Runs once, at the first *STEP or at the end of the
+/// deck.
+void finish_model_data(BuildState& s);
+/// Final checks after the last keyword (open step, …).
+void finish_deck(BuildState& s);
+
+} // namespace gapfem::inp

@@ -1,0 +1,319 @@
+// Completing the model data: materials of sections, element → property binding,
+// spring DOFs, material options required by the element types, the model space,
+// and the gap checks that need element types and coordinates (spec
+// gap-elements.md §0b, §1.7, §2.2).
+#include "io/inp/handlers.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+
+namespace gapfem::inp {
+namespace {
+
+using Kind = PropertyRef::Kind;
+
+const char* keyword_of(Kind k) {
+  switch (k) {
+  case Kind::Solid:
+    return "*SOLID SECTION";
+  case Kind::Beam:
+    return "*BEAM SECTION";
+  case Kind::Spring:
+    return "*SPRING";
+  case Kind::Gap:
+    return "*GAP";
+  default:
+    return "?";
+  }
+}
+
+/// The property keyword an element family takes.
+Kind kind_for(ElementFamily f) {
+  switch (f) {
+  case ElementFamily::Continuum:
+  case ElementFamily::Truss:
+  case ElementFamily::HeatTransfer:
+    return Kind::Solid;
+  case ElementFamily::Beam:
+    return Kind::Beam;
+  case ElementFamily::Spring:
+    return Kind::Spring;
+  case ElementFamily::Gap:
+    return Kind::Gap;
+  }
+  return Kind::None;
+}
+
+std::string elem_name(const BuildState& s, ElemId e) {
+  return fmt::format("element {} ({})", s.model.element_label(e),
+                     element_info(s.model.mesh.elem_types[e]).name);
+}
+
+int resolve_material(BuildState& s, const std::string& name, const SourceLocation& loc) {
+  const auto it = s.material_index.find(name);
+  if (it != s.material_index.end()) return it->second;
+  s.error(loc, fmt::format("MATERIAL={}", name),
+          fmt::format("material {} is not defined; define it with *MATERIAL, NAME={}", name, name));
+  return -1;
+}
+
+/// Binds the elements of one property's ELSET; reports missing sets, wrong
+/// families and elements that already have a property.
+void bind(BuildState& s, Kind kind, int index, const std::string& elset, const SourceLocation& loc,
+          std::vector<SourceLocation>& owner_loc) {
+  const auto* set = find_elset(s, elset);
+  if (!set) {
+    if (!s.bad_sets.count(elset))
+      s.error(loc, fmt::format("ELSET={}", elset),
+              "this element set is not defined; define it with *ELSET or "
+              "ELSET= on *ELEMENT");
+    return;
+  }
+  bool family_reported = false, twice_reported = false;
+  for (ElemId e : *set) {
+    const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+    if (kind_for(info.family) != kind) {
+      if (!family_reported)
+        s.error(loc, elem_name(s, e),
+                kind == Kind::Gap ? fmt::format("ELSET {} of *GAP must hold only gap "
+                                                "elements (GAPUNI, GAPCYL, "
+                                                "GAPSPHER, GAPUNIT, DGAP); remove this "
+                                                "element from the set",
+                                                elset)
+                                  : fmt::format("this element is in ELSET {} but a {} "
+                                                "element needs a {}, not a "
+                                                "{}; remove it from the set",
+                                                elset, info.name, keyword_of(kind_for(info.family)),
+                                                keyword_of(kind)));
+      family_reported = true;
+      continue;
+    }
+    PropertyRef& ref = s.model.element_property[e];
+    if (ref.kind != Kind::None) {
+      if (!twice_reported)
+        s.error(loc, elem_name(s, e),
+                fmt::format("this element gets two property definitions, {} "
+                            "and {}; remove it "
+                            "from one of the two ELSETs",
+                            owner_loc[e].str(), loc.str()));
+      twice_reported = true;
+      continue;
+    }
+    ref = PropertyRef{kind, index};
+    owner_loc[e] = loc;
+  }
+}
+
+/// SPRING1: dof; SPRING2: dof1, dof2; SPRINGA: blank first line.
+void check_spring(BuildState& s, int index) {
+  SpringSection& sec = s.model.spring_sections[index];
+  const auto* set = find_elset(s, sec.elset);
+  if (!set || set->empty()) return;
+  const ElementType type = s.model.mesh.elem_types[set->front()];
+  for (ElemId e : *set)
+    if (s.model.mesh.elem_types[e] != type) {
+      s.error(sec.loc, elem_name(s, e),
+              fmt::format("ELSET {} mixes spring types ({} and {}); use one "
+                          "*SPRING per type",
+                          sec.elset, element_info(type).name,
+                          element_info(s.model.mesh.elem_types[e]).name));
+      return;
+    }
+  const DataLine& line = s.spring_dof_line[index];
+  SourceLocation loc{s.model.source_files[line.file], line.line, "*SPRING"};
+  const FieldReader r(line, loc);
+  try {
+    auto dof = [&](std::size_t f) {
+      const long long d = r.integer(f, f == 0 ? "DOF at node 1" : "DOF at node 2");
+      if (d < 1 || d > 6)
+        r.fail(fmt::format("field {} (DOF)", f + 1),
+               fmt::format("springs act on DOFs 1-6, not {}", d));
+      return static_cast<int>(d);
+    };
+    if (type == ElementType::SPRINGA) {
+      if (!line.empty())
+        r.fail(fmt::format("ELSET={}", sec.elset),
+               "for SPRINGA elements the first data line must be blank (the "
+               "spring acts along the "
+               "line between its nodes); put the stiffness on the second line");
+    } else if (type == ElementType::SPRING1) {
+      r.at_most(1, "DOF");
+      sec.dof1 = dof(0);
+    } else {
+      r.at_most(2, "DOF at node 1, DOF at node 2");
+      sec.dof1 = dof(0);
+      sec.dof2 = dof(1);
+    }
+  } catch (const InputError& e) {
+    s.diag.error(e);
+  }
+}
+
+void check_space(BuildState& s) {
+  const Mesh& mesh = s.model.mesh;
+  ElemId first[4] = {-1, -1, -1, -1}; // by SpaceRequirement
+  for (ElemId e = 0; e < mesh.n_elements(); ++e) {
+    const auto sp = static_cast<int>(element_info(mesh.elem_types[e]).space);
+    if (first[sp] < 0) first[sp] = e;
+  }
+  const ElemId planar = first[static_cast<int>(SpaceRequirement::Planar)];
+  const ElemId axi = first[static_cast<int>(SpaceRequirement::Axisymmetric)];
+  const ElemId solid = first[static_cast<int>(SpaceRequirement::ThreeD)];
+  auto clash = [&](ElemId a, ElemId b, const char* what) {
+    s.error(s.model.element_location(b), elem_name(s, b),
+            fmt::format("{} cannot be mixed in one model: {} (defined at {}) "
+                        "and this element; use "
+                        "element types of one space only",
+                        what, elem_name(s, a), s.model.element_location(a).str()));
+  };
+  if (planar >= 0 && axi >= 0) clash(planar, axi, "planar and axisymmetric elements");
+  if (solid >= 0 && (planar >= 0 || axi >= 0))
+    clash(solid, planar >= 0 ? planar : axi, "three-dimensional and two-dimensional elements");
+  s.model.space = planar >= 0 ? ModelSpace::Planar
+                  : axi >= 0  ? ModelSpace::Axisymmetric
+                              : ModelSpace::ThreeD;
+}
+
+/// Gap checks that need element types, coordinates and the model space.
+void check_gap(BuildState& s, const GapSection& gap) {
+  const auto* set = find_elset(s, gap.elset);
+  if (!set) return;
+  const Mesh& mesh = s.model.mesh;
+  const double tol = 1e-12 * s.model.model_size();
+  const bool two_d = s.model.space != ModelSpace::ThreeD;
+  const Vec3& n = gap.direction;
+  const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (ElemId e : *set) {
+    const ElementType t = mesh.elem_types[e];
+    if (element_info(t).family != ElementFamily::Gap) continue; // reported by bind()
+    std::string problem;
+    if ((t == ElementType::GAPCYL || t == ElementType::GAPSPHER) && gap.d == 0.0)
+      problem = "GAPCYL and GAPSPHER need a non-zero d (positive: maximum "
+                "separation, negative: "
+                "minimum separation)";
+    else if (t == ElementType::GAPCYL && !gap.direction_given)
+      problem = "GAPCYL needs the cylinder axis in fields 2-4 of the *GAP data line";
+    else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT || t == ElementType::GAPCYL) &&
+             two_d && gap.direction_given && std::abs(n[2]) > 1e-12 * norm)
+      problem = fmt::format("in a {} model the {} must lie in the x-y plane; set n_z = 0",
+                            model_space_name(s.model.space),
+                            t == ElementType::GAPCYL ? "cylinder axis" : "gap direction");
+    else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT) && !gap.direction_given) {
+      const auto nodes = mesh.element_nodes(e);
+      const Vec3& a = mesh.coords[nodes[0]];
+      const Vec3& b = mesh.coords[nodes[1]];
+      if (std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) <= tol)
+        problem = "the direction is computed from the node coordinates but the "
+                  "two nodes "
+                  "coincide; give the direction cosines in fields 2-4 of the "
+                  "*GAP data line";
+    }
+    if (!problem.empty()) {
+      s.error(s.model.element_location(e), elem_name(s, e),
+              fmt::format("{} (*GAP at {})", problem, gap.loc.str()));
+      if (t != ElementType::GAPUNI && t != ElementType::GAPUNIT) return; // same for all elements
+    }
+  }
+}
+
+/// Material options needed by the elements that use each material.
+void check_materials(BuildState& s) {
+  std::map<std::pair<int, int>, bool> reported; // (material, 0 elastic / 1 conductivity)
+  for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) {
+    const PropertyRef ref = s.model.element_property[e];
+    int m = -1;
+    std::string set;
+    if (ref.kind == Kind::Solid) {
+      m = s.model.solid_sections[ref.index].material;
+      set = s.model.solid_sections[ref.index].elset;
+    } else if (ref.kind == Kind::Beam) {
+      m = s.model.beam_sections[ref.index].material;
+      set = s.model.beam_sections[ref.index].elset;
+    }
+    if (m < 0) continue;
+    const Material& mat = s.model.materials[m];
+    const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+    auto need = [&](int what, bool has, const char* option) {
+      if (has || reported[{m, what}]) return;
+      reported[{m, what}] = true;
+      s.error(mat.loc, fmt::format("material {}", mat.name),
+              fmt::format("{} (ELSET {}) needs {} but the material has none; add {} after "
+                          "*MATERIAL, NAME={}",
+                          elem_name(s, e), set, option, option, mat.name));
+    };
+    if (info.displacement) need(0, mat.has_elastic(), "*ELASTIC");
+    if (info.temperature) need(1, !mat.conductivity.empty(), "*CONDUCTIVITY");
+  }
+}
+
+} // namespace
+
+void finish_model_data(BuildState& s) {
+  if (s.model_done) return;
+  s.model_done = true;
+  Model& m = s.model;
+  try {
+    for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
+      m.solid_sections[i].material =
+          resolve_material(s, s.solid_material[i], m.solid_sections[i].loc);
+    for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
+      m.beam_sections[i].material = resolve_material(s, s.beam_material[i], m.beam_sections[i].loc);
+
+    m.element_property.assign(static_cast<std::size_t>(m.mesh.n_elements()), PropertyRef{});
+    std::vector<SourceLocation> owner(static_cast<std::size_t>(m.mesh.n_elements()));
+    for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
+      bind(s, Kind::Solid, static_cast<int>(i), m.solid_sections[i].elset, m.solid_sections[i].loc,
+           owner);
+    for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
+      bind(s, Kind::Beam, static_cast<int>(i), m.beam_sections[i].elset, m.beam_sections[i].loc,
+           owner);
+    for (std::size_t i = 0; i < m.spring_sections.size(); ++i) {
+      bind(s, Kind::Spring, static_cast<int>(i), m.spring_sections[i].elset,
+           m.spring_sections[i].loc, owner);
+      check_spring(s, static_cast<int>(i));
+    }
+    for (std::size_t i = 0; i < m.gap_sections.size(); ++i)
+      bind(s, Kind::Gap, static_cast<int>(i), m.gap_sections[i].elset, m.gap_sections[i].loc,
+           owner);
+
+    // elements without a property: one error per element type (naming the first
+    // element)
+    std::map<ElementType, std::pair<ElemId, int>> missing;
+    for (ElemId e = 0; e < m.mesh.n_elements(); ++e)
+      if (m.element_property[e].kind == Kind::None) {
+        auto& [first, count] = missing.try_emplace(m.mesh.elem_types[e], e, 0).first->second;
+        (void)first;
+        ++count;
+      }
+    for (const auto& [type, fc] : missing) {
+      const auto [e, count] = fc;
+      const ElementTypeInfo& info = element_info(type);
+      s.error(m.element_location(e), elem_name(s, e),
+              fmt::format("this element has no section: add it to the ELSET of a {}{}",
+                          keyword_of(kind_for(info.family)),
+                          count > 1 ? fmt::format(" ({} {} elements have none)", count, info.name)
+                                    : std::string()));
+    }
+
+    check_materials(s);
+    check_space(s);
+    for (const auto& gap : m.gap_sections) check_gap(s, gap);
+
+    m.initial_temperature.assign(static_cast<std::size_t>(m.mesh.n_nodes()), 0.0);
+    for (const auto& [n, t] : s.initial_temperatures) m.initial_temperature[n] = t;
+  } catch (const InputError& e) {
+    s.diag.error(e);
+  }
+}
+
+void finish_deck(BuildState& s) {
+  if (s.in_step) {
+    s.error(s.step.loc, fmt::format("step {}", s.step.number),
+            "the step has no *END STEP; add *END STEP at the end of the step");
+    close_step(s);
+  }
+  finish_model_data(s);
+}
+
+} // namespace gapfem::inp

@@ -1,0 +1,190 @@
+#include "io/inp/parser.hpp"
+
+#include "io/inp/handlers.hpp"
+
+#include <array>
+#include <fmt/format.h>
+
+namespace gapfem::inp {
+namespace {
+
+constexpr unsigned bit(Parent p) {
+  return 1u << static_cast<unsigned>(p);
+}
+constexpr unsigned kMaterial = bit(Parent::Material);
+constexpr unsigned kGap = bit(Parent::Gap);
+constexpr unsigned kOutput = bit(Parent::FieldOutput) | bit(Parent::HistoryOutput);
+constexpr unsigned kFriction = bit(Parent::Gap) | bit(Parent::ChangeFriction);
+
+using W = Where;
+using P = Parent;
+
+// clang-format off
+constexpr std::array<KeywordSpec, 51> kTable = {{
+  // model data: mesh
+  {"*HEADING", handle_heading, W::Model, ""},
+  {"*PREPRINT", handle_preprint, W::Model, "*"},
+  {"*NODE", handle_node, W::Model, "NSET|INPUT|SYSTEM"},
+  {"*ELEMENT", handle_element, W::Model, "TYPE|ELSET|INPUT"},
+  {"*NSET", handle_nset, W::Model, "NSET|GENERATE|INPUT|UNSORTED"},
+  {"*ELSET", handle_elset, W::Model, "ELSET|GENERATE|INPUT|UNSORTED"},
+  {"*SURFACE", handle_surface, W::Model, "NAME|TYPE"},
+  // materials and properties
+  {"*MATERIAL", handle_material, W::Model, "NAME", 0, P::Material},
+  {"*ELASTIC", handle_elastic, W::Model, "TYPE|DEPENDENCIES|MODULI", kMaterial},
+  {"*DENSITY", handle_density, W::Model, "DEPENDENCIES", kMaterial},
+  {"*EXPANSION", handle_expansion, W::Model, "TYPE|ZERO|DEPENDENCIES", kMaterial},
+  {"*CONDUCTIVITY", handle_conductivity, W::Model, "TYPE|DEPENDENCIES", kMaterial},
+  {"*SPECIFIC HEAT", handle_specific_heat, W::Model, "DEPENDENCIES", kMaterial},
+  {"*SOLID SECTION", handle_solid_section, W::Model, "ELSET|MATERIAL|ORIENTATION"},
+  {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION"},
+  {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
+  {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
+  {"*INITIAL CONDITIONS", handle_initial_conditions, W::Model, "TYPE"},
+  {"*PHYSICAL CONSTANTS", handle_physical_constants, W::Model, "*"},
+  // gap contact
+  {"*GAP", handle_gap, W::Model, "ELSET", 0, P::Gap},
+  {"*SURFACE BEHAVIOR", handle_surface_behavior, W::Model,
+   "PRESSURE-OVERCLOSURE|NO SEPARATION|PENALTY|AUGMENTED LAGRANGE|DIRECT", kGap},
+  {"*FRICTION", handle_friction, W::Both,
+   "ROUGH|LAGRANGE|ELASTIC SLIP|SLIP TOLERANCE|TAUMAX|EXPONENTIAL DECAY|ANISOTROPIC|USER|DEPENDENCIES",
+   kFriction},
+  {"*CONTACT DAMPING", handle_contact_damping, W::Model, "DEFINITION|TANGENT FRACTION", kGap},
+  {"*GAP CONDUCTANCE", handle_gap_conductance, W::Model, "PRESSURE|USER|DEPENDENCIES", kGap},
+  {"*GAP RADIATION", handle_gap_radiation, W::Model, "", kGap},
+  {"*GAP HEAT GENERATION", handle_gap_heat_generation, W::Model, "", kGap},
+  // model or history
+  {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED"},
+  // history: steps and procedures
+  {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION"},
+  {"*END STEP", handle_end_step, W::Both, ""},
+  {"*STATIC", handle_static, W::History, "DIRECT|RIKS"},
+  {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
+  {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
+  {"*CHANGE FRICTION", handle_change_friction, W::History, "ELSET|INTERACTION", 0, P::ChangeFriction},
+  // history: loads
+  {"*CLOAD", handle_cload, W::History, "OP|AMPLITUDE"},
+  {"*CFLUX", handle_cflux, W::History, "OP|AMPLITUDE"},
+  {"*DLOAD", handle_dload, W::History, "OP|AMPLITUDE"},
+  {"*DSLOAD", handle_dsload, W::History, "OP|AMPLITUDE"},
+  {"*DFLUX", handle_dflux, W::History, "OP|AMPLITUDE"},
+  {"*DSFLUX", handle_dsflux, W::History, "OP|AMPLITUDE"},
+  {"*FILM", handle_film, W::History, "OP|AMPLITUDE|FILM AMPLITUDE"},
+  {"*SFILM", handle_sfilm, W::History, "OP|AMPLITUDE|FILM AMPLITUDE"},
+  {"*TEMPERATURE", handle_temperature, W::History, "OP|AMPLITUDE|FILE"},
+  {"*CONTACT INTERFERENCE", handle_contact_interference, W::History, "TYPE|SHRINK|AMPLITUDE|OP"},
+  // history: output
+  {"*NODE PRINT", handle_node_print, W::History, "NSET|FREQUENCY|TOTALS|SUMMARY|GLOBAL"},
+  {"*EL PRINT", handle_el_print, W::History, "ELSET|FREQUENCY|POSITION|TOTALS|SUMMARY"},
+  {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|VARIABLE|NUMBER INTERVAL|TIME INTERVAL"},
+  {"*NODE OUTPUT", handle_node_output, W::History, "NSET", kOutput},
+  {"*ELEMENT OUTPUT", handle_element_output, W::History, "ELSET|DIRECTIONS|POSITION", kOutput},
+}};
+// clang-format on
+
+/// The table minus the spare slots (the array size is a compile-time upper
+/// bound).
+std::span<const KeywordSpec> table() {
+  std::size_t n = 0;
+  while (n < kTable.size() && !kTable[n].name.empty()) ++n;
+  return {kTable.data(), n};
+}
+
+const KeywordSpec* find_spec(const std::string& key) {
+  for (const auto& spec : table())
+    if (canonical(spec.name.substr(1)) == key) return &spec;
+  return nullptr;
+}
+
+bool accepts(const KeywordSpec& spec, const std::string& param_key) {
+  if (spec.params == "*") return true;
+  std::string_view list = spec.params;
+  while (!list.empty()) {
+    const auto bar = list.find('|');
+    if (canonical(list.substr(0, bar)) == param_key) return true;
+    if (bar == std::string_view::npos) break;
+    list = list.substr(bar + 1);
+  }
+  return false;
+}
+
+std::string parent_names(unsigned parents) {
+  if (parents == kMaterial) return "*MATERIAL (it defines a property of the material above it)";
+  if (parents == kGap) return "*GAP (it defines a property of the gap elements above it)";
+  if (parents == kOutput) return "*OUTPUT inside a step";
+  return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
+}
+
+void unknown(BuildState& s, const SourceLocation& loc, const std::string& what) {
+  if (s.opts.ignore_unknown)
+    s.warn(loc, what + " is not supported by gapfem and was ignored (--ignore-unknown)");
+  else
+    s.error(loc, "",
+            what + " is not supported by gapfem; remove it, or run with "
+                   "--ignore-unknown "
+                   "to skip it with a warning");
+}
+
+void dispatch(BuildState& s, Keyword& kw) {
+  const KeywordSpec* spec = find_spec(kw.key);
+  if (!spec) {
+    // unknown keyword: the current block stays open (an ignored *PLASTIC keeps
+    // its *MATERIAL)
+    unknown(s, kw.loc, fmt::format("the keyword {}", kw.name));
+    return;
+  }
+  kw.name = std::string(spec->name);
+  kw.loc.keyword = kw.name;
+  if (s.model_done && !s.in_step && spec->handler != handle_step &&
+      spec->handler != handle_end_step) {
+    s.error(kw.loc, "",
+            fmt::format("{} between two steps; after the first *STEP every "
+                        "keyword belongs inside "
+                        "a step (between *STEP and *END STEP)",
+                        kw.name));
+    return;
+  }
+  const bool history_keyword = spec->where == Where::History;
+  if (spec->parents != 0) {
+    if (!(spec->parents & bit(s.parent))) {
+      s.error(kw.loc, "", fmt::format("{} must follow {}", kw.name, parent_names(spec->parents)));
+      return;
+    }
+  } else {
+    s.parent = spec->opens;
+  }
+  if (history_keyword && !s.in_step) {
+    s.error(kw.loc, "",
+            fmt::format("{} is history data; put it inside a step (between "
+                        "*STEP and *END STEP)",
+                        kw.name));
+    return;
+  }
+  if (spec->where == Where::Model && (s.in_step || s.model_done)) {
+    s.error(kw.loc, "", fmt::format("{} is model data; move it before the first *STEP", kw.name));
+    return;
+  }
+  for (const auto& p : kw.params)
+    if (!accepts(*spec, p.key))
+      unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name));
+  spec->handler(s, kw);
+}
+
+} // namespace
+
+std::span<const KeywordSpec> keyword_table() {
+  return table();
+}
+
+void parse_deck(Deck& deck, BuildState& s) {
+  for (Keyword& kw : deck.keywords) {
+    try {
+      dispatch(s, kw);
+    } catch (const InputError& e) {
+      s.diag.error(e);
+    }
+  }
+  finish_deck(s);
+}
+
+} // namespace gapfem::inp
