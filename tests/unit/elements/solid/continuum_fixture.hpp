@@ -1,0 +1,218 @@
+#pragma once
+// Helpers for the continuum element unit tests: a one-element model, the kernel built by the real
+// factory, an ElementInput over test-owned buffers, and finite-difference utilities.
+#include "elements/element_kernel.hpp"
+#include "fem/shape_functions.hpp"
+#include "model/model.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <limits>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace gapfem::test {
+
+/// Material data of the tests (steel-like, in N, mm).
+struct TestMaterial {
+  double E = 200000.0;
+  double nu = 0.3;
+  double alpha = 1.2e-5;    ///< 0: no *EXPANSION
+  double density = 7.85e-9; ///< 0: no *DENSITY
+};
+
+inline Shape shape_of(ElementType t) {
+  switch (t) {
+  case ElementType::C3D8:
+    return Shape::Hex8;
+  case ElementType::C3D4:
+    return Shape::Tet4;
+  case ElementType::C3D10:
+    return Shape::Tet10;
+  case ElementType::CPS3:
+  case ElementType::CPE3:
+  case ElementType::CAX3:
+    return Shape::Tri3;
+  default:
+    return Shape::Quad4;
+  }
+}
+inline bool is_3d(ElementType t) {
+  return shape_dim(shape_of(t)) == 3;
+}
+inline int dofs_per_node(ElementType t) {
+  return is_3d(t) ? 3 : 2;
+}
+
+/// A valid, mildly distorted element of each type with edge lengths about 1 (2-D elements sit at
+/// x in [1, 2.2] so that axisymmetric radii are positive).
+inline std::vector<Vec3> reference_nodes(ElementType t, bool distorted = true) {
+  const Shape s = shape_of(t);
+  std::vector<Vec3> X;
+  const auto xi = shape_node_coords(s);
+  const double d = distorted ? 1.0 : 0.0;
+  for (std::size_t a = 0; a < xi.size(); ++a) {
+    Vec3 p{};
+    if (s == Shape::Hex8 || s == Shape::Quad4) {
+      for (int i = 0; i < 3; ++i) p[i] = 0.5 * xi[a][i];
+    } else {
+      p = xi[a];
+    }
+    // Deterministic distortion, small enough to keep the Jacobian positive.
+    p[0] += d * 0.07 * std::sin(1.0 + 3.0 * a);
+    p[1] += d * 0.05 * std::cos(2.0 + 5.0 * a);
+    if (shape_dim(s) == 3)
+      p[2] += d * 0.06 * std::sin(3.0 + 7.0 * a);
+    else
+      p[2] = 0.0;
+    if (shape_dim(s) == 2) p[0] += 1.5;
+    X.push_back(p);
+  }
+  if (s == Shape::Tet10) // keep midside nodes on straight edges between the distorted corners
+    for (int e = 0; e < 6; ++e) {
+      constexpr int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+      for (int i = 0; i < 3; ++i) X[4 + e][i] = 0.5 * (X[edge[e][0]][i] + X[edge[e][1]][i]);
+    }
+  return X;
+}
+
+/// One-element model: nodes 1..n, element 1 of type t, one material and solid section.
+inline std::shared_ptr<Model> one_element_model(ElementType t, const std::vector<Vec3>& X,
+                                                const TestMaterial& m = {},
+                                                double thickness = 1.0) {
+  auto model = std::make_shared<Model>();
+  Mesh& mesh = model->mesh;
+  for (std::size_t a = 0; a < X.size(); ++a) {
+    mesh.node_labels.push_back(static_cast<Label>(a + 1));
+    mesh.coords.push_back(X[a]);
+    mesh.node_index[static_cast<Label>(a + 1)] = static_cast<NodeId>(a);
+    mesh.conn.push_back(static_cast<NodeId>(a));
+  }
+  mesh.elem_labels.push_back(1);
+  mesh.elem_types.push_back(t);
+  mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
+  mesh.elem_src.push_back({});
+  mesh.elem_index[1] = 0;
+  model->space = is_3d(t)
+                     ? ModelSpace::ThreeD
+                     : (element_info(t).plane == PlaneKind::Axisymmetric ? ModelSpace::Axisymmetric
+                                                                         : ModelSpace::Planar);
+  Material mat;
+  mat.name = "STEEL";
+  mat.elastic.n_values = 2;
+  mat.elastic.values = {m.E, m.nu};
+  if (m.alpha != 0.0) {
+    mat.expansion.n_values = 1;
+    mat.expansion.values = {m.alpha};
+  }
+  if (m.density != 0.0) {
+    mat.density.n_values = 1;
+    mat.density.values = {m.density};
+  }
+  model->materials.push_back(mat);
+  SolidSection sec;
+  sec.elset = "ALL";
+  sec.material = 0;
+  sec.thickness = thickness;
+  model->solid_sections.push_back(sec);
+  model->element_property.push_back({PropertyRef::Kind::Solid, 0});
+  model->initial_temperature.assign(X.size(), 0.0);
+  return model;
+}
+
+/// Kernel plus the buffers of one ElementInput.
+struct ElementHarness {
+  std::shared_ptr<Model> model;
+  std::unique_ptr<ElementKernel> kernel;
+  std::vector<Vec3> X;
+  std::vector<double> u, T, Ti;
+  StepContext ctx;
+  std::vector<ElemId> elems{0};
+
+  ElementHarness(ElementType t, std::vector<Vec3> coords, const TestMaterial& m = {},
+                 double thickness = 1.0)
+      : X(std::move(coords)) {
+    model = one_element_model(t, X, m, thickness);
+    kernel = make_element_kernel(KernelContext{*model, t, model->element_property[0], elems});
+    u.assign(kernel->n_dofs(), 0.0);
+  }
+  int n() const { return kernel->n_dofs(); }
+
+  ElementInput input() {
+    ElementInput in;
+    in.elem = 0;
+    in.label = 1;
+    in.X = X;
+    in.u = u;
+    in.u_start = u;
+    if (!T.empty()) {
+      in.temperature = T;
+      in.temperature_start = T;
+      in.initial_temperature = Ti;
+    }
+    in.ctx = &ctx;
+    return in;
+  }
+  /// Residual and (optionally) tangent at the current u.
+  void evaluate(std::vector<double>& r, std::vector<double>* K = nullptr) {
+    r.assign(n(), 0.0);
+    std::vector<double> Kbuf;
+    ElementOutput out;
+    out.residual = r;
+    if (K) {
+      K->assign(n() * n(), 0.0);
+      out.tangent = *K;
+    }
+    out.want_tangent = K != nullptr;
+    ElementInput in = input();
+    kernel->evaluate(in, out);
+  }
+  ElementRecovery recover() {
+    ElementRecovery rec;
+    ElementInput in = input();
+    kernel->recover(in, rec);
+    return rec;
+  }
+  /// Displacement field u(X) = A X + c at the nodes (2-D: upper-left 2x2 of A).
+  void set_linear_field(const double A[3][3], const Vec3& c = {0, 0, 0}) {
+    const int nd = dofs_per_node(kernel->type());
+    for (std::size_t a = 0; a < X.size(); ++a)
+      for (int i = 0; i < nd; ++i) {
+        double v = c[i];
+        for (int j = 0; j < nd; ++j) v += A[i][j] * X[a][j];
+        u[a * nd + i] = v;
+      }
+  }
+  void set_temperature(double T_now, double T_init) {
+    T.assign(X.size(), T_now);
+    Ti.assign(X.size(), T_init);
+  }
+};
+
+/// Seeded random displacements of size `scale` (relative to the element size ~1).
+inline void random_displacements(std::vector<double>& u, double scale, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> dist(-1.0, 1.0);
+  for (double& v : u) v = scale * dist(gen);
+}
+
+/// Max |a_i - b_i| and max |b_i|.
+inline std::pair<double, double> max_diff(const std::vector<double>& a,
+                                          const std::vector<double>& b) {
+  double d = 0.0, m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    d = std::max(d, std::abs(a[i] - b[i]));
+    m = std::max(m, std::abs(b[i]));
+  }
+  return {d, m};
+}
+
+/// Central-difference step for a function of O(1) arguments: cbrt(machine epsilon) balances the
+/// O(h^2) truncation error against the O(eps/h) round-off error.
+inline double fd_step() {
+  return std::cbrt(std::numeric_limits<double>::epsilon());
+}
+
+} // namespace gapfem::test
