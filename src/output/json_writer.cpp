@@ -120,7 +120,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   if (frame.last_in_step) {
     _frame_nodes = _all_nodes;
     for (const auto& res : frame.elements)
-      if (res.elem >= 0 && res.elem < mesh.n_elements()) _frame_elems.push_back(res.elem);
+      if (res.elem >= 0 && res.elem < mesh.n_elements()) _frame_elems.push_back(&res);
   } else {
     bool due = false;
     for (std::size_t k = 0; k < _node_lists.size() && k < frame.node_print_due.size(); ++k) {
@@ -135,21 +135,24 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
     for (std::size_t k = 0; k < _elem_lists.size() && k < frame.el_print_due.size(); ++k) {
       if (!frame.el_print_due[k]) continue;
       due = true;
-      for (ElemId e : _elem_lists[k])
-        if (!_elem_mark[e] && frame.element(e)) {
-          _elem_mark[e] = 1;
-          _frame_elems.push_back(e);
-        }
+      for (ElemId e : _elem_lists[k]) {
+        const ElementResult* res = _elem_mark[e] ? nullptr : frame.element(e);
+        if (!res) continue;
+        _elem_mark[e] = 1;
+        _frame_elems.push_back(res);
+      }
     }
     for (NodeId n : _frame_nodes) _node_mark[n] = 0;
-    for (ElemId e : _frame_elems) _elem_mark[e] = 0;
+    for (const ElementResult* res : _frame_elems) _elem_mark[res->elem] = 0;
     if (!due) return;
   }
   if (!frame.last_in_step)
     std::sort(_frame_nodes.begin(), _frame_nodes.end(),
               [&](NodeId a, NodeId c) { return mesh.node_labels[a] < mesh.node_labels[c]; });
   std::sort(_frame_elems.begin(), _frame_elems.end(),
-            [&](ElemId a, ElemId c) { return mesh.elem_labels[a] < mesh.elem_labels[c]; });
+            [&](const ElementResult* a, const ElementResult* c) {
+              return mesh.elem_labels[a->elem] < mesh.elem_labels[c->elem];
+            });
 
   auto& b = _out.buffer();
   if (!_first_frame) b.push_back(',');
@@ -168,8 +171,8 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   }
   b.append(std::string_view("},\"elements\":{"));
   first = true;
-  for (ElemId e : _frame_elems) {
-    if (const ElementResult* res = frame.element(e)) write_element(model, *res, first);
+  for (const ElementResult* res : _frame_elems) {
+    write_element(model, *res, first);
     _out.maybe_flush();
   }
   b.append(std::string_view("}}"));

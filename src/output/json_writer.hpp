@@ -39,12 +39,12 @@ class JsonWriter : public ResultWriter {
   bool _first_frame = true;
   int _open_step_number = 0;
 
-  std::vector<std::vector<NodeId>> _node_lists; ///< per *NODE PRINT of the step, by label
-  std::vector<std::vector<ElemId>> _elem_lists; ///< per *EL PRINT of the step
-  std::vector<NodeId> _all_nodes;               ///< every node, by label
-  std::vector<std::uint8_t> _node_mark;         ///< scratch: nodes in the frame (per NodeId)
-  std::vector<NodeId> _frame_nodes;             ///< scratch: nodes in the frame, by label
-  std::vector<ElemId> _frame_elems;             ///< scratch: elements in the frame, by label
+  std::vector<std::vector<NodeId>> _node_lists;   ///< per *NODE PRINT of the step, by label
+  std::vector<std::vector<ElemId>> _elem_lists;   ///< per *EL PRINT of the step
+  std::vector<NodeId> _all_nodes;                 ///< every node, by label
+  std::vector<std::uint8_t> _node_mark;           ///< scratch: nodes in the frame (per NodeId)
+  std::vector<NodeId> _frame_nodes;               ///< scratch: nodes in the frame, by label
+  std::vector<const ElementResult*> _frame_elems; ///< scratch: elements in the frame, by label
   std::vector<std::uint8_t> _elem_mark;
   std::vector<double> _avg; ///< scratch: point averages
 

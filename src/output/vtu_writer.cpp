@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "model/model.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -240,7 +241,14 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   out.write("\n  </AppendedData>\n</VTKFile>\n");
   out.close();
 
-  _entries.push_back(PvdEntry{frame.total_time, file});
+  // A step that stops early repeats its last converged increment as the final frame: the file
+  // is rewritten, and listed once.
+  auto same = std::find_if(_entries.begin(), _entries.end(),
+                           [&](const PvdEntry& e) { return e.file == file; });
+  if (same != _entries.end())
+    same->time = frame.total_time;
+  else
+    _entries.push_back(PvdEntry{frame.total_time, file});
   write_pvd();
 }
 

@@ -192,12 +192,17 @@ TEST(OutputVtu, PvdListsFrames) {
   no_field.field_due = false;
   w.frame(m, 0, no_field);
   w.frame(m, 0, make_frame(m, 3, 1.0, true));
+  w.frame(m, 0, make_frame(m, 3, 1.0, true)); // a failed step repeats its last increment
   w.end(m, make_run());
   pvd = read_file(dir / "wt.pvd");
   EXPECT_NE(pvd.find("<VTKFile type=\"Collection\""), std::string::npos);
   EXPECT_NE(pvd.find("timestep=\"1\" group=\"\" part=\"0\" file=\"wt_1_3.vtu\""),
             std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "wt_1_2.vtu")) << "no field output due";
+  std::size_t n_sets = 0;
+  for (auto p = pvd.find("<DataSet"); p != std::string::npos; p = pvd.find("<DataSet", p + 1))
+    ++n_sets;
+  EXPECT_EQ(n_sets, 2u); // wt_1_1.vtu and wt_1_3.vtu, the repeated frame listed once
   EXPECT_NE(pvd.find("</Collection>\n</VTKFile>"), std::string::npos);
 }
 
