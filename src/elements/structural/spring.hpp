@@ -35,7 +35,7 @@ class SpringKernel final : public ElementKernel {
   double stiffness(const ElementInput& in) const;
 
  private:
-  /// Relative displacement du and the SPRINGA kinematics flag.
+  /// Relative displacement du (see the table above).
   double relative_displacement(const ElementInput& in) const;
 
   ElementType _type;

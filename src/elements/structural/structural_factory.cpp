@@ -92,10 +92,14 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
     break;
   }
   const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
+  const std::string_view name = element_info(ctx.type).name;
+  if (ctx.type == ElementType::T2D2T || ctx.type == ElementType::T3D2T)
+    throw InputError(ctx.model.element_location(e),
+                     fmt::format("{} (coupled temperature-displacement truss) elements are not "
+                                 "available yet; use {} in a stress analysis",
+                                 name, ctx.type == ElementType::T2D2T ? "T2D2" : "T3D2"));
   throw InputError(ctx.model.element_location(e),
-                   fmt::format("{} elements are not available yet; use {} in a stress analysis",
-                               element_info(ctx.type).name,
-                               ctx.type == ElementType::T2D2T ? "T2D2" : "T3D2"));
+                   fmt::format("{} is not a spring, truss or beam element type", name));
 }
 
 } // namespace gapfem
