@@ -225,5 +225,52 @@ TEST(OutputDat, FailedRunSaysSo) {
   EXPECT_EQ(lines.back(), "          THE ANALYSIS HAS NOT BEEN COMPLETED");
 }
 
+TEST(OutputDat, PlanarColumns) {
+  const Model m = make_planar_model();
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "p.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.frame(m, 0, make_planar_frame(m));
+  w.end(m, RunSummary{});
+  const auto lines = read_lines(dir / "p.dat");
+  // U table: U1 U2 only, all five nodes; UR table: UR3 only, only node 9 (the one with a rotation).
+  const int u = find_line(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES");
+  ASSERT_GE(u, 0);
+  EXPECT_EQ(lines[u + 2], "       NODE FOOT-   U1          U2");
+  EXPECT_EQ(lines[u + 5], fmt::format("{:>11}    {}{}", 1, e12(1.0), e12(2.0)));
+  EXPECT_EQ(lines[u + 9].substr(0, 11), fmt::format("{:>11}", 9));
+  const int ur = find_line(lines, "THE FOLLOWING TABLE IS PRINTED FOR ALL NODES", u + 1);
+  ASSERT_GT(ur, u);
+  EXPECT_EQ(lines[ur + 2], "       NODE FOOT-   UR3");
+  EXPECT_EQ(lines[ur + 5], fmt::format("{:>11}    {}", 9, e12(0.01)));
+  EXPECT_EQ(lines[ur + 6], "");
+  EXPECT_EQ(lines[ur + 7].substr(0, 8), " MAXIMUM");
+}
+
+TEST(OutputDat, ThermalAndDampingChecks) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "t.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  StepSummary s = make_summary();
+  s.checks.thermal = true;
+  s.checks.reaction_flux_sum = -500.0;
+  s.checks.applied_flux_sum = 500.0;
+  s.checks.heat_balance_error = 1e-10;
+  s.checks.max_damping_force = 0.125;
+  w.end_step(m, 0, s);
+  w.end(m, make_run());
+  const auto lines = read_lines(dir / "t.dat");
+  const int h = find_line(lines, " HEAT BALANCE");
+  ASSERT_GE(h, 0);
+  EXPECT_NE(lines[find_line(lines, "SUM OF REACTION FLUXES RFL", h)].find(e12(-500.0)),
+            std::string::npos);
+  EXPECT_NE(lines[find_line(lines, "HEAT BALANCE ERROR", h)].find(e12(1e-10)), std::string::npos);
+  EXPECT_NE(lines[find_line(lines, "MAXIMUM DAMPING FORCE IN A GAP")].find(e12(0.125)),
+            std::string::npos);
+}
+
 } // namespace
 } // namespace gapfem

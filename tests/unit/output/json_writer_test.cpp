@@ -200,46 +200,23 @@ TEST(OutputJson, ValidWhenTheRunStopsInsideAStep) {
 }
 
 TEST(OutputJson, PlanarModelHasTwoDisplacementComponents) {
-  Model m;
-  m.space = ModelSpace::Planar;
-  m.job_name = "p";
-  for (int i = 0; i < 4; ++i) {
-    m.mesh.node_labels.push_back(i + 1);
-    m.mesh.coords.push_back({double(i % 2), double(i / 2), 0.0});
-    m.mesh.node_index[i + 1] = i;
-  }
-  m.mesh.elem_labels = {1};
-  m.mesh.elem_types = {ElementType::CPS4};
-  m.mesh.conn = {0, 1, 3, 2};
-  m.mesh.conn_offset = {0, 4};
-  m.mesh.elem_src = {{0, 1}};
-  m.mesh.elem_index[1] = 0;
-  Step s;
-  s.number = 1;
-  m.steps.push_back(s);
-
-  Frame fr;
-  fr.step = 1;
-  fr.increment = 1;
-  fr.step_time = fr.total_time = 1.0;
-  fr.last_in_step = true;
-  fr.nodes.U.assign(4, Vec3{1.0, 2.0, 0.0});
-  fr.nodes.RF.assign(4, Vec3{});
-  fr.nodes.dof_mask.assign(4, dof_bit(DofType::U1) | dof_bit(DofType::U2));
-  fr.nodes.any_displacement = true;
-  fr.element_slot = {-1};
-
+  const Model m = make_planar_model();
   const auto dir = fresh_dir();
   JsonWriter w(dir / "p.results.json", "p");
   w.begin(m);
   w.begin_step(m, 0);
-  w.frame(m, 0, fr);
+  w.frame(m, 0, make_planar_frame(m));
   w.end_step(m, 0, StepSummary{});
   w.end(m, RunSummary{});
   const json j = json::parse(read_file(dir / "p.results.json"));
   EXPECT_EQ(j["model"]["space"], "planar");
-  EXPECT_EQ(j["steps"][0]["frames"][0]["nodes"]["3"]["U"], (std::vector<double>{1.0, 2.0}));
-  EXPECT_EQ(j["steps"][0]["frames"][0]["nodes"]["3"]["RF"].size(), 2u);
+  const json& nodes = j["steps"][0]["frames"][0]["nodes"];
+  EXPECT_EQ(nodes["3"]["U"], (std::vector<double>{3.0, 6.0}));
+  EXPECT_EQ(nodes["3"]["RF"].size(), 2u);
+  EXPECT_FALSE(nodes["3"].contains("UR"));
+  // In 2-D the only rotation is UR3.
+  EXPECT_EQ(nodes["9"]["UR"], (std::vector<double>{0.01}));
+  EXPECT_EQ(nodes["9"]["RM"], (std::vector<double>{0.0}));
 }
 
 TEST(OutputJson, FactoryWritesAllFiles) {

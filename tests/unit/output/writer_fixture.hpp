@@ -227,6 +227,59 @@ inline IncrementInfo inc_info(int increment, int attempt, bool converged, double
   return i;
 }
 
+/// A planar model: one CPS4 (label 1) on nodes 1-4 and a T2D2-like extra node 9 carrying a
+/// rotation (to test UR in 2-D); one static step printing U and UR for all nodes.
+inline Model make_planar_model() {
+  Model m;
+  m.space = ModelSpace::Planar;
+  m.job_name = "p";
+  const std::vector<Label> labels = {1, 2, 3, 4, 9};
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    m.mesh.node_labels.push_back(labels[i]);
+    m.mesh.coords.push_back({double(i % 2), double(i / 2), 0.0});
+    m.mesh.node_index[labels[i]] = static_cast<NodeId>(i);
+  }
+  m.mesh.elem_labels = {1};
+  m.mesh.elem_types = {ElementType::CPS4};
+  m.mesh.conn = {0, 1, 3, 2};
+  m.mesh.conn_offset = {0, 4};
+  m.mesh.elem_src = {{0, 1}};
+  m.mesh.elem_index[1] = 0;
+  Step s;
+  s.number = 1;
+  NodePrintRequest np;
+  np.vars = {NodeVar::U, NodeVar::UR};
+  s.node_prints = {np};
+  m.steps.push_back(s);
+  return m;
+}
+
+/// The last frame of the planar model: U = (label, 2*label), node 9 also has UR3 = 0.01.
+inline Frame make_planar_frame(const Model& m) {
+  Frame fr;
+  fr.step = 1;
+  fr.increment = 1;
+  fr.step_time = fr.total_time = 1.0;
+  fr.last_in_step = true;
+  const auto n = static_cast<std::size_t>(m.mesh.n_nodes());
+  fr.nodes.U.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double l = static_cast<double>(m.mesh.node_labels[i]);
+    fr.nodes.U[i] = {l, 2.0 * l, 0.0};
+  }
+  fr.nodes.RF.assign(n, Vec3{});
+  fr.nodes.UR.assign(n, Vec3{});
+  fr.nodes.RM.assign(n, Vec3{});
+  fr.nodes.UR[4] = {0.0, 0.0, 0.01};
+  fr.nodes.dof_mask.assign(n, dof_bit(DofType::U1) | dof_bit(DofType::U2));
+  fr.nodes.dof_mask[4] |= dof_bit(DofType::UR3);
+  fr.nodes.any_displacement = true;
+  fr.nodes.any_rotation = true;
+  fr.element_slot = {-1};
+  fr.node_print_due = {true};
+  return fr;
+}
+
 /// A fresh, empty directory under the test temp dir, named after the running
 /// test.
 inline std::filesystem::path fresh_dir() {
