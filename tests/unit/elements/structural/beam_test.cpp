@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace gapfem::test {
+namespace gapfem::structural_test {
 namespace {
 
 constexpr double kE = 210e3, kNu = 0.3, kG = kE / (2.0 * (1.0 + kNu));
@@ -351,4 +351,4 @@ TEST(StructuralBeam, NlgeomIsAnInputErrorWithTheRequiredMessage) {
 }
 
 } // namespace
-} // namespace gapfem::test
+} // namespace gapfem::structural_test

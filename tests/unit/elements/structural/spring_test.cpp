@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace gapfem::test {
+namespace gapfem::structural_test {
 namespace {
 
 TEST(StructuralSpring, Spring1ForceIsStiffnessTimesDisplacement) {
@@ -101,6 +101,19 @@ TEST(StructuralSpring, SpringATangentMatchesFiniteDifferences) {
   }
 }
 
+TEST(StructuralSpring, Spring1AndSpring2TangentsMatchFiniteDifferences) {
+  TestModel tm;
+  const NodeId a = tm.add_node({0, 0, 0}), b = tm.add_node({1, 0, 0});
+  const ElemId e1 = tm.add_element(ElementType::SPRING1, {a}, tm.add_spring(5, 0, {{3.0, 0}}));
+  const ElemId e2 = tm.add_element(ElementType::SPRING2, {a, b}, tm.add_spring(1, 2, {{5.0, 0}}));
+  for (ElemId e : {e1, e2}) {
+    const auto k = tm.kernel(e);
+    LocalElement el(tm, e, k->n_dofs());
+    for (std::size_t i = 0; i < el.u.size(); ++i) el.u[i] = 0.1 * (i + 1);
+    expect_tangent_matches_fd(*k, el, 1.0);
+  }
+}
+
 TEST(StructuralSpring, SpringAInPlanarModelUsesDofsOneAndTwo) {
   TestModel tm;
   tm.model.space = ModelSpace::Planar;
@@ -173,4 +186,4 @@ TEST(StructuralSpring, MissingSpringPropertyIsInputError) {
 }
 
 } // namespace
-} // namespace gapfem::test
+} // namespace gapfem::structural_test

@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-namespace gapfem::test {
+namespace gapfem::structural_test {
 
 /// A Model built by hand, one element at a time.
 struct TestModel {
@@ -174,4 +174,4 @@ inline void expect_tangent_matches_fd(const ElementKernel& kernel, LocalElement 
   }
 }
 
-} // namespace gapfem::test
+} // namespace gapfem::structural_test

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace gapfem::test {
+namespace gapfem::structural_test {
 namespace {
 
 constexpr double kE = 200e3, kNu = 0.3, kA = 3.0;
@@ -194,4 +194,4 @@ TEST(StructuralTruss, FactoryAndValidationErrors) {
 }
 
 } // namespace
-} // namespace gapfem::test
+} // namespace gapfem::structural_test
