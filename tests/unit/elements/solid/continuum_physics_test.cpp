@@ -236,7 +236,7 @@ TEST(ContinuumPlaneStrain, FreeInPlaneThermalExpansionLeavesOutOfPlaneStress) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTypes, ContinuumPatch, ::testing::ValuesIn(kAllTypes), type_name);
+INSTANTIATE_TEST_SUITE_P(Continuum, ContinuumPatch, ::testing::ValuesIn(kAllTypes), type_name);
 
 // B-bar (C3D8, CPE4, CAX4): the volumetric strain (trace over the three normal components, hoop
 // included) is the element mean at every integration point, for any displacement; the other

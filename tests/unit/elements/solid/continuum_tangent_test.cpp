@@ -69,7 +69,7 @@ TEST_P(ContinuumTangent, MatchesCentralDifferences) {
   EXPECT_LE(asym, 1e-12 * kmax);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTypes, ContinuumTangent, ::testing::ValuesIn(all_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Continuum, ContinuumTangent, ::testing::ValuesIn(all_cases()), case_name);
 
 class ContinuumPressureTangent : public ::testing::TestWithParam<ElementType> {};
 
@@ -116,7 +116,7 @@ TEST_P(ContinuumPressureTangent, FollowerLoadStiffnessMatchesCentralDifferences)
   EXPECT_FALSE(h.kernel->supports_load(DistLoadKind::Pressure, 0));
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTypes, ContinuumPressureTangent,
+INSTANTIATE_TEST_SUITE_P(Continuum, ContinuumPressureTangent,
                          ::testing::Values(ElementType::C3D8, ElementType::C3D4, ElementType::C3D10,
                                            ElementType::CPS3, ElementType::CPS4, ElementType::CPE3,
                                            ElementType::CPE4, ElementType::CAX3, ElementType::CAX4),
