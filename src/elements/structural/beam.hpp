@@ -1,7 +1,8 @@
 #pragma once
 /// @file beam.hpp
 /// B31: two-node shear-flexible (Timoshenko) beam in space, 6 DOFs per node, small displacements
-/// and rotations (Abaqus Analysis User's Manual 6.6 §23.3.8 "Beam element library").
+/// and rotations (Abaqus Analysis User's Manual,
+/// "Beam element library" and "Choosing a beam element").
 ///
 /// Formulation (docs/theory/structural.md §3): linear interpolation of displacements and rotations
 /// with one integration point at mid-length, as Abaqus's B31, and a transverse shear stiffness

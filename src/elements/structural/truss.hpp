@@ -1,7 +1,7 @@
 #pragma once
 /// @file truss.hpp
 /// Two-node linear elastic trusses T2D2 (planar, DOFs 1-2) and T3D2 (DOFs 1-3), Abaqus Analysis
-/// User's Manual 6.6 §26.2 "Truss elements": constant axial strain, cross-section area from
+/// User's Manual, "Truss elements": constant axial strain, cross-section area from
 /// *SOLID SECTION (default 1), thermal strain from the predefined temperature field.
 ///
 ///   small strain (no NLGEOM): eps = n0 . (u2 - u1) / L along the initial axis n0,
