@@ -151,7 +151,15 @@ void DatWriter::begin(const Model& model) {
   auto out = std::back_inserter(_out.buffer());
   fmt::format_to(out, "\n\n{:>30}{}\n\n", "", output::spaced("gapfem"));
   fmt::format_to(out, "{:>30}VERSION {}\n\n\n", "", GAPFEM_VERSION);
-  if (!model.heading.empty()) fmt::format_to(out, " {}\n\n\n", model.heading);
+  if (!model.heading.empty()) {
+    std::string_view rest = model.heading;
+    while (!rest.empty()) {
+      const auto eol = rest.find('\n');
+      fmt::format_to(out, " {}\n", rest.substr(0, eol));
+      rest = eol == std::string_view::npos ? std::string_view{} : rest.substr(eol + 1);
+    }
+    fmt::format_to(out, "\n\n");
+  }
   if (!model.job_name.empty()) fmt::format_to(out, " JOB NAME    {}\n", model.job_name);
   if (!model.source_files.empty()) fmt::format_to(out, " INPUT DECK  {}\n", model.source_files[0]);
   fmt::format_to(out, "\n\n{:>20}{}\n\n", "", output::spaced("PROBLEM SIZE"));
@@ -200,7 +208,8 @@ void DatWriter::increment(const IncrementInfo&) {}
 
 void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame) {
   auto out = std::back_inserter(_out.buffer());
-  const std::string heading = model.heading.substr(0, 60);
+  const std::string heading =
+      model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));
   fmt::format_to(out, "\n\n{:<66}STEP {:>4}  INCREMENT {:>4}\n", heading, frame.step,
                  frame.increment);
   fmt::format_to(out, "{:<66}TIME COMPLETED IN THIS STEP {:>11.4E}\n\n", "", frame.step_time);
@@ -258,9 +267,7 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
                    "   THE FOLLOWING TABLE IS PRINTED FOR NODES BELONGING TO "
                    "NODE SET {}\n",
                    upper(request.nset));
-  else if (!request.nodes.empty())
-    fmt::format_to(out, "   THE FOLLOWING TABLE IS PRINTED FOR THE REQUESTED NODES\n");
-  else
+  else // no NSET: the input layer lists every node
     fmt::format_to(out, "   THE FOLLOWING TABLE IS PRINTED FOR ALL NODES\n");
 
   // header

@@ -90,7 +90,8 @@ void VtuWriter::begin(const Model& model) {
   for (std::size_t e = 0; e < ne; ++e) {
     const ElementType type = mesh.elem_types[e];
     const auto nodes = mesh.element_nodes(static_cast<ElemId>(e));
-    const int n = static_cast<int>(nodes.size());
+    // Extra nodes beyond the element's own (e.g. a beam orientation node) are not drawn.
+    const int n = std::min(static_cast<int>(nodes.size()), element_info(type).n_nodes);
     const int cell = vtk_cell_type(type, n);
     FE_CHECK(cell != 0, fmt::format("no VTK cell for element {} ({} with {} nodes)",
                                     mesh.elem_labels[e], element_info(type).name, n));
