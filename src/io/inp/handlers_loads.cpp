@@ -119,14 +119,19 @@ const Surface& find_surface(BuildState& s, const FieldReader& r) {
   return it->second;
 }
 
-/// Common end of every distributed-load keyword: merge into the step's list.
+/// Common end of every distributed-load keyword: merge into the step's list. The key is element,
+/// kind and face, plus the axis for BX/BY/BZ (three independent loads on one element).
 void merge_dloads(BuildState& s, const Keyword& kw, std::vector<DistributedLoad>& loads) {
   const std::string family = kw.name;
   merge(
       s.step.dloads, loads, op_new(kw),
       [&](const DistributedLoad& d) { return d.loc.keyword == family; },
       [](const DistributedLoad& d) {
-        return std::tuple(d.elem, static_cast<int>(d.kind), d.face);
+        int axis = -1;
+        if (d.kind == DistLoadKind::BodyForce)
+          for (int i = 0; i < 3; ++i)
+            if (d.direction[i] != 0.0) axis = i;
+        return std::tuple(d.elem, static_cast<int>(d.kind), d.face, axis);
       });
 }
 

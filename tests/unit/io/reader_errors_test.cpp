@@ -1,0 +1,88 @@
+// How input errors are reported: collected over the whole deck, one per line, capped, with file,
+// line, keyword and the offending label in each.
+#include "unit/io/reader_test_util.hpp"
+
+#include <algorithm>
+
+namespace gapfem {
+namespace {
+
+using test::read_error;
+
+TEST(ReaderErrors, MessageNamesFileLineKeywordAndLabel) {
+  // 16 lines of nodes and comments, then the element on line 17 of beam.inp
+  std::string deck = "*NODE\n";
+  for (int i = 1; i <= 14; ++i) deck += std::to_string(i) + ", " + std::to_string(i) + ".\n";
+  deck += "*ELEMENT, TYPE=B31, ELSET=B\n12, 1, 99\n";
+  const InputError e = read_error(deck, {}, "beam.inp");
+  EXPECT_STREQ(e.what(),
+               "beam.inp:17: *ELEMENT: element 12: node 99 is not defined; define it with *NODE "
+               "before use");
+  EXPECT_EQ(e.location().file, "beam.inp");
+  EXPECT_EQ(e.location().line, 17);
+  EXPECT_EQ(e.location().keyword, "*ELEMENT");
+  EXPECT_EQ(e.entity(), "element 12");
+}
+
+TEST(ReaderErrors, AllProblemsAreListedOnePerLine) {
+  const InputError e = read_error(R"(*NODE
+1, 0, 0, 0
+2, x
+*ELEMENT, TYPE=T3D2, ELSET=T
+5, 1, 77
+*MATERIAL, NAME=M
+*ELASTIC
+0., 0.3
+*STEP
+*STATIC
+*CLOAD
+1, 9, 1.
+*END STEP
+)");
+  const std::string text = e.what();
+  EXPECT_CONTAINS(text, "the deck has 4 input errors");
+  EXPECT_CONTAINS(text, "\ndeck.inp:3: *NODE: field 2 (x)");
+  EXPECT_CONTAINS(text, "\ndeck.inp:5: *ELEMENT: element 5: node 77 is not defined");
+  EXPECT_CONTAINS(text, "\ndeck.inp:8: *ELASTIC: Young's modulus must be positive");
+  EXPECT_CONTAINS(text, "\ndeck.inp:12: *CLOAD: field 2 (DOF)");
+  // the failed node and element raise no follow-up errors (no "no section" for element 5)
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;
+  // location() is the first problem's
+  EXPECT_EQ(e.location().line, 3);
+  EXPECT_EQ(e.location().keyword, "*NODE");
+}
+
+TEST(ReaderErrors, ErrorsInHistoryAreCollectedToo) {
+  const InputError e =
+      read_error(std::string(test::kTrussModel) +
+                 "*STEP\n*STATIC\n*CLOAD\n1, 9, 1.\n3, 1, 1.\n*BOUNDARY\n1, 8\n*END STEP\n");
+  const std::string text = e.what();
+  EXPECT_CONTAINS(text, "deck.inp:14: *CLOAD: field 2 (DOF)");
+  EXPECT_CONTAINS(text, "deck.inp:15: *CLOAD: node 3");
+  EXPECT_CONTAINS(text, "deck.inp:17: *BOUNDARY: field 2 (degree of freedom)");
+}
+
+TEST(ReaderErrors, ListIsCappedAtFifty) {
+  std::string deck = "*NODE\n";
+  for (int i = 1; i <= 80; ++i) deck += std::to_string(i) + ", bad\n";
+  const InputError e = read_error(deck);
+  const std::string text = e.what();
+  EXPECT_CONTAINS(text, "at least 50 input errors (reading stopped there)");
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 50) << text;
+  EXPECT_EQ(e.location().line, 2);
+}
+
+TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {
+  const std::string deck = std::string(test::kTrussModel) +
+                           "*CONTROLS, PARAMETERS=TIME INCREMENTATION\n"
+                           ", , , , , , , 20\n*NODE, FOO=1\n3\n";
+  const Model m = test::read(deck, ReadOptions{true});
+  EXPECT_EQ(m.warnings.size(), 2u);
+  EXPECT_EQ(m.mesh.n_nodes(), 3);
+  // real errors stay errors
+  const InputError e = read_error(deck + "*NODE\n3\n", ReadOptions{true});
+  EXPECT_CONTAINS(e.what(), "deck.inp:16: *NODE: node 3: this node number is defined twice");
+}
+
+} // namespace
+} // namespace gapfem

@@ -1,0 +1,157 @@
+// Output requests: *NODE PRINT, *EL PRINT, *OUTPUT with *NODE OUTPUT / *ELEMENT OUTPUT, and their
+// carry-over from step to step.
+#include "unit/io/reader_test_util.hpp"
+
+namespace gapfem {
+namespace {
+
+using test::error_text;
+using test::kTrussModel;
+using test::read;
+
+std::string step(std::string_view body, std::string_view procedure = "*STATIC") {
+  return std::string(kTrussModel) + "*STEP\n" + std::string(procedure) + "\n" + std::string(body) +
+         "*END STEP\n";
+}
+// the first line of `body` is line 13
+
+TEST(ReaderOutput, NodePrint) {
+  const Model m = read(step("*NODE PRINT\nU1, U2\nRF, NT11\n*NODE PRINT, NSET=ALL, FREQUENCY=5, "
+                            "TOTALS=YES, SUMMARY=NO, GLOBAL=YES\nCF\n"));
+  const auto& np = m.steps[0].node_prints;
+  ASSERT_EQ(np.size(), 2u);
+  EXPECT_EQ(np[0].nset, "");
+  EXPECT_EQ(np[0].nodes.size(), 2u); // all nodes
+  EXPECT_EQ(np[0].frequency, 1);
+  EXPECT_FALSE(np[0].totals);
+  EXPECT_TRUE(np[0].summary);
+  EXPECT_EQ(np[0].vars, (std::vector<NodeVar>{NodeVar::U, NodeVar::RF, NodeVar::NT}));
+  EXPECT_EQ(np[0].loc.line, 13);
+  EXPECT_EQ(np[1].nset, "ALL");
+  EXPECT_EQ(np[1].frequency, 5);
+  EXPECT_TRUE(np[1].totals);
+  EXPECT_FALSE(np[1].summary);
+  EXPECT_EQ(np[1].vars, (std::vector<NodeVar>{NodeVar::CF}));
+}
+
+TEST(ReaderOutput, NodePrintErrors) {
+  EXPECT_CONTAINS(
+      error_text(step("*NODE PRINT\nU, COORD\n")),
+      "deck.inp:14: *NODE PRINT: variable COORD: gapfem does not know the output variable COORD");
+  EXPECT_CONTAINS(error_text(step("*NODE PRINT, NSET=NONE\nU\n")),
+                  "deck.inp:13: *NODE PRINT: NSET=NONE: this node set is not defined");
+  EXPECT_CONTAINS(error_text(step("*NODE PRINT\n")), "no output variables are listed");
+  EXPECT_CONTAINS(error_text(step("*NODE PRINT, FREQUENCY=-1\nU\n")), "must not be negative");
+}
+
+TEST(ReaderOutput, ElPrint) {
+  const Model m =
+      read(step("*EL PRINT, ELSET=TRUSS, POSITION=CENTROIDAL, FREQUENCY=0\n\nS11, E\nSF1\n"
+                "*EL PRINT\nHFL\n"));
+  const auto& ep = m.steps[0].el_prints;
+  ASSERT_EQ(ep.size(), 2u);
+  EXPECT_EQ(ep[0].elset, "TRUSS");
+  EXPECT_EQ(ep[0].elements.size(), 1u);
+  EXPECT_EQ(ep[0].position, ElPosition::Centroidal);
+  EXPECT_EQ(ep[0].frequency, 0);
+  EXPECT_EQ(ep[0].vars, (std::vector<ElemVar>{ElemVar::S, ElemVar::E, ElemVar::SF}));
+  EXPECT_EQ(ep[1].position, ElPosition::IntegrationPoints);
+  EXPECT_EQ(ep[1].elements.size(), 1u);
+
+  EXPECT_CONTAINS(error_text(step("*EL PRINT, POSITION=AVERAGED AT NODES\nS\n")),
+                  "deck.inp:13: *EL PRINT: POSITION=AVERAGED AT NODES: nodal averaging");
+  EXPECT_CONTAINS(error_text(step("*EL PRINT\nS, PEEQ\n")),
+                  "deck.inp:14: *EL PRINT: variable PEEQ");
+  EXPECT_CONTAINS(error_text(step("*EL PRINT, ELSET=X\nS\n")),
+                  "ELSET=X: this element set is not defined");
+}
+
+TEST(ReaderOutput, FieldOutputPreselectDependsOnProcedure) {
+  const Model st = read(step("*OUTPUT, FIELD, VARIABLE=PRESELECT, FREQUENCY=2\n"));
+  ASSERT_EQ(st.steps[0].field_outputs.size(), 1u);
+  const FieldOutputRequest& f = st.steps[0].field_outputs[0];
+  EXPECT_EQ(f.frequency, 2);
+  EXPECT_EQ(f.node_vars, (std::vector<NodeVar>{NodeVar::U, NodeVar::RF}));
+  EXPECT_EQ(f.elem_vars, (std::vector<ElemVar>{ElemVar::S, ElemVar::E}));
+  // the procedure may follow *OUTPUT: PRESELECT is resolved at *END STEP
+  const Model co =
+      read(std::string(kTrussModel) + "*STEP\n*OUTPUT, FIELD, VARIABLE=PRESELECT\n"
+                                      "*COUPLED TEMPERATURE-DISPLACEMENT\n*END STEP\n");
+  EXPECT_EQ(co.steps[0].field_outputs[0].node_vars,
+            (std::vector<NodeVar>{NodeVar::U, NodeVar::RF, NodeVar::NT}));
+  EXPECT_EQ(co.steps[0].field_outputs[0].elem_vars,
+            (std::vector<ElemVar>{ElemVar::S, ElemVar::E, ElemVar::HFL}));
+  const Model all = read(step("*OUTPUT, FIELD, VARIABLE=ALL\n"));
+  EXPECT_EQ(all.steps[0].field_outputs[0].node_vars.size(), 6u); // U UR RF RM CF CM
+  EXPECT_EQ(all.steps[0].field_outputs[0].elem_vars.size(), 3u); // S E SF
+}
+
+TEST(ReaderOutput, NodeAndElementOutput) {
+  const Model m =
+      read(step("*OUTPUT, FIELD\n*NODE OUTPUT, NSET=ALL\nU, RF3, COORD\n*ELEMENT OUTPUT, "
+                "DIRECTIONS=YES\nS, LE\n"));
+  const FieldOutputRequest& f = m.steps[0].field_outputs.at(0);
+  EXPECT_EQ(f.node_vars, (std::vector<NodeVar>{NodeVar::U, NodeVar::RF}));
+  EXPECT_EQ(f.elem_vars, (std::vector<ElemVar>{ElemVar::S}));
+  // unknown variables in field output only drive ParaView files: warnings with their location
+  EXPECT_EQ(test::count_warnings(m, "COORD"), 1);
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:17: *ELEMENT OUTPUT"), 1);
+}
+
+TEST(ReaderOutput, HistoryOutputIsIgnoredWithOneWarning) {
+  const Model m = read(step("*OUTPUT, HISTORY, VARIABLE=PRESELECT\n*NODE OUTPUT, NSET=ALL\nU\n"
+                            "*OUTPUT, HISTORY\n*ELEMENT OUTPUT\nS\n"));
+  EXPECT_TRUE(m.steps[0].field_outputs.empty());
+  EXPECT_EQ(test::count_warnings(m, "history output is not written"), 1);
+}
+
+TEST(ReaderOutput, OutputErrors) {
+  EXPECT_CONTAINS(error_text(step("*OUTPUT, FIELD, NUMBER INTERVAL=10\n*NODE OUTPUT\nU\n")),
+                  "deck.inp:13: *OUTPUT: NUMBER INTERVAL=10");
+  EXPECT_CONTAINS(error_text(step("*OUTPUT, FIELD, TIME INTERVAL=0.1\n")), "TIME INTERVAL=0.1");
+  EXPECT_CONTAINS(error_text(step("*OUTPUT, VARIABLE=PRESELECT\n")),
+                  "give either FIELD or HISTORY");
+  EXPECT_CONTAINS(error_text(step("*NODE OUTPUT\nU\n")),
+                  "deck.inp:13: *NODE OUTPUT: *NODE OUTPUT must follow *OUTPUT");
+}
+
+TEST(ReaderOutput, EmptyFieldRequestIsDroppedWithWarning) {
+  const Model m = read(step("*OUTPUT, FIELD\n"));
+  EXPECT_TRUE(m.steps[0].field_outputs.empty());
+  EXPECT_EQ(test::count_warnings(m, "has no variables"), 1);
+}
+
+TEST(ReaderOutput, RequestsCarryOverUntilAStepGivesItsOwn) {
+  const Model m = read(std::string(kTrussModel) + R"(*STEP
+*STATIC
+*NODE PRINT
+U
+*EL PRINT
+S
+*OUTPUT, FIELD, VARIABLE=PRESELECT
+*END STEP
+*STEP
+*STATIC
+*END STEP
+*STEP
+*STATIC
+*NODE PRINT, FREQUENCY=3
+RF
+*END STEP
+)");
+  ASSERT_EQ(m.steps.size(), 3u);
+  // step 2 has no requests: all three kinds carry over
+  EXPECT_EQ(m.steps[1].node_prints.size(), 1u);
+  EXPECT_EQ(m.steps[1].node_prints[0].vars, (std::vector<NodeVar>{NodeVar::U}));
+  EXPECT_EQ(m.steps[1].el_prints.size(), 1u);
+  EXPECT_EQ(m.steps[1].field_outputs.size(), 1u);
+  // step 3 gives a *NODE PRINT: it replaces the previous node prints only
+  ASSERT_EQ(m.steps[2].node_prints.size(), 1u);
+  EXPECT_EQ(m.steps[2].node_prints[0].vars, (std::vector<NodeVar>{NodeVar::RF}));
+  EXPECT_EQ(m.steps[2].node_prints[0].frequency, 3);
+  EXPECT_EQ(m.steps[2].el_prints.size(), 1u);
+  EXPECT_EQ(m.steps[2].field_outputs.size(), 1u);
+}
+
+} // namespace
+} // namespace gapfem
