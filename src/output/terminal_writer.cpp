@@ -69,7 +69,7 @@ void TerminalWriter::end(const Model& model, const RunSummary& s) {
   if (total > 0)
     for (int c = 0; c < kNumTimeCategories; ++c)
       if (st.seconds[c] > 0)
-        log::info("  {:<14}{:>10.2f} s {:>6.1f} %",
+        log::info("  {:<14}{:>10.3f} s {:>6.1f} %",
                   time_category_name(static_cast<TimeCategory>(c)), st.seconds[c],
                   100.0 * st.seconds[c] / total);
   if (s.peak_memory_kb > 0) log::info("  peak memory {:.1f} MiB", s.peak_memory_kb / 1024.0);
