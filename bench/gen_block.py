@@ -30,6 +30,8 @@ def main():
     ap.add_argument("--levels", type=int, default=20, help="distinct clearance values")
     ap.add_argument("--penalty", type=float, default=None,
                     help="GAPUNI penalty stiffness (CalculiX fields 6-7); omit for exact contact")
+    ap.add_argument("--tension", type=float, default=None,
+                    help="CalculiX field 7: tension carried by an open penalty gap (ccx default 1e-3)")
     ap.add_argument("--no-gaps", action="store_true", help="fixed base instead of gaps (linear static)")
     ap.add_argument("--nlgeom", choices=["yes", "no"], default=None,
                     help="NLGEOM on the step (default: yes with gaps, no without)")
@@ -108,6 +110,8 @@ def main():
             line = f"{d:.9g}, 0., 0., -1."
             if a.penalty is not None:
                 line += f", , {a.penalty:.9g}"
+                if a.tension is not None:
+                    line += f", {a.tension:.9g}"
             w(f"*GAP, ELSET=G{level}\n{line}\n")
     w("*BOUNDARY\nXSYM, 1, 1\nYSYM, 2, 2\n")
     if a.no_gaps:

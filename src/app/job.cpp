@@ -1,0 +1,115 @@
+#include "app/job.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "io/inp/reader.hpp"
+#include "model/model.hpp"
+#include "output/writers.hpp"
+#include "solver/analysis.hpp"
+
+#include <fmt/format.h>
+
+namespace gapfem {
+namespace {
+
+/// Keeps every frame and increment in memory for the caller (tests, tools).
+class MemoryWriter final : public ResultWriter {
+public:
+  explicit MemoryWriter(JobResult& r, bool keep) : _r(r), _keep(keep) {}
+  void increment(const IncrementInfo& info) override { _r.increments.push_back(info); }
+  void frame(const Model&, int, const Frame& f) override {
+    if (_keep || f.last_in_step) _r.frames.push_back(f);
+  }
+  void end_step(const Model&, int, const StepSummary& s) override { _r.steps.push_back(s); }
+
+private:
+  JobResult& _r;
+  bool _keep;
+};
+
+} // namespace
+
+const Frame* JobResult::step_end(int step) const {
+  for (auto it = frames.rbegin(); it != frames.rend(); ++it)
+    if (it->step == step && it->last_in_step) return &*it;
+  return nullptr;
+}
+
+NodeId JobResult::node(const Model& model, Label label) { return model.mesh.find_node(label); }
+
+JobResult run_job(const JobOptions& options) {
+  JobResult result;
+  Stopwatch watch;
+  const std::string job =
+      options.job_name.empty() ? options.deck.stem().string() : options.job_name;
+  std::filesystem::path dir = options.output_dir;
+  if (dir.empty()) dir = options.deck.has_parent_path() ? options.deck.parent_path() : ".";
+  std::optional<log::Level> previous_level;
+  if (options.quiet) {
+    previous_level = log::level();
+    log::set_level(log::Level::Warning);
+  }
+  auto restore = [&] {
+    if (previous_level) log::set_level(*previous_level);
+  };
+
+  std::shared_ptr<Model> model;
+  try {
+    ReadOptions ro;
+    ro.ignore_unknown = options.ignore_unknown;
+    model = std::make_shared<Model>(read_deck(options.deck, ro));
+    model->job_name = job;
+  } catch (const InputError& e) {
+    result.exit_code = kExitInputError;
+    result.error = e.what();
+    log::error("{}", e.what());
+    restore();
+    return result;
+  }
+  result.model = model;
+
+  std::vector<std::unique_ptr<ResultWriter>> writers;
+  if (options.write_files) {
+    WriterOptions wo;
+    wo.directory = dir;
+    wo.job = job;
+    wo.vtu = options.write_vtu;
+    wo.terminal = !options.quiet;
+    writers = make_result_writers(wo);
+  } else if (!options.quiet) {
+    WriterOptions wo;
+    wo.dat = wo.sta = wo.json = wo.vtu = false;
+    wo.terminal = true;
+    writers = make_result_writers(wo);
+  }
+  MemoryWriter memory(result, options.keep_frames);
+  std::vector<ResultWriter*> ptrs;
+  for (auto& w : writers) ptrs.push_back(w.get());
+  ptrs.push_back(&memory);
+
+  try {
+    Analysis analysis(*model, ptrs);
+    result.run = analysis.run();
+    result.exit_code = kExitOk;
+    if (options.write_files && !options.quiet)
+      log::info("Results: {}/{}.dat, {}.sta, {}.results.json{}", dir.string(), job, job, job,
+                options.write_vtu ? fmt::format(", {}.pvd", job) : "");
+  } catch (const InputError& e) {
+    result.exit_code = kExitInputError;
+    result.error = e.what();
+    log::error("{}", e.what());
+  } catch (const AnalysisError& e) {
+    result.exit_code = kExitNoConvergence;
+    result.error = e.what();
+    log::error("{}", e.what());
+  } catch (const std::exception& e) {
+    result.exit_code = kExitInternal;
+    result.error = fmt::format("internal error: {}", e.what());
+    log::error("{}", result.error);
+  }
+  result.run.wall_seconds = watch.seconds();
+  restore();
+  return result;
+}
+
+} // namespace gapfem
