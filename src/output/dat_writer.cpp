@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <limits>
 
@@ -226,6 +227,9 @@ void DatWriter::write_increment_header(const Model& model, int step_index, const
 
 void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
   const Step& step = model.steps[step_index];
+  FE_CHECK(_node_lists.size() == step.node_prints.size() &&
+               _elem_lists.size() == step.el_prints.size(),
+           "DatWriter::frame called without begin_step for this step");
   bool any_node = false, any_el = false;
   for (std::size_t k = 0; k < step.node_prints.size(); ++k)
     any_node |= k < frame.node_print_due.size() && frame.node_print_due[k];
