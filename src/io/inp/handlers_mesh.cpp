@@ -116,15 +116,21 @@ void handle_element(BuildState& s, const Keyword& kw) {
     // a line ending with a comma continues on the next line until all nodes are
     // given
     const SourceRef first_line = s.ref(kw.data[i]);
-    DataLine joined = kw.data[i];
-    while (joined.trailing_comma && static_cast<int>(joined.fields.size()) < info.n_nodes + 1 &&
-           i + 1 < kw.data.size()) {
-      ++i;
-      const DataLine& next = kw.data[i];
-      joined.fields.insert(joined.fields.end(), next.fields.begin(), next.fields.end());
-      joined.trailing_comma = next.trailing_comma;
+    // (copied only when it is continued: most element lines are complete)
+    const DataLine* line = &kw.data[i];
+    DataLine joined;
+    if (line->trailing_comma && static_cast<int>(line->fields.size()) < info.n_nodes + 1) {
+      joined = *line;
+      while (joined.trailing_comma && static_cast<int>(joined.fields.size()) < info.n_nodes + 1 &&
+             i + 1 < kw.data.size()) {
+        ++i;
+        const DataLine& next = kw.data[i];
+        joined.fields.insert(joined.fields.end(), next.fields.begin(), next.fields.end());
+        joined.trailing_comma = next.trailing_comma;
+      }
+      line = &joined;
     }
-    const FieldReader r = s.reader(kw, joined);
+    const FieldReader r = s.reader(kw, *line);
     long long label = 0;
     try {
       label = r.integer(0, "element number");
@@ -135,8 +141,8 @@ void handle_element(BuildState& s, const Keyword& kw) {
                                 "element its own number",
                                 where(s, mesh.elem_src[old])));
       std::vector<long long> node_labels;
-      for (std::size_t f = 1; f < joined.fields.size(); ++f) {
-        if (joined.fields[f].empty()) continue;
+      for (std::size_t f = 1; f < line->fields.size(); ++f) {
+        if (line->fields[f].empty()) continue;
         node_labels.push_back(r.integer(f, "node number"));
       }
       if (static_cast<int>(node_labels.size()) != info.n_nodes)

@@ -1,5 +1,6 @@
 #include "io/inp/lexer.hpp"
 
+#include <cctype>
 #include <fmt/format.h>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,15 @@ bool is_comment(std::string_view line) {
 bool is_keyword_line(std::string_view line) {
   const std::string_view t = trim(line);
   return !t.empty() && t[0] == '*' && !(t.size() >= 2 && t[1] == '*');
+}
+
+/// A line that can continue a keyword line: it starts with a parameter name (a letter or a
+/// quote). A line starting with a digit, sign or point after a keyword line that ends with a
+/// comma is taken as the first data line instead.
+bool is_parameter_line(std::string_view line) {
+  const std::string_view t = trim(line);
+  if (t.empty() || t[0] == '*') return false;
+  return std::isalpha(static_cast<unsigned char>(t[0])) || t[0] == '"';
 }
 
 /// Splits at commas outside double quotes.
@@ -116,7 +126,7 @@ class Lexer {
       while (!full.empty() && full.back() == ',' && i + 1 < lines.size()) {
         std::size_t j = i + 1;
         while (j < lines.size() && is_comment(lines[j])) ++j;
-        if (j >= lines.size() || is_keyword_line(lines[j]) || trim(lines[j]).empty()) break;
+        if (j >= lines.size() || !is_parameter_line(lines[j])) break;
         full += ' ';
         full += trim(lines[j]);
         i = j;

@@ -184,9 +184,16 @@ void check_gap(BuildState& s, const GapSection& gap) {
   const bool two_d = s.model.space != ModelSpace::ThreeD;
   const Vec3& n = gap.direction;
   const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  bool sphere_warned = false;
   for (ElemId e : *set) {
     const ElementType t = mesh.elem_types[e];
     if (element_info(t).family != ElementFamily::Gap) continue; // reported by bind()
+    if (t == ElementType::GAPSPHER && gap.direction_given && !sphere_warned) {
+      s.warn(gap.loc, fmt::format("ELSET={}: fields 2-4 (direction) are not used by GAPSPHER "
+                                  "elements (spec §2.2: blank) and were ignored",
+                                  gap.elset));
+      sphere_warned = true;
+    }
     std::string problem;
     if ((t == ElementType::GAPCYL || t == ElementType::GAPSPHER) && gap.d == 0.0)
       problem = "GAPCYL and GAPSPHER need a non-zero d (positive: maximum "

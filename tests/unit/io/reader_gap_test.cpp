@@ -57,6 +57,14 @@ TEST(ReaderGap, BlankAreaIsOneWithOneWarningPerGap) {
   EXPECT_CONTAINS(m.warnings[0], "deck.inp:12: *GAP: ELSET=GU");
 }
 
+TEST(ReaderGap, DirectionOfSphericalGapIsIgnoredWithWarning) {
+  const Model m =
+      read(std::string(kGapMesh) + "*GAP, ELSET=GU\n0.5, 0., -1., 0., 1.\n*GAP, ELSET=GC\n"
+                                   "0.02, 1., 0., 0., 1.\n*GAP, ELSET=GS\n0.2, 1., 0., 0., 1.\n");
+  EXPECT_EQ(test::count_warnings(m, "not used by GAPSPHER"), 1);
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:15: *GAP: ELSET=GS"), 1);
+}
+
 TEST(ReaderGap, CalculixPenaltyFields) {
   const Model m = read(deck("*GAP, ELSET=GU\n0.5, 0., -1., 0., , 1.E7\n"));
   EXPECT_TRUE(m.gap_sections[0].ccx_penalty);

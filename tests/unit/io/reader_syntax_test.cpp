@@ -127,6 +127,14 @@ TEST(ReaderSyntax, KeywordLineContinuedWithTrailingComma) {
   EXPECT_EQ(m.nsets.at("B").size(), 1u);
 }
 
+TEST(ReaderSyntax, KeywordLineEndingWithCommaBeforeDataLine) {
+  // a line starting with a number cannot hold parameters: it is the first data line
+  const Model m = read("*NODE, NSET=A,\n1, 0, 0, 0\n*NSET, NSET=B,\n1\n");
+  EXPECT_EQ(m.mesh.n_nodes(), 1);
+  EXPECT_EQ(m.nsets.at("A").size(), 1u);
+  EXPECT_EQ(m.nsets.at("B").size(), 1u);
+}
+
 TEST(ReaderSyntax, ElementDataContinuedAfterTrailingComma) {
   const Model m = read(R"(*NODE
 1, 0, 0, 0
