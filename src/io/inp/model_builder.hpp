@@ -71,7 +71,6 @@ struct BuildState {
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;
-  bool gap_behavior_seen = false; ///< duplicate-sub-option checks for the current *GAP
 
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
   bool model_done = false;                   ///< finish_model_data() has run

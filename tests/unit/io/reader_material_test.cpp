@@ -78,6 +78,15 @@ TEST(ReaderMaterial, MaterialErrors) {
   EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*MATERIAL, NAME=m\n"),
                   "deck.inp:7: *MATERIAL: material M: this material is defined twice (first at "
                   "deck.inp:6");
+  EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*CONDUCTIVITY, TYPE=ORTHO\n1., 2., 3.\n"),
+                  "deck.inp:7: *CONDUCTIVITY: TYPE=ORTHO: this value is not supported by gapfem; "
+                  "use one of: ISO");
+  EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*EXPANSION, TYPE=ANISO\n1.\n"), "TYPE=ANISO");
+  EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*SPECIFIC HEAT, DEPENDENCIES=2\n1.\n"),
+                  "deck.inp:7: *SPECIFIC HEAT: DEPENDENCIES=2: field-variable dependencies");
+  EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*DENSITY\n0.\n"),
+                  "deck.inp:8: *DENSITY: the value must be positive");
+  EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*DENSITY\n1., 20., 3.\n"), "at most 2 fields");
   EXPECT_CONTAINS(error_text(b + "*ELASTIC\n1., 0.3\n"),
                   "deck.inp:6: *ELASTIC: *ELASTIC must follow *MATERIAL");
   // a non-material keyword ends the material block
