@@ -73,6 +73,8 @@ void handle_el_print(BuildState& s, const Keyword& kw);
 void handle_output(BuildState& s, const Keyword& kw);
 void handle_node_output(BuildState& s, const Keyword& kw);
 void handle_element_output(BuildState& s, const Keyword& kw);
+/// *NODE FILE / *EL FILE (results-file output): ignored with a warning.
+void handle_file_output(BuildState& s, const Keyword& kw);
 /// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is
 /// known.
 void resolve_preset_outputs(BuildState& s);

@@ -179,6 +179,13 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
     add_unique(req.elem_vars, v);
 }
 
+void handle_file_output(BuildState& s, const Keyword& kw) {
+  s.warn(kw.loc, fmt::format("{} (results-file output) is not written by gapfem and was ignored; "
+                             "use *OUTPUT, FIELD for ParaView frames or *NODE PRINT / *EL PRINT "
+                             "for tables",
+                             kw.name));
+}
+
 void resolve_preset_outputs(BuildState& s) {
   Step& st = s.step;
   const bool mech = st.procedure != Procedure::HeatTransfer;

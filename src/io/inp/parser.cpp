@@ -79,6 +79,8 @@ constexpr std::array<KeywordSpec, 51> kTable = {{
   {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|VARIABLE|NUMBER INTERVAL|TIME INTERVAL"},
   {"*NODE OUTPUT", handle_node_output, W::History, "NSET", kOutput},
   {"*ELEMENT OUTPUT", handle_element_output, W::History, "ELSET|DIRECTIONS|POSITION", kOutput},
+  {"*NODE FILE", handle_file_output, W::History, "*"},
+  {"*EL FILE", handle_file_output, W::History, "*"},
 }};
 // clang-format on
 

@@ -105,6 +105,14 @@ TEST(ReaderOutput, HistoryOutputIsIgnoredWithOneWarning) {
   EXPECT_EQ(test::count_warnings(m, "history output is not written"), 1);
 }
 
+TEST(ReaderOutput, ResultsFileOutputIsIgnoredWithWarning) {
+  const Model m = read(step("*NODE FILE, FREQUENCY=1\nU\n*EL FILE\nS\n"));
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:13: *NODE FILE: *NODE FILE (results-file output)"),
+            1);
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:15: *EL FILE"), 1);
+  EXPECT_TRUE(m.steps[0].node_prints.empty());
+}
+
 TEST(ReaderOutput, OutputErrors) {
   EXPECT_CONTAINS(error_text(step("*OUTPUT, FIELD, NUMBER INTERVAL=10\n*NODE OUTPUT\nU\n")),
                   "deck.inp:13: *OUTPUT: NUMBER INTERVAL=10");

@@ -2,9 +2,13 @@
 // numbers, continuation lines, *INCLUDE, INPUT=, GENERATE, sets in data lines.
 #include "io/inp/fields.hpp"
 #include "io/inp/lexer.hpp"
+#include "io/inp/parser.hpp"
 #include "unit/io/reader_test_util.hpp"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <set>
 
 namespace gapfem {
 namespace {
@@ -397,6 +401,24 @@ TEST(ReaderSyntax, LexerKeepsFieldsAndTrailingComma) {
   EXPECT_TRUE(d.trailing_comma);
   EXPECT_TRUE(inp::split_data_line("   ").empty());
   EXPECT_TRUE(inp::split_data_line(",,").empty());
+}
+
+} // namespace
+} // namespace gapfem
+
+namespace gapfem {
+namespace {
+
+TEST(ReaderSyntax, KeywordTableIsConsistentAndDocumented) {
+  std::ifstream in(std::filesystem::path(GAPFEM_SOURCE_DIR) / "docs" / "keywords.md");
+  ASSERT_TRUE(in) << "docs/keywords.md is missing";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::set<std::string> keys;
+  for (const auto& spec : inp::keyword_table()) {
+    EXPECT_NE(spec.handler, nullptr) << spec.name;
+    EXPECT_TRUE(keys.insert(inp::canonical(spec.name)).second) << "duplicate " << spec.name;
+    EXPECT_CONTAINS(doc, "`" + std::string(spec.name)) << "add the keyword to docs/keywords.md";
+  }
 }
 
 } // namespace
