@@ -145,13 +145,13 @@ void handle_output(BuildState& s, const Keyword& kw) {
   const int variable = enum_param(kw, "VARIABLE", {"PRESELECT", "ALL"}, -1);
   if (history) {
     s.parent = Parent::HistoryOutput;
-    if (!s.scratch.history_warned)
+    if (!s.history_warned)
       s.warn(kw.loc, "history output is not written by gapfem; the *OUTPUT, "
                      "HISTORY request and "
                      "its *NODE OUTPUT / *ELEMENT OUTPUT lines were ignored "
                      "(use *NODE PRINT or "
                      "*EL PRINT for tables over time)");
-    s.scratch.history_warned = true;
+    s.history_warned = true;
     return;
   }
   s.parent = Parent::FieldOutput;

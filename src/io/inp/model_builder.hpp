@@ -37,7 +37,6 @@ struct StepScratch {
   bool amplitude_given = false; ///< *STEP, AMPLITUDE= was given
   bool transient = false;       ///< transient heat transfer / coupled procedure
   bool node_print_given = false, el_print_given = false, field_given = false;
-  bool history_warned = false;
   /// Field-output requests of this step that asked for VARIABLE=PRESELECT or
   /// ALL (index, all?).
   std::vector<std::pair<int, bool>> preset_fields;
@@ -75,6 +74,7 @@ struct BuildState {
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
   bool model_done = false;                   ///< finish_model_data() has run
   bool in_step = false;
+  bool history_warned = false; ///< the *OUTPUT, HISTORY warning was given (once per deck)
   Step step;
   StepScratch scratch;
 

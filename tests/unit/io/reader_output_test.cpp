@@ -103,6 +103,10 @@ TEST(ReaderOutput, HistoryOutputIsIgnoredWithOneWarning) {
                             "*OUTPUT, HISTORY\n*ELEMENT OUTPUT\nS\n"));
   EXPECT_TRUE(m.steps[0].field_outputs.empty());
   EXPECT_EQ(test::count_warnings(m, "history output is not written"), 1);
+  // one warning per deck, not per step
+  const Model two =
+      read(step("*OUTPUT, HISTORY\n") + "*STEP\n*STATIC\n*OUTPUT, HISTORY\n*END STEP\n");
+  EXPECT_EQ(test::count_warnings(two, "history output is not written"), 1);
 }
 
 TEST(ReaderOutput, ResultsFileOutputIsIgnoredWithWarning) {
