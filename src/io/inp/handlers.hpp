@@ -8,7 +8,8 @@
 
 namespace gapfem::inp {
 
-// handlers_mesh.cpp
+/// @name *HEADING, *PREPRINT, *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE (handlers_mesh.cpp)
+///@{
 void handle_heading(BuildState& s, const Keyword& kw);
 void handle_preprint(BuildState& s, const Keyword& kw);
 void handle_node(BuildState& s, const Keyword& kw);
@@ -16,8 +17,10 @@ void handle_element(BuildState& s, const Keyword& kw);
 void handle_nset(BuildState& s, const Keyword& kw);
 void handle_elset(BuildState& s, const Keyword& kw);
 void handle_surface(BuildState& s, const Keyword& kw);
+///@}
 
-// handlers_material.cpp
+/// @name Materials, *AMPLITUDE, *INITIAL CONDITIONS, *PHYSICAL CONSTANTS (handlers_material.cpp)
+///@{
 void handle_material(BuildState& s, const Keyword& kw);
 void handle_elastic(BuildState& s, const Keyword& kw);
 void handle_density(BuildState& s, const Keyword& kw);
@@ -27,13 +30,17 @@ void handle_specific_heat(BuildState& s, const Keyword& kw);
 void handle_amplitude(BuildState& s, const Keyword& kw);
 void handle_initial_conditions(BuildState& s, const Keyword& kw);
 void handle_physical_constants(BuildState& s, const Keyword& kw);
+///@}
 
-// handlers_section.cpp
+/// @name *SOLID SECTION, *BEAM SECTION, *SPRING (handlers_section.cpp)
+///@{
 void handle_solid_section(BuildState& s, const Keyword& kw);
 void handle_beam_section(BuildState& s, const Keyword& kw);
 void handle_spring(BuildState& s, const Keyword& kw);
+///@}
 
-// handlers_gap.cpp
+/// @name *GAP and its sub-options (handlers_gap.cpp)
+///@{
 void handle_gap(BuildState& s, const Keyword& kw);
 void handle_surface_behavior(BuildState& s, const Keyword& kw);
 void handle_friction(BuildState& s, const Keyword& kw);
@@ -43,8 +50,10 @@ void handle_gap_radiation(BuildState& s, const Keyword& kw);
 void handle_gap_heat_generation(BuildState& s, const Keyword& kw);
 /// Reads *FRICTION parameters and data (shared by *GAP and *CHANGE FRICTION).
 FrictionSpec read_friction(BuildState& s, const Keyword& kw);
+///@}
 
-// handlers_step.cpp
+/// @name *STEP, *END STEP, procedures, *CHANGE FRICTION (handlers_step.cpp)
+///@{
 void handle_step(BuildState& s, const Keyword& kw);
 void handle_end_step(BuildState& s, const Keyword& kw);
 void handle_static(BuildState& s, const Keyword& kw);
@@ -53,8 +62,10 @@ void handle_coupled(BuildState& s, const Keyword& kw);
 void handle_change_friction(BuildState& s, const Keyword& kw);
 /// Closes an open step at the end of the deck or at a *STEP without *END STEP.
 void close_step(BuildState& s);
+///@}
 
-// handlers_loads.cpp
+/// @name Boundary conditions and loads (handlers_loads.cpp)
+///@{
 void handle_boundary(BuildState& s, const Keyword& kw);
 void handle_cload(BuildState& s, const Keyword& kw);
 void handle_cflux(BuildState& s, const Keyword& kw);
@@ -66,8 +77,10 @@ void handle_film(BuildState& s, const Keyword& kw);
 void handle_sfilm(BuildState& s, const Keyword& kw);
 void handle_temperature(BuildState& s, const Keyword& kw);
 void handle_contact_interference(BuildState& s, const Keyword& kw);
+///@}
 
-// handlers_output.cpp
+/// @name Output requests (handlers_output.cpp)
+///@{
 void handle_node_print(BuildState& s, const Keyword& kw);
 void handle_el_print(BuildState& s, const Keyword& kw);
 void handle_output(BuildState& s, const Keyword& kw);
@@ -78,5 +91,6 @@ void handle_file_output(BuildState& s, const Keyword& kw);
 /// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is
 /// known.
 void resolve_preset_outputs(BuildState& s);
+///@}
 
 } // namespace gapfem::inp
