@@ -28,9 +28,8 @@ void Diagnostics::throw_if_errors() const {
   }
   const bool capped = static_cast<int>(_errors.size()) >= _max_errors;
   std::string head =
-      capped ? fmt::format("the deck has at least {} input errors (reading "
-                           "stopped there); fix these "
-                           "first and run again:",
+      capped ? fmt::format("the deck has at least {} input errors (reading stopped there); fix "
+                           "these first and run again:",
                            _errors.size())
              : fmt::format("the deck has {} input errors; fix each of them:", _errors.size());
   const InputError& first = _errors.front();

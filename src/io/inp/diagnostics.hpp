@@ -1,8 +1,7 @@
 #pragma once
 /// @file diagnostics.hpp
-/// Collects the input errors and warnings of one deck so that the user sees all
-/// problems of a deck at once (up to a cap) instead of fixing them one run at a
-/// time.
+/// Collects the input errors and warnings of one deck so that the user sees all problems of a deck
+/// at once (up to a cap) instead of fixing them one run at a time.
 #include "common/error.hpp"
 
 #include <string>
@@ -10,8 +9,8 @@
 
 namespace gapfem::inp {
 
-/// Thrown by the collector when the error cap is reached; the reader turns it
-/// into the final InputError. Never escapes read_deck().
+/// Thrown by the collector when the error cap is reached; the reader turns it into the final
+/// InputError. Never escapes read_deck().
 struct TooManyErrors {};
 
 /// Error and warning collector with a cap on the number of errors.
@@ -26,17 +25,15 @@ class Diagnostics {
   void error(SourceLocation loc, std::string entity, std::string message) {
     error(InputError(std::move(loc), std::move(entity), std::move(message)));
   }
-  /// Record a warning, formatted like an error message ("file:line: *KEYWORD:
-  /// text").
+  /// Record a warning, formatted like an error message ("file:line: *KEYWORD: text").
   void warning(const SourceLocation& loc, const std::string& message);
 
   int n_errors() const { return static_cast<int>(_errors.size()); }
   const std::vector<InputError>& errors() const { return _errors; }
   const std::vector<std::string>& warnings() const { return _warnings; }
 
-  /// Throw the collected errors as one InputError (no-op without errors). A
-  /// single error is rethrown as is; several are listed one per line, the
-  /// location of the first in location().
+  /// Throw the collected errors as one InputError (no-op without errors). A single error is
+  /// rethrown as is; several are listed one per line, the location of the first in location().
   void throw_if_errors() const;
 
  private:

@@ -112,9 +112,9 @@ long long FieldReader::integer_or(std::size_t i, long long def, std::string_view
 void FieldReader::at_most(std::size_t n, std::string_view layout) const {
   for (std::size_t i = n; i < _line.fields.size(); ++i)
     if (!_line.fields[i].empty())
-      fail(field_entity(i, ""), fmt::format("unexpected value '{}': this data "
-                                            "line has at most {} fields ({})",
-                                            _line.fields[i], n, layout));
+      fail(field_entity(i, ""),
+           fmt::format("unexpected value '{}': this data line has at most {} fields ({})",
+                       _line.fields[i], n, layout));
 }
 
 void FieldReader::fail(std::string entity, std::string message) const {

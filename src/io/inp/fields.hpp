@@ -1,8 +1,7 @@
 #pragma once
 /// @file fields.hpp
-/// Reading numbers from data-line fields: Fortran-style reals ("1.E6", "1.0D3",
-/// "-.5", "+2") and integers, with errors that name the line, the field and
-/// what it should hold.
+/// Reading numbers from data-line fields: Fortran-style reals ("1.E6", "1.0D3", "-.5", "+2") and
+/// integers, with errors that name the line, the field and what it should hold.
 #include "common/error.hpp"
 #include "io/inp/keyword.hpp"
 
@@ -12,17 +11,14 @@
 
 namespace gapfem::inp {
 
-/// A real number in Fortran/Abaqus notation: optional sign, digits with an
-/// optional decimal point (at least one digit), optional exponent introduced by
-/// E or D (either case). nullopt otherwise.
+/// A real number in Fortran/Abaqus notation: optional sign, digits with an optional decimal point
+/// (at least one digit), optional exponent introduced by E or D (either case). nullopt otherwise.
 std::optional<double> parse_real(std::string_view text);
-/// An integer: optional sign and decimal digits only. nullopt otherwise (also
-/// on overflow).
+/// An integer: optional sign and decimal digits only. nullopt otherwise (also on overflow).
 std::optional<long long> parse_integer(std::string_view text);
 
-/// Typed access to the fields of one data line. Errors are thrown as InputError
-/// located at the line, naming the 1-based field and its meaning ("field 3
-/// (magnitude)").
+/// Typed access to the fields of one data line. Errors are thrown as InputError located at the
+/// line, naming the 1-based field and its meaning ("field 3 (magnitude)").
 class FieldReader {
  public:
   FieldReader(const DataLine& line, SourceLocation loc) : _line(line), _loc(std::move(loc)) {}
@@ -43,8 +39,7 @@ class FieldReader {
   long long integer(std::size_t i, std::string_view what) const;
   /// Integer, `def` when blank.
   long long integer_or(std::size_t i, long long def, std::string_view what) const;
-  /// Throws when a field after the first `n` is non-empty (the keyword has no
-  /// such field).
+  /// Throws when a field after the first `n` is non-empty (the keyword has no such field).
   void at_most(std::size_t n, std::string_view layout) const;
 
   const SourceLocation& loc() const { return _loc; }

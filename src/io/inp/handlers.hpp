@@ -1,9 +1,8 @@
 #pragma once
 /// @file handlers.hpp
-/// The keyword handlers (one function per keyword) called by the parser's
-/// keyword table. Each handler reads one keyword block into the BuildState; it
-/// reports per-line problems to the diagnostics and may throw InputError for
-/// problems of the keyword line itself.
+/// The keyword handlers (one function per keyword) called by the parser's keyword table. Each
+/// handler reads one keyword block into the BuildState; it reports per-line problems to the
+/// diagnostics and may throw InputError for problems of the keyword line itself.
 #include "io/inp/model_builder.hpp"
 
 namespace gapfem::inp {
@@ -88,8 +87,7 @@ void handle_node_output(BuildState& s, const Keyword& kw);
 void handle_element_output(BuildState& s, const Keyword& kw);
 /// *NODE FILE / *EL FILE (results-file output): ignored with a warning.
 void handle_file_output(BuildState& s, const Keyword& kw);
-/// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is
-/// known.
+/// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is known.
 void resolve_preset_outputs(BuildState& s);
 ///@}
 

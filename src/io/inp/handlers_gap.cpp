@@ -1,7 +1,6 @@
-// Gap contact keywords: *GAP and its sub-options *SURFACE BEHAVIOR, *FRICTION,
-// *CONTACT DAMPING, *GAP CONDUCTANCE, *GAP RADIATION, *GAP HEAT GENERATION
-// (spec gap-elements.md §2.2, §2.3, §3, §4). The checks that need the element
-// types of the ELSET run in model_validate.cpp.
+// Gap contact keywords: *GAP and its sub-options *SURFACE BEHAVIOR, *FRICTION, *CONTACT DAMPING,
+// *GAP CONDUCTANCE, *GAP RADIATION, *GAP HEAT GENERATION (spec gap-elements.md §2.2, §2.3, §3,
+// §4). The checks that need the element types of the ELSET run in model_validate.cpp.
 #include "io/inp/handlers.hpp"
 
 #include <fmt/format.h>
@@ -50,10 +49,9 @@ void handle_gap(BuildState& s, const Keyword& kw) {
   gap.loc = kw.loc;
   const DataLine* line = single_line(s, kw, "d, n_x, n_y, n_z, A [, k, f]");
   if (!line)
-    throw InputError(kw.loc, fmt::format("ELSET={}", gap.elset),
-                     "the data line is missing; give d, n_x, n_y, n_z, A "
-                     "(clearance, direction "
-                     "cosines, area)");
+    throw InputError(
+        kw.loc, fmt::format("ELSET={}", gap.elset),
+        "the data line is missing; give d, n_x, n_y, n_z, A (clearance, direction cosines, area)");
   const FieldReader r = s.reader(kw, *line);
   r.at_most(7, "d, n_x, n_y, n_z, A, and for CalculiX penalty gaps k, f");
   gap.d = r.real_or(0, 0.0, "clearance d");
@@ -71,8 +69,7 @@ void handle_gap(BuildState& s, const Keyword& kw) {
                                 "so the contact pressure S11 equals the gap force",
                                 gap.elset));
   }
-  // CalculiX extension (spec §2.2, §0b): field 6 penalty stiffness, field 7
-  // tension at infinity
+  // CalculiX extension (spec §2.2, §0b): field 6 penalty stiffness, field 7 tension at infinity
   if (auto k = r.opt_real(5, "penalty stiffness k")) {
     if (*k <= 0) r.fail("field 6 (penalty stiffness k)", "the stiffness must be positive");
     gap.ccx_penalty = true;
@@ -107,62 +104,51 @@ void handle_surface_behavior(BuildState& s, const Keyword& kw) {
     }
   if (n_methods > 1)
     throw InputError(kw.loc, "",
-                     "PENALTY, AUGMENTED LAGRANGE and DIRECT exclude each "
-                     "other; give one of them");
+                     "PENALTY, AUGMENTED LAGRANGE and DIRECT exclude each other; give one of them");
   if (b.no_separation && b.law != PressureOverclosure::Hard)
     throw InputError(kw.loc, "NO SEPARATION",
-                     "NO SEPARATION cannot be combined with a softened PRESSURE-OVERCLOSURE "
-                     "law "
+                     "NO SEPARATION cannot be combined with a softened PRESSURE-OVERCLOSURE law "
                      "(Abaqus/Standard rule); remove one of the two parameters");
   if (b.law != PressureOverclosure::Hard &&
       (b.method == ContactMethod::Penalty || b.method == ContactMethod::AugmentedLagrange))
     throw InputError(kw.loc, "",
                      "PENALTY and AUGMENTED LAGRANGE apply to hard contact only; remove the "
                      "parameter or the PRESSURE-OVERCLOSURE law");
-  // Data lines per law, from the Abaqus Keywords Reference, *SURFACE BEHAVIOR
-  // (v6.5 ch18abk47, v6.6 §18.47, 2017 simakey-r-surfacebehavior):
-  //   PENALTY / AUGMENTED LAGRANGE (optional line): penalty stiffness (blank =
-  //   default),
-  //     clearance at which the pressure is zero (default 0), scale factor of
-  //     the default stiffness;
-  //   EXPONENTIAL: c0 (clearance at zero pressure), p0 (pressure at zero
-  //   clearance), [K_max]; LINEAR: slope of the pressure-overclosure curve (>
-  //   0); TABULAR: pressure, overclosure; ascending overclosure; at least two
-  //   lines; extrapolated
+  // Data lines per law, from the Abaqus Keywords Reference, *SURFACE BEHAVIOR (v6.5 ch18abk47,
+  // v6.6 §18.47, 2017 simakey-r-surfacebehavior):
+  //   PENALTY / AUGMENTED LAGRANGE (optional line): penalty stiffness (blank = default),
+  //     clearance at which the pressure is zero (default 0), scale factor of the default stiffness;
+  //   EXPONENTIAL: c0 (clearance at zero pressure), p0 (pressure at zero clearance), [K_max];
+  //   LINEAR: slope of the pressure-overclosure curve (> 0);
+  //   TABULAR: pressure, overclosure; ascending overclosure; at least two lines; extrapolated
   //     beyond the last point with the last slope.
   switch (b.law) {
   case PressureOverclosure::Hard:
     if (b.method == ContactMethod::Penalty || b.method == ContactMethod::AugmentedLagrange) {
       if (const DataLine* line = single_line(s, kw, "penalty stiffness")) {
         const FieldReader r = s.reader(kw, *line);
-        r.at_most(3, "penalty stiffness, clearance at zero pressure, stiffness "
-                     "scale factor");
+        r.at_most(3, "penalty stiffness, clearance at zero pressure, stiffness scale factor");
         b.penalty_stiffness = r.real_or(0, 0.0, "penalty stiffness");
         if (b.penalty_stiffness < 0)
           r.fail("field 1 (penalty stiffness)", "the penalty stiffness must be positive");
         if (r.real_or(1, 0.0, "clearance at zero pressure") != 0.0)
           r.fail("field 2 (clearance at zero pressure)",
-                 "a non-zero clearance for penalty contact is not supported by "
-                 "gapfem; leave the "
+                 "a non-zero clearance for penalty contact is not supported by gapfem; leave the "
                  "field blank");
         if (r.real_or(2, 1.0, "scale factor") != 1.0)
-          r.fail("field 3 (scale factor)",
-                 "scaling the default penalty stiffness is not supported by "
-                 "gapfem; give the "
-                 "stiffness itself in field 1");
+          r.fail("field 3 (scale factor)", "scaling the default penalty stiffness is not supported "
+                                           "by gapfem; give the stiffness itself in field 1");
       }
     } else {
-      no_data(s, kw,
-              "hard contact with direct enforcement takes no data lines; "
-              "remove them");
+      no_data(s, kw, "hard contact with direct enforcement takes no data lines; remove them");
     }
     break;
   case PressureOverclosure::Exponential: {
     const DataLine* line = single_line(s, kw, "c0, p0");
     if (!line)
       throw InputError(kw.loc, "",
-                       "EXPONENTIAL needs a data line: c0 (clearance at zero pressure), "
-                       "p0 (pressure at zero clearance)");
+                       "EXPONENTIAL needs a data line: c0 (clearance at zero pressure), p0 "
+                       "(pressure at zero clearance)");
     const FieldReader r = s.reader(kw, *line);
     r.at_most(3, "c0, p0, maximum stiffness");
     b.c0 = r.real(0, "clearance c0");
@@ -234,13 +220,11 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "", "ELASTIC SLIP and SLIP TOLERANCE exclude each other; give one");
   if (f.lagrange && (f.elastic_slip || kw.has("SLIP TOLERANCE")))
     throw InputError(kw.loc, "LAGRANGE",
-                     "LAGRANGE enforces sticking exactly and cannot be "
-                     "combined with ELASTIC SLIP "
+                     "LAGRANGE enforces sticking exactly and cannot be combined with ELASTIC SLIP "
                      "or SLIP TOLERANCE");
   if (f.rough) {
     if (!lines_of(kw).empty())
-      s.warn(kw.loc, "ROUGH friction takes no data lines; the friction "
-                     "coefficients were ignored");
+      s.warn(kw.loc, "ROUGH friction takes no data lines; the friction coefficients were ignored");
     return f;
   }
   for_each_line(s, kw, [&](const DataLine& line) {
@@ -259,8 +243,7 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
   });
   if (f.rows.empty())
     throw InputError(kw.loc, "",
-                     "the friction coefficient is missing; add a data line with mu (or "
-                     "use ROUGH)");
+                     "the friction coefficient is missing; add a data line with mu (or use ROUGH)");
   return f;
 }
 
@@ -292,9 +275,9 @@ void handle_contact_damping(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "TANGENT FRACTION", "the tangent fraction must not be negative");
   const DataLine* line = single_line(s, kw, "damping coefficient, clearance, fraction");
   if (!line)
-    throw InputError(kw.loc, "",
-                     "the damping coefficient is missing; add a data line: "
-                     "coefficient, clearance c0, fraction");
+    throw InputError(
+        kw.loc, "",
+        "the damping coefficient is missing; add a data line: coefficient, clearance c0, fraction");
   const FieldReader r = s.reader(kw, *line);
   r.at_most(3, "damping coefficient, clearance c0, fraction");
   d.coefficient = r.real(0, "damping coefficient");
@@ -332,16 +315,16 @@ void handle_gap_conductance(BuildState& s, const Keyword& kw) {
     if (!c.rows.empty() && c.rows.back().temperature == row.temperature &&
         !(row.x > c.rows.back().x))
       r.fail(fmt::format("field 2 ({})", xname),
-             fmt::format("within one temperature the {} values must increase; "
-                         "{} follows {}",
-                         xname, row.x, c.rows.back().x));
+             fmt::format("within one temperature the {} values must increase; {} follows {}", xname,
+                         row.x, c.rows.back().x));
     c.rows.push_back(row);
   });
   if (c.rows.size() < 2)
-    throw InputError(kw.loc, "",
-                     fmt::format("at least two data lines (conductance, {}) are "
-                                 "required to tabulate the conductance",
-                                 xname));
+    throw InputError(
+        kw.loc, "",
+        fmt::format(
+            "at least two data lines (conductance, {}) are required to tabulate the conductance",
+            xname));
   gap.conductance = std::move(c);
 }
 
@@ -355,8 +338,8 @@ void handle_gap_radiation(BuildState& s, const Keyword& kw) {
   const auto lines = lines_of(kw);
   if (lines.size() < 2)
     throw InputError(kw.loc, "",
-                     "give the emissivities on line 1 (eps_A, eps_B) and at least one "
-                     "line of view factor F, clearance d");
+                     "give the emissivities on line 1 (eps_A, eps_B) and at least one line of view "
+                     "factor F, clearance d");
   {
     const FieldReader r = s.reader(kw, *lines[0]);
     r.at_most(2, "emissivity of side A, emissivity of side B");

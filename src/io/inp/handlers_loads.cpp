@@ -1,22 +1,18 @@
-// Boundary conditions and loads: *BOUNDARY, *CLOAD, *CFLUX, *DLOAD, *DSLOAD,
-// *DFLUX, *DSFLUX, *FILM, *SFILM, *TEMPERATURE, *CONTACT INTERFERENCE.
+// Boundary conditions and loads: *BOUNDARY, *CLOAD, *CFLUX, *DLOAD, *DSLOAD, *DFLUX, *DSFLUX,
+// *FILM, *SFILM, *TEMPERATURE, *CONTACT INTERFERENCE.
 //
-// Each keyword merges its entries into the step's active list (which starts as
-// the previous step's list with propagated = true):
-//   OP=MOD (default): an entry with the same key as an active entry of the same
-//   keyword family
+// Each keyword merges its entries into the step's active list (which starts as the previous
+// step's list with propagated = true):
+//   OP=MOD (default): an entry with the same key as an active entry of the same keyword family
 //     replaces it, other entries are added;
-//   OP=NEW: first removes every entry of the family inherited from earlier
-//   steps (propagated),
-//     then adds. Entries defined earlier in the same step are kept, so several
-//     OP=NEW keywords of one family in a step add up (CalculiX documents the
-//     same: OP=NEW acts once per step).
-// *BOUNDARY, OP=NEW also removes boundary conditions given in the model data:
-// the Abaqus Analysis User's Guide ("Boundary conditions", 34.3.1 in 2016
-// / 27.3.1 in 6.6) states that boundary conditions prescribed as model data
-// "can be modified or removed during analysis steps", and the *BOUNDARY keyword
-// page defines OP=NEW as removing all boundary conditions currently in effect;
-// model-data conditions are in effect, so they are removed as well.
+//   OP=NEW: first removes every entry of the family inherited from earlier steps (propagated),
+//     then adds. Entries defined earlier in the same step are kept, so several OP=NEW keywords
+//     of one family in a step add up (CalculiX documents the same: OP=NEW acts once per step).
+// *BOUNDARY, OP=NEW also removes boundary conditions given in the model data: the Abaqus Analysis
+// User's Guide ("Boundary conditions", 34.3.1 in 2016 / 27.3.1 in 6.6) states that boundary
+// conditions prescribed as model data "can be modified or removed during analysis steps", and
+// the *BOUNDARY keyword page defines OP=NEW as removing all boundary conditions currently in
+// effect; model-data conditions are in effect, so they are removed as well.
 #include "io/inp/handlers.hpp"
 
 #include <cmath>
@@ -31,8 +27,8 @@ bool op_new(const Keyword& kw) {
   return enum_param(kw, "OP", {"MOD", "NEW"}, 0) == 1;
 }
 
-/// Merges `incoming` into `active` (see the file comment). `family` selects the
-/// entries of the keyword's family, `key` gives the identity of an entry.
+/// Merges `incoming` into `active` (see the file comment). `family` selects the entries of the
+/// keyword's family, `key` gives the identity of an entry.
 template <typename T, typename Family, typename Key>
 void merge(std::vector<T>& active, std::vector<T>& incoming, bool is_new, Family family, Key key) {
   if (is_new) std::erase_if(active, [&](const T& e) { return family(e) && e.propagated; });
@@ -52,8 +48,8 @@ void merge(std::vector<T>& active, std::vector<T>& incoming, bool is_new, Family
   }
 }
 
-/// DOF lists of the boundary-condition types (Abaqus Analysis User's Guide,
-/// "Boundary conditions", type format).
+/// DOF lists of the boundary-condition types (Abaqus Analysis User's Guide, "Boundary conditions",
+/// type format).
 bool bc_type_dofs(const std::string& name, std::vector<int>& dofs) {
   static const std::map<std::string, std::vector<int>> types = {
       {"XSYMM", {1, 5, 6}},  {"YSYMM", {2, 4, 6}},
@@ -71,15 +67,13 @@ DofType to_dof(const FieldReader& r, long long n, std::size_t field) {
   DofType d{};
   if (n < 0 || n > 11 || !dof_from_abaqus(static_cast<int>(n), d))
     r.fail(fmt::format("field {} (degree of freedom)", field + 1),
-           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 "
-                       "(displacements, rotations) "
+           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, rotations) "
                        "and 11 (temperature)",
                        n));
   return d;
 }
 
-/// Element label written in field `field` (an element number rather than a set
-/// name)?
+/// Element label written in field `field` (an element number rather than a set name)?
 bool is_label(const FieldReader& r, std::size_t field) {
   return parse_integer(r.text(field)).has_value();
 }
@@ -89,8 +83,7 @@ std::string elem_entity(const BuildState& s, ElemId e) {
                      element_info(s.model.mesh.elem_types[e]).name);
 }
 
-/// "P3" → 3 for prefix "P"; 0 for the bare prefix; -1 when the label has
-/// another form.
+/// "P3" → 3 for prefix "P"; 0 for the bare prefix; -1 when the label has another form.
 int face_of(const std::string& label, std::string_view prefix) {
   if (label.rfind(prefix, 0) != 0) return -1;
   const std::string_view rest = std::string_view(label).substr(prefix.size());
@@ -103,10 +96,10 @@ void check_face(const BuildState& s, const FieldReader& r, ElemId e, int face) {
   const ElementType t = s.model.mesh.elem_types[e];
   const int nf = n_faces(t);
   if (face > nf)
-    r.fail(elem_entity(s, e), nf == 0 ? std::string("this element type has no faces for this load")
-                                      : fmt::format("face {} does not exist; this element type has "
-                                                    "faces 1-{}",
-                                                    face, nf));
+    r.fail(elem_entity(s, e),
+           nf == 0
+               ? std::string("this element type has no faces for this load")
+               : fmt::format("face {} does not exist; this element type has faces 1-{}", face, nf));
 }
 
 const Surface& find_surface(BuildState& s, const FieldReader& r) {
@@ -114,8 +107,7 @@ const Surface& find_surface(BuildState& s, const FieldReader& r) {
   const auto it = s.model.surfaces.find(name);
   if (it == s.model.surfaces.end())
     r.fail(fmt::format("surface {}", name),
-           "this surface is not defined; define it with *SURFACE, NAME=… in "
-           "the model data");
+           "this surface is not defined; define it with *SURFACE, NAME=… in the model data");
   return it->second;
 }
 
@@ -142,8 +134,8 @@ void require_temperature(const BuildState& s, const FieldReader& r, ElemId e) {
 }
 void require_displacement(const BuildState& s, const FieldReader& r, ElemId e) {
   if (!element_info(s.model.mesh.elem_types[e]).displacement)
-    r.fail(elem_entity(s, e), "this element has no displacement DOFs, so it cannot take a "
-                              "mechanical load");
+    r.fail(elem_entity(s, e),
+           "this element has no displacement DOFs, so it cannot take a mechanical load");
 }
 
 } // namespace
@@ -153,10 +145,9 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
   if (!history)
     for (const char* p : {"OP", "AMPLITUDE", "FIXED"})
       if (kw.has(p))
-        throw InputError(kw.loc, p,
-                         fmt::format("{} is a history-data parameter; use it on a *BOUNDARY inside "
-                                     "a step",
-                                     p));
+        throw InputError(
+            kw.loc, p,
+            fmt::format("{} is a history-data parameter; use it on a *BOUNDARY inside a step", p));
   const bool fixed = kw.has("FIXED");
   const int amplitude = amplitude_param(s, kw);
   const bool is_new = history && op_new(kw);
@@ -169,8 +160,7 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
       const std::string type = canonical(r.text(1));
       if (!bc_type_dofs(type, dofs))
         r.fail(fmt::format("field 2 ({})", r.text(1)),
-               "write a DOF number or one of ENCASTRE, PINNED, XSYMM, YSYMM, "
-               "ZSYMM, XASYMM, "
+               "write a DOF number or one of ENCASTRE, PINNED, XSYMM, YSYMM, ZSYMM, XASYMM, "
                "YASYMM, ZASYMM");
       r.at_most(2, "node or node set, boundary type");
     } else {
@@ -184,8 +174,7 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
                fmt::format("the last DOF {} is smaller than the first DOF {}", last, first));
       if (first <= 6 && last >= 7)
         r.fail(fmt::format("DOFs {}-{}", first, last),
-               "this range includes DOFs 7-10, which gapfem does not have; "
-               "give DOFs 1-6 and 11 on "
+               "this range includes DOFs 7-10, which gapfem does not have; give DOFs 1-6 and 11 on "
                "separate lines");
       for (long long d = first; d <= last; ++d) dofs.push_back(static_cast<int>(d));
       value = r.real_or(3, 0.0, "value");
@@ -224,8 +213,8 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
     DofType dof = DofType::NT;
     if (flux) {
       if (!r.blank(1) && r.integer(1, "DOF") != 11)
-        r.fail("field 2 (DOF)", "a concentrated heat flux acts on DOF 11; "
-                                "write 11 or leave it blank");
+        r.fail("field 2 (DOF)",
+               "a concentrated heat flux acts on DOF 11; write 11 or leave it blank");
     } else {
       const long long d = r.integer(1, "DOF");
       if (d == 11) r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
@@ -288,19 +277,18 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       d.kind = DistLoadKind::Pressure;
       d.face = face;
     } else if (face == 0) {
-      r.fail("field 2 (P)", "give the face of the pressure: P1, P2, … (face numbers of the "
-                            "element type), or use *DSLOAD on a surface");
+      r.fail("field 2 (P)", "give the face of the pressure: P1, P2, … (face numbers of the element "
+                            "type), or use *DSLOAD on a surface");
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "this load label is not supported by gapfem; use Pn (pressure on "
-             "face n), GRAV, BX, "
+             "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
              "BY or BZ");
     }
     for (ElemId e : elems) {
       const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
       if (d.kind != DistLoadKind::Pressure) {
-        // body loads act on elements with volume; springs, gaps and heat-only
-        // elements in a set are skipped, named alone they are an error
+        // body loads act on elements with volume; springs, gaps and heat-only elements in a set are
+        // skipped, named alone they are an error
         const bool massless = info.family == ElementFamily::Spring ||
                               info.family == ElementFamily::Gap || !info.displacement;
         if (massless) {
@@ -482,9 +470,8 @@ void handle_contact_interference(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "SHRINK", "SHRINK can be used in the first step only (Abaqus rule)");
   int amplitude = amplitude_param(s, kw);
   if (shrink && amplitude >= 0) {
-    s.warn(kw.loc, "AMPLITUDE is ignored with SHRINK: the interference is "
-                   "removed linearly over "
-                   "the step");
+    s.warn(kw.loc,
+           "AMPLITUDE is ignored with SHRINK: the interference is removed linearly over the step");
     amplitude = -1;
   }
   std::vector<InterferenceEntry> entries;

@@ -1,6 +1,5 @@
-// Material and other property keywords: *MATERIAL with *ELASTIC, *DENSITY,
-// *EXPANSION, *CONDUCTIVITY, *SPECIFIC HEAT; *AMPLITUDE, *INITIAL CONDITIONS,
-// *PHYSICAL CONSTANTS.
+// Material and other property keywords: *MATERIAL with *ELASTIC, *DENSITY, *EXPANSION,
+// *CONDUCTIVITY, *SPECIFIC HEAT; *AMPLITUDE, *INITIAL CONDITIONS, *PHYSICAL CONSTANTS.
 #include "io/inp/handlers.hpp"
 
 #include <algorithm>

@@ -10,8 +10,7 @@ std::string where(const BuildState& s, SourceRef ref) {
   return fmt::format("{}:{}", s.model.source_files[ref.file], ref.line);
 }
 
-/// Largest number of members one GENERATE line may produce (guards against
-/// typos like 1,1E9).
+/// Largest number of members one GENERATE line may produce (guards against typos like 1,1E9).
 constexpr long long kMaxGenerate = 100'000'000;
 
 struct Range {
@@ -28,8 +27,7 @@ Range read_range(const FieldReader& r) {
   if (g.first <= 0) r.fail("field 1 (first)", "labels must be positive integers");
   if (g.last < g.first)
     r.fail(fmt::format("range {}-{}", g.first, g.last),
-           "with GENERATE the last label must not be smaller than the first; "
-           "write first, last, "
+           "with GENERATE the last label must not be smaller than the first; write first, last, "
            "increment");
   if ((g.last - g.first) / g.step > kMaxGenerate)
     r.fail(fmt::format("range {}-{}", g.first, g.last), "this range is too large");
@@ -52,8 +50,7 @@ void handle_preprint(BuildState&, const Keyword&) {}
 
 void handle_node(BuildState& s, const Keyword& kw) {
   reject_param(kw, "SYSTEM",
-               "give the coordinates in the global rectangular system "
-               "(SYSTEM=R is the default)");
+               "give the coordinates in the global rectangular system (SYSTEM=R is the default)");
   const std::string nset = name_param(kw, "NSET", false);
   Mesh& mesh = s.model.mesh;
   std::vector<NodeId> added;
@@ -67,10 +64,9 @@ void handle_node(BuildState& s, const Keyword& kw) {
       const Vec3 x{r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")};
       if (const NodeId old = mesh.find_node(label); old >= 0)
         r.fail(fmt::format("node {}", label),
-               fmt::format("this node number is defined twice (first at {}); "
-                           "give each node its own "
-                           "number",
-                           where(s, s.node_src[old])));
+               fmt::format(
+                   "this node number is defined twice (first at {}); give each node its own number",
+                   where(s, s.node_src[old])));
       const NodeId id = mesh.n_nodes();
       mesh.node_labels.push_back(label);
       mesh.coords.push_back(x);
@@ -100,8 +96,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
           fmt::format("gapfem does not know this element type; supported types: {}", known));
     }
   } catch (const InputError& e) {
-    // remember the labels so that later references do not raise follow-up
-    // errors
+    // remember the labels so that later references do not raise follow-up errors
     for (const auto& d : kw.data)
       if (!d.fields.empty())
         if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(*l);
@@ -113,8 +108,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
   std::vector<ElemId> added;
   for (std::size_t i = 0; i < kw.data.size(); ++i) {
     if (kw.data[i].empty()) continue;
-    // a line ending with a comma continues on the next line until all nodes are
-    // given
+    // a line ending with a comma continues on the next line until all nodes are given
     const SourceRef first_line = s.ref(kw.data[i]);
     // (copied only when it is continued: most element lines are complete)
     const DataLine* line = &kw.data[i];
@@ -146,11 +140,10 @@ void handle_element(BuildState& s, const Keyword& kw) {
         node_labels.push_back(r.integer(f, "node number"));
       }
       if (static_cast<int>(node_labels.size()) != info.n_nodes)
-        r.fail(ent, fmt::format("{} needs {} nodes but {} are given; list exactly {} node "
-                                "numbers "
-                                "after the element number (continue on the next line after a "
-                                "trailing comma)",
-                                info.name, info.n_nodes, node_labels.size(), info.n_nodes));
+        r.fail(ent,
+               fmt::format("{} needs {} nodes but {} are given; list exactly {} node numbers after "
+                           "the element number (continue on the next line after a trailing comma)",
+                           info.name, info.n_nodes, node_labels.size(), info.n_nodes));
       std::vector<NodeId> nodes;
       bool skip = false;
       for (long long nl : node_labels) {
@@ -239,8 +232,7 @@ void handle_surface(BuildState& s, const Keyword& kw) {
   const int type = enum_param(kw, "TYPE", {"ELEMENT", "NODE"}, 0);
   if (type == 1)
     throw InputError(kw.loc, "TYPE=NODE",
-                     "node-based surfaces are not supported by gapfem; connect nodes with "
-                     "gap "
+                     "node-based surfaces are not supported by gapfem; connect nodes with gap "
                      "elements, or define an element-based surface (TYPE=ELEMENT)");
   const std::string name = name_param(kw, "NAME", true);
   Surface& surf = s.model.surfaces[name];
@@ -265,8 +257,7 @@ void handle_surface(BuildState& s, const Keyword& kw) {
       if (*face > nf)
         r.fail(fmt::format("element {} ({})", s.model.element_label(e), element_info(t).name),
                nf == 0 ? std::string("this element type has no faces for a surface")
-                       : fmt::format("face S{} does not exist; this element type "
-                                     "has faces S1-S{}",
+                       : fmt::format("face S{} does not exist; this element type has faces S1-S{}",
                                      *face, nf));
       surf.faces.push_back({e, static_cast<int>(*face)});
     }

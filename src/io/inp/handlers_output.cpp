@@ -1,6 +1,5 @@
-// Output requests: *NODE PRINT, *EL PRINT (.dat tables) and *OUTPUT, FIELD with
-// *NODE OUTPUT / *ELEMENT OUTPUT (ParaView frames). Abaqus output keys become
-// typed ids here, once.
+// Output requests: *NODE PRINT, *EL PRINT (.dat tables) and *OUTPUT, FIELD with *NODE OUTPUT /
+// *ELEMENT OUTPUT (ParaView frames). Abaqus output keys become typed ids here, once.
 #include "io/inp/handlers.hpp"
 
 #include <algorithm>
@@ -10,8 +9,8 @@
 namespace gapfem::inp {
 namespace {
 
-/// "U" or a component such as "U1", "NT11", "S12": the parent variable name, or
-/// "" when the name does not have that form.
+/// "U" or a component such as "U1", "NT11", "S12": the parent variable name, or "" when the name
+/// does not have that form.
 template <typename V, typename Lookup>
 std::optional<V> lookup_with_components(std::string name, Lookup lookup) {
   if (auto v = lookup(name)) return v;
@@ -35,8 +34,7 @@ void add_unique(std::vector<T>& list, T v) {
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
 constexpr const char* kElemVarList = "S, E, SF, HFL";
 
-/// Reads variable names from all data lines; unknown names are errors
-/// (`strict`) or warnings.
+/// Reads variable names from all data lines; unknown names are errors (`strict`) or warnings.
 template <typename V, typename Parse>
 std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool strict,
                          const char* known) {
@@ -83,16 +81,15 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
     const auto it = s.model.nsets.find(req.nset);
     if (it == s.model.nsets.end())
       throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
-                       "this node set is not defined; define it with *NSET in "
-                       "the model data");
+                       "this node set is not defined; define it with *NSET in the model data");
     req.nodes = it->second;
   }
   req.vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
   if (req.vars.empty())
-    throw InputError(kw.loc, "",
-                     fmt::format("no output variables are listed; add a data line such "
-                                 "as U, RF (known: {})",
-                                 kNodeVarList));
+    throw InputError(
+        kw.loc, "",
+        fmt::format("no output variables are listed; add a data line such as U, RF (known: {})",
+                    kNodeVarList));
   s.scratch.node_print_given = true;
   s.step.node_prints.push_back(std::move(req));
 }
@@ -107,8 +104,7 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
       enum_param(kw, "POSITION", {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES"}, 0);
   if (pos == 2)
     throw InputError(kw.loc, "POSITION=AVERAGED AT NODES",
-                     "nodal averaging of element output is not supported in "
-                     "the .dat file; use "
+                     "nodal averaging of element output is not supported in the .dat file; use "
                      "INTEGRATION POINTS or CENTROIDAL");
   req.position = pos == 0 ? ElPosition::IntegrationPoints : ElPosition::Centroidal;
   req.elset = name_param(kw, "ELSET", false);
@@ -119,16 +115,15 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
     const auto* set = find_elset(s, req.elset);
     if (!set)
       throw InputError(kw.loc, fmt::format("ELSET={}", req.elset),
-                       "this element set is not defined; define it with *ELSET "
-                       "in the model data");
+                       "this element set is not defined; define it with *ELSET in the model data");
     req.elements = *set;
   }
   req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList);
   if (req.vars.empty())
-    throw InputError(kw.loc, "",
-                     fmt::format("no output variables are listed; add a data line such "
-                                 "as S, E (known: {})",
-                                 kElemVarList));
+    throw InputError(
+        kw.loc, "",
+        fmt::format("no output variables are listed; add a data line such as S, E (known: {})",
+                    kElemVarList));
   s.scratch.el_print_given = true;
   s.step.el_prints.push_back(std::move(req));
 }
@@ -146,10 +141,8 @@ void handle_output(BuildState& s, const Keyword& kw) {
   if (history) {
     s.parent = Parent::HistoryOutput;
     if (!s.history_warned)
-      s.warn(kw.loc, "history output is not written by gapfem; the *OUTPUT, "
-                     "HISTORY request and "
-                     "its *NODE OUTPUT / *ELEMENT OUTPUT lines were ignored "
-                     "(use *NODE PRINT or "
+      s.warn(kw.loc, "history output is not written by gapfem; the *OUTPUT, HISTORY request and "
+                     "its *NODE OUTPUT / *ELEMENT OUTPUT lines were ignored (use *NODE PRINT or "
                      "*EL PRINT for tables over time)");
     s.history_warned = true;
     return;
@@ -180,10 +173,10 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
 }
 
 void handle_file_output(BuildState& s, const Keyword& kw) {
-  s.warn(kw.loc, fmt::format("{} (results-file output) is not written by gapfem and was ignored; "
-                             "use *OUTPUT, FIELD for ParaView frames or *NODE PRINT / *EL PRINT "
-                             "for tables",
-                             kw.name));
+  s.warn(kw.loc,
+         fmt::format("{} (results-file output) is not written by gapfem and was ignored; use "
+                     "*OUTPUT, FIELD for ParaView frames or *NODE PRINT / *EL PRINT for tables",
+                     kw.name));
 }
 
 void resolve_preset_outputs(BuildState& s) {
@@ -192,9 +185,8 @@ void resolve_preset_outputs(BuildState& s) {
   const bool thermal = st.procedure != Procedure::Static;
   for (auto [index, all] : s.scratch.preset_fields) {
     FieldOutputRequest& req = st.field_outputs[index];
-    // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for
-    // thermal procedures); ALL: every variable gapfem can write for the
-    // procedure
+    // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for thermal procedures); ALL:
+    // every variable gapfem can write for the procedure
     if (mech) {
       for (NodeVar v : {NodeVar::U, NodeVar::RF}) add_unique(req.node_vars, v);
       for (ElemVar v : {ElemVar::S, ElemVar::E}) add_unique(req.elem_vars, v);
@@ -214,8 +206,7 @@ void resolve_preset_outputs(BuildState& s) {
   // a field request without any variable writes nothing: drop it and say so
   for (auto it = st.field_outputs.begin(); it != st.field_outputs.end();) {
     if (it->node_vars.empty() && it->elem_vars.empty()) {
-      s.warn(it->loc, "this *OUTPUT, FIELD request has no variables (add "
-                      "VARIABLE=PRESELECT or "
+      s.warn(it->loc, "this *OUTPUT, FIELD request has no variables (add VARIABLE=PRESELECT or "
                       "*NODE OUTPUT / *ELEMENT OUTPUT lines) and was ignored");
       it = st.field_outputs.erase(it);
     } else {

@@ -1,6 +1,5 @@
-// Section keywords: *SOLID SECTION, *BEAM SECTION, *SPRING. The ELSET and
-// MATERIAL references are resolved when the model data is complete
-// (model_validate.cpp).
+// Section keywords: *SOLID SECTION, *BEAM SECTION, *SPRING. The ELSET and MATERIAL references are
+// resolved when the model data is complete (model_validate.cpp).
 #include "io/inp/handlers.hpp"
 
 #include <cmath>
@@ -21,8 +20,7 @@ void extra_lines_warning(BuildState& s, const Keyword& kw, std::size_t used) {
   const auto lines = lines_of(kw);
   if (lines.size() > used)
     s.warn(s.loc(kw, *lines[used]),
-           fmt::format("{} uses only {} data line(s) here; the data from this "
-                       "line on was ignored",
+           fmt::format("{} uses only {} data line(s) here; the data from this line on was ignored",
                        kw.name, used));
 }
 
@@ -30,8 +28,7 @@ void extra_lines_warning(BuildState& s, const Keyword& kw, std::size_t used) {
 
 void handle_solid_section(BuildState& s, const Keyword& kw) {
   reject_param(kw, "ORIENTATION",
-               "gapfem materials are isotropic, so no orientation is needed; "
-               "remove the parameter");
+               "gapfem materials are isotropic, so no orientation is needed; remove the parameter");
   SolidSection sec;
   sec.elset = name_param(kw, "ELSET", true);
   const std::string material = name_param(kw, "MATERIAL", true);
@@ -64,10 +61,9 @@ void handle_beam_section(BuildState& s, const Keyword& kw) {
   sec.loc = kw.loc;
   const auto lines = lines_of(kw);
   if (lines.empty())
-    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
-                     "the section dimensions are missing; add a data line "
-                     "(RECT: a, b; CIRC: r; "
-                     "PIPE: r, t)");
+    throw InputError(
+        kw.loc, fmt::format("ELSET={}", sec.elset),
+        "the section dimensions are missing; add a data line (RECT: a, b; CIRC: r; PIPE: r, t)");
   const FieldReader r = s.reader(kw, *lines[0]);
   const char* names[3][2] = {
       {"width a", "height b"}, {"radius r", ""}, {"outer radius r", "wall thickness t"}};
@@ -84,8 +80,7 @@ void handle_beam_section(BuildState& s, const Keyword& kw) {
   }
   if (sec.shape == BeamSection::Shape::Pipe && sec.dims[1] >= sec.dims[0])
     r.fail("field 2 (wall thickness t)",
-           fmt::format("the wall thickness {} must be smaller than the outer "
-                       "radius {} (use "
+           fmt::format("the wall thickness {} must be smaller than the outer radius {} (use "
                        "SECTION=CIRC for a solid circle)",
                        sec.dims[1], sec.dims[0]));
   if (lines.size() > 1) {
@@ -111,18 +106,15 @@ void handle_spring(BuildState& s, const Keyword& kw) {
   sec.loc = kw.loc;
   if (kw.data.empty())
     throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
-                     "data lines are missing: line 1 gives the DOF(s) (blank "
-                     "for SPRINGA), the "
+                     "data lines are missing: line 1 gives the DOF(s) (blank for SPRINGA), the "
                      "following lines the stiffness");
-  // line 1: DOFs (checked against the element types later); lines 2…:
-  // stiffness[, temperature]
+  // line 1: DOFs (checked against the element types later); lines 2…: stiffness[, temperature]
   const std::span<const DataLine> rows(kw.data.data() + 1, kw.data.size() - 1);
   bool any_row = false;
   for (const auto& d : rows) any_row = any_row || !d.empty();
   if (!any_row)
     throw InputError(s.loc(kw, kw.data[0]), fmt::format("ELSET={}", sec.elset),
-                     "the stiffness is missing; give it on the second data "
-                     "line (the first line "
+                     "the stiffness is missing; give it on the second data line (the first line "
                      "holds the DOFs, blank for SPRINGA)");
   sec.stiffness = read_property_table(s, kw, rows, {"stiffness"}, nullptr);
   s.model.spring_sections.push_back(std::move(sec));

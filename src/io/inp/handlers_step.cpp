@@ -1,8 +1,7 @@
-// History structure: *STEP … *END STEP, the procedures *STATIC, *HEAT TRANSFER
-// and *COUPLED TEMPERATURE-DISPLACEMENT, and *CHANGE FRICTION. A new step
-// starts from the complete active lists of the previous step (model-data
-// *BOUNDARY for step 1) with propagated = true; the load handlers then modify
-// them (handlers_loads.cpp).
+// History structure: *STEP … *END STEP, the procedures *STATIC, *HEAT TRANSFER and
+// *COUPLED TEMPERATURE-DISPLACEMENT, and *CHANGE FRICTION. A new step starts from the complete
+// active lists of the previous step (model-data *BOUNDARY for step 1) with propagated = true; the
+// load handlers then modify them (handlers_loads.cpp).
 #include "io/inp/handlers.hpp"
 
 #include <fmt/format.h>
@@ -50,8 +49,7 @@ void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_field
                "increments must not be negative (0 or blank selects the default)");
     if (inc.minimum > 0 && inc.maximum > 0 && inc.minimum > inc.maximum)
       r.fail("field 3 (minimum increment)",
-             fmt::format("the minimum increment {} is larger than the maximum "
-                         "increment {}",
+             fmt::format("the minimum increment {} is larger than the maximum increment {}",
                          inc.minimum, inc.maximum));
     if (inc.initial > inc.period)
       r.fail("field 1 (initial increment)",
@@ -59,20 +57,17 @@ void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_field
                          inc.period));
     if (inc.maximum > 0 && inc.initial > inc.maximum)
       r.fail("field 1 (initial increment)",
-             fmt::format("the initial increment {} is larger than the maximum "
-                         "increment {}",
+             fmt::format("the initial increment {} is larger than the maximum increment {}",
                          inc.initial, inc.maximum));
     return; // one data line; further lines are not part of the procedure
   }
 }
 
-/// STEADY STATE, DELTMX= and the CAE-written END=PERIOD (shared by heat
-/// transfer and coupled).
+/// STEADY STATE, DELTMX= and the CAE-written END=PERIOD (shared by heat transfer and coupled).
 void read_thermal_procedure(BuildState& s, const Keyword& kw) {
   if (kw.has("END") && enum_param(kw, "END", {"PERIOD", "SS"}, 0) == 1)
     throw InputError(kw.loc, "END=SS",
-                     "ending a step at steady state is not supported by "
-                     "gapfem; use END=PERIOD "
+                     "ending a step at steady state is not supported by gapfem; use END=PERIOD "
                      "(default) or STEADY STATE");
   const bool steady = kw.has("STEADY STATE");
   s.step.inc.steady_state = steady;
@@ -88,11 +83,10 @@ void read_thermal_procedure(BuildState& s, const Keyword& kw) {
 
 void handle_step(BuildState& s, const Keyword& kw) {
   if (s.in_step) {
-    s.error(kw.loc, fmt::format("step {}", s.step.number),
-            fmt::format("the step that starts at {} has no *END STEP; add *END "
-                        "STEP before this "
-                        "*STEP",
-                        s.step.loc.str()));
+    s.error(
+        kw.loc, fmt::format("step {}", s.step.number),
+        fmt::format("the step that starts at {} has no *END STEP; add *END STEP before this *STEP",
+                    s.step.loc.str()));
     close_step(s);
   }
   if (!s.model_done) finish_model_data(s);
@@ -135,15 +129,13 @@ void close_step(BuildState& s) {
     s.error(st.loc, fmt::format("step {}", st.number),
             "the step has no procedure; add *STATIC, *HEAT TRANSFER or *COUPLED "
             "TEMPERATURE-DISPLACEMENT after *STEP");
-  // default variation of magnitudes: RAMP, except transient heat transfer /
-  // coupled steps (STEP)
+  // default variation of magnitudes: RAMP, except transient heat transfer / coupled steps (STEP)
   if (!s.scratch.amplitude_given) st.ramp_default = !s.scratch.transient;
   for (const auto& change : st.friction_changes)
     if (!change.friction.given)
       s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");
   resolve_preset_outputs(s);
-  // output requests carry over from the previous step unless this step gives
-  // its own
+  // output requests carry over from the previous step unless this step gives its own
   if (!s.model.steps.empty()) {
     const Step& prev = s.model.steps.back();
     if (!s.scratch.node_print_given) st.node_prints = prev.node_prints;
@@ -190,8 +182,7 @@ void handle_change_friction(BuildState& s, const Keyword& kw) {
   const auto* set = find_elset(s, elset);
   if (!set)
     throw InputError(kw.loc, fmt::format("ELSET={}", elset),
-                     "this element set is not defined; define it with *ELSET "
-                     "in the model data");
+                     "this element set is not defined; define it with *ELSET in the model data");
   FrictionChange change;
   change.loc = kw.loc;
   for (ElemId e : *set) {
@@ -199,8 +190,8 @@ void handle_change_friction(BuildState& s, const Keyword& kw) {
     if (element_info(t).family != ElementFamily::Gap || t == ElementType::DGAP)
       throw InputError(
           kw.loc, fmt::format("element {} ({})", s.model.element_label(e), element_info(t).name),
-          fmt::format("*CHANGE FRICTION applies to mechanical gap elements only; "
-                      "remove this element from ELSET {}",
+          fmt::format("*CHANGE FRICTION applies to mechanical gap elements only; remove this "
+                      "element from ELSET {}",
                       elset));
     change.elements.push_back(e);
   }

@@ -1,8 +1,7 @@
 #pragma once
 /// @file keyword.hpp
-/// One keyword block of an Abaqus input deck as the lexer delivers it: the
-/// keyword name, its parameters (case- and blank-insensitive names) and its
-/// data lines, each with its file and line.
+/// One keyword block of an Abaqus input deck as the lexer delivers it: the keyword name, its
+/// parameters (case- and blank-insensitive names) and its data lines, each with its file and line.
 #include "common/error.hpp"
 
 #include <cstdint>
@@ -13,20 +12,17 @@
 
 namespace gapfem::inp {
 
-/// Upper case with every blank removed: the form in which keyword and parameter
-/// names and enumerated parameter values are compared ("*solid   section" and
-/// "*SOLIDSECTION" are equal).
+/// Upper case with every blank removed: the form in which keyword and parameter names and
+/// enumerated parameter values are compared ("*solid   section" and "*SOLIDSECTION" are equal).
 std::string canonical(std::string_view text);
-/// Upper case with runs of blanks collapsed to one and the ends trimmed ("SOLID
-/// SECTION").
+/// Upper case with runs of blanks collapsed to one and the ends trimmed ("SOLID SECTION").
 std::string display_upper(std::string_view text);
 /// `text` without leading and trailing blanks (spaces, tabs, CR).
 std::string_view trim(std::string_view text);
 /// Upper-case copy of `text` (ASCII).
 std::string to_upper(std::string_view text);
 
-/// One data line, split at commas. Fields are trimmed; empty fields ("1,,3")
-/// are kept as "".
+/// One data line, split at commas. Fields are trimmed; empty fields ("1,,3") are kept as "".
 struct DataLine {
   std::vector<std::string> fields; ///< a trailing comma does not add an empty last field
   std::string text;                ///< the line as written (CR and trailing blanks removed)

@@ -17,8 +17,7 @@ bool takes_input_file(std::string_view key) {
 
 constexpr int kMaxIncludeDepth = 16;
 
-/// Lines of a text, with CR and trailing blanks removed (Windows line ends are
-/// fine).
+/// Lines of a text, with CR and trailing blanks removed (Windows line ends are fine).
 std::vector<std::string_view> split_lines(std::string_view text) {
   std::vector<std::string_view> lines;
   std::size_t start = 0;
@@ -47,9 +46,9 @@ bool is_keyword_line(std::string_view line) {
   return !t.empty() && t[0] == '*' && !(t.size() >= 2 && t[1] == '*');
 }
 
-/// A line that can continue a keyword line: it starts with a parameter name (a letter or a
-/// quote). A line starting with a digit, sign or point after a keyword line that ends with a
-/// comma is taken as the first data line instead.
+/// A line that can continue a keyword line: it starts with a parameter name (a letter or a quote).
+/// A line starting with a digit, sign or point after a keyword line that ends with a comma is taken
+/// as the first data line instead.
 bool is_parameter_line(std::string_view line) {
   const std::string_view t = trim(line);
   if (t.empty() || t[0] == '*') return false;
@@ -150,8 +149,7 @@ class Lexer {
     if (_current < 0) {
       if (trim(line).empty()) return;
       _diag.error(loc(file, lineno), "",
-                  "data line before the first keyword; start the deck with a "
-                  "keyword line such as "
+                  "data line before the first keyword; start the deck with a keyword line such as "
                   "*HEADING");
       return;
     }
@@ -171,9 +169,9 @@ class Lexer {
     kw.name += display_upper(tokens[0]);
     kw.loc = loc(file, lineno, kw.name);
     if (kw.key.empty()) {
-      _diag.error(loc(file, lineno), "",
-                  "keyword line without a keyword name; write e.g. *NODE, or "
-                  "start comments with **");
+      _diag.error(
+          loc(file, lineno), "",
+          "keyword line without a keyword name; write e.g. *NODE, or start comments with **");
       return kw;
     }
     for (std::size_t t = 1; t < tokens.size(); ++t) {
@@ -197,8 +195,7 @@ class Lexer {
     return kw;
   }
 
-  /// Resolves a file named by INPUT= relative to `dir`; reports a missing file
-  /// at `at`.
+  /// Resolves a file named by INPUT= relative to `dir`; reports a missing file at `at`.
   bool open_relative(const Parameter* p, const fs::path& dir, const SourceLocation& at,
                      fs::path& path, std::string& text) {
     if (!p || !p->has_value || p->value.empty()) {
@@ -208,8 +205,7 @@ class Lexer {
     path = dir / p->value;
     if (!read_file(path, text)) {
       _diag.error(at, fmt::format("INPUT={}", p->value),
-                  fmt::format("cannot read file '{}'; check the name (paths "
-                              "are relative to the "
+                  fmt::format("cannot read file '{}'; check the name (paths are relative to the "
                               "directory of the file that contains this line)",
                               path.lexically_normal().string()));
       return false;
@@ -223,8 +219,7 @@ class Lexer {
         _diag.error(kw.loc, p.name, "unknown parameter of *INCLUDE; only INPUT= is supported");
     if (depth >= kMaxIncludeDepth) {
       _diag.error(kw.loc, "",
-                  fmt::format("*INCLUDE nested deeper than {} levels; does a "
-                              "file include itself?",
+                  fmt::format("*INCLUDE nested deeper than {} levels; does a file include itself?",
                               kMaxIncludeDepth));
       return;
     }
@@ -247,8 +242,7 @@ class Lexer {
       const int lineno = static_cast<int>(i) + 1;
       if (is_keyword_line(lines[i])) {
         _diag.error(loc(file, lineno), "",
-                    fmt::format("keyword line in a data file read by {}, INPUT=; such a file "
-                                "holds "
+                    fmt::format("keyword line in a data file read by {}, INPUT=; such a file holds "
                                 "data lines only (use *INCLUDE for files with keywords)",
                                 kw.name));
         return;
@@ -289,8 +283,7 @@ Deck lex_file(const fs::path& deck, Diagnostics& diag) {
   std::string text;
   if (!read_file(deck, text))
     throw InputError(SourceLocation{deck.string(), 0, {}}, "",
-                     "cannot read the input deck; check the file name and that "
-                     "the file exists");
+                     "cannot read the input deck; check the file name and that the file exists");
   Lexer lexer(diag);
   return lexer.run(text, deck.string(), deck.parent_path());
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file lexer.hpp
-/// Splits an Abaqus input deck into keyword blocks: comment lines (**),
-/// keyword-line continuation (trailing comma), *INCLUDE (spliced in place,
-/// nested, relative to the including file) and INPUT= on data keywords (*NODE,
+/// Splits an Abaqus input deck into keyword blocks: comment lines (**), keyword-line continuation
+/// (trailing comma), *INCLUDE (spliced in place, nested, relative to the including file) and INPUT=
+/// on data keywords (*NODE,
 /// *ELEMENT, *NSET, *ELSET, *AMPLITUDE). Every keyword and data line keeps its
 /// file and line number.
 #include "io/inp/diagnostics.hpp"
@@ -15,17 +15,15 @@
 
 namespace gapfem::inp {
 
-/// The lexed deck: the files read (index = DataLine::file; [0] is the main
-/// deck) and the keywords in deck order (*INCLUDE keywords are resolved and do
-/// not appear).
+/// The lexed deck: the files read (index = DataLine::file; [0] is the main deck) and the keywords
+/// in deck order (*INCLUDE keywords are resolved and do not appear).
 struct Deck {
   std::vector<std::string> files;
   std::vector<Keyword> keywords;
 };
 
-/// Lexes a deck file. Problems (missing include files, data before the first
-/// keyword, malformed keyword lines) are reported to `diag`; a main deck that
-/// cannot be read throws InputError.
+/// Lexes a deck file. Problems (missing include files, data before the first keyword, malformed
+/// keyword lines) are reported to `diag`; a main deck that cannot be read throws InputError.
 Deck lex_file(const std::filesystem::path& deck, Diagnostics& diag);
 
 /// Lexes deck text held in memory. `name` is used as the file name in messages;

@@ -22,10 +22,8 @@ std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size
   const auto it = s.model.nsets.find(name);
   if (it != s.model.nsets.end()) return it->second;
   if (s.bad_sets.count(name)) return {};
-  r.fail(fmt::format("node set {}", name),
-         "this node set is not defined; define it with *NSET (or NSET= on "
-         "*NODE) before use, or "
-         "check the spelling");
+  r.fail(fmt::format("node set {}", name), "this node set is not defined; define it with *NSET (or "
+                                           "NSET= on *NODE) before use, or check the spelling");
 }
 
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field) {
@@ -44,8 +42,7 @@ std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::s
   if (const auto* set = find_elset(s, name)) return *set;
   if (s.bad_sets.count(name)) return {};
   r.fail(fmt::format("element set {}", name),
-         "this element set is not defined; define it with *ELSET (or ELSET= on "
-         "*ELEMENT) before "
+         "this element set is not defined; define it with *ELSET (or ELSET= on *ELEMENT) before "
          "use, or check the spelling");
 }
 
@@ -59,10 +56,11 @@ int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param) {
   const std::string name = name_param(kw, param, true);
   const auto it = s.amplitude_index.find(name);
   if (it == s.amplitude_index.end())
-    throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), name),
-                     fmt::format("amplitude {} is not defined; define it with *AMPLITUDE, NAME={} "
-                                 "before this keyword",
-                                 name, name));
+    throw InputError(
+        kw.loc, fmt::format("{}={}", display_upper(param), name),
+        fmt::format(
+            "amplitude {} is not defined; define it with *AMPLITUDE, NAME={} before this keyword",
+            name, name));
   return it->second;
 }
 
@@ -143,8 +141,7 @@ PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<co
                                   std::vector<std::string_view> names, RowCheck check) {
   if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
-                     "field-variable dependencies are not supported by gapfem; "
-                     "tabulate the data "
+                     "field-variable dependencies are not supported by gapfem; tabulate the data "
                      "against temperature only");
   const int nv = static_cast<int>(names.size());
   std::string layout;

@@ -1,9 +1,8 @@
 #pragma once
 /// @file model_builder.hpp
-/// The state shared by the keyword handlers while a deck is turned into a
-/// Model, and the helpers they use: locations, node/element/set references,
-/// amplitudes, enumerated parameters. The builder also binds elements to their
-/// properties and validates the model once the model data is complete
+/// The state shared by the keyword handlers while a deck is turned into a Model, and the helpers
+/// they use: locations, node/element/set references, amplitudes, enumerated parameters. The builder
+/// also binds elements to their properties and validates the model once the model data is complete
 /// (finish_model_data), and resolves the steps (handlers_step.cpp).
 #include "io/inp/diagnostics.hpp"
 #include "io/inp/fields.hpp"
@@ -37,8 +36,7 @@ struct StepScratch {
   bool amplitude_given = false; ///< *STEP, AMPLITUDE= was given
   bool transient = false;       ///< transient heat transfer / coupled procedure
   bool node_print_given = false, el_print_given = false, field_given = false;
-  /// Field-output requests of this step that asked for VARIABLE=PRESELECT or
-  /// ALL (index, all?).
+  /// Field-output requests of this step that asked for VARIABLE=PRESELECT or ALL (index, all?).
   std::vector<std::pair<int, bool>> preset_fields;
 };
 
@@ -50,8 +48,7 @@ struct BuildState {
   Diagnostics& diag;
   Model model;
 
-  // failed definitions: later references to these labels are skipped without
-  // another error
+  // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
   std::vector<SourceRef> node_src; ///< per node: its *NODE data line
@@ -64,8 +61,8 @@ struct BuildState {
   std::map<std::string, int> amplitude_index; ///< upper-case name → Model::amplitudes
   std::vector<std::string> solid_material;    ///< per solid section: material name
   std::vector<std::string> beam_material;     ///< per beam section: material name
-  /// Per spring section: its first data line (DOFs; blank for SPRINGA), read
-  /// once the element types of the ELSET are known.
+  /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
+  /// of the ELSET are known.
   std::vector<DataLine> spring_dof_line;
 
   Parent parent = Parent::None;
@@ -95,8 +92,8 @@ struct BuildState {
   }
 };
 
-/// Calls f(line) for every non-empty data line of `lines`; an InputError thrown
-/// by f is recorded and the next line is read.
+/// Calls f(line) for every non-empty data line of `lines`; an InputError thrown by f is recorded
+/// and the next line is read.
 template <typename F>
 void for_each_line(BuildState& s, std::span<const DataLine> lines, F&& f) {
   for (const DataLine& line : lines) {
@@ -114,39 +111,31 @@ void for_each_line(BuildState& s, const Keyword& kw, F&& f) {
   for_each_line(s, std::span<const DataLine>(kw.data), std::forward<F>(f));
 }
 
-/// Checks the property values of one table row; returns an error sentence or
-/// "".
+/// Checks the property values of one table row; returns an error sentence or "".
 using RowCheck = std::string (*)(const std::vector<double>& values);
-/// Reads rows of `names.size()` values plus an optional temperature column
-/// (Abaqus material-data layout) from `lines` into a table sorted by
-/// temperature. DEPENDENCIES > 0 on `kw` is rejected.
+/// Reads rows of `names.size()` values plus an optional temperature column (Abaqus material-data
+/// layout) from `lines` into a table sorted by temperature. DEPENDENCIES > 0 on `kw` is rejected.
 PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
                                   std::vector<std::string_view> names, RowCheck check);
 
 // ---------------------------------------------------------------- references
-/// Nodes named by a data field: a node label or an NSET name. Throws InputError
-/// naming the field when neither exists. Returns nothing (silently) for
-/// labels/sets whose definition already failed.
+/// Nodes named by a data field: a node label or an NSET name. Throws InputError naming the field
+/// when neither exists. Returns nothing (silently) for labels/sets whose definition already failed.
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
 /// Elements named by a data field: an element label or an ELSET name.
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field);
-/// Elements of an ELSET parameter value (upper-cased); throws when the set does
-/// not exist.
+/// Elements of an ELSET parameter value (upper-cased); throws when the set does not exist.
 const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name);
-/// Index of the amplitude named by the AMPLITUDE (or `param`) parameter, -1
-/// when absent.
+/// Index of the amplitude named by the AMPLITUDE (or `param`) parameter, -1 when absent.
 int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param = "AMPLITUDE");
 
 // ---------------------------------------------------------------- parameters
-/// Value of a parameter that must have one; throws InputError when
-/// missing/empty if required.
+/// Value of a parameter that must have one; throws InputError when missing/empty if required.
 std::string param_value(const Keyword& kw, std::string_view param, bool required);
-/// Upper-case name value (set, material and amplitude names): trimmed and upper
-/// case.
+/// Upper-case name value (set, material and amplitude names): trimmed and upper case.
 std::string name_param(const Keyword& kw, std::string_view param, bool required);
-/// An enumerated parameter: returns the index of the matching choice (compared
-/// canonically) or `def` when the parameter is absent; throws listing the
-/// choices when the value is not one.
+/// An enumerated parameter: returns the index of the matching choice (compared canonically) or
+/// `def` when the parameter is absent; throws listing the choices when the value is not one.
 int enum_param(const Keyword& kw, std::string_view param,
                std::initializer_list<std::string_view> choices, int def);
 /// YES/NO parameter; a bare parameter (no value) means YES.
@@ -165,9 +154,8 @@ void add_to_elset(BuildState& s, const std::string& name, const std::vector<Elem
 /// Face counts per element type for S1..Sn / Pn labels (0: no faces).
 int n_faces(ElementType type);
 
-/// Binds elements to properties, resolves materials, checks the model space and
-/// the gap definitions. Runs once, at the first *STEP or at the end of the
-/// deck.
+/// Binds elements to properties, resolves materials, checks the model space and the gap
+/// definitions. Runs once, at the first *STEP or at the end of the deck.
 void finish_model_data(BuildState& s);
 /// Final checks after the last keyword (open step, …).
 void finish_deck(BuildState& s);

@@ -1,7 +1,6 @@
-// Completing the model data: materials of sections, element → property binding,
-// spring DOFs, material options required by the element types, the model space,
-// and the gap checks that need element types and coordinates (spec
-// gap-elements.md §0b, §1.7, §2.2).
+// Completing the model data: materials of sections, element → property binding, spring DOFs,
+// material options required by the element types, the model space, and the gap checks that need
+// element types and coordinates (spec gap-elements.md §0b, §1.7, §2.2).
 #include "io/inp/handlers.hpp"
 
 #include <cmath>
@@ -58,16 +57,15 @@ int resolve_material(BuildState& s, const std::string& name, const SourceLocatio
   return -1;
 }
 
-/// Binds the elements of one property's ELSET; reports missing sets, wrong
-/// families and elements that already have a property.
+/// Binds the elements of one property's ELSET; reports missing sets, wrong families and elements
+/// that already have a property.
 void bind(BuildState& s, Kind kind, int index, const std::string& elset, const SourceLocation& loc,
           std::vector<SourceLocation>& owner_loc) {
   const auto* set = find_elset(s, elset);
   if (!set) {
     if (!s.bad_sets.count(elset))
       s.error(loc, fmt::format("ELSET={}", elset),
-              "this element set is not defined; define it with *ELSET or "
-              "ELSET= on *ELEMENT");
+              "this element set is not defined; define it with *ELSET or ELSET= on *ELEMENT");
     return;
   }
   bool family_reported = false, twice_reported = false;
@@ -76,16 +74,14 @@ void bind(BuildState& s, Kind kind, int index, const std::string& elset, const S
     if (kind_for(info.family) != kind) {
       if (!family_reported)
         s.error(loc, elem_name(s, e),
-                kind == Kind::Gap ? fmt::format("ELSET {} of *GAP must hold only gap "
-                                                "elements (GAPUNI, GAPCYL, "
-                                                "GAPSPHER, GAPUNIT, DGAP); remove this "
-                                                "element from the set",
-                                                elset)
-                                  : fmt::format("this element is in ELSET {} but a {} "
-                                                "element needs a {}, not a "
-                                                "{}; remove it from the set",
-                                                elset, info.name, keyword_of(kind_for(info.family)),
-                                                keyword_of(kind)));
+                kind == Kind::Gap
+                    ? fmt::format("ELSET {} of *GAP must hold only gap elements (GAPUNI, GAPCYL, "
+                                  "GAPSPHER, GAPUNIT, DGAP); remove this element from the set",
+                                  elset)
+                    : fmt::format("this element is in ELSET {} but a {} element needs a {}, not a "
+                                  "{}; remove it from the set",
+                                  elset, info.name, keyword_of(kind_for(info.family)),
+                                  keyword_of(kind)));
       family_reported = true;
       continue;
     }
@@ -93,9 +89,8 @@ void bind(BuildState& s, Kind kind, int index, const std::string& elset, const S
     if (ref.kind != Kind::None) {
       if (!twice_reported)
         s.error(loc, elem_name(s, e),
-                fmt::format("this element gets two property definitions, {} "
-                            "and {}; remove it "
-                            "from one of the two ELSETs",
+                fmt::format("this element gets two property definitions, {} and {}; remove it from "
+                            "one of the two ELSETs",
                             owner_loc[e].str(), loc.str()));
       twice_reported = true;
       continue;
@@ -114,8 +109,7 @@ void check_spring(BuildState& s, int index) {
   for (ElemId e : *set)
     if (s.model.mesh.elem_types[e] != type) {
       s.error(sec.loc, elem_name(s, e),
-              fmt::format("ELSET {} mixes spring types ({} and {}); use one "
-                          "*SPRING per type",
+              fmt::format("ELSET {} mixes spring types ({} and {}); use one *SPRING per type",
                           sec.elset, element_info(type).name,
                           element_info(s.model.mesh.elem_types[e]).name));
       return;
@@ -134,8 +128,7 @@ void check_spring(BuildState& s, int index) {
     if (type == ElementType::SPRINGA) {
       if (!line.empty())
         r.fail(fmt::format("ELSET={}", sec.elset),
-               "for SPRINGA elements the first data line must be blank (the "
-               "spring acts along the "
+               "for SPRINGA elements the first data line must be blank (the spring acts along the "
                "line between its nodes); put the stiffness on the second line");
     } else if (type == ElementType::SPRING1) {
       r.at_most(1, "DOF");
@@ -162,8 +155,7 @@ void check_space(BuildState& s) {
   const ElemId solid = first[static_cast<int>(SpaceRequirement::ThreeD)];
   auto clash = [&](ElemId a, ElemId b, const char* what) {
     s.error(s.model.element_location(b), elem_name(s, b),
-            fmt::format("{} cannot be mixed in one model: {} (defined at {}) "
-                        "and this element; use "
+            fmt::format("{} cannot be mixed in one model: {} (defined at {}) and this element; use "
                         "element types of one space only",
                         what, elem_name(s, a), s.model.element_location(a).str()));
   };
@@ -196,8 +188,7 @@ void check_gap(BuildState& s, const GapSection& gap) {
     }
     std::string problem;
     if ((t == ElementType::GAPCYL || t == ElementType::GAPSPHER) && gap.d == 0.0)
-      problem = "GAPCYL and GAPSPHER need a non-zero d (positive: maximum "
-                "separation, negative: "
+      problem = "GAPCYL and GAPSPHER need a non-zero d (positive: maximum separation, negative: "
                 "minimum separation)";
     else if (t == ElementType::GAPCYL && !gap.direction_given)
       problem = "GAPCYL needs the cylinder axis in fields 2-4 of the *GAP data line";
@@ -211,10 +202,8 @@ void check_gap(BuildState& s, const GapSection& gap) {
       const Vec3& a = mesh.coords[nodes[0]];
       const Vec3& b = mesh.coords[nodes[1]];
       if (std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]) <= tol)
-        problem = "the direction is computed from the node coordinates but the "
-                  "two nodes "
-                  "coincide; give the direction cosines in fields 2-4 of the "
-                  "*GAP data line";
+        problem = "the direction is computed from the node coordinates but the two nodes coincide; "
+                  "give the direction cosines in fields 2-4 of the *GAP data line";
     }
     if (!problem.empty()) {
       s.error(s.model.element_location(e), elem_name(s, e),
@@ -244,10 +233,11 @@ void check_materials(BuildState& s) {
     auto need = [&](int what, bool has, const char* option) {
       if (has || reported[{m, what}]) return;
       reported[{m, what}] = true;
-      s.error(mat.loc, fmt::format("material {}", mat.name),
-              fmt::format("{} (ELSET {}) needs {} but the material has none; add {} after "
-                          "*MATERIAL, NAME={}",
-                          elem_name(s, e), set, option, option, mat.name));
+      s.error(
+          mat.loc, fmt::format("material {}", mat.name),
+          fmt::format(
+              "{} (ELSET {}) needs {} but the material has none; add {} after *MATERIAL, NAME={}",
+              elem_name(s, e), set, option, option, mat.name));
     };
     if (info.displacement) need(0, mat.has_elastic(), "*ELASTIC");
     if (info.temperature) need(1, !mat.conductivity.empty(), "*CONDUCTIVITY");
@@ -284,8 +274,7 @@ void finish_model_data(BuildState& s) {
       bind(s, Kind::Gap, static_cast<int>(i), m.gap_sections[i].elset, m.gap_sections[i].loc,
            owner);
 
-    // elements without a property: one error per element type (naming the first
-    // element)
+    // elements without a property: one error per element type (naming the first element)
     std::map<ElementType, std::pair<ElemId, int>> missing;
     for (ElemId e = 0; e < m.mesh.n_elements(); ++e)
       if (m.element_property[e].kind == Kind::None) {

@@ -84,8 +84,7 @@ constexpr std::array<KeywordSpec, 51> kTable = {{
 }};
 // clang-format on
 
-/// The table minus the spare slots (the array size is a compile-time upper
-/// bound).
+/// The table minus the spare slots (the array size is a compile-time upper bound).
 std::span<const KeywordSpec> table() {
   std::size_t n = 0;
   while (n < kTable.size() && !kTable[n].name.empty()) ++n;
@@ -122,16 +121,14 @@ void unknown(BuildState& s, const SourceLocation& loc, const std::string& what) 
     s.warn(loc, what + " is not supported by gapfem and was ignored (--ignore-unknown)");
   else
     s.error(loc, "",
-            what + " is not supported by gapfem; remove it, or run with "
-                   "--ignore-unknown "
-                   "to skip it with a warning");
+            what + " is not supported by gapfem; remove it, or run with --ignore-unknown to skip "
+                   "it with a warning");
 }
 
 void dispatch(BuildState& s, Keyword& kw) {
   const KeywordSpec* spec = find_spec(kw.key);
   if (!spec) {
-    // unknown keyword: the current block stays open (an ignored *PLASTIC keeps
-    // its *MATERIAL)
+    // unknown keyword: the current block stays open (an ignored *PLASTIC keeps its *MATERIAL)
     unknown(s, kw.loc, fmt::format("the keyword {}", kw.name));
     return;
   }
@@ -140,9 +137,8 @@ void dispatch(BuildState& s, Keyword& kw) {
   if (s.model_done && !s.in_step && spec->handler != handle_step &&
       spec->handler != handle_end_step) {
     s.error(kw.loc, "",
-            fmt::format("{} between two steps; after the first *STEP every "
-                        "keyword belongs inside "
-                        "a step (between *STEP and *END STEP)",
+            fmt::format("{} after *END STEP; after the first *STEP every keyword belongs inside a "
+                        "step (between *STEP and *END STEP)",
                         kw.name));
     return;
   }
@@ -157,8 +153,7 @@ void dispatch(BuildState& s, Keyword& kw) {
   }
   if (history_keyword && !s.in_step) {
     s.error(kw.loc, "",
-            fmt::format("{} is history data; put it inside a step (between "
-                        "*STEP and *END STEP)",
+            fmt::format("{} is history data; put it inside a step (between *STEP and *END STEP)",
                         kw.name));
     return;
   }

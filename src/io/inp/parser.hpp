@@ -1,9 +1,8 @@
 #pragma once
 /// @file parser.hpp
-/// Dispatches the lexed keywords to their handlers through one table (keyword →
-/// handler, where it may appear, its parameters, the block it belongs to) and
-/// applies the reader's policies: unknown keywords and parameters, sub-option
-/// attachment, model vs history data.
+/// Dispatches the lexed keywords to their handlers through one table (keyword → handler, where it
+/// may appear, its parameters, the block it belongs to) and applies the reader's policies: unknown
+/// keywords and parameters, sub-option attachment, model vs history data.
 #include "io/inp/lexer.hpp"
 #include "io/inp/model_builder.hpp"
 
@@ -29,8 +28,7 @@ struct KeywordSpec {
 /// The keyword table (for docs and tests).
 std::span<const KeywordSpec> keyword_table();
 
-/// Runs all keywords of `deck` through their handlers into `s` (errors go to
-/// s.diag).
+/// Runs all keywords of `deck` through their handlers into `s` (errors go to s.diag).
 void parse_deck(Deck& deck, BuildState& s);
 
 } // namespace gapfem::inp

@@ -131,10 +131,10 @@ TEST(ReaderStep, ModelAndHistoryDataMustNotMix) {
   EXPECT_CONTAINS(error_text(with("*STEP\n*STATIC\n*NODE\n5\n*END STEP\n")),
                   "deck.inp:13: *NODE: *NODE is model data; move it before the first *STEP");
   EXPECT_CONTAINS(error_text(with("*STEP\n*STATIC\n*END STEP\n*NSET, NSET=A\n1\n")),
-                  "deck.inp:14: *NSET: *NSET between two steps");
+                  "deck.inp:14: *NSET: *NSET after *END STEP");
   EXPECT_CONTAINS(
       error_text(with("*STEP\n*STATIC\n*END STEP\n*CLOAD\n1, 1, 1.\n*STEP\n*STATIC\n*END STEP\n")),
-      "deck.inp:14: *CLOAD: *CLOAD between two steps");
+      "deck.inp:14: *CLOAD: *CLOAD after *END STEP");
 }
 
 TEST(ReaderStep, AmplitudeInHistoryData) {
