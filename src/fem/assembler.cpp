@@ -140,7 +140,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
 }
 
 void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
-                               const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K) {
+                               const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K,
+                               bool symmetrize) {
   ElementGather& g = _scratch[0];
   std::vector<double> fe, Ke;
   for (const ActiveLoad& al : loads) {
@@ -156,6 +157,12 @@ void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldVie
     if (K) {
       bool any = false;
       for (double v : Ke) any |= v != 0.0;
+      if (any && symmetrize)
+        for (std::size_t i = 0; i < nd; ++i)
+          for (std::size_t j = i + 1; j < nd; ++j) {
+            const double m = 0.5 * (Ke[i * nd + j] + Ke[j * nd + i]);
+            Ke[i * nd + j] = Ke[j * nd + i] = m;
+          }
       if (any) K->add_block(block.element_eqs(static_cast<std::size_t>(idx)),
                             block.element_eqs(static_cast<std::size_t>(idx)), Ke);
     }

@@ -36,9 +36,10 @@ public:
   AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
                           CsrMatrix* K, ConstraintBlock* C);
   /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
-  /// loads add -df/du to K if given.
+  /// loads add -df/du to K if given (only its symmetric part when `symmetrize`).
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
-                      const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K);
+                      const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K,
+                      bool symmetrize = true);
   /// Residual of one element at the given state (no tangent); out has n_dofs entries.
   void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
                         std::vector<double>& out, std::vector<LocalIndex>& slots);

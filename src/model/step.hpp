@@ -41,6 +41,9 @@ struct Step {
   bool nlgeom = false;
   int max_increments = 100;      ///< *STEP, INC=
   bool ramp_default = true;      ///< default amplitude variation: RAMP (true) or STEP
+  /// *STEP, UNSYMM=YES: keep the unsymmetric load stiffness of follower loads (unsymmetric solver);
+  /// by default its symmetric part is used, as in Abaqus/Standard
+  bool unsymmetric = false;
   Incrementation inc;
 
   std::vector<BoundaryEntry> boundary;

@@ -115,6 +115,8 @@ StepSummary Analysis::Impl::run_step(int index) {
   base.model_size = model.model_size();
   base.constants = &model.constants;
   StepProblem prob(disc, assembler, loads, st, base, pattern);
+  prob.set_unsymmetric_loads(step.unsymmetric);
+  prob.set_statistics(&stats);
 
   // SHRINK fits take the element's own overclosure at the start of the step.
   if (!loads.shrink_elements().empty()) {

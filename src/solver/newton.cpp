@@ -25,6 +25,15 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     res.reason = e.what();
     return res;
   }
+  // The flux scale of the increment is the largest average flux seen in any of its evaluations:
+  // a free thermal expansion has large thermal forces at the start and none at convergence.
+  std::array<double, kNumFields> flux = ev.flux;
+  if (p.rhs().empty() && p.constraints().n_rows() == 0) {
+    // every DOF is prescribed: nothing to solve, the evaluation gives the reactions
+    res.converged = true;
+    res.flux = flux;
+    return res;
+  }
   for (;;) {
     // ---- solve and update
     const auto& C = p.constraints();
@@ -56,6 +65,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.reason = e.what();
       return res;
     }
+    for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
     if (ev.status_changes > 0) {
       ++res.severe_iterations;
       for (ElemId e : ev.changed)
@@ -76,7 +86,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     double worst_ratio = 0.0;
     for (int f = 0; f < kNumFields; ++f) {
       if (!ev.has_field[f]) continue;
-      const double qt = (history.sum[f] + ev.flux[f]) / (history.n + 1);
+      const double qt = (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
       const double ratio = qt > 0 ? r / qt : (r > 0 ? std::numeric_limits<double>::infinity() : 0.0);
       worst_ratio = std::max(worst_ratio, ratio);
@@ -94,7 +104,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
                res.iterations, worst_ratio, ev.status_changes, ev.constraint_max);
     if (converged) {
       res.converged = true;
-      res.flux = ev.flux;
+      res.flux = flux;
       return res;
     }
     if (!std::isfinite(worst_ratio)) {

@@ -14,6 +14,8 @@ StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepL
       _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
       _constraint_tol(1e-10 * base.model_size) {}
 
+void StepProblem::set_unsymmetric_loads(bool on) { _unsymmetric_loads = on; }
+
 void StepProblem::begin_increment(double t0, double dt) {
   _ctx.dt = dt;
   _ctx.step_time = t0 + dt;
@@ -44,6 +46,7 @@ FieldView StepProblem::fields() const {
 }
 
 Evaluation StepProblem::evaluate() {
+  ScopedTimer timer(_stats, TimeCategory::Assembly);
   const FieldView f = fields();
   AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, &_K, &_C);
   std::fill(_s.f_ext.begin(), _s.f_ext.end(), 0.0);
@@ -51,8 +54,9 @@ Evaluation StepProblem::evaluate() {
   _loads.distributed_loads(_ctx.step_time, _active);
   bool follower = false;
   if (!_active.empty()) {
-    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_K);
-    for (const auto& a : _active) follower |= _ctx.nlgeom && a.load->kind == DistLoadKind::Pressure;
+    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_K, !_unsymmetric_loads);
+    for (const auto& a : _active)
+      follower |= _unsymmetric_loads && _ctx.nlgeom && a.load->kind == DistLoadKind::Pressure;
   }
   Evaluation ev;
   ev.status_changes = ar.status_changes;

@@ -2,6 +2,7 @@
 /// @file step_problem.hpp
 /// Adapts the discretization, the assembler and a step's loads to the NonlinearProblem interface:
 /// evaluation at the trial state of the current increment, corrections, reactions.
+#include "common/timer.hpp"
 #include "fem/assembler.hpp"
 #include "solver/nonlinear_problem.hpp"
 #include "solver/step_loads.hpp"
@@ -30,6 +31,10 @@ public:
   void begin_increment(double t0, double dt);
   /// Accept the trial state.
   void commit();
+  /// Keep the unsymmetric stiffness of follower loads (*STEP, UNSYMM=YES).
+  void set_unsymmetric_loads(bool on);
+  /// Where assembly time is accounted.
+  void set_statistics(RunStatistics* stats) { _stats = stats; }
 
   Evaluation evaluate() override;
   CsrMatrix& matrix() override { return _K; }
@@ -59,6 +64,8 @@ private:
   std::vector<double> _rhs;
   std::vector<ActiveLoad> _active;
   double _constraint_tol;
+  bool _unsymmetric_loads = false;
+  RunStatistics* _stats = nullptr;
 };
 
 } // namespace gapfem

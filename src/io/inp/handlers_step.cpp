@@ -110,8 +110,7 @@ void handle_step(BuildState& s, const Keyword& kw) {
   }
   reject_param(kw, "PERTURBATION", "gapfem runs general (nonlinear) steps only");
   st.nlgeom = yes_no_param(kw, "NLGEOM", false);
-  yes_no_param(kw, "UNSYMM",
-               false); // accepted: the solver picks the unsymmetric solver itself
+  st.unsymmetric = yes_no_param(kw, "UNSYMM", false);
   if (auto inc = int_param(kw, "INC")) {
     if (*inc < 1)
       throw InputError(kw.loc, "INC", "the maximum number of increments must be at least 1");
