@@ -41,6 +41,7 @@ struct StepContext {
   double dt = 0.0;           ///< increment size
   ModelSpace space = ModelSpace::ThreeD;
   double model_size = 1.0;   ///< bounding-box diagonal, for tolerances
+  int step_index = 0;        ///< 0-based index of the current step in Model::steps
   const PhysicalConstants* constants = nullptr;
 };
 
@@ -58,7 +59,13 @@ struct ElementInput {
   std::span<const double> state_start; ///< committed history (n_state)
   std::span<double> state;             ///< trial history, written by evaluate()
   std::span<double> multipliers;       ///< trial Lagrange multipliers (n_multipliers)
+  /// per local DOF: 1 when it is an unknown of the step, 0 when prescribed (empty: all free).
+  /// Constraint rows acting only on prescribed DOFs cannot be enforced by the solver.
+  std::span<const std::uint8_t> free;
   double interference = 0.0;           ///< gap elements: allowable interference v(t) now
+  /// gap elements: representative stiffness of the elements connected to the gap's nodes
+  /// (mean diagonal stiffness of their displacement DOFs), for automatic penalty stiffnesses
+  double stiffness_hint = 0.0;
   const StepContext* ctx = nullptr;
 };
 
@@ -73,6 +80,10 @@ struct ElementOutput {
   std::span<int> constraint_slot;     ///< which multiplier of the element each row belongs to
   std::span<double> constraint_value; ///< g_i(u); the solver drives it to 0
   std::span<double> constraint_coeff; ///< row-major n_multipliers x n_dofs: dg_i/du
+  /// d(residual)/d(lambda_i) per row when it differs from dg_i/du (e.g. friction forces that depend
+  /// on the normal multiplier); same layout as constraint_coeff; used only if has_columns
+  std::span<double> constraint_column;
+  bool has_columns = false;
 
   int status_changes = 0;   ///< contact status flips decided in this evaluation
   bool unsymmetric = false; ///< tangent is not symmetric (friction slip, coupled terms)
@@ -81,7 +92,10 @@ struct ElementOutput {
     const auto n = residual.size();
     constraint_slot[n_constraints] = slot;
     constraint_value[n_constraints] = value;
-    for (std::size_t i = 0; i < n; ++i) constraint_coeff[n_constraints * n + i] = coeff[i];
+    for (std::size_t i = 0; i < n; ++i) {
+      constraint_coeff[n_constraints * n + i] = coeff[i];
+      if (!constraint_column.empty()) constraint_column[n_constraints * n + i] = coeff[i];
+    }
     ++n_constraints;
   }
 };
@@ -158,6 +172,10 @@ public:
   virtual void initialize(const ElementInput& in) const {}
   /// Residual and tangent at the trial state; writes the trial history.
   virtual void evaluate(const ElementInput& in, ElementOutput& out) const = 0;
+  /// Augmented Lagrange: at a converged state, update the element's multiplier estimate when its
+  /// constraint is not yet met to its tolerance. Returns true when something changed (the Newton
+  /// iteration then continues).
+  virtual bool augment(const ElementInput& in) const { return false; }
 
   /// Can the element carry this distributed load on this face (0 = body)?
   virtual bool supports_load(DistLoadKind kind, int face) const { return false; }
@@ -167,6 +185,11 @@ public:
   virtual void load(const ElementInput& in, const DistributedLoad& load, double magnitude,
                     double sink_temperature, std::span<double> f_ext,
                     std::span<double> tangent) const {}
+
+  /// Heat stored in the element between in.u_start and in.u: the change of its internal energy
+  /// (heat capacity), the quantity whose rate the capacity terms of the residual carry. 0 for
+  /// elements without heat capacity. Used by the heat balance of transient steps.
+  virtual double stored_heat(const ElementInput& in) const { return 0.0; }
 
   /// Which element output variables the element has.
   virtual bool supports_output(ElemVar var) const { return false; }

@@ -104,11 +104,13 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           res.changed.push_back(block->elements[i]);
         }
         if (C)
-          for (int c = 0; c < out.n_constraints; ++c)
+          for (int c = 0; c < out.n_constraints; ++c) {
+            const auto off = static_cast<std::size_t>(c) * nd;
             _thread_constraints[t].add_row(
-                block->element_eqs(i), out.constraint_coeff.subspan(static_cast<std::size_t>(c) * nd, nd),
-                out.constraint_value[c],
-                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult + out.constraint_slot[c]);
+                block->element_eqs(i), out.constraint_coeff.subspan(off, nd), out.constraint_value[c],
+                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult + out.constraint_slot[c],
+                out.has_columns ? out.constraint_column.subspan(off, nd) : std::span<const double>{});
+          }
       }
     });
     if (multi)
@@ -117,10 +119,15 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     if (C)
       for (int t = 0; t < _threads; ++t) {
         const auto& tc = _thread_constraints[t];
+        if (tc.has_columns() && !C->has_columns()) C->dval = C->val;
         for (int r = 0; r < tc.n_rows(); ++r) {
           const auto b0 = tc.row_ptr[r], b1 = tc.row_ptr[r + 1];
           C->col.insert(C->col.end(), tc.col.begin() + b0, tc.col.begin() + b1);
           C->val.insert(C->val.end(), tc.val.begin() + b0, tc.val.begin() + b1);
+          if (C->has_columns()) {
+            const auto& src = tc.has_columns() ? tc.dval : tc.val;
+            C->dval.insert(C->dval.end(), src.begin() + b0, src.begin() + b1);
+          }
           C->row_ptr.push_back(static_cast<LocalIndex>(C->col.size()));
           C->g.push_back(tc.g[r]);
           C->multiplier.push_back(tc.multiplier[r]);
@@ -180,6 +187,38 @@ void Assembler::element_residual(ElemId e, const FieldView& fields, const StepCo
   out.assign(o.residual.begin(), o.residual.end());
   const auto s = block.element_slots(static_cast<std::size_t>(idx));
   slots.assign(s.begin(), s.end());
+}
+
+int Assembler::augment(const FieldView& fields, const StepContext& ctx) {
+  int changed = 0;
+  ElementGather& g = _scratch[0];
+  for (auto& b : _disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap) continue;
+    for (std::size_t i = 0; i < b.size(); ++i)
+      changed += b.kernel->augment(g.gather(_disc, b, i, fields, &ctx)) ? 1 : 0;
+  }
+  return changed;
+}
+
+std::vector<double> Assembler::diagonal_stiffness(const FieldView& fields, const StepContext& ctx,
+                                                  bool skip_gaps) {
+  std::vector<double> diag(static_cast<std::size_t>(_disc.dofs().n_slots()), 0.0);
+  ElementGather& g = _scratch[0];
+  std::vector<double> state_backup;
+  for (auto& b : _disc.blocks()) {
+    if (skip_gaps && element_info(b.type).family == ElementFamily::Gap) continue;
+    state_backup = b.state_trial;
+    const auto nd = static_cast<std::size_t>(b.n_dofs);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      ElementInput& in = g.gather(_disc, b, i, fields, &ctx);
+      ElementOutput& out = g.output(b, true);
+      b.kernel->evaluate(in, out);
+      const auto slots = b.element_slots(i);
+      for (std::size_t k = 0; k < nd; ++k) diag[slots[k]] += std::abs(out.tangent[k * nd + k]);
+    }
+    b.state_trial = state_backup; // evaluation must not leave trial history behind
+  }
+  return diag;
 }
 
 void Assembler::recover(ElemId e, const FieldView& fields, const StepContext& ctx,

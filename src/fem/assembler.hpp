@@ -43,6 +43,11 @@ public:
   /// Residual of one element at the given state (no tangent); out has n_dofs entries.
   void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
                         std::vector<double>& out, std::vector<LocalIndex>& slots);
+  /// Augmented-Lagrange updates of all elements (at a converged state); returns how many changed.
+  int augment(const FieldView& fields, const StepContext& ctx);
+  /// Per-slot diagonal of the tangent of all elements (optionally without gap elements).
+  std::vector<double> diagonal_stiffness(const FieldView& fields, const StepContext& ctx,
+                                         bool skip_gaps);
   /// Output quantities of one element at the given state.
   void recover(ElemId e, const FieldView& fields, const StepContext& ctx, ElementRecovery& out);
 

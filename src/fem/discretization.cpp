@@ -70,7 +70,10 @@ Discretization::Discretization(const Model& model) : _model(model) {
       _mult_blocks.emplace_back(static_cast<int>(bi), _n_mult);
       _n_mult += static_cast<std::int64_t>(b.size()) * b.n_mult;
     }
-    if (element_info(b.type).family == ElementFamily::Gap) b.interference.assign(b.size(), 0.0);
+    if (element_info(b.type).family == ElementFamily::Gap) {
+      b.interference.assign(b.size(), 0.0);
+      b.stiffness_hint.assign(b.size(), 0.0);
+    }
   }
   // Validate and initialise every element (reference configuration, zero displacement).
   std::vector<double> zero(static_cast<std::size_t>(_dofs.n_slots()), 0.0);

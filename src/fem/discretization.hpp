@@ -26,6 +26,7 @@ struct ElementBlock {
   std::vector<double> mult_committed, mult_trial;    ///< elements.size() x n_mult
   std::int64_t mult_offset = 0;        ///< first global multiplier index of the block
   std::vector<double> interference;    ///< per element, current allowance v(t) (gap blocks)
+  std::vector<double> stiffness_hint;  ///< per element (gap blocks), see ElementInput
 
   std::size_t size() const { return elements.size(); }
   std::span<const LocalIndex> element_slots(std::size_t i) const {

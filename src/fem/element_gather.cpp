@@ -48,7 +48,14 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   }
   if (block.n_mult > 0)
     _in.multipliers = {block.mult_trial.data() + i * block.n_mult, static_cast<std::size_t>(block.n_mult)};
+  if (!block.eqs.empty()) {
+    const auto eqs = block.element_eqs(i);
+    _free.resize(eqs.size());
+    for (std::size_t k = 0; k < eqs.size(); ++k) _free[k] = eqs[k] >= 0 ? 1 : 0;
+    _in.free = _free;
+  }
   if (!block.interference.empty()) _in.interference = block.interference[i];
+  if (!block.stiffness_hint.empty()) _in.stiffness_hint = block.stiffness_hint[i];
   _in.ctx = ctx;
   return _in;
 }
@@ -61,6 +68,7 @@ ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangen
   _cslot.assign(m, 0);
   _cval.assign(m, 0.0);
   _ccoef.assign(m * n, 0.0);
+  _ccol.assign(m * n, 0.0);
   _out = ElementOutput{};
   _out.residual = _r;
   _out.tangent = _K;
@@ -68,6 +76,7 @@ ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangen
   _out.constraint_slot = _cslot;
   _out.constraint_value = _cval;
   _out.constraint_coeff = _ccoef;
+  _out.constraint_column = _ccol;
   return _out;
 }
 

@@ -34,8 +34,9 @@ private:
   std::vector<Vec3> _X;
   std::vector<double> _u, _u0, _T, _T0, _Ti;
   std::vector<double> _r, _K;
+  std::vector<std::uint8_t> _free;
   std::vector<int> _cslot;
-  std::vector<double> _cval, _ccoef;
+  std::vector<double> _cval, _ccoef, _ccol;
 };
 
 } // namespace gapfem

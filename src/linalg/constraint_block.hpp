@@ -14,6 +14,9 @@ struct ConstraintBlock {
   std::vector<LocalIndex> row_ptr{0};
   std::vector<LocalIndex> col;
   std::vector<double> val;
+  /// Optional: d(residual)/d(lambda) per row in the same layout as val (the column block D of the
+  /// system [K D; C 0]); empty when D = C^T for every row.
+  std::vector<double> dval;
   std::vector<double> g;                  ///< g_i(u); the Newton step drives it to 0
   std::vector<std::int64_t> multiplier;   ///< index of the row's multiplier in the model storage
 
@@ -22,17 +25,21 @@ struct ConstraintBlock {
     row_ptr.assign(1, 0);
     col.clear();
     val.clear();
+    dval.clear();
     g.clear();
     multiplier.clear();
   }
   /// Append a row: equation numbers (negative = prescribed DOF, skipped) and coefficients.
   /// Returns false (and appends nothing) when no coefficient falls on a free equation.
   bool add_row(std::span<const LocalIndex> eqs, std::span<const double> coeff, double value,
-               std::int64_t multiplier_index);
+               std::int64_t multiplier_index, std::span<const double> column = {});
+  bool has_columns() const { return !dval.empty(); }
   /// y = C x
   void multiply(std::span<const double> x, std::span<double> y) const;
   /// x += alpha * C^T y
   void add_transpose_multiply(std::span<const double> y, double alpha, std::span<double> x) const;
+  /// x += alpha * D y (D = C^T when no columns were given)
+  void add_column_multiply(std::span<const double> y, double alpha, std::span<double> x) const;
 };
 
 } // namespace gapfem

@@ -59,6 +59,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
                                const KktOptions& opt, RunStatistics* stats) {
   FE_CHECK(_pattern && K.n() == _pattern->n, "KKT solver not analysed for this pattern");
   KktStatistics out;
+  // The multiplier system is solved by CG when [K D; C 0] is symmetric, by GMRES otherwise.
   _solves = 0;
   const LocalIndex n = K.n();
   const int m = C.n_rows();
@@ -118,9 +119,10 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
   for (int r = 0; r < m; ++r) rhs[r] += C.g[r];
   std::fill(dl.begin(), dl.end(), 0.0);
   std::vector<double> w(static_cast<std::size_t>(n)), tmp(static_cast<std::size_t>(n));
+  // S v = C M^-1 D v  (D = C^T unless the rows carry their own residual columns)
   auto apply_S = [&](std::span<const double> v, std::span<double> Sv, std::span<double> Minv_Ct_v) {
     std::fill(tmp.begin(), tmp.end(), 0.0);
-    C.add_transpose_multiply(v, 1.0, tmp);
+    C.add_column_multiply(v, 1.0, tmp);
     back_solve(tmp, Minv_Ct_v, stats);
     C.multiply(Minv_Ct_v, Sv);
   };
@@ -133,7 +135,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
   std::vector<double> res(rhs);
   std::copy(y.begin(), y.end(), du.begin()); // du = y - M^-1 C^T dl, accumulated
 
-  if (!out.used_unsymmetric) {
+  if (!out.used_unsymmetric && !C.has_columns()) {
     // Preconditioned CG (S symmetric positive (semi)definite, preconditioner R).
     std::vector<double> z(static_cast<std::size_t>(m)), p(static_cast<std::size_t>(m)),
         Sp(static_cast<std::size_t>(m));

@@ -44,7 +44,7 @@ struct StepChecks {
   double force_scale = 0.0;             ///< for judging equilibrium_error
   bool thermal = false;
   double reaction_flux_sum = 0.0, applied_flux_sum = 0.0, stored_heat = 0.0, heat_balance_error = 0.0;
-  double max_damping_force = 0.0;
+  double max_damping_force = 0.0; ///< largest gap damping force in any increment of the step
 };
 
 /// The committed state at one output point, with what is due at this point.

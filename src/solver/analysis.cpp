@@ -60,6 +60,9 @@ struct Analysis::Impl {
   }
 
   StepSummary run_step(int index);
+  /// Largest |damping force| of the gaps at the current state (0 when no gap has damping).
+  double damping_peak(StepProblem& prob);
+  double step_damping_peak = 0.0;
   void write_frame(int index, StepProblem& prob, int increment, bool last, double dt);
   StepChecks checks(StepProblem& prob);
 };
@@ -114,9 +117,12 @@ StepSummary Analysis::Impl::run_step(int index) {
   base.space = model.space;
   base.model_size = model.model_size();
   base.constants = &model.constants;
+  base.step_index = index;
   StepProblem prob(disc, assembler, loads, st, base, pattern);
   prob.set_unsymmetric_loads(step.unsymmetric);
   prob.set_statistics(&stats);
+  prob.begin_increment(0.0, 0.0);
+  prob.compute_stiffness_hints();
 
   // SHRINK fits take the element's own overclosure at the start of the step.
   if (!loads.shrink_elements().empty()) {
@@ -140,6 +146,7 @@ StepSummary Analysis::Impl::run_step(int index) {
   IncrementController ctrl(step.inc, step.max_increments);
   FluxHistory flux;
   NewtonControls controls;
+  step_damping_peak = 0.0;
   std::string last_problem;
   while (!ctrl.finished()) {
     if (ctrl.increment() >= step.max_increments) {
@@ -175,6 +182,7 @@ StepSummary Analysis::Impl::run_step(int index) {
       ctrl.accept(res.iterations - res.severe_iterations);
       ++stats.increments;
       ++sum.increments;
+      step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
       write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
       continue;
     }
@@ -211,6 +219,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     loads.finish(ctrl.period(), prob.reactions(), history);
   }
   sum.checks = checks(prob);
+  sum.checks.max_damping_force = std::max(sum.checks.max_damping_force, step_damping_peak);
   for (auto* w : writers) w->end_step(model, index, sum);
   st.total_time += ctrl.step_time();
   return sum;
@@ -307,6 +316,23 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
     assembler.recover(e, fields, prob.context(), fr.elements.back().data);
   }
   for (auto* w : writers) w->frame(model, index, fr);
+}
+
+double Analysis::Impl::damping_peak(StepProblem& prob) {
+  bool any = false;
+  for (const GapSection& g : model.gap_sections) any |= g.damping.given;
+  if (!any) return 0.0;
+  double peak = 0.0;
+  ElementRecovery rec;
+  const FieldView fields = prob.fields();
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (rec.gap) peak = std::max(peak, std::abs(rec.gap->damping_force));
+    }
+  }
+  return peak;
 }
 
 StepChecks Analysis::Impl::checks(StepProblem& prob) {

@@ -103,9 +103,29 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     log::debug("  iteration {}: residual/flux {:.3e}, status changes {}, constraint {:.3e}",
                res.iterations, worst_ratio, ev.status_changes, ev.constraint_max);
     if (converged) {
-      res.converged = true;
-      res.flux = flux;
-      return res;
+      const int augmented = p.augment();
+      if (augmented == 0) {
+        res.converged = true;
+        res.flux = flux;
+        return res;
+      }
+      // The augmented multipliers change the residual: re-evaluate and keep iterating.
+      if (++res.augmentations > c.max_augmentations) {
+        res.reason = fmt::format("augmented Lagrange did not reach its penetration tolerance in {} "
+                                 "augmentations; increase the penalty stiffness",
+                                 c.max_augmentations);
+        return res;
+      }
+      try {
+        ev = p.evaluate();
+      } catch (const ConvergenceFailure& e) {
+        res.reason = e.what();
+        return res;
+      }
+      equilibrium_iterations = 0;
+      increases = 0;
+      previous_ratio = std::numeric_limits<double>::infinity();
+      continue;
     }
     if (!std::isfinite(worst_ratio)) {
       res.reason = "the residual is not finite";

@@ -22,6 +22,7 @@ struct NewtonControls {
   int divergence_check_after = 4;      ///< I_0
   int max_severe_iterations = 12;      ///< contact status iterations per attempt
   int chatter_flips = 4;               ///< one element flipping this often is chattering
+  int max_augmentations = 25;          ///< augmented-Lagrange updates per increment
 };
 
 struct FluxHistory {
@@ -33,6 +34,7 @@ struct NewtonResult {
   bool converged = false;
   int iterations = 0;        ///< linear solves of the Newton system
   int severe_iterations = 0; ///< iterations that changed contact status
+  int augmentations = 0;     ///< augmented-Lagrange updates
   std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
   std::string reason;        ///< why it did not converge
   std::vector<ElemId> chattering;

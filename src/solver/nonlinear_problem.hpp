@@ -41,6 +41,9 @@ public:
   virtual std::array<double, kNumFields> increment_max() const = 0;
   /// Closed-gap clearance tolerance (length).
   virtual double constraint_tolerance() const = 0;
+  /// Augmented Lagrange: at a converged state, update multiplier estimates that do not yet meet
+  /// their tolerance. Returns how many changed (0: the state is final).
+  virtual int augment() { return 0; }
 };
 
 } // namespace gapfem

@@ -94,6 +94,32 @@ void StepProblem::apply(std::span<const double> du, std::span<const double> dl) 
   for (int r = 0; r < _C.n_rows(); ++r) _disc.multiplier_trial(_C.multiplier[r]) += dl[r];
 }
 
+int StepProblem::augment() {
+  if (!_disc.has_gaps()) return 0;
+  return _asm.augment(fields(), _ctx);
+}
+
+void StepProblem::compute_stiffness_hints() {
+  if (!_disc.has_gaps()) return;
+  StepContext ctx = _ctx;
+  if (ctx.dt <= 0) ctx.dt = ctx.step_period; // transient terms need a finite increment
+  const std::vector<double> diag = _asm.diagonal_stiffness(fields(), ctx, /*skip_gaps=*/true);
+  const DofMap& dofs = _disc.dofs();
+  for (auto& b : _disc.blocks()) {
+    if (b.stiffness_hint.empty()) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      double sum = 0.0;
+      int n = 0;
+      for (LocalIndex s : b.element_slots(i))
+        if (dofs.slot_field(s) == Field::Displacement && diag[s] > 0) {
+          sum += diag[s];
+          ++n;
+        }
+      b.stiffness_hint[i] = n > 0 ? sum / n : 0.0;
+    }
+  }
+}
+
 Field StepProblem::equation_field(LocalIndex eq) const {
   return _disc.dofs().slot_field(_loads.equations().eq_slot[eq]);
 }

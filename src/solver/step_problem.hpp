@@ -44,6 +44,10 @@ public:
   Field equation_field(LocalIndex eq) const override;
   std::array<double, kNumFields> increment_max() const override;
   double constraint_tolerance() const override { return _constraint_tol; }
+  int augment() override;
+  /// Representative stiffness of the non-gap elements at every gap element's DOFs (mean diagonal
+  /// of their displacement DOFs), stored for the kernels' automatic penalty stiffnesses.
+  void compute_stiffness_hints();
 
   FieldView fields() const;
   const EquationMap& equations() const { return _loads.equations(); }

@@ -1,9 +1,12 @@
 #pragma once
 /// @file mechanical_gap.hpp
 /// GAPUNI, GAPCYL and GAPSPHER (and the mechanical part of GAPUNIT): kinematics from
-/// gap_kinematics, the normal behaviour either as exact hard contact (a Lagrange multiplier and an
-/// active-set status decided at every evaluation) or as a force law (normal_law.hpp).
+/// gap_kinematics, the normal behaviour either as exact hard contact (a Lagrange multiplier with an
+/// active-set status decided at every evaluation), augmented Lagrange, or a force law
+/// (normal_law.hpp); Coulomb friction (friction.hpp) with an elastic-slip stick or exact (LAGRANGE,
+/// ROUGH) stick multipliers; contact damping. docs/theory/gap_elements.md has the equations.
 #include "elements/element_kernel.hpp"
+#include "elements/gap/friction.hpp"
 #include "elements/gap/gap_kinematics.hpp"
 #include "elements/gap/normal_law.hpp"
 
@@ -14,14 +17,20 @@ namespace gapfem {
 
 /// History layout of a mechanical gap (doubles per element).
 struct GapStateLayout {
-  static constexpr int status = 0;    ///< ContactStatus as a number
-  static constexpr int direction = 1; ///< last well-defined closure direction (3)
-  static constexpr int size = 4;
+  static constexpr int status = 0;      ///< ContactStatus as a number
+  static constexpr int direction = 1;   ///< closure direction (3): the increment's slip basis
+  static constexpr int slip = 4;        ///< accumulated slip in t1, t2 (E12, E13)
+  static constexpr int plastic = 6;     ///< plastic slip / stick point in t1, t2
+  static constexpr int dissipation = 8; ///< accumulated frictional dissipation
+  static constexpr int lambda_aug = 9;  ///< augmented-Lagrange multiplier estimate
+  static constexpr int slip_dir = 10;   ///< slip direction (Lagrange friction), 2
+  static constexpr int damping = 12;    ///< damping forces of the increment: normal, t1, t2
+  static constexpr int size = 15;
 };
 
 class MechanicalGapKernel final : public ElementKernel {
 public:
-  MechanicalGapKernel(const KernelContext& ctx);
+  explicit MechanicalGapKernel(const KernelContext& ctx);
 
   ElementType type() const override { return _type; }
   std::span<const DofType> node_dofs(int) const override { return _dofs; }
@@ -30,26 +39,39 @@ public:
   std::string validate(const ElementInput& in) const override;
   void initialize(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  bool augment(const ElementInput& in) const override;
   bool supports_output(ElemVar v) const override { return v == ElemVar::S || v == ElemVar::E; }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 
+  /// Characteristic length of element `block_index` (attached elements' mean size).
+  double characteristic_length(LocalIndex block_index) const { return _lc[block_index]; }
+
 private:
-  struct Local {
-    GapGeometry geom;
-    Eigen::Vector3d u1, u2;
-    GapGeometryParams params;
-  };
-  void kinematics(const ElementInput& in, Local& out) const;
+  enum class NormalMode { Direct, Force, Augmented };
+  struct Response; // everything one evaluation computes
+  void respond(const ElementInput& in, std::span<double> state, std::span<double> mult,
+               ElementOutput* out, Response& r) const;
+  GapGeometry geometry(const ElementInput& in, std::span<const double> u,
+                       std::span<const double> state) const;
   GapGeometryParams params_for(const ElementInput& in) const;
+  const FrictionLaw* friction_for(const ElementInput& in) const;
+  double augmented_stiffness(const ElementInput& in) const;
 
   ElementType _type;
   const GapSection& _section;
   GapGeometryParams _base;
   bool _computed_direction = false;
-  int _dim = 3;               ///< displacement components per node (2 in planar/axisymmetric models)
-  int _per_node = 3;          ///< local DOFs per node
+  int _dim = 3;      ///< displacement components per node (2 in planar/axisymmetric models)
+  int _per_node = 3; ///< local DOFs per node
   std::vector<DofType> _dofs;
-  std::unique_ptr<NormalForceLaw> _law; ///< null: exact hard contact
+  NormalMode _mode = NormalMode::Direct;
+  bool _no_separation = false;
+  std::unique_ptr<NormalForceLaw> _law;
+  double _augmented_k = 0.0; ///< 0: automatic
+  std::vector<FrictionLaw> _friction;          ///< [0] the section's (if any), then *CHANGE FRICTION
+  std::vector<std::vector<std::pair<int, int>>> _friction_schedule; ///< per element: (step, law)
+  int _section_friction = -1;
+  std::vector<double> _lc; ///< per element of the block
   double _length_scale = 1.0;
 };
 

@@ -23,8 +23,9 @@ GapSection section(double d, Vec3 dir = {0, 0, 0}, double area = 1.0) {
   return s;
 }
 
+const std::vector<ElemId> kOnlyElement{0};
 std::unique_ptr<ElementKernel> kernel_for(const Model& m) {
-  return make_gap_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0], {}});
+  return make_gap_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0], kOnlyElement});
 }
 
 // Central differences of the residual (multiplier fixed) and of g against the tangent and the

@@ -36,12 +36,18 @@ struct SingleElement {
   std::vector<Vec3> X;
   std::vector<double> u, u0, state, state0, mult;
   StepContext ctx;
-  std::vector<double> r, K, cval, ccoef;
+  double stiffness_hint = 0.0;
+  std::vector<double> r, K, cval, ccoef, ccol;
+  bool has_columns = false;
+  bool unsymmetric = false;
   std::vector<int> cslot;
   int n_constraints = 0;
   int status_changes = 0;
   double interference = 0.0;
 
+  static inline const std::vector<ElemId> kFirst{0};
+  explicit SingleElement(const Model& m)
+      : SingleElement(m, make_element_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0], kFirst})) {}
   SingleElement(const Model& m, std::unique_ptr<ElementKernel> k) : kernel(std::move(k)) {
     X = m.mesh.coords;
     const int nd = kernel->n_dofs();
@@ -51,6 +57,7 @@ struct SingleElement {
     mult.assign(kernel->n_multipliers(), 0.0);
     ctx.space = m.space;
     ctx.model_size = m.model_size();
+    ctx.dt = 1.0;
     auto in = input();
     kernel->initialize(in);
     state0 = state;
@@ -64,6 +71,7 @@ struct SingleElement {
     in.state = state;
     in.multipliers = mult;
     in.interference = interference;
+    in.stiffness_hint = stiffness_hint;
     in.ctx = &ctx;
     return in;
   }
@@ -75,16 +83,20 @@ struct SingleElement {
     cslot.assign(m, 0);
     cval.assign(m, 0.0);
     ccoef.assign(m * nd, 0.0);
+    ccol.assign(m * nd, 0.0);
     ElementOutput out;
     out.residual = r;
     out.tangent = K;
     out.constraint_slot = cslot;
     out.constraint_value = cval;
     out.constraint_coeff = ccoef;
+    out.constraint_column = ccol;
     auto in = input();
     kernel->evaluate(in, out);
     n_constraints = out.n_constraints;
     status_changes = out.status_changes;
+    has_columns = out.has_columns;
+    unsymmetric = out.unsymmetric;
   }
   GapRecord record() {
     ElementRecovery rec;
