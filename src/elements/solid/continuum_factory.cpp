@@ -1,5 +1,6 @@
 // make_continuum_kernel: the continuum stress/displacement element family.
 #include "elements/solid/continuum_factory.hpp"
+#include "elements/solid/coupled_continuum.hpp"
 
 #include "model/model.hpp"
 
@@ -41,11 +42,6 @@ void check_gravity_density(const KernelContext& ctx, const Material& mat) {
 
 std::unique_ptr<ElementKernel> make_continuum_kernel(const KernelContext& ctx) {
   const ElementTypeInfo& info = element_info(ctx.type);
-  if (info.temperature)
-    throw InputError(first_location(ctx), first_entity(ctx),
-                     fmt::format("{} coupled temperature-displacement elements arrive with the "
-                                 "thermal procedures; they are not available yet",
-                                 info.name));
   if (ctx.property.kind != PropertyRef::Kind::Solid || ctx.property.index < 0 ||
       ctx.property.index >= static_cast<int>(ctx.model.solid_sections.size()))
     throw InputError(
@@ -80,6 +76,8 @@ std::unique_ptr<ElementKernel> make_continuum_kernel(const KernelContext& ctx) {
   setup.needs_temperature =
       !mat.expansion.empty() || mat.elastic.keys.size() > 1 || mat.density.keys.size() > 1;
 
+  if (info.temperature) // coupled temperature-displacement types (coupled_continuum.hpp)
+    if (auto k = make_coupled_continuum_kernel(ctx, setup, sec.thickness)) return k;
   if (auto k = make_continuum_3d(ctx.type, setup)) return k;
   if (auto k = make_continuum_2d(ctx.type, std::move(setup))) return k;
   throw InputError(first_location(ctx), first_entity(ctx),

@@ -166,6 +166,38 @@ class ContinuumKernel final : public ElementKernel {
     }
   }
 
+  /// Coupled temperature-displacement elements (coupled_continuum.hpp): the derivative of the
+  /// residual with respect to the nodal temperatures in.temperature (thermal strain and
+  /// temperature-dependent elasticity at each point), NDOF x NN row-major, overwritten. The strain
+  /// (B-bar included) does not depend on temperature, so d r / d T_b = sum_q B^T dS/dT N_b dV.
+  void temperature_tangent(const ElementInput& in, std::span<double> dr_dT) const {
+    FE_CHECK(dr_dT.size() == static_cast<std::size_t>(NDOF * NN) &&
+                 in.temperature.size() == static_cast<std::size_t>(NN),
+             "temperature_tangent: sizes");
+    std::fill(dr_dT.begin(), dr_dT.end(), 0.0);
+    Work w;
+    compute(in, w);
+    for (int q = 0; q < NIP; ++q) {
+      const Ip& p = w.ip[q];
+      double T = 0.0;
+      for (int a = 0; a < NN; ++a) T += _N[q](a) * in.temperature[a];
+      const double deth = _setup.material.thermal_strain_derivative(T);
+      double dlambda = 0.0, dmu = 0.0;
+      if (!_const_elastic) elastic_derivatives(T, dlambda, dmu);
+      const ElasticPoint& law = p.law;
+      double tr = 0.0;
+      for (int c = 0; c < NNRM; ++c) tr += p.E(c) - law.eps_th;
+      VecS dS;
+      for (int c = 0; c < NNRM; ++c)
+        dS(c) = dlambda * tr + 2.0 * dmu * (p.E(c) - law.eps_th) -
+                deth * (law.lambda * NNRM + 2.0 * law.mu);
+      for (int c = NNRM; c < NS; ++c) dS(c) = dmu * p.E(c);
+      const VecD col = p.dV * (p.B.transpose() * dS);
+      for (int i = 0; i < NDOF; ++i)
+        for (int b = 0; b < NN; ++b) dr_dT[i * NN + b] += col(i) * _N[q](b);
+    }
+  }
+
   bool supports_load(DistLoadKind kind, int face) const override {
     if (kind == DistLoadKind::Pressure)
       return face >= 1 && face <= static_cast<int>(element_faces(Tr::shape).size());
@@ -280,6 +312,25 @@ class ContinuumKernel final : public ElementKernel {
     double R = 0.0;
     for (int a = 0; a < NN; ++a) R += _N[q](a) * in.X[a][0];
     return R;
+  }
+
+  /// d lambda / dT (the effective lambda of the kinematics) and d mu / dT from the *ELASTIC table.
+  void elastic_derivatives(double T, double& dlambda, double& dmu) const {
+    std::array<double, 2> v{}, dv{};
+    _setup.material.elastic.evaluate(T, v, dv);
+    const double E = v[0], nu = v[1], dE = dv[0], dnu = dv[1];
+    dmu = dE / (2.0 * (1.0 + nu)) - E * dnu / (2.0 * (1.0 + nu) * (1.0 + nu));
+    const double D = (1.0 + nu) * (1.0 - 2.0 * nu);
+    const double dD = dnu * (1.0 - 2.0 * nu) - 2.0 * dnu * (1.0 + nu);
+    const double l3 = E * nu / D;
+    const double dl3 = (dE * nu + E * dnu) / D - E * nu * dD / (D * D);
+    if constexpr (kKin == Kinematics::PlaneStress) {
+      const double mu = E / (2.0 * (1.0 + nu));
+      const double s = l3 + 2.0 * mu;
+      dlambda = (2.0 * (dl3 * mu + l3 * dmu) * s - 2.0 * l3 * mu * (dl3 + 2.0 * dmu)) / (s * s);
+    } else {
+      dlambda = dl3;
+    }
   }
 
   double mean_temperature(const ElementInput& in) const {

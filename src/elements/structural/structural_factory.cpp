@@ -2,6 +2,7 @@
 #include "elements/structural/structural_factory.hpp"
 
 #include "elements/structural/beam.hpp"
+#include "elements/structural/coupled_truss.hpp"
 #include "elements/structural/spring.hpp"
 #include "elements/structural/truss.hpp"
 #include "model/model.hpp"
@@ -88,16 +89,14 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
     return make_truss_kernel(ctx);
   case ElementType::B31:
     return make_beam_kernel(ctx);
+  case ElementType::T2D2T:
+  case ElementType::T3D2T:
+    return make_coupled_truss_kernel(ctx);
   default:
     break;
   }
   const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
   const std::string_view name = element_info(ctx.type).name;
-  if (ctx.type == ElementType::T2D2T || ctx.type == ElementType::T3D2T)
-    throw InputError(ctx.model.element_location(e),
-                     fmt::format("{} (coupled temperature-displacement truss) elements are not "
-                                 "available yet; use {} in a stress analysis",
-                                 name, ctx.type == ElementType::T2D2T ? "T2D2" : "T3D2"));
   throw InputError(ctx.model.element_location(e),
                    fmt::format("{} is not a spring, truss or beam element type", name));
 }

@@ -1,0 +1,64 @@
+// Instantiations of the coupled temperature-displacement continuum kernels.
+#include "elements/solid/coupled_continuum.hpp"
+
+#include "elements/heat/heat_kernel.hpp"
+#include "model/model.hpp"
+
+namespace gapfem {
+
+InitialTemperatures block_initial_temperatures(const KernelContext& ctx) {
+  InitialTemperatures it;
+  const Model& m = ctx.model;
+  it.n_nodes = element_info(ctx.type).n_nodes;
+  bool any = false;
+  for (double t : m.initial_temperature) any |= t != 0.0;
+  if (!any) return it;
+  it.values.reserve(ctx.elements.size() * static_cast<std::size_t>(it.n_nodes));
+  for (ElemId e : ctx.elements)
+    for (NodeId n : m.mesh.element_nodes(e)) it.values.push_back(m.initial_temperature[n]);
+  return it;
+}
+
+namespace {
+
+template <ElementType Base, Shape S, Kinematics K, bool BBar, HeatGeometry G>
+std::unique_ptr<ElementKernel> make(const KernelContext& ctx, ContinuumSetup setup,
+                                    HeatMaterial heat, double thickness) {
+  return std::make_unique<CoupledContinuumKernel<ContinuumTraits<Base, S, K, BBar>, G>>(
+      ctx.type, std::move(setup), std::move(heat), thickness, block_initial_temperatures(ctx));
+}
+
+} // namespace
+
+std::unique_ptr<ElementKernel>
+make_coupled_continuum_kernel(const KernelContext& ctx, ContinuumSetup setup, double thickness) {
+  HeatMaterial heat = heat_material_for(ctx, setup.material);
+  setup.needs_temperature = true; // the thermal strain comes from the NT DOFs
+  using T = ElementType;
+  using K = Kinematics;
+  using HG = HeatGeometry;
+  // The mechanics of each type is that of its stress/displacement counterpart (continuum_2d.cpp,
+  // continuum_3d.cpp): B-bar for the fully integrated first-order plane-strain, axisymmetric and
+  // brick elements.
+  switch (ctx.type) {
+  case T::CPS4T:
+    return make<T::CPS4, Shape::Quad4, K::PlaneStress, false, HG::Planar>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CPE4T:
+    return make<T::CPE4, Shape::Quad4, K::PlaneStrain, true, HG::Planar>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CAX4T:
+    return make<T::CAX4, Shape::Quad4, K::Axisymmetric, true, HG::Axisymmetric>(
+        ctx, std::move(setup), std::move(heat), 1.0);
+  case T::C3D4T:
+    return make<T::C3D4, Shape::Tet4, K::ThreeD, false, HG::Solid>(ctx, std::move(setup),
+                                                                   std::move(heat), 1.0);
+  case T::C3D8T:
+    return make<T::C3D8, Shape::Hex8, K::ThreeD, true, HG::Solid>(ctx, std::move(setup),
+                                                                  std::move(heat), 1.0);
+  default:
+    return nullptr;
+  }
+}
+
+} // namespace gapfem

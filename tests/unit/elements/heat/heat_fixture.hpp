@@ -1,0 +1,252 @@
+#pragma once
+// Helpers for the heat-transfer and coupled element unit tests: a one-element model with thermal
+// (and elastic) material data, the kernel from the real factory, an ElementInput over test-owned
+// buffers, and the position of the temperature DOFs.
+#include "elements/element_kernel.hpp"
+#include "fem/shape_functions.hpp"
+#include "model/model.hpp"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace gapfem::test::heat {
+
+/// Thermal and mechanical data of the tests (steel-like in m, s, K, N).
+struct Props {
+  double k = 45.0;      ///< conductivity
+  double rho = 7800.0;  ///< density
+  double c = 460.0;     ///< specific heat
+  bool varying = false; ///< temperature tables for k, rho, c (and E, alpha when elastic)
+  double E = 2.0e11;
+  double nu = 0.3;
+  double alpha = 1.2e-5; ///< 0: no *EXPANSION
+  bool capacity = true;  ///< *DENSITY and *SPECIFIC HEAT given
+};
+
+inline Shape shape_of(ElementType t) {
+  using T = ElementType;
+  switch (t) {
+  case T::DC1D2:
+  case T::T2D2T:
+  case T::T3D2T:
+    return Shape::Line2;
+  case T::DC2D3:
+  case T::DCAX3:
+    return Shape::Tri3;
+  case T::DC3D4:
+  case T::C3D4T:
+    return Shape::Tet4;
+  case T::DC3D8:
+  case T::C3D8T:
+    return Shape::Hex8;
+  case T::DC3D10:
+    return Shape::Tet10;
+  default:
+    return Shape::Quad4;
+  }
+}
+
+inline ModelSpace space_of(ElementType t) {
+  switch (element_info(t).space) {
+  case SpaceRequirement::Planar:
+    return ModelSpace::Planar;
+  case SpaceRequirement::Axisymmetric:
+    return ModelSpace::Axisymmetric;
+  default:
+    return ModelSpace::ThreeD;
+  }
+}
+
+/// A valid, mildly distorted element of edge length about 1 (2-D elements at x in [1, 2.2] so
+/// that axisymmetric radii are positive; links along a skew axis).
+inline std::vector<Vec3> nodes_of(ElementType t, bool distorted = true) {
+  const Shape s = shape_of(t);
+  if (s == Shape::Line2) {
+    if (t == ElementType::T2D2T) return {{0.1, 0.2, 0.0}, {0.9, 0.7, 0.0}};
+    return {{0.1, 0.2, 0.3}, {0.9, 0.7, -0.2}};
+  }
+  std::vector<Vec3> X;
+  const auto xi = shape_node_coords(s);
+  const double d = distorted ? 1.0 : 0.0;
+  for (std::size_t a = 0; a < xi.size(); ++a) {
+    Vec3 p{};
+    if (s == Shape::Hex8 || s == Shape::Quad4)
+      for (int i = 0; i < 3; ++i) p[i] = 0.5 * xi[a][i];
+    else
+      p = xi[a];
+    p[0] += d * 0.07 * std::sin(1.0 + 3.0 * a);
+    p[1] += d * 0.05 * std::cos(2.0 + 5.0 * a);
+    if (shape_dim(s) == 3)
+      p[2] += d * 0.06 * std::sin(3.0 + 7.0 * a);
+    else
+      p[2] = 0.0;
+    if (shape_dim(s) == 2) p[0] += 1.5;
+    X.push_back(p);
+  }
+  if (s == Shape::Tet10) // midside nodes on straight edges
+    for (int e = 0; e < 6; ++e) {
+      constexpr int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+      for (int i = 0; i < 3; ++i) X[4 + e][i] = 0.5 * (X[edge[e][0]][i] + X[edge[e][1]][i]);
+    }
+  return X;
+}
+
+/// Single-valued table; with `varying` two rows at T = 0 and 200 (v and `factor` v).
+inline PropertyTable table(double v, bool varying, double factor) {
+  PropertyTable t;
+  t.n_values = 1;
+  if (!varying) {
+    t.values = {v};
+    return t;
+  }
+  t.values = {v, factor * v};
+  t.keys = {0.0, 200.0};
+  return t;
+}
+
+/// One-element model (nodes 1..n, element 1) with material "M" and a solid section.
+inline std::shared_ptr<Model> model_of(ElementType t, const std::vector<Vec3>& X, const Props& p,
+                                       double section = 1.0, double initial_temperature = 0.0) {
+  auto model = std::make_shared<Model>();
+  Mesh& mesh = model->mesh;
+  for (std::size_t a = 0; a < X.size(); ++a) {
+    mesh.node_labels.push_back(static_cast<Label>(a + 1));
+    mesh.coords.push_back(X[a]);
+    mesh.node_index[static_cast<Label>(a + 1)] = static_cast<NodeId>(a);
+    mesh.conn.push_back(static_cast<NodeId>(a));
+  }
+  mesh.elem_labels.push_back(1);
+  mesh.elem_types.push_back(t);
+  mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
+  mesh.elem_src.push_back({});
+  mesh.elem_index[1] = 0;
+  model->space = space_of(t);
+  Material m;
+  m.name = "M";
+  m.conductivity = table(p.k, p.varying, 1.5);
+  if (p.capacity) {
+    m.density = table(p.rho, p.varying, 0.9);
+    m.specific_heat = table(p.c, p.varying, 1.3);
+  }
+  if (element_info(t).displacement) {
+    m.elastic.n_values = 2;
+    if (p.varying) {
+      m.elastic.values = {p.E, p.nu, 0.7 * p.E, 0.32};
+      m.elastic.keys = {0.0, 200.0};
+    } else {
+      m.elastic.values = {p.E, p.nu};
+    }
+    if (p.alpha != 0.0) m.expansion = table(p.alpha, p.varying, 1.4);
+  }
+  model->materials.push_back(m);
+  SolidSection sec;
+  sec.elset = "ALL";
+  sec.material = 0;
+  sec.thickness = section;
+  model->solid_sections.push_back(sec);
+  model->element_property.push_back({PropertyRef::Kind::Solid, 0});
+  model->initial_temperature.assign(X.size(), initial_temperature);
+  return model;
+}
+
+/// Kernel plus the buffers of one ElementInput; u holds displacements and temperatures.
+struct Harness {
+  std::shared_ptr<Model> model;
+  std::unique_ptr<ElementKernel> kernel;
+  std::vector<Vec3> X;
+  std::vector<double> u, u0;
+  StepContext ctx;
+  std::vector<ElemId> elems{0};
+
+  Harness(ElementType t, std::vector<Vec3> coords, const Props& p = {}, double section = 1.0,
+          double initial_temperature = 0.0)
+      : X(std::move(coords)) {
+    model = model_of(t, X, p, section, initial_temperature);
+    kernel = make_element_kernel(KernelContext{*model, t, model->element_property[0], elems});
+    u.assign(kernel->n_dofs(), 0.0);
+    u0 = u;
+    ctx.space = model->space;
+  }
+  int n() const { return kernel->n_dofs(); }
+  int per_node() const { return n() / static_cast<int>(X.size()); }
+  /// Local index of the temperature DOF of node a.
+  int nt(int a) const { return a * per_node() + per_node() - 1; }
+  bool is_nt(int i) const { return i % per_node() == per_node() - 1; }
+
+  void set_transient(double dt) {
+    ctx.procedure = Procedure::HeatTransfer;
+    ctx.transient = true;
+    ctx.dt = dt;
+  }
+  ElementInput input() {
+    ElementInput in;
+    in.elem = 0;
+    in.label = 1;
+    in.X = X;
+    in.u = u;
+    in.u_start = u0;
+    in.ctx = &ctx;
+    return in;
+  }
+  void evaluate(std::vector<double>& r, std::vector<double>* K = nullptr, bool* unsym = nullptr) {
+    r.assign(n(), 0.0);
+    ElementOutput out;
+    out.residual = r;
+    if (K) {
+      K->assign(n() * n(), 0.0);
+      out.tangent = *K;
+    }
+    out.want_tangent = K != nullptr;
+    ElementInput in = input();
+    kernel->evaluate(in, out);
+    if (unsym) *unsym = out.unsymmetric;
+  }
+  /// Equivalent nodal load of one distributed load and -d f/du.
+  void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
+            std::vector<double>* K = nullptr) {
+    DistributedLoad ld;
+    ld.elem = 0;
+    ld.kind = kind;
+    ld.face = face;
+    ld.magnitude = magnitude;
+    ld.sink_temperature = sink;
+    f.assign(n(), 0.0);
+    std::vector<double> Kb;
+    if (K) K->assign(n() * n(), 0.0);
+    ElementInput in = input();
+    kernel->load(in, ld, magnitude, sink, f, K ? std::span<double>(*K) : std::span<double>{});
+  }
+  ElementRecovery recover() {
+    ElementRecovery rec;
+    ElementInput in = input();
+    kernel->recover(in, rec);
+    return rec;
+  }
+  double stored_heat() {
+    ElementInput in = input();
+    return kernel->stored_heat(in);
+  }
+  /// Nodal temperatures T(X) = T0 + g . X (u and u0 alike unless `now_only`).
+  void set_linear_temperature(double T0, const Vec3& g, bool now_only = false) {
+    for (std::size_t a = 0; a < X.size(); ++a) {
+      const double v = T0 + g[0] * X[a][0] + g[1] * X[a][1] + g[2] * X[a][2];
+      u[nt(static_cast<int>(a))] = v;
+      if (!now_only) u0[nt(static_cast<int>(a))] = v;
+    }
+  }
+};
+
+/// Seeded random temperatures in [lo, hi] at the NT DOFs and displacements of size `disp`.
+inline void randomize(Harness& h, double lo, double hi, double disp, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> t(lo, hi), d(-disp, disp);
+  for (int i = 0; i < h.n(); ++i) {
+    h.u[i] = h.is_nt(i) ? t(gen) : d(gen);
+    h.u0[i] = h.is_nt(i) ? t(gen) : d(gen);
+  }
+}
+
+} // namespace gapfem::test::heat
