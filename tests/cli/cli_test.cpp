@@ -1,0 +1,135 @@
+// The gapfem executable: exit statuses (0 success, 1 input error, 2 no convergence), the files it
+// writes, --ignore-unknown, and the sentences users see.
+#include "test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+using namespace gapfem::test;
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string output;
+};
+
+CliRun run_cli(const std::filesystem::path& deck, const std::string& args = "") {
+  const auto log = deck.parent_path() / "cli.log";
+  const std::string cmd = std::string("'") + GAPFEM_EXE + "' " + args + " '" + deck.string() + "' > '" +
+                          log.string() + "' 2>&1";
+  const int rc = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.output = ss.str();
+  return r;
+}
+
+const char* kGood = R"(*HEADING
+spring and gap
+*NODE
+10, 0., 0., 0.
+12, 0., -1., 0.
+*ELEMENT, TYPE=SPRING1, ELSET=SPR
+1, 10
+*SPRING, ELSET=SPR
+2
+100.
+*ELEMENT, TYPE=GAPUNI, ELSET=G1
+101, 10, 12
+*GAP, ELSET=G1
+0.5, 0., -1., 0., 1.
+*BOUNDARY
+12, 1, 3
+10, 1, 1
+10, 3, 3
+*STEP
+*STATIC
+*CLOAD
+10, 2, -100.
+*NODE PRINT
+U
+*END STEP
+)";
+
+} // namespace
+
+TEST(Cli, SuccessWritesAllResultFiles) {
+  const auto deck = write_deck(kGood, "good");
+  const CliRun r = run_cli(deck);
+  EXPECT_EQ(r.status, 0) << r.output;
+  for (const char* ext : {".dat", ".sta", ".results.json", ".pvd"})
+    EXPECT_TRUE(std::filesystem::exists(deck.parent_path() / (std::string("good") + ext))) << ext;
+  EXPECT_NE(r.output.find("Analysis completed"), std::string::npos) << r.output;
+}
+
+TEST(Cli, InputErrorExitsWithOneBeforeSolving) {
+  std::string text = kGood;
+  text.replace(text.find("101, 10, 12"), 11, "101, 10, 99");
+  const auto deck = write_deck(text, "bad");
+  const CliRun r = run_cli(deck);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("bad.inp:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("node 99"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(deck.parent_path() / "bad.sta"));
+}
+
+TEST(Cli, UnknownKeywordIsAnErrorUnlessIgnored) {
+  std::string text = kGood;
+  text.insert(text.find("*BOUNDARY"), "*ORIENTATION, NAME=OR1\n1., 0., 0., 0., 1., 0.\n");
+  const auto deck = write_deck(text, "unknown");
+  const CliRun strict = run_cli(deck);
+  EXPECT_EQ(strict.status, 1);
+  EXPECT_NE(strict.output.find("*ORIENTATION"), std::string::npos) << strict.output;
+  const CliRun lenient = run_cli(deck, "--ignore-unknown");
+  EXPECT_EQ(lenient.status, 0) << lenient.output;
+  EXPECT_NE(lenient.output.find("*ORIENTATION"), std::string::npos) << "listed as a warning";
+}
+
+TEST(Cli, UnconstrainedModelStopsWithTheNodesAndDofs) {
+  // a truss with only one node fixed in x: free to move in y and z
+  const auto deck = write_deck(R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+*ELEMENT, TYPE=T3D2, ELSET=BAR
+1, 1, 2
+*MATERIAL, NAME=STEEL
+*ELASTIC
+2.E5, 0.3
+*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL
+1.
+*BOUNDARY
+1, 1, 1
+*STEP
+*STATIC
+*CLOAD
+2, 1, 10.
+*END STEP
+)",
+                               "free");
+  const CliRun r = run_cli(deck);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("singular"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("node "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("DOF"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("*BOUNDARY"), std::string::npos) << "the remedy is named";
+  EXPECT_TRUE(std::filesystem::exists(deck.parent_path() / "free.sta"));
+}
+
+TEST(Cli, NoConvergenceExitsWithTwoAndKeepsResults) {
+  // the minimum increment is reached: a DIRECT step whose contact needs more than one iteration
+  // limit (INC=1 with two increments needed)
+  std::string text = kGood;
+  text.replace(text.find("*STEP\n*STATIC\n"), 14, "*STEP, INC=1\n*STATIC\n0.5, 1.\n");
+  const auto deck = write_deck(text, "stops");
+  const CliRun r = run_cli(deck);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("INC"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(deck.parent_path() / "stops.results.json"));
+}

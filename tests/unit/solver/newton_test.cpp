@@ -1,0 +1,149 @@
+// Newton and the increment controller on small problems written directly against the
+// NonlinearProblem interface (no elements): a linear problem converges in one iteration, a
+// nonlinear scalar problem converges quadratically, an element whose status flips every evaluation
+// is reported as chattering, and the automatic incrementation follows Abaqus's rules.
+#include "linalg/kkt_solver.hpp"
+#include "solver/increment_control.hpp"
+#include "solver/newton.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gapfem;
+
+namespace {
+
+/// r(u) = k u + c u^3 - f for one displacement unknown; optionally a fake contact status that flips
+/// at every evaluation.
+class ScalarProblem final : public NonlinearProblem {
+public:
+  ScalarProblem(double k, double c, double f, bool chatter = false)
+      : _k(k), _c(c), _f(f), _chatter(chatter) {
+    std::vector<std::span<const LocalIndex>> el{std::span<const LocalIndex>(_eq)};
+    _pattern = build_pattern(1, el);
+    _K = CsrMatrix(_pattern);
+    _rhs.assign(1, 0.0);
+  }
+  std::shared_ptr<const SparsityPattern> pattern() const { return _pattern; }
+  Evaluation evaluate() override {
+    ++evaluations;
+    Evaluation ev;
+    const double r = _k * u + _c * u * u * u - _f;
+    _rhs[0] = -r;
+    _K.set_zero();
+    _K.values()[0] = _k + 3 * _c * u * u;
+    ev.has_field[0] = true;
+    ev.residual_max[0] = std::abs(r);
+    ev.flux[0] = std::abs(_f);
+    if (_chatter) {
+      ev.status_changes = 1;
+      ev.changed = {7};
+    }
+    return ev;
+  }
+  CsrMatrix& matrix() override { return _K; }
+  std::span<const double> rhs() const override { return _rhs; }
+  const ConstraintBlock& constraints() const override { return _C; }
+  void apply(std::span<const double> du, std::span<const double>) override {
+    u += du[0];
+    _last = du[0];
+  }
+  Field equation_field(LocalIndex) const override { return Field::Displacement; }
+  std::array<double, kNumFields> increment_max() const override { return {std::abs(u), 0, 0}; }
+  double constraint_tolerance() const override { return 1e-10; }
+
+  double u = 0.0;
+  int evaluations = 0;
+
+private:
+  double _k, _c, _f;
+  bool _chatter;
+  std::vector<LocalIndex> _eq{0};
+  std::shared_ptr<SparsityPattern> _pattern;
+  CsrMatrix _K;
+  std::vector<double> _rhs;
+  ConstraintBlock _C;
+  double _last = 0.0;
+};
+
+} // namespace
+
+TEST(Newton, LinearProblemConvergesInOneIteration) {
+  ScalarProblem p(200.0, 0.0, 50.0);
+  KktSolver s;
+  s.analyze(p.pattern());
+  const NewtonResult r = solve_increment(p, s, NewtonControls{}, FluxHistory{}, nullptr);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.iterations, 1);
+  EXPECT_NEAR(p.u, 0.25, 1e-15);
+}
+
+TEST(Newton, NonlinearProblemConvergesQuadratically) {
+  ScalarProblem p(1.0, 1.0, 10.0); // u + u^3 = 10, u = 2
+  KktSolver s;
+  s.analyze(p.pattern());
+  const NewtonResult r = solve_increment(p, s, NewtonControls{}, FluxHistory{}, nullptr);
+  ASSERT_TRUE(r.converged);
+  EXPECT_NEAR(p.u, 2.0, 1e-6);
+  // the last ratios fall quadratically: r_{k+1} <= C r_k^2 with C ~ |f''/(2 f')| / flux scale
+  const auto& h = r.residual_history;
+  ASSERT_GE(h.size(), 3u);
+  for (std::size_t k = h.size() - 2; k + 1 < h.size(); ++k)
+    EXPECT_LE(h[k + 1], 10.0 * h[k] * h[k]) << k;
+}
+
+TEST(Newton, ChatteringStatusIsDetected) {
+  ScalarProblem p(200.0, 0.0, 50.0, /*chatter=*/true);
+  KktSolver s;
+  s.analyze(p.pattern());
+  const NewtonResult r = solve_increment(p, s, NewtonControls{}, FluxHistory{}, nullptr);
+  EXPECT_FALSE(r.converged);
+  ASSERT_EQ(r.chattering.size(), 1u);
+  EXPECT_EQ(r.chattering[0], 7);
+  EXPECT_EQ(r.severe_iterations, NewtonControls{}.chatter_flips);
+}
+
+TEST(IncrementControl, CutbackGrowthAndMinimum) {
+  Incrementation inc;
+  inc.initial = 0.1;
+  inc.period = 1.0;
+  inc.minimum = 0.01;
+  IncrementController c(inc, 100);
+  EXPECT_DOUBLE_EQ(c.next(), 0.1);
+  c.accept(3); // easy
+  EXPECT_DOUBLE_EQ(c.next(), 0.1);
+  c.accept(3); // second easy increment: grow by 1.5
+  EXPECT_DOUBLE_EQ(c.next(), 0.15);
+  EXPECT_TRUE(c.reject()); // cut back by 0.25
+  EXPECT_DOUBLE_EQ(c.next(), 0.0375);
+  EXPECT_FALSE(c.reject()); // 0.009375 < minimum 0.01
+  EXPECT_NE(c.failure().find("less than the minimum"), std::string::npos);
+}
+
+TEST(IncrementControl, LastIncrementEndsExactlyAtThePeriod) {
+  Incrementation inc;
+  inc.initial = 0.3;
+  IncrementController c(inc, 100);
+  double t = 0;
+  int n = 0;
+  while (!c.finished()) {
+    t += c.next();
+    c.accept(12); // hard increments: no growth (shrink by 0.75)
+    ++n;
+  }
+  EXPECT_DOUBLE_EQ(c.step_time(), 1.0);
+  EXPECT_NEAR(t, 1.0, 1e-15);
+  EXPECT_GE(n, 4);
+}
+
+TEST(IncrementControl, DirectAllowsNoCutback) {
+  Incrementation inc;
+  inc.initial = 0.25;
+  inc.direct = true;
+  IncrementController c(inc, 100);
+  c.accept(3);
+  c.accept(3);
+  EXPECT_DOUBLE_EQ(c.next(), 0.25) << "DIRECT never grows";
+  EXPECT_FALSE(c.reject());
+}
