@@ -10,6 +10,7 @@
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
 #include "solver/step_problem.hpp"
+#include "solver/thermal_step.hpp"
 
 #include <fmt/format.h>
 
@@ -41,22 +42,23 @@ struct Analysis::Impl {
   RunStatistics stats;
   std::vector<StepSummary> summaries;
   Stopwatch watch;
+  bool has_temperature_dofs = false;
 
   Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
       : model(m), writers(std::move(w)), disc(m),
         assembler(disc, o.threads > 0 ? o.threads : default_thread_count()) {
     const LocalIndex ns = disc.dofs().n_slots();
     st.u.assign(static_cast<std::size_t>(ns), 0.0);
+    set_initial_temperatures(m, disc.dofs(), st.u);
     st.u_start = st.u;
     st.f_int = st.u;
     st.f_ext = st.u;
     st.T_initial = m.initial_temperature;
     st.T_initial.resize(static_cast<std::size_t>(m.mesh.n_nodes()), 0.0);
     st.T = st.T_start = st.T_initial;
-    for (const Step& s : m.steps)
-      if (s.procedure != Procedure::Static)
-        throw InputError(s.loc, fmt::format("step {}", s.number),
-                         fmt::format("*{} steps are not available in this build", procedure_name(s.procedure)));
+    check_step_procedures(m);
+    for (LocalIndex s = 0; s < ns; ++s)
+      has_temperature_dofs |= disc.dofs().slot_dof(s) == DofType::NT;
   }
 
   StepSummary run_step(int index);
@@ -143,7 +145,11 @@ StepSummary Analysis::Impl::run_step(int index) {
   sum.step = step.number;
   sum.name = step.name;
   sum.procedure = std::string(procedure_name(step.procedure));
-  IncrementController ctrl(step.inc, step.max_increments);
+  IncrementRules rules;
+  if (fixed_transient_increments(step)) rules.growth = rules.shrink = 1.0;
+  IncrementController ctrl(step.inc, step.max_increments, rules);
+  HeatBalance heat(has_temperature_dofs && step.procedure != Procedure::Static, base.transient,
+                   st.u_start);
   FluxHistory flux;
   NewtonControls controls;
   step_damping_peak = 0.0;
@@ -174,12 +180,29 @@ StepSummary Analysis::Impl::run_step(int index) {
     info.dt = dt;
     info.converged = res.converged;
     info.residual_history = res.residual_history;
+    // Transient heat transfer: DELTMX bounds the temperature change of an increment.
+    double growth = 0.0;
+    bool redo = false;
+    if (res.converged && base.transient && step.inc.deltmx > 0.0) {
+      const double dT =
+          max_free_temperature_change(disc.dofs(), loads.equations(), st.u, st.u_start);
+      const TemperatureAccuracy acc = deltmx_rule(dT, step.inc.deltmx);
+      growth = acc.ratio;
+      redo = acc.redo && ctrl.retry_smaller(acc.ratio);
+      if (redo)
+        log::progress("  increment {} attempt {}: temperature change {:.4g} exceeds DELTMX {:.4g}; "
+                      "repeating it with a time increment of {:.4g}",
+                      info.increment, info.attempts, dT, step.inc.deltmx, ctrl.next());
+    }
+    info.converged = res.converged && !redo;
     for (auto* w : writers) w->increment(info);
+    if (redo) continue;
     if (res.converged) {
       prob.commit();
       for (int f = 0; f < kNumFields; ++f) flux.sum[f] += res.flux[f];
       ++flux.n;
-      ctrl.accept(res.iterations - res.severe_iterations);
+      ctrl.accept(res.iterations - res.severe_iterations, growth);
+      heat.add_increment(disc.dofs(), dt, prob.reactions(), st.f_ext);
       ++stats.increments;
       ++sum.increments;
       step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
@@ -219,6 +242,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     loads.finish(ctrl.period(), prob.reactions(), history);
   }
   sum.checks = checks(prob);
+  heat.finish(disc, prob.context(), st.u_start, prob.reactions(), st.f_ext, sum.checks);
   sum.checks.max_damping_force = std::max(sum.checks.max_damping_force, step_damping_peak);
   for (auto* w : writers) w->end_step(model, index, sum);
   st.total_time += ctrl.step_time();

@@ -1,8 +1,7 @@
 #include "solver/increment_control.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 
 namespace gapfem {
 
@@ -43,6 +42,17 @@ void IncrementController::accept(int iterations, double suggested_ratio) {
   _dt = std::clamp(_dt, _min, _max);
 }
 
+bool IncrementController::retry_smaller(double factor) {
+  const double tried = next();
+  const double smaller = std::max(tried * factor, _min);
+  if (_direct || !(smaller < tried * (1.0 - 1e-12)) || _attempt + 1 >= _rules.max_attempts)
+    return false;
+  ++_attempt;
+  _easy_streak = 0;
+  _dt = smaller;
+  return true;
+}
+
 bool IncrementController::reject() {
   ++_attempt;
   _easy_streak = 0;
@@ -59,10 +69,11 @@ bool IncrementController::reject() {
   }
   const double smaller = _dt * _rules.cutback;
   if (smaller < _min * (1.0 - 1e-12)) {
-    _failure = fmt::format("the time increment required ({:.4g}) is less than the minimum ({:.4g}); "
-                           "lower the minimum increment on the procedure's data line, or change the "
-                           "loading",
-                           smaller, _min);
+    _failure =
+        fmt::format("the time increment required ({:.4g}) is less than the minimum ({:.4g}); "
+                    "lower the minimum increment on the procedure's data line, or change the "
+                    "loading",
+                    smaller, _min);
     return false;
   }
   _dt = smaller;

@@ -4,7 +4,8 @@
 /// cut back by 0.25 after a failed attempt, grow by 1.5 after two consecutive increments that
 /// converged in at most 4 equilibrium iterations, shrink by 0.75 after one that needed more than
 /// 10, never exceed the maximum, stop below the minimum or after 5 attempts of one increment.
-/// DIRECT: fixed increments, no cut-backs. Transient heat transfer: DELTMX limits the increment.
+/// DIRECT: fixed increments, no cut-backs. Transient heat transfer: DELTMX limits the increment
+/// (accept()'s suggested ratio, retry_smaller(); the rule is in thermal_step.hpp).
 #include "model/step.hpp"
 
 #include <string>
@@ -21,7 +22,7 @@ struct IncrementRules {
 };
 
 class IncrementController {
-public:
+ public:
   IncrementController(const Incrementation& inc, int max_increments, IncrementRules rules = {});
 
   double step_time() const { return _t; }
@@ -36,9 +37,14 @@ public:
   void accept(int equilibrium_iterations, double suggested_ratio = 0.0);
   /// The attempt failed: returns false (and sets failure()) when no further cut-back is allowed.
   bool reject();
+  /// The attempt converged but violated a time-integration accuracy limit (DELTMX): try it again
+  /// with `factor` (< 1) times the attempted size. Returns false, changing nothing, when that is
+  /// not possible (DIRECT, already at the minimum, or the attempts of the increment are used up);
+  /// the caller then accepts the attempt as it is.
+  bool retry_smaller(double factor);
   const std::string& failure() const { return _failure; }
 
-private:
+ private:
   double _period, _dt, _min, _max;
   bool _direct;
   int _max_increments;

@@ -1,0 +1,129 @@
+#include "solver/thermal_step.hpp"
+
+#include "fem/element_gather.hpp"
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace gapfem {
+
+void check_step_procedures(const Model& model) {
+  const Mesh& mesh = model.mesh;
+  for (const Step& s : model.steps) {
+    if (s.procedure == Procedure::CoupledTempDisp) continue;
+    for (ElemId e = 0; e < mesh.n_elements(); ++e) {
+      const ElementTypeInfo& info = element_info(mesh.elem_types[e]);
+      std::string why;
+      if (s.procedure == Procedure::Static && info.temperature)
+        why = "has temperature DOFs and cannot be used in a *STATIC step; use *COUPLED "
+              "TEMPERATURE-DISPLACEMENT, or the stress/displacement element type";
+      else if (s.procedure == Procedure::HeatTransfer && info.displacement)
+        why = "has displacement DOFs and cannot be used in a *HEAT TRANSFER step; use *COUPLED "
+              "TEMPERATURE-DISPLACEMENT, or a heat-transfer (DC…) element type";
+      if (!why.empty())
+        throw InputError(s.loc, fmt::format("step {}", s.number),
+                         fmt::format("element {} ({}) {}", model.element_label(e), info.name, why));
+    }
+  }
+}
+
+void set_initial_temperatures(const Model& model, const DofMap& dofs, std::span<double> u) {
+  if (model.initial_temperature.empty()) return;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
+    if (dofs.slot_dof(s) == DofType::NT) {
+      const NodeId n = dofs.slot_node(s);
+      if (n < static_cast<NodeId>(model.initial_temperature.size()))
+        u[s] = model.initial_temperature[n];
+    }
+}
+
+bool fixed_transient_increments(const Step& step) {
+  return step.procedure != Procedure::Static && !step.inc.steady_state && step.inc.deltmx <= 0.0;
+}
+
+double max_free_temperature_change(const DofMap& dofs, const EquationMap& eqs,
+                                   std::span<const double> u, std::span<const double> u_start) {
+  double m = 0.0;
+  for (LocalIndex i = 0; i < eqs.n_eq(); ++i) {
+    const LocalIndex s = eqs.eq_slot[i];
+    if (dofs.slot_dof(s) == DofType::NT) m = std::max(m, std::abs(u[s] - u_start[s]));
+  }
+  return m;
+}
+
+TemperatureAccuracy deltmx_rule(double dT_max, double deltmx) {
+  constexpr double kCutback = 0.85;  // D_F, Abaqus's default
+  constexpr double kMaxGrowth = 2.0; // W_M for diffusion-dominated procedures
+  TemperatureAccuracy a;
+  if (dT_max > deltmx) {
+    a.redo = true;
+    a.ratio = kCutback * deltmx / dT_max;
+    return a;
+  }
+  a.ratio = dT_max > 0.0 ? std::min(deltmx / dT_max, kMaxGrowth) : kMaxGrowth;
+  return a;
+}
+
+// ------------------------------------------------------------------------------ heat balance
+
+HeatBalance::HeatBalance(bool active, bool transient, std::span<const double> u_step_start)
+    : _active(active), _transient(transient) {
+  if (_active && _transient) _u_begin.assign(u_step_start.begin(), u_step_start.end());
+}
+
+void HeatBalance::add_increment(const DofMap& dofs, double dt, std::span<const double> reaction,
+                                std::span<const double> f_ext) {
+  if (!_active || !_transient) return;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    if (dofs.slot_dof(s) != DofType::NT) continue;
+    _reaction += dt * reaction[s];
+    _applied += dt * f_ext[s];
+    _scale += dt * (std::abs(reaction[s]) + std::abs(f_ext[s]));
+  }
+}
+
+void HeatBalance::finish(Discretization& disc, const StepContext& ctx,
+                         std::span<const double> u_now, std::span<const double> reaction,
+                         std::span<const double> f_ext, StepChecks& c) const {
+  if (!_active) return;
+  c.thermal = true;
+  if (_transient) {
+    c.reaction_flux_sum = _reaction;
+    c.applied_flux_sum = _applied;
+    c.stored_heat = total_stored_heat(disc, ctx, u_now, _u_begin);
+    c.heat_scale = _scale + std::abs(c.stored_heat);
+  } else {
+    const DofMap& dofs = disc.dofs();
+    double scale = 0.0;
+    for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+      if (dofs.slot_dof(s) != DofType::NT) continue;
+      c.reaction_flux_sum += reaction[s];
+      c.applied_flux_sum += f_ext[s];
+      scale += std::abs(reaction[s]) + std::abs(f_ext[s]);
+    }
+    c.stored_heat = 0.0;
+    c.heat_scale = scale;
+  }
+  c.heat_balance_error = std::abs(c.reaction_flux_sum + c.applied_flux_sum - c.stored_heat);
+}
+
+double total_stored_heat(Discretization& disc, const StepContext& ctx, std::span<const double> u,
+                         std::span<const double> u_start) {
+  ElementGather gather;
+  FieldView fields;
+  fields.u = u;
+  fields.u_start = u_start;
+  double Q = 0.0;
+  for (auto& b : disc.blocks()) {
+    if (!element_info(b.type).temperature) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const ElementInput& in = gather.gather(disc, b, i, fields, &ctx);
+      Q += b.kernel->stored_heat(in);
+    }
+  }
+  return Q;
+}
+
+} // namespace gapfem
