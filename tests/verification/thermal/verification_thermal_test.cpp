@@ -451,6 +451,36 @@ TEST(ThermalVerification, CoupledTrussRestrainedHeating) {
   EXPECT_NEAR(RF(r, f, 4)[0], -kE * kAlpha * 50.0 * 0.5, 1e-8);
 }
 
+// Transient coupled step: a T3D2T rod (10 elements, L = 1, area 1) free to expand from x = 0,
+// initially at 20, with its end x = 0 raised to 120 (DELTMX = 15). Each truss has the constant
+// strain alpha (T_mean - 20) of its mean temperature (no axial force), so the tip moves by
+// alpha sum_e L_e ((T_a + T_b)/2 - 20), computed here from the printed temperatures; the heat
+// balance closes as in pure heat transfer.
+TEST(ThermalVerification, CoupledTransientRodExpandsWithItsTemperature) {
+  const std::string deck = line_mesh(10, 1.0, "T3D2T") +
+                           "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n1.0\n"
+                           "*MATERIAL, NAME=M\n*ELASTIC\n2.0e5, 0.3\n*EXPANSION\n1.0e-5\n"
+                           "*CONDUCTIVITY\n1.0\n*DENSITY\n1.0\n*SPECIFIC HEAT\n1.0\n"
+                           "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 20.0\n"
+                           "*STEP, INC=200\n*COUPLED TEMPERATURE-DISPLACEMENT, DELTMX=15.0\n"
+                           "0.001, 0.05\n"
+                           "*BOUNDARY\n1, 1, 1\nNALL, 2, 3\n1, 11, 11, 120.0\n*END STEP\n";
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  double tip = 0.0;
+  for (int e = 1; e <= 10; ++e)
+    tip += 1.0e-5 * 0.1 * (0.5 * (NT(r, f, e) + NT(r, f, e + 1)) - 20.0);
+  EXPECT_GT(tip, 0.0);
+  EXPECT_NEAR(U(r, f, 11)[0], tip, 1e-12 + 1e-9 * tip);
+  for (Label e = 1; e <= 10; ++e) EXPECT_NEAR(block(r, f, e, ElemVar::S).values[0], 0.0, 1e-6);
+  EXPECT_GT(NT(r, f, 2), 20.0);
+  const StepChecks& c = r.steps[0].checks;
+  EXPECT_GT(c.stored_heat, 0.0);
+  EXPECT_LE(c.heat_balance_error, 1e-9 * c.heat_scale);
+  EXPECT_GT(r.steps[0].increments, 3);
+}
+
 /// Radial mesh of `type` (CAX4T or CPE4T) on a <= r <= b, 0 <= z <= 0.1 with n elements. Planar
 /// models use the same strip as a slab.
 std::string radial_strip(int n, double a, double b, const std::string& type) {
