@@ -87,6 +87,15 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "or add *CONTACT DAMPING after *GAP so the body is held while the gaps close",
         at, list_labels(body), list_labels(gaps));
   }
+  const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
+    return eq >= 0 && eq < eqm.n_eq() && dofs.slot_dof(eqm.eq_slot[eq]) == DofType::NT;
+  });
+  if (temperature)
+    return fmt::format(
+        "the system is singular at {}: nothing fixes the temperature level of the part made of "
+        "nodes {} (in a steady-state step it exchanges no heat with its surroundings). Prescribe "
+        "a temperature there (*BOUNDARY, DOF 11) or add a film condition (*FILM, *SFILM)",
+        at, list_labels(body));
   return fmt::format(
       "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
       "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "

@@ -565,6 +565,18 @@ TEST(ThermalVerification, StressElementInHeatTransferStepIsAnInputError) {
   EXPECT_NE(r.error.find("cannot be used in a *HEAT TRANSFER step"), std::string::npos) << r.error;
 }
 
+// A steady model with a flux but no temperature anywhere held has no solution: the run stops with
+// the no-convergence status and a sentence about the temperature, not about rigid-body motion.
+TEST(ThermalVerification, FloatingSteadyTemperatureIsExplained) {
+  const std::string deck = line_mesh(2, 1.0, "DC1D2") +
+                           "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n"
+                           "*MATERIAL, NAME=M\n*CONDUCTIVITY\n1.0\n"
+                           "*STEP\n*HEAT TRANSFER, STEADY STATE\n*CFLUX\n3, 11, 2.0\n*END STEP\n";
+  const JobResult r = run_deck(deck);
+  EXPECT_EQ(r.exit_code, kExitNoConvergence);
+  EXPECT_NE(r.error.find("nothing fixes the temperature level"), std::string::npos) << r.error;
+}
+
 TEST(ThermalVerification, HeatElementInStaticStepIsAnInputError) {
   const std::string deck = line_mesh(1, 1.0, "DC1D2") + "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n"
                                                         "*MATERIAL, NAME=M\n*CONDUCTIVITY\n1.0\n"
