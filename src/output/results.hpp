@@ -75,6 +75,9 @@ struct IncrementInfo {
   int step = 0, increment = 0, attempts = 0, iterations = 0, severe_discontinuities = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
   bool converged = true;
+  /// Newton converged, but the temperature change exceeded DELTMX: the increment is repeated
+  /// smaller (converged is then false)
+  bool deltmx_exceeded = false;
   /// max over fields of residual / time-averaged flux after each Newton iteration
   std::vector<double> residual_history;
 };

@@ -195,6 +195,7 @@ StepSummary Analysis::Impl::run_step(int index) {
                       info.increment, info.attempts, dT, step.inc.deltmx, ctrl.next());
     }
     info.converged = res.converged && !redo;
+    info.deltmx_exceeded = redo;
     for (auto* w : writers) w->increment(info);
     if (redo) continue;
     if (res.converged) {
