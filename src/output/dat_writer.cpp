@@ -145,6 +145,14 @@ void track(std::size_t c, double v, Label at, std::vector<double>& mx, std::vect
 
 } // namespace
 
+bool DatWriter::fixed_increments(const Step& step) {
+  // *STATIC, DIRECT; and transient heat transfer / coupled steps without DELTMX, which the analysis
+  // runs with fixed increments of the initial size (fixed_transient_increments in
+  // solver/thermal_step.hpp; docs/theory/thermal.md).
+  return step.inc.direct ||
+         (step.procedure != Procedure::Static && !step.inc.steady_state && step.inc.deltmx <= 0.0);
+}
+
 DatWriter::DatWriter(std::filesystem::path path) : _path(std::move(path)) {}
 
 void DatWriter::begin(const Model& model) {
@@ -178,8 +186,8 @@ void DatWriter::begin_step(const Model& model, int step_index) {
                  output::spaced(fmt::format("{} ANALYSIS", procedure_name(step.procedure))));
   if (!step.name.empty()) fmt::format_to(out, "\n{:>10}{}\n\n", "", step.name);
   const auto& inc = step.inc;
-  const double initial = inc.initial > 0 ? inc.initial : inc.period;
-  if (inc.direct) {
+  const double initial = inc.initial > 0 ? std::min(inc.initial, inc.period) : inc.period;
+  if (fixed_increments(step)) {
     fmt::format_to(out, "{:>10}FIXED TIME INCREMENTS\n", "");
     fmt::format_to(out, "{:>10}TIME INCREMENT IS {:>35.4E}\n", "", initial);
   } else {
@@ -202,12 +210,14 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   _elem_lists.clear();
   for (const auto& req : step.el_prints)
     _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
+  _printed_increment = -1;
   _out.flush();
 }
 
 void DatWriter::increment(const IncrementInfo&) {}
 
-void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame) {
+void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame,
+                                       bool repeated) {
   auto out = std::back_inserter(_out.buffer());
   const std::string heading =
       model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));
@@ -218,11 +228,18 @@ void DatWriter::write_increment_header(const Model& model, int step_index, const
   fmt::format_to(out,
                  " TIME INCREMENT COMPLETED {:>11.4E},  FRACTION OF STEP "
                  "COMPLETED {:>11.4E}\n",
-                 frame.dt, output::step_fraction(model, step_index, frame.step_time));
+                 repeated ? _printed_dt : frame.dt,
+                 output::step_fraction(model, step_index, frame.step_time));
   fmt::format_to(out,
                  " STEP TIME COMPLETED      {:>11.4E},  TOTAL TIME COMPLETED   "
                  "    {:>11.4E}\n",
                  frame.step_time, frame.total_time);
+  if (repeated)
+    fmt::format_to(out, "\n THE STEP STOPPED EARLY: FINAL OUTPUT OF ITS LAST CONVERGED INCREMENT; "
+                        "TABLES ALREADY PRINTED\n FOR THIS INCREMENT ABOVE ARE NOT REPEATED\n");
+  else if (frame.last_in_step && frame.dt == 0.0 && frame.increment > 0)
+    fmt::format_to(out,
+                   "\n THE STEP STOPPED EARLY: FINAL OUTPUT OF ITS LAST CONVERGED INCREMENT\n");
 }
 
 void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
@@ -230,28 +247,48 @@ void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
   FE_CHECK(_node_lists.size() == step.node_prints.size() &&
                _elem_lists.size() == step.el_prints.size(),
            "DatWriter::frame called without begin_step for this step");
+  // A step that stops early hands its last converged increment over again as the final frame
+  // (Frame::last_in_step): print only the requests not printed for that increment yet.
+  const bool repeated = frame.increment == _printed_increment;
+  std::vector<bool> node_due(step.node_prints.size()), el_due(step.el_prints.size());
   bool any_node = false, any_el = false;
-  for (std::size_t k = 0; k < step.node_prints.size(); ++k)
-    any_node |= k < frame.node_print_due.size() && frame.node_print_due[k];
-  for (std::size_t k = 0; k < step.el_prints.size(); ++k)
-    any_el |= k < frame.el_print_due.size() && frame.el_print_due[k];
+  for (std::size_t k = 0; k < step.node_prints.size(); ++k) {
+    node_due[k] = k < frame.node_print_due.size() && frame.node_print_due[k] &&
+                  !(repeated && _printed_node[k]);
+    any_node |= node_due[k];
+  }
+  for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
+    el_due[k] =
+        k < frame.el_print_due.size() && frame.el_print_due[k] && !(repeated && _printed_el[k]);
+    any_el |= el_due[k];
+  }
   if (!any_node && !any_el) return;
 
-  write_increment_header(model, step_index, frame);
+  write_increment_header(model, step_index, frame, repeated);
+  if (!repeated) {
+    _printed_increment = frame.increment;
+    _printed_dt = frame.dt;
+    _printed_node.assign(step.node_prints.size(), false);
+    _printed_el.assign(step.el_prints.size(), false);
+  }
   if (any_el) {
     fmt::format_to(std::back_inserter(_out.buffer()), "\n\n{:>29}{}\n", "",
                    output::spaced("ELEMENT OUTPUT"));
     for (std::size_t k = 0; k < step.el_prints.size(); ++k)
-      if (k < frame.el_print_due.size() && frame.el_print_due[k])
+      if (el_due[k]) {
         write_element_tables(model, frame, step.el_prints[k], _elem_lists[k]);
+        _printed_el[k] = true;
+      }
   }
   if (any_node) {
     fmt::format_to(std::back_inserter(_out.buffer()), "\n\n{:>39}{}\n", "",
                    output::spaced("NODE OUTPUT"));
     for (std::size_t k = 0; k < step.node_prints.size(); ++k)
-      if (k < frame.node_print_due.size() && frame.node_print_due[k])
+      if (node_due[k]) {
         for (NodeVar var : step.node_prints[k].vars)
           write_node_table(model, frame, step.node_prints[k], _node_lists[k], var);
+        _printed_node[k] = true;
+      }
   }
   _out.flush();
 }
@@ -481,6 +518,13 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     append_e12(buf, c.stored_heat);
     fmt::format_to(out, "\n   HEAT BALANCE ERROR                ");
     append_e12(buf, c.heat_balance_error);
+    fmt::format_to(out, "\n   HEAT SCALE                        ");
+    append_e12(buf, c.heat_scale);
+    fmt::format_to(out, "\n   RELATIVE ERROR                    ");
+    if (c.heat_scale > 0)
+      append_e12(buf, c.heat_balance_error / c.heat_scale);
+    else
+      fmt::format_to(out, "{:>12}", "N/A");
     fmt::format_to(out, "\n\n");
   }
   if (c.max_damping_force != 0.0) {

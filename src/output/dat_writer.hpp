@@ -24,8 +24,15 @@ class DatWriter : public ResultWriter {
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
 
+  /// The step runs with fixed time increments: *STATIC, DIRECT, and transient heat transfer or
+  /// coupled steps without DELTMX (the rule of fixed_transient_increments,
+  /// solver/thermal_step.hpp). The step header then says "FIXED TIME INCREMENTS" instead of
+  /// "AUTOMATIC TIME CONTROL".
+  static bool fixed_increments(const Step& step);
+
  private:
-  void write_increment_header(const Model& model, int step_index, const Frame& frame);
+  void write_increment_header(const Model& model, int step_index, const Frame& frame,
+                              bool repeated);
   void write_node_table(const Model& model, const Frame& frame, const NodePrintRequest& request,
                         const std::vector<NodeId>& nodes, NodeVar var);
   void write_element_tables(const Model& model, const Frame& frame, const ElPrintRequest& request,
@@ -38,8 +45,14 @@ class DatWriter : public ResultWriter {
   output::OutputFile _out;
   std::vector<std::vector<NodeId>> _node_lists; ///< per *NODE PRINT of the current step, by label
   std::vector<std::vector<ElemId>> _elem_lists; ///< per *EL PRINT, grouped by type, by label
-  std::vector<double> _avg;                     ///< scratch: point averages
-  std::vector<double> _max, _min, _total;       ///< scratch: column summaries
+  /// The increment printed last in the current step and which requests were printed for it: a
+  /// step that stops early hands its last converged increment over again as the final frame, and
+  /// only the requests not printed yet for it are printed then.
+  int _printed_increment = -1;
+  double _printed_dt = 0.0;
+  std::vector<bool> _printed_node, _printed_el;
+  std::vector<double> _avg;               ///< scratch: point averages
+  std::vector<double> _max, _min, _total; ///< scratch: column summaries
   std::vector<Label> _max_at, _min_at;
 };
 

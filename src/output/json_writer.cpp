@@ -111,6 +111,7 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   _step_open = true;
   _first_frame = true;
   _open_step_number = step.number;
+  _last_increment = -1;
 }
 
 void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
@@ -163,6 +164,12 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   number_field(b, "dt", frame.dt);
   b.append(frame.last_in_step ? std::string_view(",\"last_in_step\":true")
                               : std::string_view(",\"last_in_step\":false"));
+  // The stream cannot take back the earlier frame of this increment; readers take the last frame
+  // with a given increment (docs/results.md).
+  const bool repeated = frame.increment == _last_increment;
+  _last_increment = frame.increment;
+  b.append(repeated ? std::string_view(",\"repeated\":true")
+                    : std::string_view(",\"repeated\":false"));
   b.append(std::string_view(",\"nodes\":{"));
   bool first = true;
   for (NodeId n : _frame_nodes) {
@@ -321,6 +328,12 @@ void JsonWriter::close_step(const StepSummary* s) {
     number_field(b, "applied_flux_sum", c.applied_flux_sum);
     number_field(b, "stored_heat", c.stored_heat);
     number_field(b, "error", c.heat_balance_error);
+    number_field(b, "heat_scale", c.heat_scale);
+    b.append(std::string_view(",\"relative_error\":"));
+    if (c.heat_scale > 0)
+      append_json_number(b, c.heat_balance_error / c.heat_scale);
+    else
+      b.append(std::string_view("null"));
     b.push_back('}');
   } else {
     b.append(std::string_view("null"));

@@ -38,6 +38,9 @@ class JsonWriter : public ResultWriter {
   bool _first_step = true;
   bool _first_frame = true;
   int _open_step_number = 0;
+  /// Increment of the last frame written in the open step (-1: none): a step that stops early
+  /// hands that increment over again as its final frame, which is then marked "repeated".
+  int _last_increment = -1;
 
   std::vector<std::vector<NodeId>> _node_lists;   ///< per *NODE PRINT of the step, by label
   std::vector<std::vector<ElemId>> _elem_lists;   ///< per *EL PRINT of the step

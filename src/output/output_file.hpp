@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fmt/compile.h>
-#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <span>
 #include <string>

@@ -1,7 +1,8 @@
 #pragma once
 /// @file results.hpp
 /// What the analysis hands to the result writers: frames (the committed state at an output point),
-/// step summaries with self-checks, and the run summary. Writers format; they never compute physics.
+/// step summaries with self-checks, and the run summary. Writers format; they never compute
+/// physics.
 #include "common/timer.hpp"
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
@@ -34,9 +35,9 @@ struct ElementResult {
 /// Self-checks after each step (.dat block, terminal summary, JSON "checks").
 struct StepChecks {
   int n_gaps = 0, n_open = 0, n_closed = 0, n_stick = 0, n_slip = 0;
-  double max_penetration = 0.0;       ///< max(-h) over closed gaps beyond the interference allowance
+  double max_penetration = 0.0; ///< max(-h) over closed gaps beyond the interference allowance
   Label max_penetration_elem = 0;
-  double max_tensile_force = 0.0;     ///< max tension carried by a closed gap (hard contact: 0)
+  double max_tensile_force = 0.0; ///< max tension carried by a closed gap (hard contact: 0)
   Label max_tensile_elem = 0;
   std::array<double, 3> reaction_sum{}; ///< sum of reaction forces RF
   std::array<double, 3> applied_sum{};  ///< sum of applied concentrated + distributed loads
@@ -45,8 +46,9 @@ struct StepChecks {
   /// Heat balance (heat transfer and coupled steps, solver/thermal_step.hpp): transient steps
   /// integrate the fluxes over the step (heat), steady-state steps give the fluxes at its end.
   bool thermal = false;
-  double reaction_flux_sum = 0.0, applied_flux_sum = 0.0, stored_heat = 0.0, heat_balance_error = 0.0;
-  double heat_scale = 0.0; ///< sum of |RFL| + |applied| (+ |stored|), for judging the error
+  double reaction_flux_sum = 0.0, applied_flux_sum = 0.0, stored_heat = 0.0,
+         heat_balance_error = 0.0;
+  double heat_scale = 0.0;        ///< sum of |RFL| + |applied| (+ |stored|), for judging the error
   double max_damping_force = 0.0; ///< largest gap damping force in any increment of the step
 };
 
@@ -66,7 +68,8 @@ struct Frame {
   bool field_due = false;           ///< ParaView frame due
 
   const ElementResult* element(ElemId e) const {
-    if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0) return nullptr;
+    if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0)
+      return nullptr;
     return &elements[element_slot[e]];
   }
 };
@@ -105,7 +108,7 @@ struct RunSummary {
 
 /// Receives the committed state at output points. Implementations: .dat, .sta, JSON, VTU.
 class ResultWriter {
-public:
+ public:
   virtual ~ResultWriter() = default;
   virtual void begin(const Model& model) {}
   virtual void begin_step(const Model& model, int step_index) {}

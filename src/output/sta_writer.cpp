@@ -26,15 +26,21 @@ void StaWriter::begin(const Model& model) {
   _out.flush();
 }
 
+char StaWriter::attempt_marker(const IncrementInfo& info) {
+  // Abaqus marks an attempt that did not converge (and was cut back) with "U" after ATT. An
+  // attempt that converged but changed a temperature by more than DELTMX is repeated smaller
+  // without having failed: gapfem marks it "D".
+  if (info.deltmx_exceeded) return 'D';
+  return info.converged ? ' ' : 'U';
+}
+
 void StaWriter::increment(const IncrementInfo& info) {
   if (!_out.is_open()) return;
   const int severe = std::max(0, info.severe_discontinuities);
   const int equil = std::max(0, info.iterations - severe);
-  // Abaqus marks an attempt that did not converge (and was cut back) with "U"
-  // after ATT.
   fmt::format_to(std::back_inserter(_out.buffer()),
                  "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}\n", info.step, info.increment,
-                 info.attempts, info.converged ? ' ' : 'U', severe, equil, info.iterations,
+                 info.attempts, attempt_marker(info), severe, equil, info.iterations,
                  fmt::format("{:.5G}", info.total_time), fmt::format("{:.5G}", info.step_time),
                  fmt::format("{:.5G}", info.dt));
   _out.flush();

@@ -19,6 +19,10 @@ class StaWriter : public ResultWriter {
   void increment(const IncrementInfo& info) override;
   void end(const Model& model, const RunSummary& summary) override;
 
+  /// The character after the attempt number: ' ' converged, 'U' not converged (cut back, as in
+  /// Abaqus), 'D' converged but repeated smaller because a temperature changed by more than DELTMX.
+  static char attempt_marker(const IncrementInfo& info);
+
  private:
   std::filesystem::path _path;
   output::OutputFile _out;

@@ -21,7 +21,9 @@ void TerminalWriter::increment(const IncrementInfo& info) {
   log::progress("  step {} inc {:>4} att {}  step time {:<11.5g} dt {:<11.4g} "
                 "{:>3} iterations{}",
                 info.step, info.increment, info.attempts, info.step_time, info.dt, info.iterations,
-                info.converged ? "" : "  not converged: cut back");
+                info.deltmx_exceeded ? "  DELTMX exceeded: repeated"
+                : info.converged     ? ""
+                                     : "  not converged: cut back");
 }
 
 void TerminalWriter::end_step(const Model& model, int step_index, const StepSummary& s) {
@@ -50,7 +52,13 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
     else
       log::info("  equilibrium error {:.3e}", c.equilibrium_error);
   }
-  if (c.thermal) log::info("  heat balance error {:.3e}", c.heat_balance_error);
+  if (c.thermal) {
+    if (c.heat_scale > 0)
+      log::info("  heat balance error {:.3e} ({:.2e} of heat scale {:.4g})", c.heat_balance_error,
+                c.heat_balance_error / c.heat_scale, c.heat_scale);
+    else
+      log::info("  heat balance error {:.3e}", c.heat_balance_error);
+  }
   if (c.max_damping_force != 0.0) log::info("  max damping force {:.4g}", c.max_damping_force);
 }
 

@@ -75,6 +75,9 @@ void handle_dsflux(BuildState& s, const Keyword& kw);
 void handle_film(BuildState& s, const Keyword& kw);
 void handle_sfilm(BuildState& s, const Keyword& kw);
 void handle_temperature(BuildState& s, const Keyword& kw);
+/// At the end of a *HEAT TRANSFER or *COUPLED TEMPERATURE-DISPLACEMENT step: *TEMPERATURE on a
+/// node with the temperature DOF 11 is an input error (use *BOUNDARY on DOF 11; Abaqus rule).
+void check_predefined_temperatures(BuildState& s);
 void handle_contact_interference(BuildState& s, const Keyword& kw);
 ///@}
 

@@ -15,6 +15,7 @@
 // effect; model-data conditions are in effect, so they are removed as well.
 #include "io/inp/handlers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
@@ -92,14 +93,18 @@ int face_of(const std::string& label, std::string_view prefix) {
   return n && *n >= 1 && *n <= 9 && rest[0] != '+' && rest[0] != '-' ? static_cast<int>(*n) : -1;
 }
 
-void check_face(const BuildState& s, const FieldReader& r, ElemId e, int face) {
+/// The face of a load exists on the element for this use (FaceUse::Pressure or Thermal).
+void check_face(const BuildState& s, const FieldReader& r, ElemId e, int face, FaceUse use) {
   const ElementType t = s.model.mesh.elem_types[e];
-  const int nf = n_faces(t);
-  if (face > nf)
+  const int nf = n_faces(t, use);
+  if (face <= nf) return;
+  if (nf > 0)
     r.fail(elem_entity(s, e),
-           nf == 0
-               ? std::string("this element type has no faces for this load")
-               : fmt::format("face {} does not exist; this element type has faces 1-{}", face, nf));
+           fmt::format("face {} does not exist; this element type has faces 1-{}", face, nf));
+  if (use == FaceUse::Pressure && n_faces(t, FaceUse::Thermal) > 0)
+    r.fail(elem_entity(s, e), "the faces of this element type take heat fluxes and films only; a "
+                              "pressure needs a continuum element with displacements");
+  r.fail(elem_entity(s, e), "this element type has no faces for this load");
 }
 
 const Surface& find_surface(BuildState& s, const FieldReader& r) {
@@ -299,7 +304,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
         }
       } else {
         require_displacement(s, r, e);
-        check_face(s, r, e, d.face);
+        check_face(s, r, e, d.face, FaceUse::Pressure);
       }
       d.elem = e;
       loads.push_back(d);
@@ -320,6 +325,7 @@ void handle_dsload(BuildState& s, const Keyword& kw) {
     const double mag = r.real(2, "magnitude");
     for (const auto& f : find_surface(s, r).faces) {
       require_displacement(s, r, f.elem);
+      check_face(s, r, f.elem, f.face, FaceUse::Pressure);
       DistributedLoad d;
       d.elem = f.elem;
       d.kind = DistLoadKind::Pressure;
@@ -355,7 +361,7 @@ void handle_dflux(BuildState& s, const Keyword& kw) {
     }
     for (ElemId e : resolve_elements(s, r, 0)) {
       require_temperature(s, r, e);
-      if (d.face > 0) check_face(s, r, e, d.face);
+      if (d.face > 0) check_face(s, r, e, d.face, FaceUse::Thermal);
       d.elem = e;
       loads.push_back(d);
     }
@@ -374,6 +380,7 @@ void handle_dsflux(BuildState& s, const Keyword& kw) {
     const double mag = r.real(2, "magnitude");
     for (const auto& f : find_surface(s, r).faces) {
       require_temperature(s, r, f.elem);
+      check_face(s, r, f.elem, f.face, FaceUse::Thermal);
       DistributedLoad d;
       d.elem = f.elem;
       d.kind = DistLoadKind::SurfaceFlux;
@@ -410,6 +417,7 @@ static void film(BuildState& s, const Keyword& kw, bool surface) {
         r.fail(fmt::format("field 2 ({})", r.text(1)), "*SFILM supports the label F only");
       for (const auto& f : find_surface(s, r).faces) {
         require_temperature(s, r, f.elem);
+        check_face(s, r, f.elem, f.face, FaceUse::Thermal);
         d.elem = f.elem;
         d.face = f.face;
         loads.push_back(d);
@@ -422,7 +430,7 @@ static void film(BuildState& s, const Keyword& kw, bool surface) {
              "write the film label as Fn (n = face number)");
     for (ElemId e : resolve_elements(s, r, 0)) {
       require_temperature(s, r, e);
-      check_face(s, r, e, d.face);
+      check_face(s, r, e, d.face, FaceUse::Thermal);
       d.elem = e;
       loads.push_back(d);
     }
@@ -457,6 +465,47 @@ void handle_temperature(BuildState& s, const Keyword& kw) {
   merge(
       s.step.temperatures, entries, op_new(kw), [](const NodalTemperature&) { return true; },
       [](const NodalTemperature& t) { return t.node; });
+}
+
+void check_predefined_temperatures(BuildState& s) {
+  // The Abaqus Analysis User's Guide ("Predefined Fields", Restrictions; 2023:
+  // docs.software.vt.edu/abaqusv2023/English/SIMACAEPRCRefMap/simaprc-c-fields.htm) says not to
+  // give predefined temperatures in heat transfer and fully coupled temperature-displacement
+  // analyses but to prescribe the temperature DOF 11 with a boundary condition; the CalculiX
+  // manual (*TEMPERATURE) says the same. gapfem applies it per node: a node with DOF 11 is
+  // rejected, while nodes of purely mechanical elements of a coupled step may still take a
+  // predefined temperature. A *STATIC step has no node with DOF 11 (thermal_step.hpp), so its
+  // *TEMPERATURE is not checked.
+  const Step& st = s.step;
+  if (st.procedure == Procedure::Static || st.temperatures.empty()) return;
+  // Entries carried over from an earlier heat transfer or coupled step were reported there.
+  const Step* prev = s.model.steps.empty() ? nullptr : &s.model.steps.back();
+  const bool prev_checked = prev && prev->procedure != Procedure::Static;
+  const Mesh& mesh = s.model.mesh;
+  std::vector<ElemId> carrier(static_cast<std::size_t>(mesh.n_nodes()), -1);
+  for (ElemId e = 0; e < mesh.n_elements(); ++e)
+    if (element_info(mesh.elem_types[e]).temperature)
+      for (NodeId n : mesh.element_nodes(e))
+        if (carrier[n] < 0) carrier[n] = e;
+  std::vector<std::pair<std::string, int>> reported; // one error per *TEMPERATURE data line
+  for (const NodalTemperature& t : st.temperatures) {
+    if ((t.propagated && prev_checked) || carrier[t.node] < 0) continue;
+    const auto where = std::pair(t.loc.file, t.loc.line);
+    if (std::find(reported.begin(), reported.end(), where) != reported.end()) continue;
+    reported.push_back(where);
+    const ElemId e = carrier[t.node];
+    std::string message = fmt::format(
+        "this node carries the temperature DOF 11 (element {} is a {} element), so in a *{} step "
+        "its temperature is a solution variable, not a predefined field; prescribe it with "
+        "*BOUNDARY on DOF 11 instead (node, 11, 11, temperature)",
+        s.model.element_label(e), element_info(mesh.elem_types[e]).name,
+        procedure_name(st.procedure));
+    if (t.propagated)
+      message += fmt::format(", and remove this *TEMPERATURE from step {} with *TEMPERATURE, "
+                             "OP=NEW",
+                             st.number);
+    s.error(t.loc, fmt::format("node {}", s.model.node_label(t.node)), message);
+  }
 }
 
 void handle_contact_interference(BuildState& s, const Keyword& kw) {

@@ -133,6 +133,7 @@ void close_step(BuildState& s) {
   for (const auto& change : st.friction_changes)
     if (!change.friction.given)
       s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");
+  check_predefined_temperatures(s);
   resolve_preset_outputs(s);
   // output requests carry over from the previous step unless this step gives its own
   if (!s.model.steps.empty()) {

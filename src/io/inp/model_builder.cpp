@@ -202,7 +202,9 @@ void add_to_elset(BuildState& s, const std::string& name, const std::vector<Elem
   add_sorted(s.model.elsets[name], elems);
 }
 
-int n_faces(ElementType type) {
+namespace {
+/// Faces of the element's cell (the ends of a link), whatever they are used for.
+int cell_faces(ElementType type) {
   using T = ElementType;
   switch (type) {
   case T::C3D8:
@@ -230,9 +232,30 @@ int n_faces(ElementType type) {
   case T::DC2D3:
   case T::DCAX3:
     return 3;
+  case T::DC1D2:
+  case T::T2D2T:
+  case T::T3D2T:
+    return 2;
   default:
     return 0;
   }
+}
+} // namespace
+
+int n_faces(ElementType type, FaceUse use) {
+  const ElementTypeInfo& info = element_info(type);
+  const int pressure =
+      info.family == ElementFamily::Continuum && info.displacement ? cell_faces(type) : 0;
+  const int thermal = info.temperature && info.family != ElementFamily::Gap ? cell_faces(type) : 0;
+  switch (use) {
+  case FaceUse::Pressure:
+    return pressure;
+  case FaceUse::Thermal:
+    return thermal;
+  case FaceUse::Any:
+    break;
+  }
+  return std::max(pressure, thermal);
 }
 
 } // namespace gapfem::inp

@@ -151,8 +151,18 @@ void reject_param(const Keyword& kw, std::string_view param, std::string_view wh
 void add_to_nset(BuildState& s, const std::string& name, const std::vector<NodeId>& nodes);
 void add_to_elset(BuildState& s, const std::string& name, const std::vector<ElemId>& elems);
 
-/// Face counts per element type for S1..Sn / Pn labels (0: no faces).
-int n_faces(ElementType type);
+/// What an element face is used for.
+enum class FaceUse : std::uint8_t {
+  Any,      ///< *SURFACE faces: a face that some load can use
+  Pressure, ///< Pn, *DSLOAD: continuum elements with displacements
+  Thermal   ///< Sn, Fn, *DSFLUX, *SFILM: elements with the temperature DOF 11
+};
+/// Number of faces S1..Sn (Pn, Fn) of an element type for a use (0: none). The counts match the
+/// kernels' supports_load: faces of continuum cells in Abaqus numbering (fem/element_faces.hpp:
+/// bricks 6, tetrahedra 4, quadrilaterals 4, triangles 3) for pressure and heat loads, and the two
+/// ends of the heat-conducting links DC1D2, T2D2T, T3D2T (S1 at node 1, S2 at node 2) for heat
+/// loads only. Springs, beams, gaps and mechanical trusses have none.
+int n_faces(ElementType type, FaceUse use = FaceUse::Any);
 
 /// Binds elements to properties, resolves materials, checks the model space and the gap
 /// definitions. Runs once, at the first *STEP or at the end of the deck.

@@ -366,6 +366,83 @@ ALL, 50.
                   "deck.inp:13: *TEMPERATURE: FILE=t.fil");
 }
 
+/// A DC2D4 (nodes 1-4, DOF 11), a thermal GAPUNIT (nodes 4-5, DOFs 1, 2 and 11) and a mechanical
+/// GAPUNI (nodes 6-7, no DOF 11), for heat transfer and coupled steps.
+constexpr std::string_view kThermalNodes = R"(*NODE
+1, 0., 0.
+2, 1., 0.
+3, 1., 1.
+4, 0., 1.
+5, 0., 2.
+6, 3., 0.
+7, 4., 0.
+*NSET, NSET=SQUARE
+1, 2, 3, 4
+*ELEMENT, TYPE=DC2D4, ELSET=H
+1, 1, 2, 3, 4
+*ELEMENT, TYPE=GAPUNIT, ELSET=GT
+2, 4, 5
+*ELEMENT, TYPE=GAPUNI, ELSET=GM
+3, 6, 7
+*MATERIAL, NAME=M
+*CONDUCTIVITY
+1.
+*SOLID SECTION, ELSET=H, MATERIAL=M
+*GAP, ELSET=GT
+0., 0., 1., 0., 1.
+*GAP, ELSET=GM
+0., 1., 0., 0., 1.
+)";
+// kThermalNodes has 24 lines: *STEP is line 25, the procedure 26, the next keyword 27 and its first
+// data line 28
+
+TEST(ReaderLoads, PredefinedTemperatureOnTemperatureDofIsAnError) {
+  const std::string model(kThermalNodes);
+  for (const char* procedure :
+       {"*HEAT TRANSFER, STEADY STATE", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE"}) {
+    SCOPED_TRACE(procedure);
+    const std::string step = std::string("*STEP\n") + procedure + "\n";
+    // Node 3 belongs to the DC2D4: its temperature is DOF 11, prescribed with *BOUNDARY.
+    const std::string e1 = error_text(model + step + "*TEMPERATURE\n3, 100.\n*END STEP\n");
+    EXPECT_CONTAINS(e1, "deck.inp:28: *TEMPERATURE: node 3: this node carries the temperature DOF "
+                        "11 (element 1 is a DC2D4 element)");
+    EXPECT_CONTAINS(e1,
+                    "prescribe it with *BOUNDARY on DOF 11 instead (node, 11, 11, temperature)");
+    EXPECT_CONTAINS(e1, std::string("in a ") + std::string(procedure).substr(0, 14));
+    // Node 5 only belongs to the thermal gap GAPUNIT, which has DOF 11 too; a node set is reported
+    // once per data line (node 1, the first of SQUARE).
+    EXPECT_CONTAINS(error_text(model + step + "*TEMPERATURE\n5, 100.\n*END STEP\n"),
+                    "node 5: this node carries the temperature DOF 11 (element 2 is a GAPUNIT");
+    const std::string e2 = error_text(model + step + "*TEMPERATURE\nSQUARE, 100.\n*END STEP\n");
+    EXPECT_CONTAINS(e2, "deck.inp:28: *TEMPERATURE: node 1: this node carries");
+    EXPECT_EQ(e2.find("node 2:"), std::string::npos) << e2;
+  }
+  // Nodes 6 and 7 belong to the mechanical GAPUNI only: no DOF 11, a predefined temperature is fine
+  // in a coupled step.
+  const Model m = read(model + "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n"
+                               "*TEMPERATURE\n6, 50.\n7, 60.\n*END STEP\n");
+  ASSERT_EQ(m.steps[0].temperatures.size(), 2u);
+  EXPECT_EQ(m.steps[0].temperatures[1].value, 60.0);
+}
+
+TEST(ReaderLoads, PredefinedTemperatureCarriedFromAStaticStep) {
+  // *STATIC keeps *TEMPERATURE as it is (the reader does not check it; a model with DOF 11 cannot
+  // run a *STATIC step, which the analysis reports). Carried over into a heat transfer step, the
+  // entry is an error there, with the way to remove it.
+  const std::string deck = std::string(kThermalNodes) +
+                           "*STEP\n*STATIC\n*TEMPERATURE\n3, 100.\n*END STEP\n"
+                           "*STEP\n*HEAT TRANSFER, STEADY STATE\n*END STEP\n";
+  const std::string e = error_text(deck);
+  EXPECT_CONTAINS(e, "deck.inp:28: *TEMPERATURE: node 3: this node carries the temperature DOF 11");
+  EXPECT_CONTAINS(e, "remove this *TEMPERATURE from step 2 with *TEMPERATURE, OP=NEW");
+  // ... which works: an empty *TEMPERATURE, OP=NEW removes the carried entry.
+  const Model m = read(std::string(kThermalNodes) +
+                       "*STEP\n*STATIC\n*TEMPERATURE\n3, 100.\n*END STEP\n"
+                       "*STEP\n*HEAT TRANSFER, STEADY STATE\n*TEMPERATURE, OP=NEW\n*END STEP\n");
+  ASSERT_EQ(m.steps[0].temperatures.size(), 1u);
+  EXPECT_TRUE(m.steps[1].temperatures.empty());
+}
+
 constexpr std::string_view kGaps = R"(*NODE
 1
 2, 0., -1.

@@ -7,6 +7,7 @@
 // in columns 1-12, the point in 13-16, 7 blanks, then value fields from column
 // 24 (24-35, 36-47, ...). Values are 1P E-format with 4 decimals.
 #include "output/dat_writer.hpp"
+#include "solver/thermal_step.hpp"
 #include "writer_fixture.hpp"
 
 #include <algorithm>
@@ -259,6 +260,7 @@ TEST(OutputDat, ThermalAndDampingChecks) {
   s.checks.reaction_flux_sum = -500.0;
   s.checks.applied_flux_sum = 500.0;
   s.checks.heat_balance_error = 1e-10;
+  s.checks.heat_scale = 1000.0;
   s.checks.max_damping_force = 0.125;
   w.end_step(m, 0, s);
   w.end(m, make_run());
@@ -268,8 +270,156 @@ TEST(OutputDat, ThermalAndDampingChecks) {
   EXPECT_NE(lines[find_line(lines, "SUM OF REACTION FLUXES RFL", h)].find(e12(-500.0)),
             std::string::npos);
   EXPECT_NE(lines[find_line(lines, "HEAT BALANCE ERROR", h)].find(e12(1e-10)), std::string::npos);
+  // The heat scale follows the error, then the relative error 1e-10 / 1000 = 1e-13.
+  const int scale = find_line(lines, "HEAT SCALE", h);
+  ASSERT_EQ(scale, find_line(lines, "HEAT BALANCE ERROR", h) + 1);
+  EXPECT_NE(lines[scale].find(e12(1000.0)), std::string::npos);
+  ASSERT_EQ(find_line(lines, "RELATIVE ERROR", scale), scale + 1);
+  EXPECT_NE(lines[scale + 1].find(e12(1e-13)), std::string::npos);
   EXPECT_NE(lines[find_line(lines, "MAXIMUM DAMPING FORCE IN A GAP")].find(e12(0.125)),
             std::string::npos);
+}
+
+TEST(OutputDat, HeatBalanceWithoutScaleHasNoRelativeError) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "t.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  StepSummary s = make_summary();
+  s.checks.thermal = true; // nothing flows: heat scale 0
+  w.end_step(m, 0, s);
+  w.end(m, make_run());
+  const auto lines = read_lines(dir / "t.dat");
+  const int scale = find_line(lines, "HEAT SCALE", find_line(lines, " HEAT BALANCE"));
+  ASSERT_GE(scale, 0);
+  EXPECT_EQ(lines[scale + 1].substr(lines[scale + 1].size() - 3), "N/A");
+}
+
+/// The incrementation lines of the step header of a one-step run of `step`.
+std::vector<std::string> step_header(Model m, const Step& step) {
+  m.steps = {step};
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "h.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.end(m, make_run());
+  const auto lines = read_lines(dir / "h.dat");
+  const int from = find_line(lines, "S T E P    1");
+  const int to = find_line(lines, "TIME PERIOD IS", from);
+  return {lines.begin() + from, lines.begin() + to + 1};
+}
+
+TEST(OutputDat, StepHeaderNamesFixedIncrements) {
+  const Model m = make_model();
+  Step base = m.steps[0];
+  base.inc.initial = 0.25;
+  auto has = [](const std::vector<std::string>& h, std::string_view text) {
+    return find_line(h, text) >= 0;
+  };
+  struct Case {
+    const char* what;
+    Procedure procedure;
+    bool steady_state, direct;
+    double deltmx;
+    bool fixed;
+  };
+  const Case cases[] = {
+      {"static, automatic", Procedure::Static, true, false, 0.0, false},
+      {"static, DIRECT", Procedure::Static, true, true, 0.0, true},
+      {"steady heat transfer", Procedure::HeatTransfer, true, false, 0.0, false},
+      {"transient heat transfer without DELTMX", Procedure::HeatTransfer, false, false, 0.0, true},
+      {"transient heat transfer with DELTMX", Procedure::HeatTransfer, false, false, 5.0, false},
+      {"transient coupled without DELTMX", Procedure::CoupledTempDisp, false, false, 0.0, true},
+      {"transient coupled with DELTMX", Procedure::CoupledTempDisp, false, false, 5.0, false},
+      {"steady coupled", Procedure::CoupledTempDisp, true, false, 0.0, false},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    Step st = base;
+    st.procedure = c.procedure;
+    st.inc.steady_state = c.steady_state;
+    st.inc.direct = c.direct;
+    st.inc.deltmx = c.deltmx;
+    // The writer's rule is the analysis's (solver/thermal_step.hpp) plus DIRECT.
+    EXPECT_EQ(DatWriter::fixed_increments(st), c.direct || fixed_transient_increments(st));
+    EXPECT_EQ(DatWriter::fixed_increments(st), c.fixed);
+    const auto h = step_header(m, st);
+    EXPECT_EQ(has(h, "FIXED TIME INCREMENTS"), c.fixed);
+    EXPECT_EQ(has(h, "AUTOMATIC TIME CONTROL"), !c.fixed);
+    if (c.fixed) {
+      // the size of every increment: the initial increment 0.25
+      const int inc = find_line(h, "TIME INCREMENT IS");
+      ASSERT_GE(inc, 0);
+      EXPECT_NE(h[inc].find("2.5000E-01"), std::string::npos) << h[inc];
+      EXPECT_FALSE(has(h, "MAXIMUM TIME INCREMENT"));
+    } else {
+      EXPECT_TRUE(has(h, "INITIAL TIME INCREMENT"));
+    }
+  }
+}
+
+// A step that stops early hands its last converged increment over again as the final frame
+// (last_in_step, dt 0). Increment 1 of the fixture printed node request 0 (TOP: U and RF tables)
+// and element request 1 (GAPS); the repeat prints only what was not printed yet: node request 1
+// (all nodes) and element request 0 (ALL).
+TEST(OutputDat, RepeatedFinalFramePrintsOnlyTheMissingTables) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "r.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.frame(m, 0, make_frame(m, 1, 0.5, false));
+  Frame again = make_frame(m, 1, 0.5, true);
+  again.dt = 0.0;
+  w.frame(m, 0, again);
+  StepSummary s = make_summary();
+  s.converged = false;
+  w.end_step(m, 0, s);
+  w.end(m, make_run());
+  const auto lines = read_lines(dir / "r.dat");
+  ASSERT_EQ(count_lines(lines, "INCREMENT     1 SUMMARY"), 2);
+  const int second =
+      find_line(lines, "INCREMENT     1 SUMMARY", find_line(lines, "INCREMENT     1 SUMMARY") + 1);
+  // The repeat's header keeps the increment's size and says why it is there.
+  EXPECT_EQ(lines[find_line(lines, "TIME INCREMENT COMPLETED", second)],
+            " TIME INCREMENT COMPLETED  5.0000E-01,  FRACTION OF STEP COMPLETED  5.0000E-01");
+  EXPECT_GE(find_line(lines, "THE STEP STOPPED EARLY", second), 0);
+  EXPECT_EQ(count_lines(lines, "FOR NODES BELONGING TO NODE SET TOP"), 2); // U, RF: once each
+  EXPECT_LT(find_line(lines, "FOR NODES BELONGING TO NODE SET TOP", second), 0);
+  EXPECT_EQ(count_lines(lines, "ELEMENT TYPE GAPUNI AND ELEMENT SET GAPS"), 1);
+  EXPECT_LT(find_line(lines, "ELEMENT TYPE GAPUNI AND ELEMENT SET GAPS", second), 0);
+  EXPECT_GT(find_line(lines, "PRINTED FOR ALL NODES"), second);
+  EXPECT_GT(find_line(lines, "ELEMENT TYPE C3D8 AND ELEMENT SET ALL"), second);
+}
+
+TEST(OutputDat, RepeatedFinalFrameWithEverythingPrintedAddsNothing) {
+  Model m = make_model();
+  m.steps.push_back(m.steps[0]);
+  m.steps[1].number = 2;
+  const auto dir = fresh_dir();
+  DatWriter w(dir / "r.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  Frame all_due = make_frame(m, 1, 0.5, false);
+  all_due.node_print_due = {true, true};
+  all_due.el_print_due = {true, true};
+  w.frame(m, 0, all_due);
+  Frame again = make_frame(m, 1, 0.5, true);
+  again.dt = 0.0;
+  w.frame(m, 0, again);
+  w.end_step(m, 0, make_summary());
+  // The next step starts afresh: its increment 1 is not a repeat.
+  w.begin_step(m, 1);
+  Frame next = make_frame(m, 1, 0.5, false);
+  next.step = 2;
+  w.frame(m, 1, next);
+  w.end(m, make_run());
+  const auto lines = read_lines(dir / "r.dat");
+  EXPECT_EQ(count_lines(lines, "INCREMENT     1 SUMMARY"), 2); // step 1 once, step 2 once
+  EXPECT_EQ(count_lines(lines, "PRINTED FOR ALL NODES"), 1);
+  EXPECT_EQ(count_lines(lines, "THE STEP STOPPED EARLY"), 0);
+  EXPECT_GE(find_line(lines, "STEP    2  INCREMENT    1"), 0);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 
 namespace gapfem {
@@ -157,6 +158,76 @@ TEST(OutputJson, StepChecks) {
   // relative error = 1e-9 / 100
   EXPECT_DOUBLE_EQ(c["equilibrium"]["relative_error"].get<double>(), 1e-11);
   EXPECT_TRUE(c["heat_balance"].is_null());
+}
+
+TEST(OutputJson, HeatBalanceWithScaleAndRelativeError) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  JsonWriter w(dir / "h.results.json", "h");
+  w.begin(m);
+  w.begin_step(m, 0);
+  StepSummary s = make_summary();
+  s.checks.thermal = true;
+  s.checks.reaction_flux_sum = -500.0;
+  s.checks.applied_flux_sum = 500.0;
+  s.checks.heat_balance_error = 1e-10;
+  s.checks.heat_scale = 1000.0;
+  w.end_step(m, 0, s);
+  w.begin_step(m, 0); // a second step in which no heat flows: scale 0
+  s.checks.heat_balance_error = 0.0;
+  s.checks.heat_scale = 0.0;
+  w.end_step(m, 0, s);
+  w.end(m, make_run());
+  const json j = json::parse(read_file(dir / "h.results.json"));
+  const json& h = j["steps"][0]["checks"]["heat_balance"];
+  EXPECT_EQ(h["error"].get<double>(), 1e-10);
+  EXPECT_EQ(h["heat_scale"].get<double>(), 1000.0);
+  // relative error = 1e-10 / 1000
+  EXPECT_DOUBLE_EQ(h["relative_error"].get<double>(), 1e-13);
+  EXPECT_TRUE(j["steps"][1]["checks"]["heat_balance"]["relative_error"].is_null());
+}
+
+// A step that stops early hands its last converged increment over again as the final frame; the
+// stream cannot take back the earlier frame, so the repeat is marked and readers take the last
+// frame with a given increment.
+TEST(OutputJson, RepeatedFinalFrameIsMarked) {
+  Model m = make_model();
+  m.steps.push_back(m.steps[0]);
+  m.steps[1].number = 2;
+  const auto dir = fresh_dir();
+  JsonWriter w(dir / "r.results.json", "r");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.frame(m, 0, make_frame(m, 1, 0.5, false));
+  Frame again = make_frame(m, 1, 0.5, true);
+  again.dt = 0.0;
+  w.frame(m, 0, again);
+  StepSummary s = make_summary();
+  s.converged = false;
+  s.failure = "time increment below the minimum";
+  w.end_step(m, 0, s);
+  w.begin_step(m, 1);
+  Frame next = make_frame(m, 1, 0.5, true);
+  next.step = 2;
+  w.frame(m, 1, next);
+  w.end_step(m, 1, make_summary());
+  w.end(m, make_run());
+  const json j = json::parse(read_file(dir / "r.results.json"));
+  const json& frames = j["steps"][0]["frames"];
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_EQ(frames[0]["increment"], 1);
+  EXPECT_EQ(frames[0]["repeated"], false);
+  EXPECT_EQ(frames[1]["increment"], 1);
+  EXPECT_EQ(frames[1]["repeated"], true);
+  EXPECT_EQ(frames[1]["last_in_step"], true);
+  EXPECT_EQ(frames[1]["nodes"].size(), 9u) << "the repeat is complete";
+  // The reader's rule: the last frame with a given increment wins.
+  std::map<int, const json*> by_increment;
+  for (const json& f : frames) by_increment[f["increment"].get<int>()] = &f;
+  ASSERT_EQ(by_increment.size(), 1u);
+  EXPECT_EQ((*by_increment[1])["last_in_step"], true);
+  // Increment 1 of the next step is not a repeat.
+  EXPECT_EQ(j["steps"][1]["frames"][0]["repeated"], false);
 }
 
 TEST(OutputJson, FramesWithoutDuePrintsAreSkipped) {

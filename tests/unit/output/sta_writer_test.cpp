@@ -43,6 +43,26 @@ TEST(OutputSta, EveryLineIsFlushedAtOnce) {
   EXPECT_EQ(lines[5].substr(0, 14), "   1     1   1");
 }
 
+TEST(OutputSta, DeltmxRepeatHasItsOwnMarker) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  StaWriter w(dir / "wt.sta");
+  w.begin(m);
+  w.begin_step(m, 0);
+  // Newton converged in 3 iterations, but the temperature change exceeded DELTMX: the attempt is
+  // repeated smaller. It did not fail, so not "U" but "D".
+  IncrementInfo deltmx = inc_info(1, 1, false, 0.5);
+  deltmx.iterations = 3;
+  deltmx.deltmx_exceeded = true;
+  w.increment(deltmx);
+  w.increment(inc_info(1, 2, false, 0.25));
+  const auto lines = read_lines(dir / "wt.sta");
+  ASSERT_EQ(lines.size(), 7u);
+  EXPECT_EQ(lines[5], "   1     1   1D    1     2     3  0.5        0.5        0.5");
+  EXPECT_EQ(lines[6].substr(0, 15), "   1     1   2U");
+  EXPECT_EQ(StaWriter::attempt_marker(inc_info(1, 1, true, 0.5)), ' ');
+}
+
 TEST(OutputSta, FailedRun) {
   const Model m = make_model();
   const auto dir = fresh_dir();

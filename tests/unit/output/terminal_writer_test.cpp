@@ -54,5 +54,31 @@ TEST(OutputTerminal, ProgressAndSummaryThroughLog) {
   EXPECT_TRUE(cap.contains(log::Level::Info, "*GAP: area not given; S11 is a force"));
 }
 
+TEST(OutputTerminal, DeltmxRepeatAndHeatBalance) {
+  Captured cap;
+  const log::Level old_level = log::level();
+  log::set_level(log::Level::Info);
+  log::Sink old = log::set_sink(
+      [&](log::Level lvl, std::string_view msg) { cap.lines.emplace_back(lvl, std::string(msg)); });
+  const Model m = make_model();
+  TerminalWriter w;
+  IncrementInfo deltmx = inc_info(1, 1, false, 0.5);
+  deltmx.deltmx_exceeded = true;
+  w.increment(deltmx);
+  StepSummary s = make_summary();
+  s.checks.thermal = true;
+  s.checks.heat_balance_error = 2e-9;
+  s.checks.heat_scale = 1000.0;
+  w.end_step(m, 0, s);
+  log::set_sink(std::move(old));
+  log::set_level(old_level);
+
+  EXPECT_TRUE(cap.contains(log::Level::Progress, "DELTMX exceeded: repeated"));
+  EXPECT_FALSE(cap.contains(log::Level::Progress, "not converged"));
+  // relative heat balance error 2e-9 / 1000 = 2e-12
+  EXPECT_TRUE(
+      cap.contains(log::Level::Info, "heat balance error 2.000e-09 (2.00e-12 of heat scale 1000)"));
+}
+
 } // namespace
 } // namespace gapfem
