@@ -153,6 +153,7 @@ StepSummary Analysis::Impl::run_step(int index) {
   FluxHistory flux;
   NewtonControls controls;
   step_damping_peak = 0.0;
+  std::vector<double> converged_f_int, converged_f_ext;
   std::string last_problem;
   while (!ctrl.finished()) {
     if (ctrl.increment() >= step.max_increments) {
@@ -200,6 +201,8 @@ StepSummary Analysis::Impl::run_step(int index) {
     if (redo) continue;
     if (res.converged) {
       prob.commit();
+      converged_f_int = st.f_int;
+      converged_f_ext = st.f_ext;
       for (int f = 0; f < kNumFields; ++f) flux.sum[f] += res.flux[f];
       ++flux.n;
       ctrl.accept(res.iterations - res.severe_iterations, growth);
@@ -233,10 +236,17 @@ StepSummary Analysis::Impl::run_step(int index) {
   }
   if (!sum.converged) {
     // Report the last converged state as the step's final frame.
+    // Report the last converged state as the step's final frame, with the forces (reactions,
+    // capacity terms) of its converged evaluation.
     prob.begin_increment(ctrl.step_time(), 0.0);
-    try {
-      prob.evaluate();
-    } catch (const ConvergenceFailure&) {
+    if (!converged_f_int.empty()) {
+      st.f_int = converged_f_int;
+      st.f_ext = converged_f_ext;
+    } else {
+      try {
+        prob.evaluate();
+      } catch (const ConvergenceFailure&) {
+      }
     }
     write_frame(index, prob, ctrl.increment(), true, 0.0);
   } else {

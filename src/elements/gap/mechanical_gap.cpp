@@ -12,6 +12,7 @@ namespace gapfem {
 namespace {
 constexpr std::array<std::string_view, 3> kSNames = {"S11", "S12", "S13"};
 constexpr std::array<std::string_view, 3> kENames = {"E11", "E12", "E13"};
+constexpr std::array<std::string_view, 1> kHflNames = {"HFL1"};
 constexpr int kMaxDofs = 8;
 using VecN = Eigen::Matrix<double, kMaxDofs, 1>;
 
@@ -45,7 +46,8 @@ struct MechanicalGapKernel::Response {
   Eigen::Vector2d friction = Eigen::Vector2d::Zero();
   Eigen::Vector2d tangential_damping = Eigen::Vector2d::Zero();
   double dissipation = 0.0;
-  bool augmented_open = false;
+  GapThermalModel::Flux heat;  ///< GAPUNIT conduction/radiation
+  double heat_rate = 0.0;      ///< frictional heating rate eta * dissipation / dt
 };
 
 MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
@@ -73,6 +75,7 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
     if (!_computed_direction) _base.n = dir.normalized();
     break;
   }
+  if (_type == ElementType::GAPUNIT) _thermal.emplace(_section, model.constants);
   // Normal behaviour.
   const SurfaceBehavior& b = _section.behavior;
   _no_separation = b.given && b.no_separation;
@@ -292,7 +295,13 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   Eigen::Vector2d plastic = is_closed ? plastic_start : R.slip; // open: the stick point follows
   Eigen::Matrix2d dtau_ds = Eigen::Matrix2d::Zero();
   Eigen::Vector2d dtau_dN = Eigen::Vector2d::Zero();
-  const double temperature = in.temperature.empty() ? 0.0 : 0.5 * (in.temperature[0] + in.temperature[1]);
+  const int iT1 = _per_node - 1, iT2 = 2 * _per_node - 1; // GAPUNIT temperature DOFs
+  const double temperature = _thermal ? 0.5 * (in.u[iT1] + in.u[iT2])
+                             : in.temperature.empty() ? 0.0
+                                                      : 0.5 * (in.temperature[0] + in.temperature[1]);
+  // d(dissipation of the increment)/d(elastic slip) and /d(normal force), for frictional heating
+  Eigen::Vector2d dD_de = Eigen::Vector2d::Zero();
+  double dD_dN = 0.0;
   bool friction_rows = false;
   if (fl) {
     const double FNc = std::max(FN, 0.0);
@@ -339,6 +348,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
           dtau_ds = (crit / en) * (Eigen::Matrix2d::Identity() - m * m.transpose());
         plastic = R.slip;
         R.dissipation = R.friction.dot(plastic - plastic_start);
+        dD_de = R.friction; // D = crit |e| along m
+        dD_dN = e.norm() * dcrit;
         if (update) {
           mult[1] = R.friction[0];
           mult[2] = R.friction[1];
@@ -357,6 +368,14 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
       plastic = fr.plastic_slip;
       R.dissipation = fr.dissipation;
       if (FNc > 0) status = fr.slipping ? ContactStatus::Slip : ContactStatus::Stick;
+      if (fr.slipping) {
+        // D = crit (|e| - gamma) with e the trial elastic slip
+        const double gamma = fl->elastic_slip(_lc[in.block_index]);
+        double dcrit = 0.0;
+        fl->critical_force(FNc, dt > 0 ? dslip.norm() / dt : 0.0, temperature, &dcrit);
+        dD_de = fr.force;
+        dD_dN = ((R.slip - plastic_start).norm() - gamma) * dcrit;
+      }
     }
     if (FN <= 0.0) dtau_dN.setZero();
   }
@@ -391,6 +410,19 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   }
   R.damping_force = Fd;
   R.tangential_damping = td;
+
+  // ---------------------------------------------------------------- GAPUNIT heat transfer
+  double w1 = 0.0, w2 = 0.0, eta_dt = 0.0;
+  if (_thermal) {
+    const double pressure = std::max(FN, 0.0) / _section.area;
+    R.heat = _thermal->flux(in.u[iT1], in.u[iT2], G.h, is_closed ? pressure : 0.0);
+    if (const auto& hg = _thermal->heat_generation(); hg && dt > 0) {
+      w1 = hg->fraction();
+      w2 = 1.0 - hg->fraction();
+      eta_dt = hg->eta() / dt;
+      R.heat_rate = eta_dt * R.dissipation;
+    }
+  }
 
   if (!update) {
     R.status = status;
@@ -462,6 +494,42 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
           for (int j = 0; j < _dim; ++j)
             out->tangent[(a * _per_node + i) * nd + b * _per_node + j] -= normal_total * sign * G.H(i, j);
       }
+  if (!_thermal) return;
+  // conduction/radiation: node 1 loses A q, node 2 gains it; frictional heat enters both nodes
+  const double A = _section.area;
+  const GapThermalModel::Flux& q = R.heat;
+  out->residual[iT1] += A * q.q - w1 * R.heat_rate;
+  out->residual[iT2] += -A * q.q - w2 * R.heat_rate;
+  out->unsymmetric = true;
+  if (!out->want_tangent) return;
+  auto add = [&](int row, int col, double v) { out->tangent[row * nd + col] += v; };
+  add(iT1, iT1, A * q.dq_dTa);
+  add(iT1, iT2, A * q.dq_dTb);
+  add(iT2, iT1, -A * q.dq_dTa);
+  add(iT2, iT2, -A * q.dq_dTb);
+  // d q / d u through the clearance (dh/du = -dg) and the contact pressure p = F_N / A
+  const double pressure_factor = is_closed && FN > 0 ? q.dq_dp / A : 0.0;
+  // d(heat rate)/du through the slip and the normal force
+  VecN dD = VecN::Zero();
+  for (int i = 0; i < nd; ++i) dD[i] = dD_de[0] * ds1[i] + dD_de[1] * ds2[i];
+  for (int j = 0; j < nd; ++j) {
+    double dqj = -A * q.dq_dh * dg[j];
+    if (!lagrange_normal) dqj += A * pressure_factor * dFN_dg * dg[j];
+    const double dD_j = dD[j] + (lagrange_normal ? 0.0 : dD_dN * dFN_dg * dg[j]);
+    add(iT1, j, dqj - w1 * eta_dt * dD_j);
+    add(iT2, j, -dqj - w2 * eta_dt * dD_j);
+  }
+  if (lagrange_normal && (pressure_factor != 0.0 || dD_dN != 0.0)) {
+    // the flux depends on the normal multiplier: its column gets the temperature rows
+    out->has_columns = true;
+    int row = -1;
+    for (int c = 0; c < out->n_constraints; ++c)
+      if (out->constraint_slot[c] == 0) row = c;
+    if (row >= 0) {
+      out->constraint_column[row * nd + iT1] += A * pressure_factor - w1 * eta_dt * dD_dN;
+      out->constraint_column[row * nd + iT2] += -A * pressure_factor - w2 * eta_dt * dD_dN;
+    }
+  }
 }
 
 void MechanicalGapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
@@ -507,20 +575,26 @@ void MechanicalGapKernel::recover(const ElementInput& in, ElementRecovery& out) 
     rec.t1[k] = R.t1[k];
     rec.t2[k] = R.t2[k];
   }
+  if (_thermal) {
+    rec.thermal = true;
+    rec.heat_flux = R.heat.q;
+    rec.heat_flow = R.heat.q * _section.area;
+    rec.conductance = R.heat.conductance;
+    out.blocks.push_back(OutputBlock{ElemVar::HFL, kHflNames, 1, {R.heat.q}});
+  }
   out.blocks.push_back(OutputBlock{ElemVar::S, kSNames, 1, {rec.pressure, rec.shear[0], rec.shear[1]}});
   out.blocks.push_back(OutputBlock{ElemVar::E, kENames, 1, {rec.clearance, rec.slip[0], rec.slip[1]}});
   out.gap = rec;
 }
 
 std::unique_ptr<ElementKernel> make_gap_kernel(const KernelContext& ctx) {
-  const SourceLocation loc = ctx.model.element_location(ctx.elements.empty() ? -1 : ctx.elements[0]);
   switch (ctx.type) {
   case ElementType::GAPUNI:
   case ElementType::GAPCYL:
-  case ElementType::GAPSPHER: return std::make_unique<MechanicalGapKernel>(ctx);
-  default:
-    throw InputError(loc, std::string(element_info(ctx.type).name),
-                     "thermal gap elements (GAPUNIT, DGAP) arrive with the thermal procedures");
+  case ElementType::GAPSPHER:
+  case ElementType::GAPUNIT: return std::make_unique<MechanicalGapKernel>(ctx);
+  case ElementType::DGAP: return std::make_unique<DgapKernel>(ctx);
+  default: throw InternalError("not a gap element type");
   }
 }
 

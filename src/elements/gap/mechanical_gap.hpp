@@ -7,10 +7,12 @@
 /// ROUGH) stick multipliers; contact damping. docs/theory/gap_elements.md has the equations.
 #include "elements/element_kernel.hpp"
 #include "elements/gap/friction.hpp"
+#include "elements/gap/gap_thermal.hpp"
 #include "elements/gap/gap_kinematics.hpp"
 #include "elements/gap/normal_law.hpp"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace gapfem {
@@ -40,7 +42,9 @@ public:
   void initialize(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
   bool augment(const ElementInput& in) const override;
-  bool supports_output(ElemVar v) const override { return v == ElemVar::S || v == ElemVar::E; }
+  bool supports_output(ElemVar v) const override {
+    return v == ElemVar::S || v == ElemVar::E || (v == ElemVar::HFL && _thermal.has_value());
+  }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 
   /// Characteristic length of element `block_index` (attached elements' mean size).
@@ -73,6 +77,7 @@ private:
   int _section_friction = -1;
   std::vector<double> _lc; ///< per element of the block
   double _length_scale = 1.0;
+  std::optional<GapThermalModel> _thermal; ///< GAPUNIT: conductance, radiation, heat generation
 };
 
 } // namespace gapfem

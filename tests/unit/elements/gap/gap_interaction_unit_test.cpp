@@ -33,62 +33,6 @@ FrictionSpec coulomb(double mu, double elastic_slip = 1e-3) {
   return f;
 }
 
-/// Central differences of the residual against the tangent (multipliers fixed; the trial state is
-/// restored before every evaluation so the status does not change), and of the residual against
-/// the normal multiplier against the constraint column.
-void check_element_tangent(SingleElement& el, double h_scale, double tol = 1e-6) {
-  const auto state = el.state;
-  const auto mult = el.mult;
-  el.evaluate();
-  const auto K = el.K;
-  const auto col = el.ccol;
-  const bool has_columns = el.has_columns;
-  const int n_rows = el.n_constraints;
-  const auto cslot = std::vector<int>(el.cslot.begin(), el.cslot.end());
-  const auto nd = el.u.size();
-  const double h = std::cbrt(2.2e-16) * h_scale;
-  double kmax = 1.0;
-  for (double v : K) kmax = std::max(kmax, std::abs(v));
-  for (std::size_t j = 0; j < nd; ++j) {
-    const double keep = el.u[j];
-    el.u[j] = keep + h;
-    el.state = state;
-    el.mult = mult;
-    el.evaluate();
-    const auto rp = el.r;
-    el.u[j] = keep - h;
-    el.state = state;
-    el.mult = mult;
-    el.evaluate();
-    const auto rm = el.r;
-    el.u[j] = keep;
-    for (std::size_t i = 0; i < nd; ++i)
-      EXPECT_NEAR((rp[i] - rm[i]) / (2 * h), K[i * nd + j], tol * kmax) << "K(" << i << "," << j << ")";
-  }
-  // d r / d lambda for each active row
-  for (int row = 0; row < n_rows; ++row) {
-    const int slot = cslot[row];
-    const double dl = 1e-6 * (1.0 + std::abs(mult[slot]));
-    el.state = state;
-    el.mult = mult;
-    el.mult[slot] += dl;
-    el.evaluate();
-    const auto rp = el.r;
-    el.state = state;
-    el.mult = mult;
-    el.mult[slot] -= dl;
-    el.evaluate();
-    const auto rm = el.r;
-    for (std::size_t i = 0; i < nd; ++i) {
-      const double expected = has_columns ? col[row * nd + i] : el.ccoef[row * nd + i];
-      EXPECT_NEAR((rp[i] - rm[i]) / (2 * dl), expected, 1e-6) << "row " << row << " dof " << i;
-    }
-  }
-  el.state = state;
-  el.mult = mult;
-  el.evaluate();
-}
-
 void set_state_closed(SingleElement& el, ContactStatus st) {
   el.state[GapStateLayout::status] = static_cast<double>(st);
   el.state0 = el.state;
