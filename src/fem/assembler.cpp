@@ -24,7 +24,7 @@ int default_thread_count() {
 Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
-      _thread_f(static_cast<std::size_t>(_threads)) {}
+      _thread_f(static_cast<std::size_t>(_threads)), _thread_K(static_cast<std::size_t>(_threads)) {}
 
 namespace {
 /// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
@@ -70,6 +70,13 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     for (int t = 0; t < _threads; ++t) {
       _thread_constraints[t].clear();
       if (multi) _thread_f[t].assign(f_int.size(), 0.0);
+      // threads other than the first scatter into private copies of the matrix values, merged in a
+      // fixed order below: the assembled matrix is bitwise reproducible
+      if (multi && K && t > 0) {
+        if (!_thread_K[t] || _thread_K[t]->pattern_ptr() != K->pattern_ptr())
+          _thread_K[t] = std::make_unique<CsrMatrix>(K->pattern_ptr());
+        _thread_K[t]->set_zero();
+      }
     }
     parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
       ElementGather& g = _scratch[t];
@@ -93,10 +100,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
         }
         if (K) {
           const auto eqs = block->element_eqs(i);
-          if (multi)
-            K->add_block_atomic(eqs, eqs, out.tangent);
-          else
-            K->add_block(eqs, eqs, out.tangent);
+          CsrMatrix* target = (multi && t > 0) ? _thread_K[t].get() : K;
+          target->add_block(eqs, eqs, out.tangent);
         }
         res.unsymmetric |= out.unsymmetric;
         if (out.status_changes) {
@@ -113,9 +118,16 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           }
       }
     });
-    if (multi)
+    if (multi) {
       for (int t = 0; t < _threads; ++t)
         for (std::size_t s = 0; s < f_int.size(); ++s) f_int[s] += _thread_f[t][s];
+      if (K)
+        for (int t = 1; t < _threads; ++t) {
+          auto dst = K->values();
+          const auto src = _thread_K[t]->values();
+          for (std::size_t k = 0; k < dst.size(); ++k) dst[k] += src[k];
+        }
+    }
     if (C)
       for (int t = 0; t < _threads; ++t) {
         const auto& tc = _thread_constraints[t];

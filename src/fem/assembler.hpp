@@ -7,6 +7,7 @@
 #include "linalg/csr_matrix.hpp"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace gapfem {
@@ -57,6 +58,7 @@ private:
   std::vector<ElementGather> _scratch;
   std::vector<ConstraintBlock> _thread_constraints;
   std::vector<std::vector<double>> _thread_f;
+  std::vector<std::unique_ptr<CsrMatrix>> _thread_K; ///< private matrix values of threads 1..n-1
 };
 
 /// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads, 2).

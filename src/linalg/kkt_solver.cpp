@@ -16,6 +16,7 @@ void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _pattern = std::move(pattern);
   _cholmod_ready = _umfpack_ready = false;
   _active = nullptr;
+  _factored.clear();
 }
 
 void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats) {
@@ -95,7 +96,18 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       K.add_block(eqs, eqs, block);
     }
   }
-  factorize(K, symmetric, stats);
+  // A matrix equal to the one already factored (a linear model, an unchanged contact set) reuses
+  // the factor: the step factorises once and solves many times.
+  const auto vals = K.values();
+  if (_active && symmetric == _factored_symmetric && _factored.size() == vals.size() &&
+      std::equal(vals.begin(), vals.end(), _factored.begin())) {
+    out.reused_factor = true;
+  } else {
+    _factored.clear(); // no stale factor survives a failed factorisation
+    factorize(K, symmetric, stats);
+    _factored.assign(vals.begin(), vals.end());
+    _factored_symmetric = symmetric;
+  }
   out.used_unsymmetric = _active != _cholmod.get();
 
   // b1 = b - C^T R g ;  y = M^-1 b1

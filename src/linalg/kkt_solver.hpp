@@ -31,6 +31,7 @@ struct KktStatistics {
   int schur_iterations = 0;
   int solves = 0;
   bool used_unsymmetric = false;
+  bool reused_factor = false; ///< the matrix equalled the one already factored
   double constraint_residual = 0.0;
 };
 
@@ -54,6 +55,8 @@ private:
   LinearSolver* _active = nullptr;
   bool _cholmod_ready = false, _umfpack_ready = false;
   int _solves = 0;
+  std::vector<double> _factored; ///< the matrix values behind the current factor
+  bool _factored_symmetric = true;
 };
 
 } // namespace gapfem

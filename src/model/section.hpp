@@ -131,7 +131,10 @@ struct GapSection {
   SurfaceBehavior behavior;
   FrictionSpec friction;
   ContactDampingSpec damping;
-  GapConductanceSpec conductance;
+  GapConductanceSpec conductance;          ///< clearance-dependent (or the only, PRESSURE) table
+  /// a second *GAP CONDUCTANCE, PRESSURE after a clearance-dependent one: used while the gap is
+  /// closed, the clearance table while it is open (docs/theory/gap_elements.md)
+  GapConductanceSpec conductance_pressure;
   GapRadiationSpec radiation;
   GapHeatGenerationSpec heat_generation;
   SourceLocation loc;

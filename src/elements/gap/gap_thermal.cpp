@@ -11,20 +11,25 @@ constexpr std::array<std::string_view, 1> kHflNames = {"HFL1"};
 
 GapThermalModel::GapThermalModel(const GapSection& s, const PhysicalConstants& constants) {
   if (s.conductance.given) _conductance.emplace(s.conductance);
+  if (s.conductance_pressure.given) _conductance_closed.emplace(s.conductance_pressure);
   if (s.radiation.given) _radiation.emplace(s.radiation, constants);
   if (s.heat_generation.given) _heat.emplace(s.heat_generation);
 }
 
-GapThermalModel::Flux GapThermalModel::flux(double Ta, double Tb, double h, double p) const {
+GapThermalModel::Flux GapThermalModel::flux(double Ta, double Tb, double h, double p,
+                                            bool closed) const {
   Flux f;
-  if (_conductance) {
-    const bool by_pressure = _conductance->pressure_dependent();
-    const GapFluxValue c = _conductance->conduction(Ta, Tb, by_pressure ? p : h);
+  const GapConductanceLaw* law = (_conductance_closed && closed) ? &*_conductance_closed
+                                 : _conductance                  ? &*_conductance
+                                                                 : nullptr;
+  if (law) {
+    const bool by_pressure = law->pressure_dependent();
+    const GapFluxValue c = law->conduction(Ta, Tb, by_pressure ? p : h);
     f.q += c.q;
     f.dq_dTa += c.dq_dTa;
     f.dq_dTb += c.dq_dTb;
     (by_pressure ? f.dq_dp : f.dq_dh) += c.dq_dx;
-    f.conductance = _conductance->evaluate(by_pressure ? p : h, 0.5 * (Ta + Tb)).k;
+    f.conductance = law->evaluate(by_pressure ? p : h, 0.5 * (Ta + Tb)).k;
   }
   if (_radiation) {
     const GapFluxValue r = _radiation->evaluate(Ta, Tb, h);
@@ -43,7 +48,7 @@ DgapKernel::DgapKernel(const KernelContext& ctx)
 void DgapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   // h = d: no displacements in a heat-transfer analysis; the contact pressure is zero.
   const double A = _section.area;
-  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0);
+  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
   out.residual[0] += A * f.q;
   out.residual[1] -= A * f.q;
   if (out.want_tangent) {
@@ -56,7 +61,7 @@ void DgapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
 }
 
 void DgapKernel::recover(const ElementInput& in, ElementRecovery& out) const {
-  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0);
+  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
   GapRecord rec;
   rec.status = _section.d > 0 ? ContactStatus::Open : ContactStatus::Closed;
   rec.clearance = _section.d;

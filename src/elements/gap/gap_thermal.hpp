@@ -18,7 +18,6 @@ class GapThermalModel {
 public:
   GapThermalModel(const GapSection& section, const PhysicalConstants& constants);
   bool conducts() const { return _conductance.has_value() || _radiation.has_value(); }
-  bool pressure_dependent() const { return _conductance && _conductance->pressure_dependent(); }
   const std::optional<GapHeatGeneration>& heat_generation() const { return _heat; }
 
   struct Flux {
@@ -27,11 +26,14 @@ public:
     double dq_dp = 0.0; ///< through pressure-dependent conductance
     double conductance = 0.0;
   };
-  /// Flux across a gap of clearance h carrying contact pressure p.
-  Flux flux(double Ta, double Tb, double h, double p) const;
+  /// Flux across a gap of clearance h carrying contact pressure p. With both a clearance and a
+  /// pressure table, the pressure table applies while the gap is closed, the clearance table while
+  /// it is open.
+  Flux flux(double Ta, double Tb, double h, double p, bool closed) const;
 
 private:
   std::optional<GapConductanceLaw> _conductance;
+  std::optional<GapConductanceLaw> _conductance_closed; ///< pressure table used while closed
   std::optional<GapRadiationLaw> _radiation;
   std::optional<GapHeatGeneration> _heat;
 };

@@ -415,7 +415,7 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   double w1 = 0.0, w2 = 0.0, eta_dt = 0.0;
   if (_thermal) {
     const double pressure = std::max(FN, 0.0) / _section.area;
-    R.heat = _thermal->flux(in.u[iT1], in.u[iT2], G.h, is_closed ? pressure : 0.0);
+    R.heat = _thermal->flux(in.u[iT1], in.u[iT2], G.h, is_closed ? pressure : 0.0, is_closed);
     if (const auto& hg = _thermal->heat_generation(); hg && dt > 0) {
       w1 = hg->fraction();
       w2 = 1.0 - hg->fraction();

@@ -292,7 +292,18 @@ void handle_contact_damping(BuildState& s, const Keyword& kw) {
 void handle_gap_conductance(BuildState& s, const Keyword& kw) {
   if (s.current_gap < 0) return;
   GapSection& gap = current_gap(s);
-  once(kw, gap.conductance.given, gap);
+  // Up to two definitions: one against clearance and one against pressure (PRESSURE).
+  const bool pressure = kw.has("PRESSURE");
+  const bool second = gap.conductance.given && gap.conductance.pressure != pressure;
+  if (gap.conductance.given && !second)
+    throw InputError(kw.loc, "*GAP, ELSET=" + gap.elset,
+                     fmt::format("a {}-dependent *GAP CONDUCTANCE was already given for this *GAP "
+                                 "(at line {}); give at most one against clearance and one against "
+                                 "pressure (PRESSURE)",
+                                 pressure ? "pressure" : "clearance", gap.conductance.loc.line));
+  if (gap.conductance_pressure.given)
+    throw InputError(kw.loc, "*GAP, ELSET=" + gap.elset,
+                     "this *GAP already has both a clearance- and a pressure-dependent conductance");
   reject_param(kw, "USER", "tabulate the conductance on data lines");
   if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
@@ -325,7 +336,15 @@ void handle_gap_conductance(BuildState& s, const Keyword& kw) {
         fmt::format(
             "at least two data lines (conductance, {}) are required to tabulate the conductance",
             xname));
-  gap.conductance = std::move(c);
+  if (!second) {
+    gap.conductance = std::move(c);
+  } else if (pressure) {
+    gap.conductance_pressure = std::move(c);
+  } else {
+    // the clearance table came second: keep the convention "conductance = clearance table"
+    gap.conductance_pressure = std::move(gap.conductance);
+    gap.conductance = std::move(c);
+  }
 }
 
 void handle_gap_radiation(BuildState& s, const Keyword& kw) {

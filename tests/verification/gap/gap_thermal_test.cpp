@@ -279,3 +279,31 @@ U
   EXPECT_GT(open, 0);
   EXPECT_GT(closed, 0);
 }
+
+TEST(VerificationGapThermal, ClearanceTableWhileOpenPressureTableWhileClosed) {
+  // k(h) = 4 - 4 h (0 <= h <= 1) while open, k(p) = 5 + 0.2 p while closed; temperatures 100/50.
+  const std::string opts =
+      "*GAP CONDUCTANCE\n4., 0.\n0., 1.\n*GAP CONDUCTANCE, PRESSURE\n5., 0.\n25., 100.";
+  const std::string step2 = R"(*STEP
+*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE
+*CLOAD
+1, 2, -40.
+*EL PRINT
+S, E, HFL
+*END STEP
+)";
+  const JobResult r = run_deck(gapunit_deck(opts, 0.25, step2)); // step 1 pulls node 1 up by 0.25
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const GapRecord& open = gap(r, last_frame(r, 1), 10);
+  EXPECT_EQ(open.status, ContactStatus::Open);
+  EXPECT_NEAR(open.conductance, 3.0, 1e-12);
+  EXPECT_NEAR(open.heat_flux, 150.0, 1e-9);
+  const GapRecord& closed = gap(r, last_frame(r, 2), 10);
+  EXPECT_EQ(closed.status, ContactStatus::Closed);
+  EXPECT_NEAR(closed.conductance, 13.0, 1e-9);
+  EXPECT_NEAR(closed.heat_flux, 650.0, 1e-7);
+  // a second clearance table is an error
+  const JobResult bad = run_deck(gapunit_deck("*GAP CONDUCTANCE\n4., 0.\n0., 1.\n*GAP CONDUCTANCE\n4., 0.\n0., 1.", 0.25));
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.error.find("already given"), std::string::npos) << bad.error;
+}
