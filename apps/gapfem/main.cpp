@@ -19,6 +19,13 @@ int main(int argc, char** argv) {
                "report unknown keywords and parameters as warnings instead of errors");
   app.add_flag("--no-vtu", no_vtu, "do not write ParaView files");
   app.add_flag("-q,--quiet", options.quiet, "no progress lines on the terminal");
+  app.add_flag("-v,--verbose", options.verbose,
+               "debug messages: every Newton iteration and the linear solver's decisions");
+  std::string reuse = "auto";
+  app.add_option("--factor-reuse", reuse,
+                 "reuse a factorisation across Newton iterations and increments: auto (when the "
+                 "measured times say it pays), always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}));
   app.set_version_flag("--version", std::string("gapfem ") + GAPFEM_VERSION);
   try {
     app.parse(argc, argv);
@@ -28,6 +35,9 @@ int main(int argc, char** argv) {
   options.deck = deck;
   options.write_vtu = !no_vtu;
   options.keep_frames = false;
+  options.factor_reuse = reuse == "always"  ? gapfem::FactorReuse::Always
+                         : reuse == "never" ? gapfem::FactorReuse::Never
+                                            : gapfem::FactorReuse::Auto;
   try {
     const gapfem::JobResult result = gapfem::run_job(options);
     return result.exit_code;

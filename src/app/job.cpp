@@ -7,6 +7,7 @@
 #include "output/writers.hpp"
 #include "solver/analysis.hpp"
 
+#include <cstdlib>
 #include <fmt/format.h>
 
 namespace gapfem {
@@ -45,9 +46,9 @@ JobResult run_job(const JobOptions& options) {
   std::filesystem::path dir = options.output_dir;
   if (dir.empty()) dir = options.deck.has_parent_path() ? options.deck.parent_path() : ".";
   std::optional<log::Level> previous_level;
-  if (options.quiet) {
+  if (options.quiet || options.verbose) {
     previous_level = log::level();
-    log::set_level(log::Level::Warning);
+    log::set_level(options.quiet ? log::Level::Warning : log::Level::Debug);
   }
   auto restore = [&] {
     if (previous_level) log::set_level(*previous_level);
@@ -88,7 +89,15 @@ JobResult run_job(const JobOptions& options) {
   ptrs.push_back(&memory);
 
   try {
-    Analysis analysis(*model, ptrs);
+    AnalysisOptions aopt;
+    aopt.factor_reuse = options.factor_reuse;
+    // GAPFEM_FACTOR_REUSE=always|never overrides (used to run whole test suites both ways)
+    if (const char* env = std::getenv("GAPFEM_FACTOR_REUSE")) {
+      const std::string v(env);
+      if (v == "always") aopt.factor_reuse = FactorReuse::Always;
+      if (v == "never") aopt.factor_reuse = FactorReuse::Never;
+    }
+    Analysis analysis(*model, ptrs, aopt);
     result.run = analysis.run();
     result.exit_code = kExitOk;
     if (options.write_files && !options.quiet)

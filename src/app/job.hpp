@@ -2,6 +2,7 @@
 /// @file job.hpp
 /// Running one deck end to end: read, build, analyse, write results. Used by the gapfem executable
 /// and by the tests (which inspect the in-memory results).
+#include "linalg/factor_reuse.hpp"
 #include "output/results.hpp"
 
 #include <filesystem>
@@ -19,7 +20,9 @@ struct JobOptions {
   bool write_files = true;          ///< .dat, .sta, .results.json, ParaView
   bool write_vtu = true;
   bool quiet = false;               ///< no terminal progress
+  bool verbose = false;             ///< debug messages (Newton iterations, solver decisions)
   bool keep_frames = true;          ///< keep every output frame in JobResult (tests)
+  FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
 };
 
 /// Exit statuses of gapfem (docs/conventions.md).

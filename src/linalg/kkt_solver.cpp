@@ -5,9 +5,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace gapfem {
+
+namespace {
+double norm_inf(std::span<const double> v) {
+  double s = 0.0;
+  for (double x : v) s = std::max(s, std::abs(x));
+  return s;
+}
+bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb) {
+  const LocalIndex a0 = a.row_ptr[ra], a1 = a.row_ptr[ra + 1];
+  const LocalIndex b0 = b.row_ptr[rb], b1 = b.row_ptr[rb + 1];
+  if (a1 - a0 != b1 - b0) return false;
+  for (LocalIndex k = 0; k < a1 - a0; ++k)
+    if (a.col[a0 + k] != b.col[b0 + k] || a.val[a0 + k] != b.val[b0 + k]) return false;
+  return true;
+}
+} // namespace
 
 KktSolver::KktSolver() = default;
 KktSolver::~KktSolver() = default;
@@ -17,10 +34,14 @@ void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _cholmod_ready = _umfpack_ready = false;
   _active = nullptr;
   _factored.clear();
+  _frows.clear();
+  _fR.clear();
+  _frow_of.clear();
 }
 
 void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
+  Stopwatch watch;
   if (stats) ++stats->factorizations;
   if (symmetric) {
     if (!_cholmod) _cholmod = make_cholmod_solver();
@@ -31,6 +52,7 @@ void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* sta
     try {
       _cholmod->factorize(M);
       _active = _cholmod.get();
+      _t_factor = watch.seconds();
       return;
     } catch (const SingularSystem& e) {
       // An indefinite (negative pivot) matrix, e.g. from the geometric stiffness of two external
@@ -46,13 +68,48 @@ void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* sta
   }
   _umfpack->factorize(M);
   _active = _umfpack.get();
+  _t_factor = watch.seconds();
 }
 
 void KktSolver::back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Solve);
+  Stopwatch watch;
   if (stats) ++stats->linear_solves;
   ++_solves;
   _active->solve(b, x);
+  const double dt = watch.seconds();
+  _t_solve = _t_solve > 0 ? 0.8 * _t_solve + 0.2 * dt : dt;
+}
+
+void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
+                             bool symmetric, RunStatistics* stats) {
+  _factored.clear(); // no stale factor survives a failed factorisation
+  _frows.clear();
+  _fR.clear();
+  _frow_of.clear();
+  const auto vals = K.values();
+  std::vector<double> raw(vals.begin(), vals.end());
+  double scale = 0.0;
+  for (LocalIndex i = 0; i < K.n(); ++i) scale = std::max(scale, std::abs(K.diagonal(i)));
+  // M = K + C^T R C (entries lie inside each row's element block, hence inside the pattern).
+  std::vector<LocalIndex> eqs;
+  std::vector<double> block;
+  for (int r = 0; r < C.n_rows(); ++r) {
+    const LocalIndex b0 = C.row_ptr[r], b1 = C.row_ptr[r + 1];
+    const auto len = static_cast<std::size_t>(b1 - b0);
+    eqs.assign(C.col.begin() + b0, C.col.begin() + b1);
+    block.resize(len * len);
+    for (std::size_t i = 0; i < len; ++i)
+      for (std::size_t j = 0; j < len; ++j) block[i * len + j] = R[r] * C.val[b0 + i] * C.val[b0 + j];
+    K.add_block(eqs, eqs, block);
+  }
+  factorize(K, symmetric, stats);
+  _factored = std::move(raw);
+  _factored_scale = scale > 0 ? scale : 1.0;
+  _factored_symmetric = symmetric;
+  _frows = C;
+  _fR.assign(R.begin(), R.end());
+  for (int r = 0; r < C.n_rows(); ++r) _frow_of[C.multiplier[r]] = r;
 }
 
 KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
@@ -60,7 +117,6 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
                                const KktOptions& opt, RunStatistics* stats) {
   FE_CHECK(_pattern && K.n() == _pattern->n, "KKT solver not analysed for this pattern");
   KktStatistics out;
-  // The multiplier system is solved by CG when [K D; C 0] is symmetric, by GMRES otherwise.
   _solves = 0;
   const LocalIndex n = K.n();
   const int m = C.n_rows();
@@ -83,163 +139,232 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
       R[r] = opt.augmentation * stiff / std::max(den, 1e-300);
     }
-    // M = K + C^T R C (entries lie inside each row's element block, hence inside the pattern).
-    std::vector<LocalIndex> eqs;
-    std::vector<double> block;
+  }
+
+  // Compare with what the current factor is of: rows kept (P), new rows (N), rows gone (O).
+  std::vector<int> p_of(static_cast<std::size_t>(m), -1); // row of _frows, for P rows
+  std::vector<int> gone;                                   // rows of _frows no longer present
+  const auto vals = K.values();
+  const bool comparable = _active && !_factored.empty() && symmetric == _factored_symmetric &&
+                          _factored.size() == vals.size();
+  bool exact_same = false, stale = false;
+  if (comparable) {
+    std::vector<char> used(static_cast<std::size_t>(_frows.n_rows()), 0);
+    int changes = 0;
     for (int r = 0; r < m; ++r) {
-      const LocalIndex b0 = C.row_ptr[r], b1 = C.row_ptr[r + 1];
-      const auto len = static_cast<std::size_t>(b1 - b0);
-      eqs.assign(C.col.begin() + b0, C.col.begin() + b1);
-      block.resize(len * len);
-      for (std::size_t i = 0; i < len; ++i)
-        for (std::size_t j = 0; j < len; ++j) block[i * len + j] = R[r] * C.val[b0 + i] * C.val[b0 + j];
-      K.add_block(eqs, eqs, block);
+      const auto it = _frow_of.find(C.multiplier[r]);
+      if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second)) {
+        p_of[r] = it->second;
+        used[it->second] = 1;
+      } else {
+        ++changes;
+      }
+    }
+    for (int f = 0; f < _frows.n_rows(); ++f)
+      if (!used[f]) gone.push_back(f);
+    changes += static_cast<int>(gone.size());
+    double drift = 0.0;
+    for (std::size_t k = 0; k < vals.size(); ++k)
+      drift = std::max(drift, std::abs(vals[k] - _factored[k]));
+    drift /= _factored_scale;
+    out.changed_rows = changes;
+    log::debug("  system: drift {:.2e}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
+               drift, changes, _t_factor, _t_solve);
+    // the same matrix (a linear model, an unchanged contact set): the step factorises once
+    exact_same = drift == 0.0 && changes == 0;
+    if (!exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
+        drift <= opt.max_drift) {
+      if (opt.reuse == FactorReuse::Always)
+        stale = true;
+      else // reuse pays when the extra multiplier iterations (measured: about 5 + one per two
+           // changed rows) cost less than a factorisation
+        stale = _t_solve > 0 && (0.5 * changes + 5) * _t_solve < _t_factor;
     }
   }
-  // A matrix equal to the one already factored (a linear model, an unchanged contact set) reuses
-  // the factor: the step factorises once and solves many times.
-  const auto vals = K.values();
-  if (_active && symmetric == _factored_symmetric && _factored.size() == vals.size() &&
-      std::equal(vals.begin(), vals.end(), _factored.begin())) {
-    out.reused_factor = true;
-  } else {
-    _factored.clear(); // no stale factor survives a failed factorisation
-    factorize(K, symmetric, stats);
-    _factored.assign(vals.begin(), vals.end());
-    _factored_symmetric = symmetric;
-  }
-  out.used_unsymmetric = _active != _cholmod.get();
 
-  // b1 = b - C^T R g ;  y = M^-1 b1
-  std::vector<double> b1(b.begin(), b.end());
-  if (m > 0) {
-    std::vector<double> Rg(static_cast<std::size_t>(m));
-    for (int r = 0; r < m; ++r) Rg[r] = R[r] * C.g[r];
-    C.add_transpose_multiply(Rg, -1.0, b1);
-  }
-  std::vector<double> y(static_cast<std::size_t>(n));
-  back_solve(b1, y, stats);
-  if (m == 0) {
-    std::copy(y.begin(), y.end(), du.begin());
+  for (;;) {
+    if (!exact_same && !stale) {
+      fresh_factor(K, C, R, symmetric, stats);
+      for (int r = 0; r < m; ++r) p_of[r] = r;
+      gone.clear();
+    }
+    out.reused_factor = exact_same || stale;
+    out.stale_factor = stale;
+    out.used_unsymmetric = _active != _cholmod.get();
+
+    // Extended rows: the current rows, then anti-rows cancelling the springs of rows gone.
+    const ConstraintBlock* Ch = &C;
+    ConstraintBlock ext;
+    if (!gone.empty()) {
+      ext = C;
+      for (int f : gone) {
+        const LocalIndex b0 = _frows.row_ptr[f], b1 = _frows.row_ptr[f + 1];
+        ext.add_row({_frows.col.data() + b0, static_cast<std::size_t>(b1 - b0)},
+                    {_frows.val.data() + b0, static_cast<std::size_t>(b1 - b0)}, 0.0, -1);
+      }
+      Ch = &ext;
+    }
+    const int mt = Ch->n_rows();
+    std::vector<double> d(static_cast<std::size_t>(mt), 0.0), p(static_cast<std::size_t>(mt));
+    for (int r = 0; r < m; ++r) p[r] = p_of[r] >= 0 ? _fR[p_of[r]] : R[r] / opt.augmentation;
+    for (std::size_t k = 0; k < gone.size(); ++k) {
+      const double Rf = _fR[gone[k]];
+      d[m + k] = 1.0 / Rf;
+      p[m + k] = -opt.augmentation * Rf; // the anti-row block is ~ -1/(augmentation R)
+    }
+
+    // b1 = b - C_P^T R_F g ;  y = M^-1 b1
+    std::vector<double> b1(b.begin(), b.end());
+    if (m > 0) {
+      std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
+      for (int r = 0; r < m; ++r)
+        if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * C.g[r];
+      C.add_transpose_multiply(Rg, -1.0, b1);
+    }
+    std::vector<double> y(static_cast<std::size_t>(n));
+    back_solve(b1, y, stats);
+    if (mt == 0) {
+      std::copy(y.begin(), y.end(), du.begin());
+      out.solves = _solves;
+      return out;
+    }
+    // Schur system; its residual is the predicted constraint value C du + g.
+    std::vector<double> rhs(static_cast<std::size_t>(mt));
+    Ch->multiply(y, rhs);
+    for (int r = 0; r < m; ++r) rhs[r] += C.g[r];
+    const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
+    const bool cg = !out.used_unsymmetric && !Ch->has_columns() && gone.empty();
+    int max_it = opt.max_iterations;
+    if (stale && opt.reuse == FactorReuse::Auto)
+      max_it = std::min(max_it, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
+    std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n), 0.0);
+    const SchurResult sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol, stats);
+    out.schur_iterations += sr.iterations;
+    if (stale && sr.residual > tol) {
+      log::debug("stale factor: multiplier iteration stalled ({} iterations, residual {:.3e}); "
+                 "refactorising",
+                 sr.iterations, sr.residual);
+      stale = false;
+      continue;
+    }
+    for (LocalIndex i = 0; i < n; ++i) du[i] = y[i] - x[i];
+    std::copy(w.begin(), w.begin() + m, dl.begin());
+    out.constraint_residual = sr.residual;
     out.solves = _solves;
+    log::debug("  {} factor, {} multiplier iterations", stale ? "stale" : (exact_same ? "same" : "new"),
+               sr.iterations);
     return out;
   }
+}
 
-  // Schur system S dl = rhs, S = C M^-1 C^T, rhs = C y + g. Residual = C du + g (predicted gap).
-  std::vector<double> rhs(static_cast<std::size_t>(m));
-  C.multiply(y, rhs);
-  for (int r = 0; r < m; ++r) rhs[r] += C.g[r];
-  std::fill(dl.begin(), dl.end(), 0.0);
-  std::vector<double> w(static_cast<std::size_t>(n)), tmp(static_cast<std::size_t>(n));
-  // S v = C M^-1 D v  (D = C^T unless the rows carry their own residual columns)
-  auto apply_S = [&](std::span<const double> v, std::span<double> Sv, std::span<double> Minv_Ct_v) {
+KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<const double> d,
+                                        std::span<const double> p, std::span<const double> rhs,
+                                        std::span<double> w, std::span<double> x, bool cg,
+                                        int max_iterations, double tol, RunStatistics* stats) {
+  SchurResult out;
+  const int m = Ch.n_rows();
+  const auto n = x.size();
+  std::vector<double> tmp(n), v_x(n);
+  // S v = Ch M^-1 D v - d v  (D = Ch^T unless the rows carry their own columns); Minv_D_v kept
+  auto apply_S = [&](std::span<const double> v, std::span<double> Sv, std::span<double> Minv_D_v) {
     std::fill(tmp.begin(), tmp.end(), 0.0);
-    C.add_column_multiply(v, 1.0, tmp);
-    back_solve(tmp, Minv_Ct_v, stats);
-    C.multiply(Minv_Ct_v, Sv);
+    Ch.add_column_multiply(v, 1.0, tmp);
+    back_solve(tmp, Minv_D_v, stats);
+    Ch.multiply(Minv_D_v, Sv);
+    for (int r = 0; r < m; ++r) Sv[r] -= d[r] * v[r];
   };
-  auto norm_inf = [](std::span<const double> v) {
-    double s = 0.0;
-    for (double x : v) s = std::max(s, std::abs(x));
-    return s;
-  };
-  const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
-  std::vector<double> res(rhs);
-  std::copy(y.begin(), y.end(), du.begin()); // du = y - M^-1 C^T dl, accumulated
+  std::vector<double> res(rhs.begin(), rhs.end());
+  std::fill(w.begin(), w.end(), 0.0);
+  std::fill(x.begin(), x.end(), 0.0);
 
-  if (!out.used_unsymmetric && !C.has_columns()) {
-    // Preconditioned CG (S symmetric positive (semi)definite, preconditioner R).
-    std::vector<double> z(static_cast<std::size_t>(m)), p(static_cast<std::size_t>(m)),
+  if (cg) {
+    // Preconditioned CG (S symmetric positive (semi)definite, diagonal preconditioner p > 0).
+    std::vector<double> z(static_cast<std::size_t>(m)), pv(static_cast<std::size_t>(m)),
         Sp(static_cast<std::size_t>(m));
-    for (int r = 0; r < m; ++r) z[r] = R[r] * res[r];
-    p = z;
+    for (int r = 0; r < m; ++r) z[r] = p[r] * res[r];
+    pv = z;
     double rz = std::inner_product(res.begin(), res.end(), z.begin(), 0.0);
-    for (int it = 0; it < opt.max_iterations && norm_inf(res) > tol; ++it) {
-      apply_S(p, Sp, w);
-      const double pSp = std::inner_product(p.begin(), p.end(), Sp.begin(), 0.0);
+    for (int it = 0; it < max_iterations && norm_inf(res) > tol; ++it) {
+      apply_S(pv, Sp, v_x);
+      const double pSp = std::inner_product(pv.begin(), pv.end(), Sp.begin(), 0.0);
       if (!(pSp > 0)) break; // redundant constraints exhausted
       const double alpha = rz / pSp;
       for (int r = 0; r < m; ++r) {
-        dl[r] += alpha * p[r];
+        w[r] += alpha * pv[r];
         res[r] -= alpha * Sp[r];
       }
-      for (LocalIndex i = 0; i < n; ++i) du[i] -= alpha * w[i];
-      ++out.schur_iterations;
-      for (int r = 0; r < m; ++r) z[r] = R[r] * res[r];
+      for (std::size_t i = 0; i < n; ++i) x[i] += alpha * v_x[i];
+      ++out.iterations;
+      for (int r = 0; r < m; ++r) z[r] = p[r] * res[r];
       const double rz_new = std::inner_product(res.begin(), res.end(), z.begin(), 0.0);
       const double beta = rz_new / rz;
       rz = rz_new;
-      for (int r = 0; r < m; ++r) p[r] = z[r] + beta * p[r];
+      for (int r = 0; r < m; ++r) pv[r] = z[r] + beta * pv[r];
     }
-  } else {
-    // Right-preconditioned restarted GMRES on S with preconditioner R.
-    const int restart = std::min(m, 30);
-    std::vector<std::vector<double>> V(static_cast<std::size_t>(restart) + 1,
-                                       std::vector<double>(static_cast<std::size_t>(m)));
-    std::vector<double> H(static_cast<std::size_t>((restart + 1) * restart), 0.0), cs(restart),
-        sn(restart), s(restart + 1), zv(static_cast<std::size_t>(m)), Sz(static_cast<std::size_t>(m));
-    int total = 0;
-    while (norm_inf(res) > tol && total < opt.max_iterations) {
-      const double beta = std::sqrt(std::inner_product(res.begin(), res.end(), res.begin(), 0.0));
-      if (!(beta > 0)) break;
-      for (int r = 0; r < m; ++r) V[0][r] = res[r] / beta;
-      std::fill(s.begin(), s.end(), 0.0);
-      s[0] = beta;
-      int k = 0;
-      for (; k < restart && total < opt.max_iterations; ++k, ++total) {
-        for (int r = 0; r < m; ++r) zv[r] = R[r] * V[k][r];
-        apply_S(zv, Sz, w);
-        ++out.schur_iterations;
-        auto& vn = V[k + 1];
-        vn = Sz;
-        for (int j = 0; j <= k; ++j) {
-          const double h = std::inner_product(vn.begin(), vn.end(), V[j].begin(), 0.0);
-          H[j * restart + k] = h;
-          for (int r = 0; r < m; ++r) vn[r] -= h * V[j][r];
-        }
-        const double hn = std::sqrt(std::inner_product(vn.begin(), vn.end(), vn.begin(), 0.0));
-        H[(k + 1) * restart + k] = hn;
-        if (hn > 0)
-          for (int r = 0; r < m; ++r) vn[r] /= hn;
-        for (int j = 0; j < k; ++j) {
-          const double a = H[j * restart + k], bb = H[(j + 1) * restart + k];
-          H[j * restart + k] = cs[j] * a + sn[j] * bb;
-          H[(j + 1) * restart + k] = -sn[j] * a + cs[j] * bb;
-        }
-        const double a = H[k * restart + k], bb = H[(k + 1) * restart + k];
-        const double d = std::hypot(a, bb);
-        cs[k] = d > 0 ? a / d : 1.0;
-        sn[k] = d > 0 ? bb / d : 0.0;
-        H[k * restart + k] = d;
-        H[(k + 1) * restart + k] = 0.0;
-        s[k + 1] = -sn[k] * s[k];
-        s[k] = cs[k] * s[k];
-        if (std::abs(s[k + 1]) <= 1e-15 * beta || hn == 0) {
-          ++k;
-          break;
-        }
-      }
-      // back substitution for the Krylov coefficients, then dl += R V c
-      std::vector<double> c(static_cast<std::size_t>(k), 0.0);
-      for (int i = k - 1; i >= 0; --i) {
-        double v = s[i];
-        for (int j = i + 1; j < k; ++j) v -= H[i * restart + j] * c[j];
-        c[i] = H[i * restart + i] != 0 ? v / H[i * restart + i] : 0.0;
-      }
-      std::vector<double> ddl(static_cast<std::size_t>(m), 0.0);
-      for (int j = 0; j < k; ++j)
-        for (int r = 0; r < m; ++r) ddl[r] += R[r] * V[j][r] * c[j];
-      for (int r = 0; r < m; ++r) dl[r] += ddl[r];
-      // true residual: rhs - S dl
-      apply_S(dl, Sz, w);
-      for (int r = 0; r < m; ++r) res[r] = rhs[r] - Sz[r];
-      if (k == 0) break;
-    }
-    // du = y - M^-1 C^T dl  (w holds M^-1 C^T dl from the last residual evaluation)
-    for (LocalIndex i = 0; i < n; ++i) du[i] = y[i] - w[i];
+    out.residual = norm_inf(res);
+    return out;
   }
-  out.constraint_residual = norm_inf(res);
-  out.solves = _solves;
+  // Right-preconditioned restarted GMRES.
+  const int restart = std::min(m, 50);
+  std::vector<std::vector<double>> V(static_cast<std::size_t>(restart) + 1,
+                                     std::vector<double>(static_cast<std::size_t>(m)));
+  std::vector<double> H(static_cast<std::size_t>((restart + 1) * restart), 0.0), cs(restart),
+      sn(restart), s(restart + 1), zv(static_cast<std::size_t>(m)), Sz(static_cast<std::size_t>(m));
+  while (norm_inf(res) > tol && out.iterations < max_iterations) {
+    const double beta = std::sqrt(std::inner_product(res.begin(), res.end(), res.begin(), 0.0));
+    if (!(beta > 0)) break;
+    for (int r = 0; r < m; ++r) V[0][r] = res[r] / beta;
+    std::fill(s.begin(), s.end(), 0.0);
+    s[0] = beta;
+    int k = 0;
+    for (; k < restart && out.iterations < max_iterations; ++k, ++out.iterations) {
+      for (int r = 0; r < m; ++r) zv[r] = p[r] * V[k][r];
+      apply_S(zv, Sz, v_x);
+      auto& vn = V[k + 1];
+      vn = Sz;
+      for (int j = 0; j <= k; ++j) {
+        const double h = std::inner_product(vn.begin(), vn.end(), V[j].begin(), 0.0);
+        H[j * restart + k] = h;
+        for (int r = 0; r < m; ++r) vn[r] -= h * V[j][r];
+      }
+      const double hn = std::sqrt(std::inner_product(vn.begin(), vn.end(), vn.begin(), 0.0));
+      H[(k + 1) * restart + k] = hn;
+      if (hn > 0)
+        for (int r = 0; r < m; ++r) vn[r] /= hn;
+      for (int j = 0; j < k; ++j) {
+        const double a = H[j * restart + k], bb = H[(j + 1) * restart + k];
+        H[j * restart + k] = cs[j] * a + sn[j] * bb;
+        H[(j + 1) * restart + k] = -sn[j] * a + cs[j] * bb;
+      }
+      const double a = H[k * restart + k], bb = H[(k + 1) * restart + k];
+      const double dd = std::hypot(a, bb);
+      cs[k] = dd > 0 ? a / dd : 1.0;
+      sn[k] = dd > 0 ? bb / dd : 0.0;
+      H[k * restart + k] = dd;
+      H[(k + 1) * restart + k] = 0.0;
+      s[k + 1] = -sn[k] * s[k];
+      s[k] = cs[k] * s[k];
+      if (std::abs(s[k + 1]) <= 1e-15 * beta || hn == 0) {
+        ++k;
+        ++out.iterations;
+        break;
+      }
+    }
+    // back substitution for the Krylov coefficients, then w += p V c
+    std::vector<double> c(static_cast<std::size_t>(k), 0.0);
+    for (int i = k - 1; i >= 0; --i) {
+      double v = s[i];
+      for (int j = i + 1; j < k; ++j) v -= H[i * restart + j] * c[j];
+      c[i] = H[i * restart + i] != 0 ? v / H[i * restart + i] : 0.0;
+    }
+    for (int j = 0; j < k; ++j)
+      for (int r = 0; r < m; ++r) w[r] += p[r] * V[j][r] * c[j];
+    // true residual rhs - S w, and x = M^-1 D w from the same evaluation
+    apply_S(w, Sz, x);
+    for (int r = 0; r < m; ++r) res[r] = rhs[r] - Sz[r];
+    if (k == 0) break;
+  }
+  out.residual = norm_inf(res);
   return out;
 }
 

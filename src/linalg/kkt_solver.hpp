@@ -13,11 +13,22 @@
 /// preconditioner R, whose spectrum is clustered in [1/(1+1/100), 1], so a few back-substitutions
 /// with one factor give the exact step. The augmentation only touches entries inside each gap
 /// element's block, so the sparsity pattern never changes with contact status.
+///
+/// Factorise rarely, solve often (docs/performance.md): the factor of M_F = K_F + C_F^T R C_F is
+/// kept. A later system whose K is close to K_F (relative drift below KktOptions::max_drift) and
+/// whose contact rows differ from C_F in a few rows is solved with the old factor: rows that closed
+/// since are plain multiplier rows, rows that opened are cancelled exactly by "anti-rows" (the
+/// spring c R c^T in M_F is removed through an extra unknown mu = R c.du with the equation
+/// c.du - mu/R = 0). The constraint rows are then met exactly; only K_F - K is left out, which makes
+/// the step a modified-Newton step (the residual is always the true one, so the converged answer is
+/// the same). Whether reuse pays is decided from the measured factorisation and solve times.
 #include "common/timer.hpp"
 #include "linalg/constraint_block.hpp"
+#include "linalg/factor_reuse.hpp"
 #include "linalg/linear_solver.hpp"
 
 #include <memory>
+#include <unordered_map>
 
 namespace gapfem {
 
@@ -25,13 +36,18 @@ struct KktOptions {
   double augmentation = 100.0;       ///< R_i = augmentation x stiffness at the row's DOFs
   double constraint_tolerance = 0.0; ///< stop the multiplier iteration when |C du + g| below this
   int max_iterations = 200;
+  FactorReuse reuse = FactorReuse::Auto;
+  bool force_fresh = false; ///< factorise the current matrix (the caller saw slow convergence)
+  double max_drift = 1e-3;  ///< reuse only if max|K - K_F| <= max_drift * max|diag K_F|
 };
 
 struct KktStatistics {
   int schur_iterations = 0;
   int solves = 0;
   bool used_unsymmetric = false;
-  bool reused_factor = false; ///< the matrix equalled the one already factored
+  bool reused_factor = false; ///< no factorisation was done for this system
+  bool stale_factor = false;  ///< ... and the factor was of a different matrix (modified Newton)
+  int changed_rows = 0;       ///< constraint rows that differ from the factored ones
   double constraint_residual = 0.0;
 };
 
@@ -41,22 +57,41 @@ public:
   ~KktSolver();
   /// Symbolic analysis for a pattern (once per step).
   void analyze(std::shared_ptr<const SparsityPattern> pattern);
-  /// Solve; K is modified in place (augmented). du has n entries, dl one per constraint row.
+  /// Solve; K may be modified in place (augmented). du has n entries, dl one per constraint row.
   /// Throws SingularSystem when M is singular (a rigid-body mode).
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                       std::span<double> du, std::span<double> dl, bool symmetric,
                       const KktOptions& options, RunStatistics* stats = nullptr);
 
 private:
+  struct SchurResult {
+    int iterations = 0;
+    double residual = 0.0;
+  };
   void factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats);
+  /// Factorise K augmented by the rows of C with weights R, remembering K and the rows.
+  void fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
+                    bool symmetric, RunStatistics* stats);
   void back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats);
+  /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
+  SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d,
+                    std::span<const double> p, std::span<const double> rhs, std::span<double> w,
+                    std::span<double> x, bool cg, int max_iterations, double tol,
+                    RunStatistics* stats);
+
   std::shared_ptr<const SparsityPattern> _pattern;
   std::unique_ptr<LinearSolver> _cholmod, _umfpack;
   LinearSolver* _active = nullptr;
   bool _cholmod_ready = false, _umfpack_ready = false;
   int _solves = 0;
-  std::vector<double> _factored; ///< the matrix values behind the current factor
+  // What the current factor is of: K_F (before augmentation) and the augmenting rows.
+  std::vector<double> _factored;
+  double _factored_scale = 1.0; ///< max |diag K_F|
   bool _factored_symmetric = true;
+  ConstraintBlock _frows;       ///< rows of C_F (g unused)
+  std::vector<double> _fR;      ///< their weights
+  std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
+  double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
 };
 
 } // namespace gapfem

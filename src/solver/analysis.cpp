@@ -43,10 +43,11 @@ struct Analysis::Impl {
   std::vector<StepSummary> summaries;
   Stopwatch watch;
   bool has_temperature_dofs = false;
+  AnalysisOptions options;
 
   Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
       : model(m), writers(std::move(w)), disc(m),
-        assembler(disc, o.threads > 0 ? o.threads : default_thread_count()) {
+        assembler(disc, o.threads > 0 ? o.threads : default_thread_count()), options(o) {
     const LocalIndex ns = disc.dofs().n_slots();
     st.u.assign(static_cast<std::size_t>(ns), 0.0);
     set_initial_temperatures(m, disc.dofs(), st.u);
@@ -152,6 +153,7 @@ StepSummary Analysis::Impl::run_step(int index) {
                    st.u_start);
   FluxHistory flux;
   NewtonControls controls;
+  controls.factor_reuse = options.factor_reuse;
   step_damping_peak = 0.0;
   std::vector<double> converged_f_int, converged_f_ext;
   std::string last_problem;

@@ -3,6 +3,7 @@
 /// Runs all steps of a model: per step the equation numbering, sparsity pattern and symbolic
 /// factorisation, the increment loop (Newton + automatic incrementation), output frames and the
 /// self-checks; carries the committed state, load history and contact status between steps.
+#include "linalg/factor_reuse.hpp"
 #include "output/results.hpp"
 
 #include <memory>
@@ -14,6 +15,7 @@ struct Model;
 
 struct AnalysisOptions {
   int threads = 0; ///< 0: default_thread_count()
+  FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
 };
 
 class Analysis {

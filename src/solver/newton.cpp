@@ -18,6 +18,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
   std::vector<double> du, dl;
   double previous_ratio = std::numeric_limits<double>::infinity();
   int increases = 0, equilibrium_iterations = 0;
+  bool last_stale = false, force_fresh = false;
   Evaluation ev;
   try {
     ev = p.evaluate();
@@ -42,8 +43,12 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     dl.assign(static_cast<std::size_t>(C.n_rows()), 0.0);
     KktOptions opt;
     opt.constraint_tolerance = 1e-3 * p.constraint_tolerance();
+    opt.reuse = c.factor_reuse;
+    opt.force_fresh = force_fresh;
     try {
-      solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+      const KktStatistics ks = solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+      last_stale = ks.stale_factor;
+      force_fresh = false;
     } catch (const SingularSystem& e) {
       res.singular = true;
       res.singular_equations = e.equations();
@@ -131,6 +136,10 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.reason = "the residual is not finite";
       return res;
     }
+    // A stale factor that no longer contracts the residual well is replaced.
+    if (last_stale && ev.status_changes == 0 && std::isfinite(previous_ratio) &&
+        worst_ratio > c.stale_contraction * previous_ratio)
+      force_fresh = true;
     if (ev.status_changes == 0) {
       if (worst_ratio > previous_ratio)
         ++increases;

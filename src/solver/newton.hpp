@@ -23,6 +23,11 @@ struct NewtonControls {
   int max_severe_iterations = 12;      ///< contact status iterations per attempt
   int chatter_flips = 4;               ///< one element flipping this often is chattering
   int max_augmentations = 25;          ///< augmented-Lagrange updates per increment
+  /// factor reuse across iterations and increments (modified Newton with exact contact rows);
+  /// a stale-factor iteration that reduces the residual by less than stale_contraction forces a
+  /// fresh factor on the next one
+  FactorReuse factor_reuse = FactorReuse::Auto;
+  double stale_contraction = 0.1;
 };
 
 struct FluxHistory {
