@@ -95,3 +95,130 @@ TEST(KktSolver, SingularMatrixNamesTheEquation) {
   ConstraintBlock C;
   EXPECT_THROW(solver.solve(K, b, C, du, dl, true, KktOptions{}), SingularSystem);
 }
+
+namespace {
+/// Dense solution of [K C^T; C 0] [du; dl] = [b; -g] for rows given as (eqs, coeffs, g).
+struct Row {
+  std::vector<LocalIndex> eqs;
+  std::vector<double> c;
+  double g;
+  std::int64_t id;
+};
+Eigen::VectorXd dense_kkt(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
+                          const std::vector<Row>& rows) {
+  const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
+  A.topLeftCorner(n, n) = K;
+  Eigen::VectorXd rhs(n + m);
+  rhs.head(n) = b;
+  for (int r = 0; r < m; ++r) {
+    for (std::size_t k = 0; k < rows[r].eqs.size(); ++k)
+      A(n + r, rows[r].eqs[k]) = A(rows[r].eqs[k], n + r) = rows[r].c[k];
+    rhs[n + r] = -rows[r].g;
+  }
+  return A.fullPivLu().solve(rhs);
+}
+ConstraintBlock block(const std::vector<Row>& rows) {
+  ConstraintBlock C;
+  for (const Row& r : rows) C.add_row(r.eqs, r.c, r.g, r.id);
+  return C;
+}
+} // namespace
+
+// A factor of K + C_F^T R C_F is reused for a new contact set: rows that closed since are plain
+// multiplier rows, rows that opened are cancelled by anti-rows; with an unchanged K the step is
+// exactly the one of a fresh factorisation.
+TEST(KktSolver, StaleFactorWithChangedRowsGivesTheExactStep) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11}, fresh{{5}, {1.0}, 0.05, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  RunStatistics stats;
+  std::vector<double> du(n), dl(2);
+  {
+    CsrMatrix K = to_csr(p);
+    const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+    EXPECT_FALSE(s.reused_factor);
+  }
+  // gap "a" opened, gap "fresh" closed
+  const std::vector<Row> rows{keep, fresh};
+  CsrMatrix K = to_csr(p);
+  const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  EXPECT_TRUE(s.stale_factor);
+  EXPECT_EQ(s.changed_rows, 2);
+  EXPECT_EQ(stats.factorizations, 1);
+  const Eigen::VectorXd ref = dense_kkt(p.K, b, rows);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+  EXPECT_NEAR(dl[0], ref[n], 1e-9);
+  EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
+}
+
+// With a drifted K the stale step is a modified-Newton step: the constraint rows hold exactly, the
+// displacements differ from the exact step by O(drift). Beyond max_drift the matrix is refactorised.
+TEST(KktSolver, DriftedTangentKeepsConstraintsExactAndRefactorsBeyondTheLimit) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row keep{{3}, {1.0}, -0.1, 11}, fresh{{0, n - 1}, {1.0, -1.0}, 0.2, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  opt.max_drift = 1e-3;
+  RunStatistics stats;
+  std::vector<double> du(n), dl(2);
+  {
+    CsrMatrix K = to_csr(p);
+    std::vector<double> dl1(1);
+    solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl1, true, opt, &stats);
+  }
+  Problem q = p;
+  q.K *= 1.0 + 1e-5; // within the drift limit (max|dK| / max|diag K| = 1e-5)
+  const std::vector<Row> rows{keep, fresh};
+  CsrMatrix K = to_csr(q);
+  auto s = solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  EXPECT_TRUE(s.stale_factor);
+  EXPECT_EQ(stats.factorizations, 1);
+  EXPECT_NEAR(du[3], 0.1, 1e-13);             // u3 = 0.1 exactly
+  EXPECT_NEAR(du[0] - du[n - 1], -0.2, 1e-13); // u0 - u7 = -0.2 exactly
+  const Eigen::VectorXd ref = dense_kkt(q.K, b, rows);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-4 * ref.head(n).cwiseAbs().maxCoeff());
+
+  Problem big = p;
+  big.K *= 1.01; // drift 1e-2 > max_drift: a fresh factor and the exact step
+  CsrMatrix K2 = to_csr(big);
+  s = solver.solve(K2, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  EXPECT_FALSE(s.reused_factor);
+  EXPECT_EQ(stats.factorizations, 2);
+  const Eigen::VectorXd ref2 = dense_kkt(big.K, b, rows);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref2[i], 1e-10) << i;
+}
+
+TEST(KktSolver, IdenticalSystemReusesTheFactorAndNeverPolicyRefactors) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row keep{{3}, {1.0}, -0.1, 11}, other{{5}, {1.0}, 0.05, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.reuse = FactorReuse::Never;
+  RunStatistics stats;
+  std::vector<double> du(n), dl(1);
+  for (int k = 0; k < 2; ++k) {
+    CsrMatrix K = to_csr(p);
+    const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt, &stats);
+    EXPECT_EQ(s.reused_factor, k == 1);
+    EXPECT_FALSE(s.stale_factor);
+  }
+  EXPECT_EQ(stats.factorizations, 1);
+  CsrMatrix K = to_csr(p);
+  solver.solve(K, {b.data(), std::size_t(n)}, block({other}), du, dl, true, opt, &stats);
+  EXPECT_EQ(stats.factorizations, 2) << "a changed contact set is refactorised under Never";
+}
