@@ -32,6 +32,11 @@ def main():
                     help="GAPUNI penalty stiffness (CalculiX fields 6-7); omit for exact contact")
     ap.add_argument("--tension", type=float, default=None,
                     help="CalculiX field 7: tension carried by an open penalty gap (ccx default 1e-3)")
+    ap.add_argument("--friction", type=float, default=None,
+                    help="Coulomb friction coefficient on the gaps (*FRICTION after each *GAP; gapfem only)")
+    ap.add_argument("--shear", type=float, default=None,
+                    help="lateral traction along x on the top face (nodal loads) in a second step "
+                         "that releases the x=0 face, so friction alone holds the block laterally")
     ap.add_argument("--no-gaps", action="store_true", help="fixed base instead of gaps (linear static)")
     ap.add_argument("--nlgeom", choices=["yes", "no"], default=None,
                     help="NLGEOM on the step (default: yes with gaps, no without)")
@@ -91,12 +96,16 @@ def main():
     for s in range(0, len(members), 16):
         w(", ".join(map(str, members[s:s + 16])) + "\n")
     if not a.no_gaps:
-        radius = a.length * math.sqrt(2.0)
+        # with --shear the base is graded from (L/2, 0) and flat (d = 0) within 0.3 L of it, so that
+        # a patch of gaps is closed from the start and holds the block against tilting
+        cx, flat = (0.5, 0.3) if a.shear is not None else (0.0, 0.0)
+        radius = a.length * math.hypot(max(cx, 1.0 - cx), 1.0)
         levels = {}
         for j in range(ny + 1):
             for i in range(nx + 1):
-                r = a.length * math.hypot(i / nx, j / ny)
-                level = min(a.levels - 1, int(round((a.levels - 1) * (r / radius) ** 2)))
+                r = a.length * math.hypot(i / nx - cx, j / ny)
+                rr = max(0.0, (r - flat * a.length) / (radius - flat * a.length))
+                level = min(a.levels - 1, int(round((a.levels - 1) * rr ** 2)))
                 levels.setdefault(level, []).append(nid(i, j, 0))
         ge = n_solid
         for level in sorted(levels):
@@ -113,6 +122,8 @@ def main():
                 if a.tension is not None:
                     line += f", {a.tension:.9g}"
             w(f"*GAP, ELSET=G{level}\n{line}\n")
+            if a.friction is not None:
+                w(f"*FRICTION\n{a.friction:.9g}\n")
     w("*BOUNDARY\nXSYM, 1, 1\nYSYM, 2, 2\n")
     if a.no_gaps:
         w("BASE, 3, 3\n")
@@ -120,13 +131,26 @@ def main():
         w("GROUND, 1, 3\n")
     w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{a.inc:.6g}, 1.\n")
     w(f"*DSLOAD\nSTOP, P, {a.pressure:.9g}\n")
+    if a.shear is not None:
+        # step 2: the x = 0 face is released (its reaction ramps off) and a lateral traction is
+        # added; friction at the closed gaps, loaded by step 1, now holds the block
+        w("*NODE PRINT, NSET=GROUND, TOTALS=YES\nRF\n*END STEP\n")
+        w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{a.inc:.6g}, 1.\n")
+        w("*BOUNDARY, OP=NEW\nYSYM, 2, 2\nGROUND, 1, 3\n")
+        w("*CLOAD\n")
+        hx, hy = a.length / nx, a.length / ny
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                wt = (0.5 if i in (0, nx) else 1.0) * (0.5 if j in (0, ny) else 1.0)
+                w(f"{nid(i, j, nz)}, 1, {a.shear * hx * hy * wt:.9g}\n")
     w("*NODE PRINT, NSET=GROUND, TOTALS=YES\nRF\n" if not a.no_gaps else "*NODE PRINT, NSET=BASE, TOTALS=YES\nRF\n")
     if a.print_gaps and not a.no_gaps:
         w("*EL PRINT, ELSET=GAPS\nS\nE\n")
     w("*END STEP\n")
     if out is not sys.stdout:
         out.close()
-    eqs = 3 * n_block - (nz + 1) * (ny + 1) - (nz + 1) * (nx + 1) - (0 if not a.no_gaps else (nx + 1) * (ny + 1))
+    eqs = 3 * n_block - (nz + 1) * (ny + 1) - (nz + 1) * (nx + 1) \
+        - (0 if not a.no_gaps else (nx + 1) * (ny + 1))
     print(f"equations {eqs}, C3D8 {n_solid}, gaps {0 if a.no_gaps else (nx + 1) * (ny + 1)}", file=sys.stderr)
 
 

@@ -1,6 +1,7 @@
 #include "fem/assembler.hpp"
 
 #include "common/error.hpp"
+#include "common/timer.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -65,6 +66,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   std::vector<AssemblyResult> partial(static_cast<std::size_t>(_threads));
   for (auto& blk : _disc.blocks()) {
     ElementBlock* block = &blk;
+    const bool gap_block = element_info(block->type).family == ElementFamily::Gap;
+    const Stopwatch block_watch;
     const int nd = block->n_dofs;
     const bool multi = _threads > 1 && block->size() >= 2000;
     for (int t = 0; t < _threads; ++t) {
@@ -145,6 +148,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           C->multiplier.push_back(tc.multiplier[r]);
         }
       }
+    if (gap_block) total.gap_seconds += block_watch.seconds();
   }
   for (auto& p : partial) {
     total.status_changes += p.status_changes;

@@ -18,6 +18,7 @@ struct AssemblyResult {
   std::array<double, kNumFields> flux_sum{}; ///< sum of |element residual entries| per field
   std::array<long, kNumFields> flux_count{};
   std::vector<ElemId> changed; ///< elements whose contact status changed in this evaluation
+  double gap_seconds = 0.0;    ///< wall time spent on gap-element blocks (the "gap work")
 };
 
 /// A distributed load with its magnitude evaluated at the current time.

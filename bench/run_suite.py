@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+"""gapfem benchmark suite: generates the bench decks, runs gapfem (and CalculiX where it can run the
+deck), and prints one table with equations, gaps, wall time, peak memory, increments, Newton
+iterations, factorisations, linear solves, the time split, ccx's wall time and the ratio, and an
+agreement check (closed-gap count, sum of ground reactions to 1e-6).
+
+Cases (generators in this directory):
+  block-<size>        block of C3D8 on a GAPUNI foundation, exact hard contact (gapfem only)
+  block-<size>-ccx    the same block with CalculiX's penalty fields 6-7 (k = 1e7): the deck ccx runs;
+                      gapfem runs it with the same penalty law, ccx runs it unchanged
+  agree-11k-ccx       the penalty block made 1e7 times stiffer than the gaps, so that the gap forces
+                      do not depend on the C3D8 formulation (gapfem's is Abaqus's B-bar element,
+                      ccx's is fully integrated: ~1% apart in reactions): closed sets must be equal
+  slab-1M             a flat slab, 1.09M equations and 40,401 gaps (exact contact)
+  pipe-rack-<size>    B31 pipe lines on GAPCYL guides and GAPUNI rest supports, thermal expansion
+  stack-<size>        DGAP thermal stack (steady heat transfer)
+
+Usage:
+  bench/run_suite.py [--gapfem build/release/gapfem] [--sizes small,medium,large,huge]
+                     [--ccx-max-eq 60000] [--work /tmp/gapfem-bench] [--markdown table.md]
+Every run is sequential (nothing else should run on the machine). Decks and outputs stay in --work.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# name, size class, generator, generator arguments, run ccx?
+CASES = [
+    ("block-1k", "small", "gen_block.py", "--nx 6 --nz 6", False),
+    ("block-1k-ccx", "small", "gen_block.py", "--nx 6 --nz 6 --penalty 1e7", True),
+    ("block-11k", "small", "gen_block.py", "--nx 15 --nz 14", False),
+    ("block-11k-ccx", "small", "gen_block.py", "--nx 15 --nz 14 --penalty 1e7", True),
+    ("agree-11k-ccx", "small", "gen_block.py",
+     "--nx 15 --nz 14 --penalty 1e7 --E 2e12 --dmax 1e-7", True),
+    ("pipe-rack-small", "small", "gen_pipe_rack.py", "--lines 4 --spans 5", False),
+    ("stack-small", "small", "gen_thermal_stack.py", "--nx 12 --nz 2 --layers 4", False),
+    ("block-50k", "medium", "gen_block.py", "--nx 25 --nz 24", False),
+    ("block-50k-ccx", "medium", "gen_block.py", "--nx 25 --nz 24 --penalty 1e7", True),
+    ("pipe-rack-50k", "medium", "gen_pipe_rack.py", "--lines 40 --spans 20 --elems 10", False),
+    ("stack-150k", "medium", "gen_thermal_stack.py", "--nx 60 --nz 4 --layers 10", False),
+    ("block-200k", "large", "gen_block.py", "--nx 40 --nz 39", False),
+    ("block-200k-ccx", "large", "gen_block.py", "--nx 40 --nz 39 --penalty 1e7", True),
+    ("pipe-rack-250k", "large", "gen_pipe_rack.py", "--lines 200 --spans 20 --elems 10", False),
+    ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
+]
+
+
+def timed(cmd, cwd):
+    """Run under /usr/bin/time -v; returns (exit code, wall seconds, peak MB, stdout+stderr)."""
+    full = ["/usr/bin/time", "-v"] + cmd if os.path.exists("/usr/bin/time") else cmd
+    t0 = time.monotonic()
+    p = subprocess.run(full, cwd=cwd, capture_output=True, text=True)
+    wall = time.monotonic() - t0
+    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr)
+    return p.returncode, wall, (int(rss.group(1)) / 1024 if rss else float("nan")), p.stdout + p.stderr
+
+
+def generate(gen, args, deck):
+    cmd = [sys.executable, os.path.join(HERE, gen)] + args.split() + ["-o", deck]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError(f"{gen} failed: {p.stderr}")
+    m = re.search(r"equations (\d+)", p.stderr)
+    g = re.search(r"gaps (\d+)", p.stderr)
+    return (int(m.group(1)) if m else None), (int(g.group(1)) if g else None)
+
+
+def ccx_ground(dat):
+    """Last *NODE PRINT RF block of the GROUND set in a ccx .dat: {node: fz}."""
+    text = open(dat).read()
+    blocks = re.split(r"\n\s*forces \(fx,fy,fz\) for set GROUND", text)
+    if len(blocks) < 2:
+        return {}
+    out = {}
+    for line in blocks[-1].splitlines()[1:]:
+        f = line.split()
+        if len(f) != 4:
+            if out:
+                break
+            continue
+        try:
+            out[int(f[0])] = float(f[3])
+        except ValueError:
+            break
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--gapfem", default=os.path.join(HERE, "..", "build", "release", "gapfem"))
+    ap.add_argument("--ccx", default=shutil.which("ccx"))
+    ap.add_argument("--sizes", default="small,medium")
+    ap.add_argument("--cases", default="", help="comma-separated case names (overrides --sizes)")
+    ap.add_argument("--ccx-max-eq", type=int, default=60000,
+                    help="run ccx only up to this many equations (ccx needs 45 min at 196k)")
+    ap.add_argument("--work", default="/tmp/gapfem-bench")
+    ap.add_argument("--markdown", default=None, help="also write the table to this file")
+    a = ap.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    sizes = set(a.sizes.split(","))
+    chosen = set(a.cases.split(",")) if a.cases else None
+    rows = []
+    for name, size, gen, args, with_ccx in CASES:
+        if chosen is not None:
+            if name not in chosen:
+                continue
+        elif size not in sizes:
+            continue
+        if not os.path.exists(os.path.join(HERE, gen)):
+            print(f"{name}: generator {gen} missing, skipped", file=sys.stderr)
+            continue
+        d = os.path.join(a.work, name)
+        os.makedirs(d, exist_ok=True)
+        deck = os.path.join(d, "job.inp")
+        neq, ngaps = generate(gen, args, deck)
+        print(f"== {name}: {neq} equations, {ngaps} gaps", file=sys.stderr, flush=True)
+        rc, wall, mem, log = timed([os.path.abspath(a.gapfem), "--no-vtu", "-q", "job.inp"], d)
+        row = {"case": name, "eq": neq, "gaps": ngaps, "rc": rc, "wall": wall, "mem": mem}
+        js = None
+        try:
+            js = json.load(open(os.path.join(d, "job.results.json")))
+            s = js["summary"]
+            row.update(inc=s["increments"], it=s["iterations"], fact=s["factorizations"],
+                       solves=s["linear_solves"], split=s["seconds"])
+            checks = js["steps"][-1].get("checks") or {}
+            gaps = checks.get("gaps") or {}
+            row["closed"] = gaps.get("closed")
+            eq = checks.get("equilibrium") or {}
+            rs = eq.get("reaction_sum")
+            row["rsum"] = rs[2] if rs and len(rs) > 2 else None
+        except (OSError, KeyError, ValueError):
+            pass
+        print(f"   gapfem: exit {rc}, {wall:.2f} s, {mem:.0f} MB", file=sys.stderr, flush=True)
+        if with_ccx and a.ccx and neq is not None and neq <= a.ccx_max_eq:
+            cd = os.path.join(d, "ccx")
+            os.makedirs(cd, exist_ok=True)
+            shutil.copy(deck, os.path.join(cd, "job.inp"))
+            env_rc, cwall, cmem, _ = timed([a.ccx, "-i", "job"], cd)
+            row.update(ccx_wall=cwall, ccx_mem=cmem, ccx_rc=env_rc)
+            ground = ccx_ground(os.path.join(cd, "job.dat"))
+            if ground and js is not None:
+                # the same rule for both codes: a ground node whose reaction exceeds 1e-4 of the
+                # largest one sits under a closed gap (open ccx gaps carry up to f_inf = 1e-3)
+                ours = {}
+                last = js["steps"][-1]["frames"][-1]["nodes"]
+                for label in ground:
+                    rf = last.get(str(label), {}).get("RF")
+                    ours[label] = rf[2] if rf else 0.0
+                fmax = max(abs(v) for v in ground.values())
+                thr = 1e-4 * fmax
+                row["ccx_closed"] = sum(1 for v in ground.values() if v > thr)
+                row["closed"] = sum(1 for v in ours.values() if v > thr)
+                row["ccx_rsum"] = sum(ground.values())
+                row["rsum"] = sum(ours.values())
+            print(f"   ccx:    exit {env_rc}, {cwall:.2f} s, {cmem:.0f} MB", file=sys.stderr, flush=True)
+        rows.append(row)
+
+    def fmt_split(s):
+        if not s:
+            return ""
+        keys = [("assembly", "asm"), ("factorization", "fact"), ("solve", "solve"), ("gap work", "gap"),
+                ("output", "out")]
+        return " / ".join(f"{s.get(k, 0):.2f}" for k, _ in keys)
+
+    hdr = ("| case | equations | gaps | gapfem s | peak MB | incr | iter | fact | solves | "
+           "asm / fact / solve / gap / out s | ccx s | ccx MB | ccx / gapfem | agreement |")
+    lines = [hdr, "|" + "---|" * 14]
+    for r in rows:
+        ratio = agree = ""
+        if "ccx_wall" in r:
+            ratio = f"{r['ccx_wall'] / r['wall']:.1f}x"
+            ok = []
+            if r.get("ccx_closed") is not None and r.get("closed") is not None:
+                ok.append(f"closed {r['closed']}/{r['ccx_closed']}")
+            if r.get("ccx_rsum") is not None and r.get("rsum") is not None:
+                rel = abs(r["rsum"] - r["ccx_rsum"]) / max(abs(r["ccx_rsum"]), 1e-300)
+                ok.append(f"RF sum rel. diff {rel:.1e}")
+            agree = ", ".join(ok)
+        status = "" if r["rc"] == 0 else f" (exit {r['rc']})"
+        lines.append(
+            f"| {r['case']}{status} | {r['eq']} | {r['gaps']} | {r['wall']:.2f} | {r['mem']:.0f} | "
+            f"{r.get('inc', '')} | {r.get('it', '')} | {r.get('fact', '')} | {r.get('solves', '')} | "
+            f"{fmt_split(r.get('split'))} | "
+            f"{'%.2f' % r['ccx_wall'] if 'ccx_wall' in r else ''} | "
+            f"{'%.0f' % r['ccx_mem'] if 'ccx_mem' in r else ''} | {ratio} | {agree} |")
+    table = "\n".join(lines)
+    print(table)
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write(table + "\n")
+
+
+if __name__ == "__main__":
+    main()
