@@ -3,7 +3,6 @@
 #include "common/log.hpp"
 
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <exception>
 

@@ -15,7 +15,7 @@ namespace {
 
 /// Keeps every frame and increment in memory for the caller (tests, tools).
 class MemoryWriter final : public ResultWriter {
-public:
+ public:
   explicit MemoryWriter(JobResult& r, bool keep) : _r(r), _keep(keep) {}
   void increment(const IncrementInfo& info) override { _r.increments.push_back(info); }
   void frame(const Model&, int, const Frame& f) override {
@@ -23,7 +23,7 @@ public:
   }
   void end_step(const Model&, int, const StepSummary& s) override { _r.steps.push_back(s); }
 
-private:
+ private:
   JobResult& _r;
   bool _keep;
 };
@@ -36,7 +36,9 @@ const Frame* JobResult::step_end(int step) const {
   return nullptr;
 }
 
-NodeId JobResult::node(const Model& model, Label label) { return model.mesh.find_node(label); }
+NodeId JobResult::node(const Model& model, Label label) {
+  return model.mesh.find_node(label);
+}
 
 JobResult run_job(const JobOptions& options) {
   JobResult result;

@@ -19,21 +19,26 @@ struct JobOptions {
   bool ignore_unknown = false;      ///< unknown keywords/parameters become warnings
   bool write_files = true;          ///< .dat, .sta, .results.json, ParaView
   bool write_vtu = true;
-  bool quiet = false;               ///< no terminal progress
-  bool verbose = false;             ///< debug messages (Newton iterations, solver decisions)
-  bool keep_frames = true;          ///< keep every output frame in JobResult (tests)
+  bool quiet = false;      ///< no terminal progress
+  bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
+  bool keep_frames = true; ///< keep every output frame in JobResult (tests)
   FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
 };
 
 /// Exit statuses of gapfem (docs/conventions.md).
-enum ExitStatus : int { kExitOk = 0, kExitInputError = 1, kExitNoConvergence = 2, kExitInternal = 3 };
+enum ExitStatus : int {
+  kExitOk = 0,
+  kExitInputError = 1,
+  kExitNoConvergence = 2,
+  kExitInternal = 3
+};
 
 struct JobResult {
   int exit_code = kExitOk;
   std::string error; ///< the message printed for a non-zero exit
   std::shared_ptr<const struct Model> model;
   std::vector<StepSummary> steps;
-  std::vector<Frame> frames;           ///< every frame written (when keep_frames)
+  std::vector<Frame> frames; ///< every frame written (when keep_frames)
   std::vector<IncrementInfo> increments;
   RunSummary run;
 

@@ -25,7 +25,8 @@ int default_thread_count() {
 Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
-      _thread_f(static_cast<std::size_t>(_threads)), _thread_K(static_cast<std::size_t>(_threads)) {}
+      _thread_f(static_cast<std::size_t>(_threads)), _thread_K(static_cast<std::size_t>(_threads)) {
+}
 
 namespace {
 /// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
@@ -93,7 +94,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
         for (int k = 0; k < nd; ++k) {
           const double r = out.residual[k];
           if (!std::isfinite(r))
-            throw ConvergenceFailure("a non-finite force appeared in element " + std::to_string(in.label));
+            throw ConvergenceFailure("a non-finite force appeared in element " +
+                                     std::to_string(in.label));
           f[slots[k]] += r;
           const int fld = static_cast<int>(dofs.slot_field(slots[k]));
           if (r != 0.0) {
@@ -115,9 +117,12 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           for (int c = 0; c < out.n_constraints; ++c) {
             const auto off = static_cast<std::size_t>(c) * nd;
             _thread_constraints[t].add_row(
-                block->element_eqs(i), out.constraint_coeff.subspan(off, nd), out.constraint_value[c],
-                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult + out.constraint_slot[c],
-                out.has_columns ? out.constraint_column.subspan(off, nd) : std::span<const double>{});
+                block->element_eqs(i), out.constraint_coeff.subspan(off, nd),
+                out.constraint_value[c],
+                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult +
+                    out.constraint_slot[c],
+                out.has_columns ? out.constraint_column.subspan(off, nd)
+                                : std::span<const double>{});
           }
       }
     });
@@ -186,8 +191,9 @@ void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldVie
             const double m = 0.5 * (Ke[i * nd + j] + Ke[j * nd + i]);
             Ke[i * nd + j] = Ke[j * nd + i] = m;
           }
-      if (any) K->add_block(block.element_eqs(static_cast<std::size_t>(idx)),
-                            block.element_eqs(static_cast<std::size_t>(idx)), Ke);
+      if (any)
+        K->add_block(block.element_eqs(static_cast<std::size_t>(idx)),
+                     block.element_eqs(static_cast<std::size_t>(idx)), Ke);
     }
   }
 }

@@ -100,7 +100,8 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
     eqs.assign(C.col.begin() + b0, C.col.begin() + b1);
     block.resize(len * len);
     for (std::size_t i = 0; i < len; ++i)
-      for (std::size_t j = 0; j < len; ++j) block[i * len + j] = R[r] * C.val[b0 + i] * C.val[b0 + j];
+      for (std::size_t j = 0; j < len; ++j)
+        block[i * len + j] = R[r] * C.val[b0 + i] * C.val[b0 + j];
     K.add_block(eqs, eqs, block);
   }
   factorize(K, symmetric, stats);
@@ -143,7 +144,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
 
   // Compare with what the current factor is of: rows kept (P), new rows (N), rows gone (O).
   std::vector<int> p_of(static_cast<std::size_t>(m), -1); // row of _frows, for P rows
-  std::vector<int> gone;                                   // rows of _frows no longer present
+  std::vector<int> gone;                                  // rows of _frows no longer present
   const auto vals = K.values();
   const bool comparable = _active && !_factored.empty() && symmetric == _factored_symmetric &&
                           _factored.size() == vals.size();
@@ -168,8 +169,9 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       drift = std::max(drift, std::abs(vals[k] - _factored[k]));
     drift /= _factored_scale;
     out.changed_rows = changes;
-    log::debug("  system: drift {:.2e}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
-               drift, changes, _t_factor, _t_solve);
+    log::debug(
+        "  system: drift {:.2e}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
+        drift, changes, _t_factor, _t_solve);
     // the same matrix (a linear model, an unchanged contact set): the step factorises once
     exact_same = drift == 0.0 && changes == 0;
     if (!exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
@@ -236,7 +238,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     const bool cg = !out.used_unsymmetric && !Ch->has_columns() && gone.empty();
     int max_it = opt.max_iterations;
     if (stale && opt.reuse == FactorReuse::Auto)
-      max_it = std::min(max_it, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
+      max_it =
+          std::min(max_it, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
     std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n), 0.0);
     const SchurResult sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol, stats);
     out.schur_iterations += sr.iterations;
@@ -251,8 +254,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     std::copy(w.begin(), w.begin() + m, dl.begin());
     out.constraint_residual = sr.residual;
     out.solves = _solves;
-    log::debug("  {} factor, {} multiplier iterations", stale ? "stale" : (exact_same ? "same" : "new"),
-               sr.iterations);
+    log::debug("  {} factor, {} multiplier iterations",
+               stale ? "stale" : (exact_same ? "same" : "new"), sr.iterations);
     return out;
   }
 }

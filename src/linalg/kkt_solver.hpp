@@ -7,9 +7,9 @@
 ///
 /// without ever factorising an indefinite matrix (docs/theory/gap_elements.md, "Solving the
 /// constrained system"): K is augmented to M = K + C^T R C (R diagonal, R_i ~ 100 x the stiffness
-/// at the constraint's DOFs), which leaves the solution unchanged and is positive definite even when
-/// a body is held only by closed gaps; the multipliers then solve the Schur system
-/// (C M^-1 C^T) dl = C M^-1 b1 + g by preconditioned CG (GMRES when K is unsymmetric) with the
+/// at the constraint's DOFs), which leaves the solution unchanged and is positive definite even
+/// when a body is held only by closed gaps; the multipliers then solve the Schur system (C M^-1
+/// C^T) dl = C M^-1 b1 + g by preconditioned CG (GMRES when K is unsymmetric) with the
 /// preconditioner R, whose spectrum is clustered in [1/(1+1/100), 1], so a few back-substitutions
 /// with one factor give the exact step. The augmentation only touches entries inside each gap
 /// element's block, so the sparsity pattern never changes with contact status.
@@ -19,9 +19,10 @@
 /// whose contact rows differ from C_F in a few rows is solved with the old factor: rows that closed
 /// since are plain multiplier rows, rows that opened are cancelled exactly by "anti-rows" (the
 /// spring c R c^T in M_F is removed through an extra unknown mu = R c.du with the equation
-/// c.du - mu/R = 0). The constraint rows are then met exactly; only K_F - K is left out, which makes
-/// the step a modified-Newton step (the residual is always the true one, so the converged answer is
-/// the same). Whether reuse pays is decided from the measured factorisation and solve times.
+/// c.du - mu/R = 0). The constraint rows are then met exactly; only K_F - K is left out, which
+/// makes the step a modified-Newton step (the residual is always the true one, so the converged
+/// answer is the same). Whether reuse pays is decided from the measured factorisation and solve
+/// times.
 #include "common/timer.hpp"
 #include "linalg/constraint_block.hpp"
 #include "linalg/factor_reuse.hpp"
@@ -52,7 +53,7 @@ struct KktStatistics {
 };
 
 class KktSolver {
-public:
+ public:
   KktSolver();
   ~KktSolver();
   /// Symbolic analysis for a pattern (once per step).
@@ -63,7 +64,7 @@ public:
                       std::span<double> du, std::span<double> dl, bool symmetric,
                       const KktOptions& options, RunStatistics* stats = nullptr);
 
-private:
+ private:
   struct SchurResult {
     int iterations = 0;
     double residual = 0.0;
@@ -74,10 +75,9 @@ private:
                     bool symmetric, RunStatistics* stats);
   void back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats);
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
-  SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d,
-                    std::span<const double> p, std::span<const double> rhs, std::span<double> w,
-                    std::span<double> x, bool cg, int max_iterations, double tol,
-                    RunStatistics* stats);
+  SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
+                    std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
+                    int max_iterations, double tol, RunStatistics* stats);
 
   std::shared_ptr<const SparsityPattern> _pattern;
   std::unique_ptr<LinearSolver> _cholmod, _umfpack;
@@ -88,8 +88,8 @@ private:
   std::vector<double> _factored;
   double _factored_scale = 1.0; ///< max |diag K_F|
   bool _factored_symmetric = true;
-  ConstraintBlock _frows;       ///< rows of C_F (g unused)
-  std::vector<double> _fR;      ///< their weights
+  ConstraintBlock _frows;                         ///< rows of C_F (g unused)
+  std::vector<double> _fR;                        ///< their weights
   std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
 };

@@ -3,10 +3,9 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <unordered_map>
 
 namespace gapfem {
@@ -93,7 +92,8 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       if (!ev.has_field[f]) continue;
       const double qt = (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
-      const double ratio = qt > 0 ? r / qt : (r > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+      const double ratio =
+          qt > 0 ? r / qt : (r > 0 ? std::numeric_limits<double>::infinity() : 0.0);
       worst_ratio = std::max(worst_ratio, ratio);
       bool ok;
       if (qt <= 0)
@@ -157,8 +157,8 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       return res;
     }
     if (res.severe_iterations > c.max_severe_iterations) {
-      res.reason = fmt::format("contact status did not settle in {} iterations",
-                               c.max_severe_iterations);
+      res.reason =
+          fmt::format("contact status did not settle in {} iterations", c.max_severe_iterations);
       return res;
     }
   }

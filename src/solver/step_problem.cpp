@@ -14,7 +14,9 @@ StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepL
       _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
       _constraint_tol(1e-10 * base.model_size) {}
 
-void StepProblem::set_unsymmetric_loads(bool on) { _unsymmetric_loads = on; }
+void StepProblem::set_unsymmetric_loads(bool on) {
+  _unsymmetric_loads = on;
+}
 
 void StepProblem::begin_increment(double t0, double dt) {
   _ctx.dt = dt;
@@ -87,7 +89,8 @@ Evaluation StepProblem::evaluate() {
       sum[fld] += std::abs(_s.f_ext[s]);
       ++cnt[fld];
     }
-  for (int fld = 0; fld < kNumFields; ++fld) ev.flux[fld] = cnt[fld] > 0 ? sum[fld] / cnt[fld] : 0.0;
+  for (int fld = 0; fld < kNumFields; ++fld)
+    ev.flux[fld] = cnt[fld] > 0 ? sum[fld] / cnt[fld] : 0.0;
   for (double g : _C.g) ev.constraint_max = std::max(ev.constraint_max, std::abs(g));
   return ev;
 }

@@ -192,11 +192,16 @@ void check_gap(BuildState& s, const GapSection& gap) {
                 "minimum separation)";
     else if (t == ElementType::GAPCYL && !gap.direction_given)
       problem = "GAPCYL needs the cylinder axis in fields 2-4 of the *GAP data line";
-    else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT || t == ElementType::GAPCYL) &&
-             two_d && gap.direction_given && std::abs(n[2]) > 1e-12 * norm)
-      problem = fmt::format("in a {} model the {} must lie in the x-y plane; set n_z = 0",
-                            model_space_name(s.model.space),
-                            t == ElementType::GAPCYL ? "cylinder axis" : "gap direction");
+    else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT) && two_d &&
+             gap.direction_given && std::abs(n[2]) > 1e-12 * norm)
+      problem =
+          fmt::format("in a {} model the gap direction must lie in the x-y plane; set n_z = 0",
+                      model_space_name(s.model.space));
+    else if (t == ElementType::GAPCYL && two_d &&
+             std::hypot(n[0], n[1]) > 1e-12 * norm) // spec §1.7: radial contact in the plane
+      problem = fmt::format("in a {} model the GAPCYL axis must be the z-axis (0, 0, 1), normal "
+                            "to the plane, so that contact is radial in the x-y plane",
+                            model_space_name(s.model.space));
     else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT) && !gap.direction_given) {
       const auto nodes = mesh.element_nodes(e);
       const Vec3& a = mesh.coords[nodes[0]];

@@ -124,7 +124,7 @@ TEST(ReaderGap, CoincidentNodesWithComputedDirection) {
   EXPECT_EQ(read(mesh + "*GAP, ELSET=G\n0.1, 1., 0., 0., 1.\n").gap_sections.size(), 1u);
 }
 
-TEST(ReaderGap, TwoDimensionalModelsNeedInPlaneDirections) {
+TEST(ReaderGap, TwoDimensionalModelsNeedInPlaneDirectionsAndZAxisCylinders) {
   const std::string mesh =
       "*NODE\n1\n2,1\n3,1,1\n4,0,1\n*MATERIAL, NAME=M\n*ELASTIC\n1.,0.\n"
       "*ELEMENT, TYPE=CPE4, ELSET=P\n1, 1, 2, 3, 4\n*SOLID SECTION, ELSET=P, MATERIAL=M\n"
@@ -135,10 +135,10 @@ TEST(ReaderGap, TwoDimensionalModelsNeedInPlaneDirections) {
       "in the x-y plane");
   EXPECT_CONTAINS(
       error_text(mesh + "*GAP, ELSET=G\n0.1, 0., 1., 0., 1.\n*GAP, ELSET=C\n0.1, 1., 0., 1.\n"),
-      "element 6 (GAPCYL): in a two-dimensional (planar) model the cylinder axis must lie");
+      "element 6 (GAPCYL): in a two-dimensional (planar) model the GAPCYL axis must be the z-axis");
   // a z component of 1e-14 relative to the norm is round-off, not an error
   const Model m =
-      read(mesh + "*GAP, ELSET=G\n0.1, 0., 1., 1.E-14, 1.\n*GAP, ELSET=C\n0.1, 1., 0., 0.\n");
+      read(mesh + "*GAP, ELSET=G\n0.1, 0., 1., 1.E-14, 1.\n*GAP, ELSET=C\n0.1, 0., 0., 1.\n");
   EXPECT_EQ(m.space, ModelSpace::Planar);
 }
 

@@ -3,7 +3,6 @@
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
-
 #include <random>
 
 using namespace gapfem;
@@ -49,7 +48,7 @@ void compare_with_dense(bool grounded, bool symmetric) {
   ConstraintBlock C;
   const std::vector<LocalIndex> e0{0, n - 1}, e1{3};
   const std::vector<double> c0{1.0, -1.0}, c1{1.0};
-  C.add_row(e0, c0, 0.2, 0); // u0 - u7 = -0.2
+  C.add_row(e0, c0, 0.2, 0);  // u0 - u7 = -0.2
   C.add_row(e1, c1, -0.1, 1); // u3 = 0.1
   Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
   // dense KKT
@@ -68,7 +67,8 @@ void compare_with_dense(bool grounded, bool symmetric) {
   std::vector<double> du(n), dl(2);
   KktOptions opt;
   opt.constraint_tolerance = 1e-14;
-  const auto stats = solver.solve(K, {b.data(), static_cast<std::size_t>(n)}, C, du, dl, symmetric, opt);
+  const auto stats =
+      solver.solve(K, {b.data(), static_cast<std::size_t>(n)}, C, du, dl, symmetric, opt);
   for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-11);
   EXPECT_NEAR(dl[0], ref[n], 1e-9);
   EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
@@ -78,13 +78,17 @@ void compare_with_dense(bool grounded, bool symmetric) {
 
 } // namespace
 
-TEST(KktSolver, MatchesDenseSaddlePointSolve) { compare_with_dense(true, true); }
+TEST(KktSolver, MatchesDenseSaddlePointSolve) {
+  compare_with_dense(true, true);
+}
 TEST(KktSolver, FloatingChainHeldOnlyByConstraints) {
   // Without the ground spring K is singular (rigid translation); the constraint u3 = 0.1 removes
   // the mode, and the augmented matrix stays positive definite.
   compare_with_dense(false, true);
 }
-TEST(KktSolver, UnsymmetricTangentUsesLuAndGmres) { compare_with_dense(true, false); }
+TEST(KktSolver, UnsymmetricTangentUsesLuAndGmres) {
+  compare_with_dense(true, false);
+}
 
 TEST(KktSolver, SingularMatrixNamesTheEquation) {
   Problem p = chain(5, false);
@@ -132,7 +136,8 @@ TEST(KktSolver, StaleFactorWithChangedRowsGivesTheExactStep) {
   const int n = 8;
   Problem p = chain(n, true);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11}, fresh{{5}, {1.0}, 0.05, 12};
+  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
+      fresh{{5}, {1.0}, 0.05, 12};
   KktSolver solver;
   solver.analyze(p.pattern);
   KktOptions opt;
@@ -142,13 +147,15 @@ TEST(KktSolver, StaleFactorWithChangedRowsGivesTheExactStep) {
   std::vector<double> du(n), dl(2);
   {
     CsrMatrix K = to_csr(p);
-    const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+    const auto s =
+        solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
     EXPECT_FALSE(s.reused_factor);
   }
   // gap "a" opened, gap "fresh" closed
   const std::vector<Row> rows{keep, fresh};
   CsrMatrix K = to_csr(p);
-  const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  const auto s =
+      solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
   EXPECT_TRUE(s.stale_factor);
   EXPECT_EQ(s.changed_rows, 2);
   EXPECT_EQ(stats.factorizations, 1);
@@ -159,7 +166,8 @@ TEST(KktSolver, StaleFactorWithChangedRowsGivesTheExactStep) {
 }
 
 // With a drifted K the stale step is a modified-Newton step: the constraint rows hold exactly, the
-// displacements differ from the exact step by O(drift). Beyond max_drift the matrix is refactorised.
+// displacements differ from the exact step by O(drift). Beyond max_drift the matrix is
+// refactorised.
 TEST(KktSolver, DriftedTangentKeepsConstraintsExactAndRefactorsBeyondTheLimit) {
   const int n = 8;
   Problem p = chain(n, true);
@@ -185,7 +193,7 @@ TEST(KktSolver, DriftedTangentKeepsConstraintsExactAndRefactorsBeyondTheLimit) {
   auto s = solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
   EXPECT_TRUE(s.stale_factor);
   EXPECT_EQ(stats.factorizations, 1);
-  EXPECT_NEAR(du[3], 0.1, 1e-13);             // u3 = 0.1 exactly
+  EXPECT_NEAR(du[3], 0.1, 1e-13);              // u3 = 0.1 exactly
   EXPECT_NEAR(du[0] - du[n - 1], -0.2, 1e-13); // u0 - u7 = -0.2 exactly
   const Eigen::VectorXd ref = dense_kkt(q.K, b, rows);
   for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-4 * ref.head(n).cwiseAbs().maxCoeff());
@@ -213,7 +221,8 @@ TEST(KktSolver, IdenticalSystemReusesTheFactorAndNeverPolicyRefactors) {
   std::vector<double> du(n), dl(1);
   for (int k = 0; k < 2; ++k) {
     CsrMatrix K = to_csr(p);
-    const auto s = solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt, &stats);
+    const auto s =
+        solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt, &stats);
     EXPECT_EQ(s.reused_factor, k == 1);
     EXPECT_FALSE(s.stale_factor);
   }

@@ -4,10 +4,9 @@
 // iteration and with reuse switched off gives the same closed set and the same ground reactions.
 #include "test_util.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdlib>
+#include <gtest/gtest.h>
 
 using namespace gapfem;
 using namespace gapfem::test;
