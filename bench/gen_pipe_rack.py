@@ -132,7 +132,6 @@ def main():
     n_rest = ge - first_gap + 1
     w(f"*ELSET, ELSET=RESTS, GENERATE\n{first_gap}, {ge}, 1\n")
     if guides:
-        first_guide = ge + 1
         w("*ELEMENT, TYPE=GAPCYL, ELSET=GUIDES\n")
         for j, k in guides:
             ge += 1

@@ -19,7 +19,8 @@ k+1 by a gap element (node 1 lower, node 2 upper) with the node's tributary area
 half on an edge, a quarter at a corner) on the *GAP line. The clearance is graded across the
 interface, d = --dmax * level / (--levels - 1) with level = round((levels - 1) * s), s = r^2 on even
 interfaces and 1 - r^2 on odd ones (r = distance from the plate centre at the origin / the corner
-distance): the contact resistance alternates between the middle and the rim, so heat meanders.
+distance): the contact resistance is lowest at the middle on even interfaces and at the far corner
+(x = y = side) on odd ones, so the heat meanders.
 One elset per (clearance level, area class), each with its own *GAP line and
   *GAP CONDUCTANCE (clearance): k = 1e4 W/(m^2 K) at h = 0, 2e3 at 1e-4, 1e3 at 2e-4, zero beyond.
   DGAP: h = d is constant and any direction is ignored, so the data line is "d, , , , A".
@@ -30,9 +31,10 @@ One elset per (clearance level, area class), each with its own *GAP line and
 Loads: bottom face of plate 0 at --t-bottom (*BOUNDARY, DOF 11; in --coupled also u3 = 0); the
 top face of the top plate gets a surface flux --flux (*DFLUX, S2) or, with --film H, a film
 condition (h = H, sink --sink). --coupled: a pressure --pressure on the top face (*DSLOAD) presses
-the stack together; the gaps in the middle of even interfaces and at the rim of odd ones start
-closed (d = 0), so every plate is held in z from the first iteration; XSYM/YSYM on every plate
-hold it in x and y.
+the stack together; the gaps in the middle of even interfaces and at the far corner of odd ones
+start closed (d = 0), so every plate is held in z from the first iteration; XSYM/YSYM on every plate
+hold it in x and y. Pressure and heat ramp together in one step: an isothermal preload step
+(pressure, no flux) does not converge in gapfem, whose heat-flux criterion then has a zero scale.
 
 Equations: heat transfer 1 per node: layers * (nx+1)^2 * (nz+1) - (nx+1)^2 (bottom face held).
 --coupled: 4 per node minus the bottom face (T and u3) and the symmetry planes of every plate.
