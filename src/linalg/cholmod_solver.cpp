@@ -46,14 +46,14 @@ public:
       _c.nmethods = 0; // AMD, then METIS if AMD's fill is poor
     }
     _L = cholmod_analyze(&A, &_c);
-    if (!_L || _c.status < CHOLMOD_OK)
-      throw AnalysisError(fmt::format("CHOLMOD could not analyse the matrix (status {})", _c.status));
+    if (!_L || _c.status < CHOLMOD_OK) throw AnalysisError(failure("ordering/analysis"));
   }
 
   void factorize(const CsrMatrix& M) override {
     FE_CHECK(_L && M.n() == _n, "factorize before analyze");
     cholmod_sparse A = view(M.pattern(), M.values().data());
     const int ok = cholmod_factorize(&A, _L, &_c);
+    if (_c.status < CHOLMOD_OK) throw AnalysisError(failure("Cholesky factorisation"));
     if (!ok || _c.status == CHOLMOD_NOT_POSDEF) {
       const auto* perm = static_cast<const int*>(_L->Perm);
       const auto k = static_cast<LocalIndex>(_L->minor);
@@ -62,8 +62,6 @@ public:
       throw SingularSystem("the matrix is not positive definite", std::move(eqs),
                            /*indefinite=*/k < _n && M.diagonal(eqs[0]) > 0);
     }
-    if (_c.status < CHOLMOD_OK)
-      throw AnalysisError(fmt::format("CHOLMOD factorisation failed (status {})", _c.status));
     check_pivots(M);
   }
 
@@ -81,9 +79,18 @@ public:
     B.dtype = CHOLMOD_DOUBLE;
     cholmod_dense* X = nullptr;
     if (!cholmod_solve2(CHOLMOD_A, _L, &B, nullptr, &X, nullptr, &_Y, &_E, &_c) || !X)
-      throw AnalysisError("CHOLMOD solve failed");
+      throw AnalysisError(failure("solve"));
     std::memcpy(x.data(), X->x, sizeof(double) * B.nzmax);
     cholmod_free_dense(&X, &_c);
+  }
+
+  /// A sentence for a failed CHOLMOD call; running out of memory names the factor's size.
+  std::string failure(std::string_view what) const {
+    if (_c.status == CHOLMOD_OUT_OF_MEMORY || _c.status == CHOLMOD_TOO_LARGE)
+      return fmt::format("CHOLMOD {} ran out of memory on {} equations (the factor needs about "
+                         "{:.1f} GiB); use a coarser mesh or run on a machine with more memory",
+                         what, _n, _c.lnz * sizeof(double) / 1073741824.0);
+    return fmt::format("CHOLMOD {} failed (status {}) on {} equations", what, _c.status, _n);
   }
 
   std::size_t factor_bytes() const override {

@@ -1,5 +1,7 @@
 // UMFPACK LU behind the LinearSolver interface (unsymmetric systems: friction slip, coupled
-// temperature-displacement, follower loads).
+// temperature-displacement, follower loads). The 64-bit interface (umfpack_dl_*) is used so the
+// factor may exceed 2^31 units (16 GiB with int indices is the limit of umfpack_di_*); METIS
+// orders the larger systems, as it does for CHOLMOD.
 #include "common/error.hpp"
 #include "linalg/linear_solver.hpp"
 
@@ -15,7 +17,7 @@ namespace {
 class UmfpackSolver final : public LinearSolver {
 public:
   UmfpackSolver() {
-    umfpack_di_defaults(_control);
+    umfpack_dl_defaults(_control);
     _control[UMFPACK_IRSTEP] = 0; // no iterative refinement: solve() needs only the factor
   }
   ~UmfpackSolver() override { release(); }
@@ -26,20 +28,25 @@ public:
     release();
     _pattern = &p;
     _n = p.n;
+    _ptr.assign(p.row_ptr.begin(), p.row_ptr.end());
+    _idx.assign(p.col.begin(), p.col.end());
+    // AMD/COLAMD is UMFPACK's default; nested dissection fills far less on 3-D meshes.
+    _control[UMFPACK_ORDERING] = _n >= 10000 ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
   }
 
   void factorize(const CsrMatrix& M) override {
     FE_CHECK(_pattern && M.n() == _n, "factorize before analyze");
-    const auto& p = M.pattern();
+    FE_CHECK(&M.pattern() == _pattern || M.pattern().col.size() == _idx.size(),
+             "factorize with a pattern other than the analysed one");
     // Our CSR arrays are the CSC arrays of A^T; we factorise A^T and solve with UMFPACK_At.
     if (!_symbolic) {
-      const int st = umfpack_di_symbolic(_n, _n, p.row_ptr.data(), p.col.data(), M.values().data(),
-                                         &_symbolic, _control, _info);
-      if (st != UMFPACK_OK) throw AnalysisError(fmt::format("UMFPACK symbolic analysis failed ({})", st));
+      const auto st = umfpack_dl_symbolic(_n, _n, _ptr.data(), _idx.data(), M.values().data(),
+                                          &_symbolic, _control, _info);
+      if (st != UMFPACK_OK) throw AnalysisError(describe("symbolic analysis", st));
     }
-    if (_numeric) umfpack_di_free_numeric(&_numeric);
-    const int st = umfpack_di_numeric(p.row_ptr.data(), p.col.data(), M.values().data(), _symbolic,
-                                      &_numeric, _control, _info);
+    if (_numeric) umfpack_dl_free_numeric(&_numeric);
+    const auto st = umfpack_dl_numeric(_ptr.data(), _idx.data(), M.values().data(), _symbolic,
+                                       &_numeric, _control, _info);
     if (st == UMFPACK_WARNING_singular_matrix || st == UMFPACK_OK) {
       auto bad = small_pivots(M);
       if (st == UMFPACK_WARNING_singular_matrix || !bad.empty()) {
@@ -49,16 +56,14 @@ public:
       _values = &M;
       return;
     }
-    throw AnalysisError(fmt::format("UMFPACK factorisation failed ({})", st));
+    throw AnalysisError(describe("LU factorisation", st));
   }
 
   void solve(std::span<const double> b, std::span<double> x) override {
     FE_CHECK(_numeric && _values, "solve before factorize");
-    const auto& p = _values->pattern();
-    const int st = umfpack_di_solve(UMFPACK_At, p.row_ptr.data(), p.col.data(),
-                                    _values->values().data(), x.data(), b.data(), _numeric, _control,
-                                    _info);
-    if (st != UMFPACK_OK) throw AnalysisError(fmt::format("UMFPACK solve failed ({})", st));
+    const auto st = umfpack_dl_solve(UMFPACK_At, _ptr.data(), _idx.data(), _values->values().data(),
+                                     x.data(), b.data(), _numeric, _control, _info);
+    if (st != UMFPACK_OK) throw AnalysisError(describe("solve", st));
   }
 
   std::size_t factor_bytes() const override {
@@ -66,15 +71,24 @@ public:
   }
 
 private:
+  using Long = SuiteSparse_long;
+
+  /// A sentence for a failed UMFPACK call; running out of memory names the size reached.
+  std::string describe(std::string_view what, Long status) const {
+    if (status == UMFPACK_ERROR_out_of_memory)
+      return fmt::format("UMFPACK {} ran out of memory on {} equations (the LU factor needs about "
+                         "{:.1f} GiB); use a coarser mesh or run on a machine with more memory",
+                         what, _n, _info[UMFPACK_NUMERIC_SIZE_ESTIMATE] * _info[UMFPACK_SIZE_OF_UNIT] / 1073741824.0);
+    return fmt::format("UMFPACK {} failed (status {}) on {} equations", what, status, _n);
+  }
+
   /// Equations whose pivot is negligible against the largest entry of their column.
   std::vector<LocalIndex> small_pivots(const CsrMatrix& M) {
-    int lnz, unz, nr, nc, nz_udiag;
-    umfpack_di_get_lunz(&lnz, &unz, &nr, &nc, &nz_udiag, _numeric);
     std::vector<double> udiag(static_cast<std::size_t>(_n));
-    std::vector<int> P(static_cast<std::size_t>(_n)), Q(static_cast<std::size_t>(_n));
+    std::vector<Long> P(static_cast<std::size_t>(_n)), Q(static_cast<std::size_t>(_n));
     std::vector<double> rs(static_cast<std::size_t>(_n));
-    int do_recip = 0;
-    umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, P.data(), Q.data(),
+    Long do_recip = 0;
+    umfpack_dl_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, P.data(), Q.data(),
                            udiag.data(), &do_recip, rs.data(), _numeric);
     // scale of each equation: max |entry| in its row of A (= column of A^T)
     const auto& p = M.pattern();
@@ -87,15 +101,15 @@ private:
       // U is of the row-scaled matrix R A^T; undo the scaling of the pivot row P[k].
       const double s = do_recip ? 1.0 / rs[P[k]] : rs[P[k]];
       const double u = std::abs(udiag[k]) * s;
-      const LocalIndex eq = Q[k];
+      const auto eq = static_cast<LocalIndex>(Q[k]);
       if (!(u > 1e-12 * scale[eq])) bad.push_back(eq);
     }
     return bad;
   }
 
   void release() {
-    if (_numeric) umfpack_di_free_numeric(&_numeric);
-    if (_symbolic) umfpack_di_free_symbolic(&_symbolic);
+    if (_numeric) umfpack_dl_free_numeric(&_numeric);
+    if (_symbolic) umfpack_dl_free_symbolic(&_symbolic);
     _values = nullptr;
   }
 
@@ -105,7 +119,8 @@ private:
   void* _numeric = nullptr;
   const SparsityPattern* _pattern = nullptr;
   const CsrMatrix* _values = nullptr;
-  LocalIndex _n = 0;
+  std::vector<Long> _ptr, _idx; // 64-bit copies of the pattern's CSR arrays
+  Long _n = 0;
 };
 
 } // namespace

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <fstream>
 #include <numeric>
 #include <set>
@@ -81,7 +82,21 @@ RunSummary Analysis::run() {
   for (auto* w : m.writers) w->begin(m.model);
   RunSummary run;
   for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
-    StepSummary s = m.run_step(i);
+    StepSummary s;
+    // Failures outside an increment (setting the step up) stop the run; the writers still close
+    // their files, so job.results.json stays valid JSON with "completed": false.
+    try {
+      s = m.run_step(i);
+    } catch (const AnalysisError& e) {
+      s.converged = false;
+      s.failure = e.what();
+    } catch (const std::bad_alloc&) {
+      s.converged = false;
+      s.failure = "out of memory setting the step up; use a coarser mesh or run on a machine with "
+                  "more memory";
+    }
+    s.step = m.model.steps[i].number;
+    s.name = m.model.steps[i].name;
     m.summaries.push_back(s);
     if (!s.converged) {
       run.completed = false;
@@ -168,7 +183,23 @@ StepSummary Analysis::Impl::run_step(int index) {
     const double t0 = ctrl.step_time();
     const double dt = ctrl.next();
     prob.begin_increment(t0, dt);
-    NewtonResult res = solve_increment(prob, kkt, controls, flux, &stats);
+    NewtonResult res;
+    // A failure no smaller increment can cure (the linear solver out of memory, an output file
+    // that cannot be written) ends the step like a convergence failure, so the result files are
+    // complete up to the last converged increment.
+    try {
+      res = solve_increment(prob, kkt, controls, flux, &stats);
+    } catch (const AnalysisError& e) {
+      sum.converged = false;
+      sum.failure = e.what();
+      break;
+    } catch (const std::bad_alloc&) {
+      sum.converged = false;
+      sum.failure = fmt::format("out of memory at step time {:.6g} solving {} equations; use a "
+                                "coarser mesh or run on a machine with more memory",
+                                t0 + dt, loads.equations().n_eq());
+      break;
+    }
     ++stats.attempts;
     ++sum.attempts;
     sum.iterations += res.iterations;
@@ -237,7 +268,6 @@ StepSummary Analysis::Impl::run_step(int index) {
     }
   }
   if (!sum.converged) {
-    // Report the last converged state as the step's final frame.
     // Report the last converged state as the step's final frame, with the forces (reactions,
     // capacity terms) of its converged evaluation.
     prob.begin_increment(ctrl.step_time(), 0.0);
