@@ -92,12 +92,13 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       if (!ev.has_field[f]) continue;
       const double qt = (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
-      const double ratio =
-          qt > 0 ? r / qt : (r > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+      // a field that carries (next to) no flux is converged and does not count in the ratio
+      if (r <= c.zero_flux_ratio * std::max(qt, c.initial_flux)) continue;
+      const double ratio = qt > 0 ? r / qt : std::numeric_limits<double>::infinity();
       worst_ratio = std::max(worst_ratio, ratio);
       bool ok;
       if (qt <= 0)
-        ok = r == 0.0;
+        ok = false;
       else if (r <= c.linear_ratio * qt)
         ok = true;
       else

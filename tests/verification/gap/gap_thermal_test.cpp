@@ -307,3 +307,88 @@ S, E, HFL
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.error.find("already given"), std::string::npos) << bad.error;
 }
+
+TEST(VerificationGapThermal, CoupledStepWithoutHeatLoadConvergesOnTheDisplacements) {
+  // Two distorted C3D8T blocks (nu = 0, in-plane displacements held) pressed together through four
+  // GAPUNITs (A = 0.3) by 4 x 1e5 on the top nodes; every temperature starts at 20 and nothing
+  // heats the model, so its heat flux is round-off (~1e-13). The heat field must count as
+  // converged by Abaqus's zero-flux rule (residual <= 1e-5 * max(q~, 1e-2)) instead of being held
+  // to 0.005 of a round-off flux scale, which no iteration can reach.
+  // Closed form: the gaps carry the whole load, sum(S11 * A) = 4e5; the temperature stays 20.
+  const JobResult r = run_deck(R"(*HEADING
+two distorted C3D8T blocks pressed together through four GAPUNITs, no heat load
+*NODE
+1, 0.0, 0.0, 0.0
+2, 1.1, 0.1, 0.0
+3, 0.9, 1.2, 0.0
+4, -0.1, 0.8, 0.0
+5, 0.05, -0.05, 1.0
+6, 1.0, 0.07, 1.0
+7, 1.13, 0.93, 1.0
+8, 0.02, 1.1, 1.0
+11, 0.05, -0.05, 1.0
+12, 1.0, 0.07, 1.0
+13, 1.13, 0.93, 1.0
+14, 0.02, 1.1, 1.0
+15, 0.1, 0.03, 2.1
+16, 0.97, -0.1, 2.0
+17, 1.05, 1.02, 1.9
+18, -0.03, 0.96, 2.0
+*ELEMENT, TYPE=C3D8T, ELSET=BLOCKS
+1, 1, 2, 3, 4, 5, 6, 7, 8
+2, 11, 12, 13, 14, 15, 16, 17, 18
+*MATERIAL, NAME=STEEL
+*ELASTIC
+2.e11, 0.
+*EXPANSION, ZERO=20.
+1.2e-5
+*CONDUCTIVITY
+50.
+*SOLID SECTION, ELSET=BLOCKS, MATERIAL=STEEL
+*ELEMENT, TYPE=GAPUNIT, ELSET=G
+21, 5, 11
+22, 6, 12
+23, 7, 13
+24, 8, 14
+*GAP, ELSET=G
+0., 0., 0., 1., 0.3
+*GAP CONDUCTANCE
+1.e4, 0.
+0., 1.e-4
+*NSET, NSET=BOTTOM
+1, 2, 3, 4
+*NSET, NSET=ALL
+1, 2, 3, 4, 5, 6, 7, 8, 11, 12, 13, 14, 15, 16, 17, 18
+*INITIAL CONDITIONS, TYPE=TEMPERATURE
+ALL, 20.
+*BOUNDARY
+ALL, 1, 2
+BOTTOM, 3, 3
+*STEP
+*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE
+0.25, 1.
+*BOUNDARY
+BOTTOM, 11, 11, 20.
+*CLOAD
+15, 3, -1.e5
+16, 3, -1.e5
+17, 3, -1.e5
+18, 3, -1.e5
+*EL PRINT, ELSET=G
+S
+*NODE PRINT, NSET=ALL
+U, NT
+*END STEP
+)");
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  double total = 0.0;
+  for (Label e : {21, 22, 23, 24}) {
+    EXPECT_NE(gap(r, f, e).status, ContactStatus::Open) << "gap " << e;
+    total += gap(r, f, e).pressure * 0.3;
+  }
+  EXPECT_NEAR(total, 4e5, 1e-6 * 4e5);
+  for (Label n : {1, 6, 7, 12, 13, 16, 17, 18}) EXPECT_NEAR(NT(r, f, n), 20.0, 1e-9) << "node " << n;
+  // nothing is nonlinear once the gaps are closed: one iteration per increment
+  EXPECT_EQ(r.run.stats.iterations, r.run.stats.increments);
+}
