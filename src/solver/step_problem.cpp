@@ -112,6 +112,16 @@ void StepProblem::compute_stiffness_hints() {
   if (ctx.dt <= 0) ctx.dt = ctx.step_period; // transient terms need a finite increment
   const std::vector<double> diag = _asm.diagonal_stiffness(fields(), ctx, /*skip_gaps=*/true);
   const DofMap& dofs = _disc.dofs();
+  // A gap whose nodes carry no other element (a node joined to the model only by gaps) takes the
+  // mean over the model's displacement DOFs; a model of gaps alone takes 1.
+  double model_sum = 0.0;
+  int model_n = 0;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
+    if (dofs.slot_field(s) == Field::Displacement && diag[s] > 0) {
+      model_sum += diag[s];
+      ++model_n;
+    }
+  const double model_mean = model_n > 0 ? model_sum / model_n : 1.0;
   for (auto& b : _disc.blocks()) {
     if (b.stiffness_hint.empty()) continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
@@ -122,7 +132,7 @@ void StepProblem::compute_stiffness_hints() {
           sum += diag[s];
           ++n;
         }
-      b.stiffness_hint[i] = n > 0 ? sum / n : 0.0;
+      b.stiffness_hint[i] = n > 0 ? sum / n : model_mean;
     }
   }
 }

@@ -173,8 +173,7 @@ const FrictionLaw* MechanicalGapKernel::friction_for(const ElementInput& in) con
 
 double MechanicalGapKernel::augmented_stiffness(const ElementInput& in) const {
   if (_augmented_k > 0) return _augmented_k;
-  const double k = kAugmentedAutomaticFactor * in.stiffness_hint;
-  return k > 0 ? k : 1.0;
+  return kAugmentedAutomaticFactor * in.stiffness_hint;
 }
 
 std::string MechanicalGapKernel::validate(const ElementInput& in) const {
@@ -544,8 +543,15 @@ bool MechanicalGapKernel::augment(const ElementInput& in) const {
   std::copy(in.state.begin(), in.state.end(), st.begin());
   std::array<double, 3> mult{in.multipliers[0], in.multipliers[1], in.multipliers[2]};
   respond(in, st, mult, nullptr, R);
+  if (!closed(R.status)) {
+    // Uzawa update max(lambda^ + K g, 0) of an open gap: it forgets its multiplier, so it
+    // re-engages at zero clearance rather than at the clearance lambda^/K
+    if (in.state[GapStateLayout::lambda_aug] == 0.0) return false;
+    in.state[GapStateLayout::lambda_aug] = 0.0;
+    return true;
+  }
   const double tolerance = 1e-3 * _lc[in.block_index];
-  if (!closed(R.status) || R.g <= tolerance) return false;
+  if (R.g <= tolerance) return false;
   in.state[GapStateLayout::lambda_aug] = R.normal_force;
   return true;
 }

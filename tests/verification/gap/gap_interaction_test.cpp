@@ -435,6 +435,109 @@ S, E
   EXPECT_NEAR(-gap(p, last_frame(p), 101).clearance, 0.5 / 11.0, 1e-10);
 }
 
+TEST(VerificationGapBehavior, AugmentedLagrangeGapForgetsItsMultiplierWhenItOpens) {
+  // The propped spring of the test above in three steps. Step 1 presses the gap with 1000
+  // (F = 1000 - 100 x 0.5 = 950; K = 1000 x 100 = 1e5, so the penalty alone would penetrate
+  // 9.5e-3 > the tolerance 1e-3 and the multiplier is augmented to ~950). Step 2 pulls the node
+  // away (u = +1, open). Step 3 pushes with 49.98: the spring alone takes the node to
+  // u = -0.4998, clearance 2e-4, still open. A gap that kept its multiplier would re-engage at
+  // the clearance 950 / 1e5 = 9.5e-3 and carry a force; the Uzawa update max(lambda + K g, 0)
+  // resets it when the gap opens.
+  const std::string deck = R"(*NODE
+10, 0., 0., 0.
+12, 0., -1., 0.
+*ELEMENT, TYPE=SPRING1, ELSET=SY
+2, 10
+*SPRING, ELSET=SY
+2
+100.
+*ELEMENT, TYPE=GAPUNI, ELSET=G1
+101, 10, 12
+*GAP, ELSET=G1
+0.5, 0., -1., 0., 1.
+*SURFACE BEHAVIOR, AUGMENTED LAGRANGE
+*BOUNDARY
+12, 1, 3
+10, 1, 1
+10, 3, 3
+*STEP
+*STATIC
+*CLOAD
+10, 2, -1000.
+*END STEP
+*STEP
+*STATIC
+*CLOAD
+10, 2, 100.
+*END STEP
+*STEP
+*STATIC
+*CLOAD
+10, 2, -49.98
+*END STEP
+)";
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  EXPECT_NEAR(gap(r, last_frame(r, 1), 101).normal_force, 950.0, 0.1);
+  EXPECT_NEAR(U(r, last_frame(r, 2), 10)[1], 1.0, 1e-12);
+  const Frame& f = last_frame(r, 3);
+  EXPECT_EQ(gap(r, f, 101).status, ContactStatus::Open);
+  EXPECT_EQ(gap(r, f, 101).normal_force, 0.0);
+  EXPECT_NEAR(U(r, f, 10)[1], -0.4998, 1e-12);
+  EXPECT_NEAR(gap(r, f, 101).clearance, 2e-4, 1e-12);
+}
+
+TEST(VerificationGapBehavior, AutomaticPenaltyForAGapBetweenNodesWithoutOtherElements) {
+  // Chain along x: node 1 -T3D2 (EA/L = 1000)- node 2 -gap A- node 3 -gap B- node 4 (fixed).
+  // Node 3 has only gaps, and so have the ground node 4: gap B has no element stiffness of its own
+  // and takes the mean diagonal stiffness of the model's displacement DOFs (1000, the truss at
+  // nodes 1 and 2); gap A takes the truss at node 2 (1000). Automatic PENALTY: K = 10 x 1000.
+  // Both start overclosed by 0.001 (so the chain is held from the start). P = 100 along -x:
+  // each gap carries 100 at g = 100 / 1e4 = 0.01; u3 = 0.001 - 0.01 = -0.009,
+  // u2 = u3 + 0.001 - 0.01 = -0.018, u1 = u2 - 100 / 1000 = -0.118.
+  const std::string deck = R"(*NODE
+1, 2., 0., 0.
+2, 1., 0., 0.
+3, 1., 0., 0.
+4, 0., 0., 0.
+*NSET, NSET=ALL
+1, 2, 3, 4
+*ELEMENT, TYPE=T3D2, ELSET=BAR
+1, 1, 2
+*MATERIAL, NAME=M
+*ELASTIC
+1000., 0.
+*SOLID SECTION, ELSET=BAR, MATERIAL=M
+1.
+*ELEMENT, TYPE=GAPUNI, ELSET=GA
+11, 3, 2
+*GAP, ELSET=GA
+-0.001, 1., 0., 0.
+*SURFACE BEHAVIOR, PENALTY
+*ELEMENT, TYPE=GAPUNI, ELSET=GB
+12, 4, 3
+*GAP, ELSET=GB
+-0.001, 1., 0., 0.
+*SURFACE BEHAVIOR, PENALTY
+*BOUNDARY
+ALL, 2, 3
+4, 1, 1
+*STEP
+*STATIC
+*CLOAD
+1, 1, -100.
+*END STEP
+)";
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  EXPECT_NEAR(gap(r, f, 11).normal_force, 100.0, 1e-8);
+  EXPECT_NEAR(gap(r, f, 12).normal_force, 100.0, 1e-8);
+  EXPECT_NEAR(U(r, f, 3)[0], -0.009, 1e-12);
+  EXPECT_NEAR(U(r, f, 2)[0], -0.018, 1e-12);
+  EXPECT_NEAR(U(r, f, 1)[0], -0.118, 1e-12);
+}
+
 TEST(VerificationGapBehavior, DampingHoldsAFloatingNodeAndVanishesAtConvergence) {
   // Node 10 held only by an open gap (d = 0.5) and pushed down by 10: without damping the system
   // is singular (VerificationGap.BodyHeldOnlyByOpenGapsIsReported). With *CONTACT DAMPING (c0 = 1)
