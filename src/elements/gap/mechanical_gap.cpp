@@ -305,9 +305,13 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   if (fl) {
     const double FNc = std::max(FN, 0.0);
     if (fl->lagrange()) {
-      // Exact stick with two multipliers; slip with the critical force along the slip direction.
-      double dcrit = 0.0;
-      const double crit = fl->critical_force(FNc, 0.0, temperature, &dcrit);
+      // Exact stick with two multipliers; slip with the critical force along the slip direction,
+      // mu at the slip rate of the increment |dslip| / dt (stick: rate 0).
+      double dcrit = 0.0, dcrit_drate = 0.0;
+      const double rate = dt > 0 ? dslip.norm() / dt : 0.0;
+      const double crit = fl->critical_force(FNc, rate, temperature, &dcrit, &dcrit_drate);
+      const double crit0 =
+          rate > 0 ? fl->critical_force(FNc, 0.0, temperature) : crit; // static, for breaking stick
       const Eigen::Vector2d e = R.slip - plastic_start;
       Eigen::Vector2d m(st[GapStateLayout::slip_dir], st[GapStateLayout::slip_dir + 1]);
       const bool was_slip = previous == ContactStatus::Slip;
@@ -321,7 +325,7 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
         if (slipping) m = e / e.norm();
       } else if (!was_slip) {
         const Eigen::Vector2d lt(mult[1], mult[2]);
-        if (lt.norm() > crit * (1.0 + 1e-9) + 1e-300 && previous == ContactStatus::Stick) {
+        if (lt.norm() > crit0 * (1.0 + 1e-9) + 1e-300 && previous == ContactStatus::Stick) {
           slipping = true;
           m = lt / lt.norm();
         }
@@ -345,6 +349,9 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
         const double en = e.norm();
         if (en > 1e-12 * _length_scale && e.dot(m) > 0)
           dtau_ds = (crit / en) * (Eigen::Matrix2d::Identity() - m * m.transpose());
+        const double dn = dslip.norm();
+        if (dt > 0 && dn > 0 && dcrit_drate != 0.0)
+          dtau_ds += m * (dcrit_drate / dt) * (dslip / dn).transpose();
         plastic = R.slip;
         R.dissipation = R.friction.dot(plastic - plastic_start);
         dD_de = R.friction; // D = crit |e| along m

@@ -201,6 +201,29 @@ TEST(GapInteraction, LagrangeFrictionStickRowsAndSlipForce) {
   check_element_tangent(el, 0.001);
 }
 
+TEST(GapInteraction, LagrangeFrictionUsesTheSlipRateOfTheIncrement) {
+  // mu = 0.4 at rest falling to 0.2 at slip rate 1; N = 100, a slipping gap slides 0.5 along t1
+  // in dt = 1: rate 0.5, mu = 0.3, friction force 30 (not mu(0) N = 40); tangent by differences.
+  GapSection s = gapuni(0.0);
+  s.friction = coulomb(0.4);
+  s.friction.n_columns = 2;
+  s.friction.rows = {{0.4, 0.0, 0, 0}, {0.2, 1.0, 0, 0}};
+  s.friction.lagrange = true;
+  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
+  SingleElement el(m);
+  set_state_closed(el, ContactStatus::Slip);
+  el.state[GapStateLayout::slip_dir] = el.state0[GapStateLayout::slip_dir] = 1.0;
+  el.mult = {100.0, 0.0, 0.0};
+  el.ctx.dt = 1.0;
+  el.u = {0.5, 0, 0.1, 0, 0, 0};
+  el.evaluate();
+  ASSERT_EQ(el.record().status, ContactStatus::Slip);
+  const double rate = std::hypot(0.5, 0.1);
+  EXPECT_NEAR(std::hypot(el.record().friction_force[0], el.record().friction_force[1]),
+              100.0 * (0.4 - 0.2 * rate), 1e-12);
+  check_element_tangent(el, 1e-4);
+}
+
 TEST(GapInteraction, AugmentedLagrangeAndDampingTangents) {
   {
     GapSection s = gapuni(0.0);
