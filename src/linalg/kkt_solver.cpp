@@ -251,7 +251,15 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       continue;
     }
     for (LocalIndex i = 0; i < n; ++i) du[i] = y[i] - x[i];
+    // M du + D w = b - C_P^T R_F g gives K du + C^T dl = b exactly with
+    // dl = w + R_F (C du + g) on the rows whose springs are in the factor: the multiplier iteration
+    // stops once C du + g is within the constraint tolerance, and the spring force R_F (C du + g)
+    // left over (large, R_F being stiff) belongs to the multiplier, not to the residual.
     std::copy(w.begin(), w.begin() + m, dl.begin());
+    std::vector<double> cdu(static_cast<std::size_t>(m));
+    C.multiply(du, cdu);
+    for (int r = 0; r < m; ++r)
+      if (p_of[r] >= 0) dl[r] += _fR[p_of[r]] * (cdu[r] + C.g[r]);
     out.constraint_residual = sr.residual;
     out.solves = _solves;
     log::debug("  {} factor, {} multiplier iterations",

@@ -92,8 +92,10 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       if (!ev.has_field[f]) continue;
       const double qt = (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
-      // a field that carries (next to) no flux is converged and does not count in the ratio
-      if (r <= c.zero_flux_ratio * std::max(qt, c.initial_flux)) continue;
+      // zero flux: a field whose time-averaged flux is below q~_0 (round-off heat in a coupled step
+      // without heat load) is converged once its residual is below epsilon q~_0; it does not count
+      // in the ratio
+      if (qt < c.initial_flux && r <= c.zero_flux_ratio * c.initial_flux) continue;
       const double ratio = qt > 0 ? r / qt : std::numeric_limits<double>::infinity();
       worst_ratio = std::max(worst_ratio, ratio);
       bool ok;

@@ -19,9 +19,9 @@ struct NewtonControls {
   double correction_ratio = 0.01;  ///< C_n
   double linear_ratio = 1e-8;      ///< epsilon_l
   /// Zero flux (Abaqus epsilon^alpha and q~_0^alpha of *CONTROLS, FIELD): a field whose
-  /// time-averaged flux is below initial_flux is judged against initial_flux, and a residual
-  /// below zero_flux_ratio * max(time-averaged flux, initial_flux) is converged. A coupled step
-  /// with no heat load (uniform temperature) thus converges on its displacements alone.
+  /// time-averaged flux is below initial_flux is also converged when its residual is below
+  /// zero_flux_ratio * initial_flux. A coupled step with no heat load (uniform temperature) thus
+  /// converges on its displacements alone.
   double zero_flux_ratio = 1e-5;
   double initial_flux = 1e-2;
   int max_equilibrium_iterations = 16; ///< I_C
