@@ -27,7 +27,7 @@ struct NewtonControls {
   int max_equilibrium_iterations = 16; ///< I_C
   int divergence_check_after = 4;      ///< I_0
   int max_severe_iterations = 12;      ///< contact status iterations per attempt
-  int chatter_flips = 4;               ///< one element flipping this often is chattering
+  int chatter_flips = 8;               ///< one element flipping this often is chattering
   int max_augmentations = 25;          ///< augmented-Lagrange updates per increment
   /// factor reuse across iterations and increments (modified Newton with exact contact rows);
   /// a stale-factor iteration that reduces the residual by less than stale_contraction forces a
