@@ -196,8 +196,11 @@ void BeamKernel::recover(const ElementInput& in, ElementRecovery& out) const {
   const SectionState st = section_state(in);
   OutputBlock& sf = add_block(out, ElemVar::SF, kBeamSF, 1);
   for (int i = 0; i < 6; ++i) sf.values[i] = st.force[i];
-  OutputBlock& s = add_block(out, ElemVar::S, kBeamS, 4);
-  OutputBlock& e = add_block(out, ElemVar::E, kBeamE, 4);
+  // add both blocks before taking references: a second add_block may reallocate the first
+  add_block(out, ElemVar::S, kBeamS, 4);
+  add_block(out, ElemVar::E, kBeamE, 4);
+  OutputBlock& s = out.blocks[out.blocks.size() - 2];
+  OutputBlock& e = out.blocks.back();
   for (int p = 0; p < 4; ++p) {
     const double x1 = _section.points[p][0], x2 = _section.points[p][1];
     // Axial strain of a fibre: eps + kappa_1 x2 - kappa_2 x1 (docs/theory/structural.md §3.4).
