@@ -2,12 +2,11 @@
 #include "common/error.hpp"
 #include "linalg/linear_solver.hpp"
 
-#include <cholmod.h>
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <cholmod.h>
 #include <cmath>
 #include <cstring>
+#include <fmt/format.h>
 
 namespace gapfem {
 namespace {
@@ -16,7 +15,7 @@ namespace {
 constexpr double kPivotRatio = 1e-12;
 
 class CholmodSolver final : public LinearSolver {
-public:
+ public:
   CholmodSolver() {
     cholmod_start(&_c);
     _c.supernodal = CHOLMOD_SUPERNODAL;
@@ -97,7 +96,7 @@ public:
     return _L ? static_cast<std::size_t>(_L->xsize) * sizeof(double) : 0;
   }
 
-private:
+ private:
   cholmod_sparse view(const SparsityPattern& p, const double* values) {
     cholmod_sparse A{};
     A.nrow = A.ncol = static_cast<std::size_t>(p.n);
@@ -150,7 +149,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
+std::unique_ptr<LinearSolver> make_cholmod_solver() {
+  return std::make_unique<CholmodSolver>();
+}
 
 void LinearSolver::solve_many(std::span<const double> b, std::span<double> x, int k) {
   const auto n = b.size() / static_cast<std::size_t>(k);

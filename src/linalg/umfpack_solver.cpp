@@ -5,17 +5,16 @@
 #include "common/error.hpp"
 #include "linalg/linear_solver.hpp"
 
-#include <fmt/format.h>
-#include <umfpack.h>
-
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
+#include <umfpack.h>
 
 namespace gapfem {
 namespace {
 
 class UmfpackSolver final : public LinearSolver {
-public:
+ public:
   UmfpackSolver() {
     umfpack_dl_defaults(_control);
     _control[UMFPACK_IRSTEP] = 0; // no iterative refinement: solve() needs only the factor
@@ -70,7 +69,7 @@ public:
     return static_cast<std::size_t>(_info[UMFPACK_NUMERIC_SIZE] * _info[UMFPACK_SIZE_OF_UNIT]);
   }
 
-private:
+ private:
   using Long = SuiteSparse_long;
 
   /// A sentence for a failed UMFPACK call; running out of memory names the size reached.
@@ -78,7 +77,9 @@ private:
     if (status == UMFPACK_ERROR_out_of_memory)
       return fmt::format("UMFPACK {} ran out of memory on {} equations (the LU factor needs about "
                          "{:.1f} GiB); use a coarser mesh or run on a machine with more memory",
-                         what, _n, _info[UMFPACK_NUMERIC_SIZE_ESTIMATE] * _info[UMFPACK_SIZE_OF_UNIT] / 1073741824.0);
+                         what, _n,
+                         _info[UMFPACK_NUMERIC_SIZE_ESTIMATE] * _info[UMFPACK_SIZE_OF_UNIT] /
+                             1073741824.0);
     return fmt::format("UMFPACK {} failed (status {}) on {} equations", what, status, _n);
   }
 
@@ -125,6 +126,8 @@ private:
 
 } // namespace
 
-std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
+std::unique_ptr<LinearSolver> make_umfpack_solver() {
+  return std::make_unique<UmfpackSolver>();
+}
 
 } // namespace gapfem

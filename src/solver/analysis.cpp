@@ -12,12 +12,11 @@
 #include "solver/step_problem.hpp"
 #include "solver/thermal_step.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
-#include <new>
+#include <fmt/format.h>
 #include <fstream>
+#include <new>
 #include <numeric>
 #include <set>
 #include <string>
@@ -75,7 +74,9 @@ Analysis::Analysis(const Model& model, std::vector<ResultWriter*> writers, Analy
     : _impl(std::make_unique<Impl>(model, std::move(writers), options)) {}
 Analysis::~Analysis() = default;
 
-const std::vector<StepSummary>& Analysis::step_summaries() const { return _impl->summaries; }
+const std::vector<StepSummary>& Analysis::step_summaries() const {
+  return _impl->summaries;
+}
 
 RunSummary Analysis::run() {
   Impl& m = *_impl;
@@ -292,7 +293,8 @@ StepSummary Analysis::Impl::run_step(int index) {
   return sum;
 }
 
-void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt) {
+void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last,
+                                 double dt) {
   const Step& step = model.steps[index];
   auto due = [&](int freq) { return freq > 0 && (increment % freq == 0 || last); };
   Frame fr;
@@ -407,7 +409,8 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
   const FieldView fields = prob.fields();
   ElementRecovery rec;
   for (auto& b : disc.blocks()) {
-    if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement) continue;
+    if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement)
+      continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
       assembler.recover(b.elements[i], fields, prob.context(), rec);
       if (!rec.gap) continue;
@@ -415,10 +418,18 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
       ++c.n_gaps;
       const Label label = model.element_label(b.elements[i]);
       switch (g.status) {
-      case ContactStatus::Open: ++c.n_open; break;
-      case ContactStatus::Closed: ++c.n_closed; break;
-      case ContactStatus::Stick: ++c.n_stick; break;
-      case ContactStatus::Slip: ++c.n_slip; break;
+      case ContactStatus::Open:
+        ++c.n_open;
+        break;
+      case ContactStatus::Closed:
+        ++c.n_closed;
+        break;
+      case ContactStatus::Stick:
+        ++c.n_stick;
+        break;
+      case ContactStatus::Slip:
+        ++c.n_slip;
+        break;
       }
       const double allowance = b.interference.empty() ? 0.0 : b.interference[i];
       const double pen = -(g.clearance + allowance);

@@ -15,9 +15,9 @@
 namespace gapfem {
 
 struct NewtonControls {
-  double residual_ratio = 0.005;   ///< R_n
-  double correction_ratio = 0.01;  ///< C_n
-  double linear_ratio = 1e-8;      ///< epsilon_l
+  double residual_ratio = 0.005;  ///< R_n
+  double correction_ratio = 0.01; ///< C_n
+  double linear_ratio = 1e-8;     ///< epsilon_l
   /// Zero flux (Abaqus epsilon^alpha and q~_0^alpha of *CONTROLS, FIELD): a field whose
   /// time-averaged flux is below initial_flux is also converged when its residual is below
   /// zero_flux_ratio * initial_flux. A coupled step with no heat load (uniform temperature) thus
@@ -43,11 +43,11 @@ struct FluxHistory {
 
 struct NewtonResult {
   bool converged = false;
-  int iterations = 0;        ///< linear solves of the Newton system
-  int severe_iterations = 0; ///< iterations that changed contact status
-  int augmentations = 0;     ///< augmented-Lagrange updates
+  int iterations = 0;                    ///< linear solves of the Newton system
+  int severe_iterations = 0;             ///< iterations that changed contact status
+  int augmentations = 0;                 ///< augmented-Lagrange updates
   std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
-  std::string reason;        ///< why it did not converge
+  std::string reason;                    ///< why it did not converge
   std::vector<ElemId> chattering;
   std::vector<double> residual_history; ///< worst residual/flux ratio after each iteration
   bool singular = false;

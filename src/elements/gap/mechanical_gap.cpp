@@ -2,10 +2,9 @@
 
 #include "model/model.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <unordered_map>
 
 namespace gapfem {
@@ -16,8 +15,12 @@ constexpr std::array<std::string_view, 1> kHflNames = {"HFL1"};
 constexpr int kMaxDofs = 8;
 using VecN = Eigen::Matrix<double, kMaxDofs, 1>;
 
-ContactStatus status_of(double v) { return static_cast<ContactStatus>(static_cast<int>(v + 0.5)); }
-bool closed(ContactStatus s) { return s != ContactStatus::Open; }
+ContactStatus status_of(double v) {
+  return static_cast<ContactStatus>(static_cast<int>(v + 0.5));
+}
+bool closed(ContactStatus s) {
+  return s != ContactStatus::Open;
+}
 
 /// Diameter (largest node distance) of an element, from its reference coordinates.
 double element_diameter(const Model& m, ElemId e) {
@@ -46,8 +49,8 @@ struct MechanicalGapKernel::Response {
   Eigen::Vector2d friction = Eigen::Vector2d::Zero();
   Eigen::Vector2d tangential_damping = Eigen::Vector2d::Zero();
   double dissipation = 0.0;
-  GapThermalModel::Flux heat;  ///< GAPUNIT conduction/radiation
-  double heat_rate = 0.0;      ///< frictional heating rate eta * dissipation / dt
+  GapThermalModel::Flux heat; ///< GAPUNIT conduction/radiation
+  double heat_rate = 0.0;     ///< frictional heating rate eta * dissipation / dt
 };
 
 MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
@@ -68,7 +71,9 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
     _base.shape = GapShape::Cyl;
     _base.a = dir.normalized();
     break;
-  case ElementType::GAPSPHER: _base.shape = GapShape::Sph; break;
+  case ElementType::GAPSPHER:
+    _base.shape = GapShape::Sph;
+    break;
   default:
     _base.shape = GapShape::Uni;
     _computed_direction = !_section.direction_given || dir.norm() == 0.0;
@@ -87,7 +92,8 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
   }
   // Friction laws: the section's, then every *CHANGE FRICTION that touches this block.
   std::unordered_map<ElemId, LocalIndex> index;
-  for (std::size_t i = 0; i < ctx.elements.size(); ++i) index[ctx.elements[i]] = static_cast<LocalIndex>(i);
+  for (std::size_t i = 0; i < ctx.elements.size(); ++i)
+    index[ctx.elements[i]] = static_cast<LocalIndex>(i);
   _friction_schedule.assign(ctx.elements.size(), {});
   if (_section.friction.given) {
     _section_friction = 0;
@@ -139,7 +145,8 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
 GapGeometryParams MechanicalGapKernel::params_for(const ElementInput& in) const {
   GapGeometryParams p = _base;
   if (_computed_direction) {
-    const Eigen::Vector3d d(in.X[1][0] - in.X[0][0], in.X[1][1] - in.X[0][1], in.X[1][2] - in.X[0][2]);
+    const Eigen::Vector3d d(in.X[1][0] - in.X[0][0], in.X[1][1] - in.X[0][1],
+                            in.X[1][2] - in.X[0][2]);
     const double len = d.norm();
     p.n = len > 0 ? Eigen::Vector3d(d / len) : Eigen::Vector3d::UnitX();
   }
@@ -177,7 +184,8 @@ double MechanicalGapKernel::augmented_stiffness(const ElementInput& in) const {
 }
 
 std::string MechanicalGapKernel::validate(const ElementInput& in) const {
-  const Eigen::Vector3d d(in.X[1][0] - in.X[0][0], in.X[1][1] - in.X[0][1], in.X[1][2] - in.X[0][2]);
+  const Eigen::Vector3d d(in.X[1][0] - in.X[0][0], in.X[1][1] - in.X[0][1],
+                          in.X[1][2] - in.X[0][2]);
   if (_base.shape == GapShape::Uni && _computed_direction && d.norm() <= 1e-12 * _length_scale)
     return "the two nodes coincide and *GAP gives no direction, so the contact direction cannot be "
            "computed; give the direction cosines (fields 2-4 of the *GAP data line)";
@@ -187,9 +195,10 @@ std::string MechanicalGapKernel::validate(const ElementInput& in) const {
     Eigen::Vector3d r = -d;
     if (_base.shape == GapShape::Cyl) r -= _base.a * _base.a.dot(r);
     if (r.norm() <= 1e-12 * _length_scale)
-      return fmt::format("the nodes lie on the {} of the gap with d < 0, so the gap is closed with an "
-                         "undefined contact direction; offset node 1 from node 2",
-                         _base.shape == GapShape::Cyl ? "same axis line" : "same centre");
+      return fmt::format(
+          "the nodes lie on the {} of the gap with d < 0, so the gap is closed with an "
+          "undefined contact direction; offset node 1 from node 2",
+          _base.shape == GapShape::Cyl ? "same axis line" : "same centre");
   }
   return {};
 }
@@ -202,8 +211,8 @@ void MechanicalGapKernel::initialize(const ElementInput& in) const {
     for (int k = 0; k < 3; ++k) in.state[GapStateLayout::direction + k] = G.c[k];
 }
 
-void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, std::span<double> mult,
-                                  ElementOutput* out, Response& R) const {
+void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
+                                  std::span<double> mult, ElementOutput* out, Response& R) const {
   const int nd = 2 * _per_node;
   const auto& s0 = in.state_start;
   R.geom = geometry(in, in.u, st);
@@ -222,7 +231,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
     ds1[_per_node + k] = -R.t1[k];
     ds2[k] = R.t2[k];
     ds2[_per_node + k] = -R.t2[k];
-    const double du_rel = (in.u[k] - in.u_start[k]) - (in.u[_per_node + k] - in.u_start[_per_node + k]);
+    const double du_rel =
+        (in.u[k] - in.u_start[k]) - (in.u[_per_node + k] - in.u_start[_per_node + k]);
     dslip[0] += R.t1[k] * du_rel;
     dslip[1] += R.t2[k] * du_rel;
   }
@@ -296,8 +306,9 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   Eigen::Vector2d dtau_dN = Eigen::Vector2d::Zero();
   const int iT1 = _per_node - 1, iT2 = 2 * _per_node - 1; // GAPUNIT temperature DOFs
   const double temperature = _thermal ? 0.5 * (in.u[iT1] + in.u[iT2])
-                             : in.temperature.empty() ? 0.0
-                                                      : 0.5 * (in.temperature[0] + in.temperature[1]);
+                             : in.temperature.empty()
+                                 ? 0.0
+                                 : 0.5 * (in.temperature[0] + in.temperature[1]);
   // d(dissipation of the increment)/d(elastic slip) and /d(normal force), for frictional heating
   Eigen::Vector2d dD_de = Eigen::Vector2d::Zero();
   double dD_dN = 0.0;
@@ -330,8 +341,10 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
           m = lt / lt.norm();
         }
       } else if (e.norm() > slip_tol) {
-        if (e.dot(m) < 0) slipping = false; // slip reversed: stick again
-        else m = e / e.norm();
+        if (e.dot(m) < 0)
+          slipping = false; // slip reversed: stick again
+        else
+          m = e / e.norm();
       }
       if (!slipping) {
         status = ContactStatus::Stick;
@@ -438,9 +451,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   // Status changes that alter the set of constraint rows make severe-discontinuity iterations:
   // open <-> closed with exact normal contact, stick <-> slip with exact (Lagrange) friction.
   const bool normal_changed = closed(status) != closed(previous);
-  const bool friction_changed =
-      fl && fl->lagrange() && closed(status) && closed(previous) && status != previous &&
-      previous != ContactStatus::Closed;
+  const bool friction_changed = fl && fl->lagrange() && closed(status) && closed(previous) &&
+                                status != previous && previous != ContactStatus::Closed;
   if ((_mode == NormalMode::Direct && normal_changed) || friction_changed) out->status_changes = 1;
   R.status = status;
   st[GapStateLayout::status] = static_cast<double>(status);
@@ -472,7 +484,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
   const std::array<const VecN*, 2> ds = {&ds1, &ds2};
   for (int a = 0; a < 2; ++a) res(*ds[a], R.friction[a] + td[a]);
   for (int a = 0; a < 2; ++a) {
-    for (int b = 0; b < 2; ++b) tan(*ds[a], *ds[b], (friction_rows ? 0.0 : dtau_ds(a, b)) + (a == b ? dtd : 0.0));
+    for (int b = 0; b < 2; ++b)
+      tan(*ds[a], *ds[b], (friction_rows ? 0.0 : dtau_ds(a, b)) + (a == b ? dtd : 0.0));
     // tangential damping coefficient depends on h: d/du = -dcoef_dh_t * dslip_a * dg
     tan(*ds[a], dg, -dcoef_dh_t * dslip[a]);
   }
@@ -488,8 +501,9 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
       for (int a = 0; a < 2; ++a) tan(*ds[a], dg, dtau_dN[a] * dFN_dg);
     }
   }
-  if (fl && !friction_rows && (dtau_ds(0, 1) != dtau_ds(1, 0) || dtau_dN.squaredNorm() > 0 ||
-                               status == ContactStatus::Slip))
+  if (fl && !friction_rows &&
+      (dtau_ds(0, 1) != dtau_ds(1, 0) || dtau_dN.squaredNorm() > 0 ||
+       status == ContactStatus::Slip))
     out->unsymmetric = true;
   // geometric stiffness of the rotating direction (GAPCYL, GAPSPHER)
   if (out->want_tangent && _base.shape != GapShape::Uni && !G.degenerate && normal_total != 0.0)
@@ -498,7 +512,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st, 
         const double sign = (a == b) ? 1.0 : -1.0;
         for (int i = 0; i < _dim; ++i)
           for (int j = 0; j < _dim; ++j)
-            out->tangent[(a * _per_node + i) * nd + b * _per_node + j] -= normal_total * sign * G.H(i, j);
+            out->tangent[(a * _per_node + i) * nd + b * _per_node + j] -=
+                normal_total * sign * G.H(i, j);
       }
   if (!_thermal) return;
   // conduction/radiation: node 1 loses A q, node 2 gains it; frictional heat enters both nodes
@@ -595,8 +610,10 @@ void MechanicalGapKernel::recover(const ElementInput& in, ElementRecovery& out) 
     rec.conductance = R.heat.conductance;
     out.blocks.push_back(OutputBlock{ElemVar::HFL, kHflNames, 1, {R.heat.q}});
   }
-  out.blocks.push_back(OutputBlock{ElemVar::S, kSNames, 1, {rec.pressure, rec.shear[0], rec.shear[1]}});
-  out.blocks.push_back(OutputBlock{ElemVar::E, kENames, 1, {rec.clearance, rec.slip[0], rec.slip[1]}});
+  out.blocks.push_back(
+      OutputBlock{ElemVar::S, kSNames, 1, {rec.pressure, rec.shear[0], rec.shear[1]}});
+  out.blocks.push_back(
+      OutputBlock{ElemVar::E, kENames, 1, {rec.clearance, rec.slip[0], rec.slip[1]}});
   out.gap = rec;
 }
 
@@ -605,9 +622,12 @@ std::unique_ptr<ElementKernel> make_gap_kernel(const KernelContext& ctx) {
   case ElementType::GAPUNI:
   case ElementType::GAPCYL:
   case ElementType::GAPSPHER:
-  case ElementType::GAPUNIT: return std::make_unique<MechanicalGapKernel>(ctx);
-  case ElementType::DGAP: return std::make_unique<DgapKernel>(ctx);
-  default: throw InternalError("not a gap element type");
+  case ElementType::GAPUNIT:
+    return std::make_unique<MechanicalGapKernel>(ctx);
+  case ElementType::DGAP:
+    return std::make_unique<DgapKernel>(ctx);
+  default:
+    throw InternalError("not a gap element type");
   }
 }
 

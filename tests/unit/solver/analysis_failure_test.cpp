@@ -8,10 +8,9 @@
 #include "solver/analysis.hpp"
 #include "test_util.hpp"
 
+#include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <fstream>
 #include <sstream>
 
 using namespace gapfem;
@@ -48,14 +47,14 @@ U
 
 /// Stands for a solver failure: throws AnalysisError when the given increment is reported.
 class FailingWriter final : public ResultWriter {
-public:
+ public:
   explicit FailingWriter(int increment) : _increment(increment) {}
   void increment(const IncrementInfo& info) override {
     if (info.increment == _increment)
       throw AnalysisError("UMFPACK LU factorisation ran out of memory on 3 equations");
   }
 
-private:
+ private:
   int _increment;
 };
 

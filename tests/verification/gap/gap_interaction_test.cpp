@@ -4,10 +4,9 @@
 // tension, augmented Lagrange against DIRECT, contact damping, *CHANGE FRICTION.
 #include "test_util.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <cmath>
 #include <string>
 
 using namespace gapfem;
@@ -167,9 +166,10 @@ TEST(VerificationGapFriction, StickSlipStickHysteresisAndDissipation) {
 TEST(VerificationGapFriction, ChangeFrictionLetsAStickingGapSlip) {
   // Fx = 20 sticks with mu = 0.3 (limit 30); *CHANGE FRICTION to mu = 0.1 in step 3 lets it slip:
   // friction 10, spring 100 u = 10 → u = 0.1.
-  const JobResult r = run_deck(m3_deck("*FRICTION, LAGRANGE\n0.3", 20.0,
-                                       "*STEP\n*STATIC\n*CHANGE FRICTION, ELSET=G1\n*FRICTION\n0.1\n"
-                                       "*EL PRINT\nS, E\n*END STEP\n"));
+  const JobResult r =
+      run_deck(m3_deck("*FRICTION, LAGRANGE\n0.3", 20.0,
+                       "*STEP\n*STATIC\n*CHANGE FRICTION, ELSET=G1\n*FRICTION\n0.1\n"
+                       "*EL PRINT\nS, E\n*END STEP\n"));
   ASSERT_EQ(r.exit_code, 0) << r.error;
   EXPECT_EQ(gap(r, last_frame(r, 2), 101).status, ContactStatus::Stick);
   const Frame& f = last_frame(r, 3);
@@ -180,7 +180,8 @@ TEST(VerificationGapFriction, ChangeFrictionLetsAStickingGapSlip) {
 TEST(VerificationGapFriction, CylinderAxialAndCircumferentialFriction) {
   // Pipe (node 1) pressed against its sleeve (node 2, radial clearance 0.02) by Fy = 1e4 through
   // springs k = 1e5 on y and z: contact force N = 1e4 - 1e5 * 0.02 = 8e3. Then an axial force
-  // Fx = 2e3 (< mu N = 2.4e3: sticks) and Fx = 3e3 (slips: axial spring 1e4 takes 600 → u_x = 0.06).
+  // Fx = 2e3 (< mu N = 2.4e3: sticks) and Fx = 3e3 (slips: axial spring 1e4 takes 600 → u_x =
+  // 0.06).
   auto deck = [](double fx) {
     return fmt::format(R"(*NODE
 1, 0., 0., 0.
@@ -247,8 +248,8 @@ S, E
 TEST(VerificationGapFriction, SphereFriction) {
   // Ball (node 1) pressed into its socket (radius 0.2) along +y by 1e4 through springs k = 1e4:
   // N = 1e4 - 1e4 * 0.2 = 8e3; a tangential force Fx = 3e3 > mu N = 2.4e3 makes it slide around
-  // the socket until the tangential spring and friction balance. With elastic slip gamma the sticking
-  // case Fx = 1e3 (< 2.4e3) keeps u_x at the elastic value Fx/(k + mu N / gamma).
+  // the socket until the tangential spring and friction balance. With elastic slip gamma the
+  // sticking case Fx = 1e3 (< 2.4e3) keeps u_x at the elastic value Fx/(k + mu N / gamma).
   const std::string base = R"(*NODE
 1, 0., 0., 0.
 2, 0., 0., 0.
@@ -328,7 +329,8 @@ TEST(VerificationGapBehavior, SoftenedLawsAtSeveralOverclosures) {
   };
   const double e = std::exp(1.0);
   const std::vector<Law> laws = {
-      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1.E4", [](double g) { return g > 0 ? 1e4 * g : 0.0; }},
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1.E4",
+       [](double g) { return g > 0 ? 1e4 * g : 0.0; }},
       {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n0.01, 20.",
        [e](double g) {
          if (g <= -0.01) return 0.0;
@@ -336,7 +338,9 @@ TEST(VerificationGapBehavior, SoftenedLawsAtSeveralOverclosures) {
          return 20.0 / (e - 1) * x * (std::exp(x) - 1);
        }},
       {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TABULAR\n0., 0.\n5., 0.001\n25., 0.002",
-       [](double g) { return g <= 0 ? 0.0 : g <= 0.001 ? 5e3 * g : 5.0 + 2e4 * (g - 0.001); }},
+       [](double g) { return g <= 0       ? 0.0
+                             : g <= 0.001 ? 5e3 * g
+                                          : 5.0 + 2e4 * (g - 0.001); }},
   };
   for (const Law& law : laws) {
     SCOPED_TRACE(law.text);
@@ -430,7 +434,8 @@ S, E
   EXPECT_GE(-gap(r, f, 101).clearance, 0.0);
   EXPECT_NEAR(gap(r, f, 101).normal_force, 50.0, 100.0 * 1e-3);
   // penalty (automatic, 10 x the spring): F = 1000 g and 100 u + F = 100 → g = 0.5/11
-  const JobResult p = run_deck(std::string(deck).replace(deck.find("AUGMENTED LAGRANGE"), 18, "PENALTY"));
+  const JobResult p =
+      run_deck(std::string(deck).replace(deck.find("AUGMENTED LAGRANGE"), 18, "PENALTY"));
   ASSERT_EQ(p.exit_code, 0) << p.error;
   EXPECT_NEAR(-gap(p, last_frame(p), 101).clearance, 0.5 / 11.0, 1e-10);
 }

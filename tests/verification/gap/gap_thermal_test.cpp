@@ -4,18 +4,23 @@
 // the thermal expansion of a coupled truss at dT = d / (alpha L).
 #include "test_util.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 using namespace gapfem;
 using namespace gapfem::test;
 
 namespace {
-const Frame& final_frame(const JobResult& r) { return last_frame(r); }
-double NT(const JobResult& r, const Frame& f, Label n) { return f.nodes.NT.at(r.model->mesh.find_node(n)); }
-double RFL(const JobResult& r, const Frame& f, Label n) { return f.nodes.RFL.at(r.model->mesh.find_node(n)); }
+const Frame& final_frame(const JobResult& r) {
+  return last_frame(r);
+}
+double NT(const JobResult& r, const Frame& f, Label n) {
+  return f.nodes.NT.at(r.model->mesh.find_node(n));
+}
+double RFL(const JobResult& r, const Frame& f, Label n) {
+  return f.nodes.RFL.at(r.model->mesh.find_node(n));
+}
 
 // Node 1 held at 100 -> DC1D2 of length 0.95 (k = 1, A = 1) -> node 2 -> DGAP (A = 1) -> node 3
 // held at 50. `gap_options` are the sub-options of *GAP.
@@ -101,9 +106,9 @@ TEST(VerificationGapThermal, T3NoConductanceBeyondTheLastClearance) {
 TEST(VerificationGapThermal, T4Radiation) {
   // C = F sigma / (2/eps - 1) = 5.0e-10; (100 - T_B)/0.95 = C[(T_B+460)^4 - 510^4] by bisection:
   // T_B = 88.98823, q = 11.59134
-  const JobResult r = run_deck(series_deck(
-      0.0, "*GAP RADIATION\n0.45167, 0.45167\n1., 0.\n1., 1.",
-      "*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-460., STEFAN BOLTZMANN=0.1714E-8\n"));
+  const JobResult r = run_deck(
+      series_deck(0.0, "*GAP RADIATION\n0.45167, 0.45167\n1., 0.\n1., 1.",
+                  "*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-460., STEFAN BOLTZMANN=0.1714E-8\n"));
   ASSERT_EQ(r.exit_code, 0) << r.error;
   const Frame& f = final_frame(r);
   EXPECT_NEAR(NT(r, f, 2), 88.988226, 1e-5);
@@ -163,7 +168,8 @@ S, E, HFL
 U, NT, RFL
 *END STEP
 )";
-  const JobResult r = run_deck(gapunit_deck("*FRICTION, LAGRANGE\n0.3\n*GAP HEAT GENERATION\n1., 0.5", -100.0, step2));
+  const JobResult r = run_deck(
+      gapunit_deck("*FRICTION, LAGRANGE\n0.3\n*GAP HEAT GENERATION\n1., 0.5", -100.0, step2));
   ASSERT_EQ(r.exit_code, 0) << r.error;
   int checked = 0;
   for (const Frame& f : r.frames) {
@@ -188,7 +194,8 @@ TEST(VerificationGapThermal, T6PressureDependentConductanceFollowsTheClampLoad) 
 S, E, HFL
 *END STEP
 )";
-  const JobResult r = run_deck(gapunit_deck("*GAP CONDUCTANCE, PRESSURE\n5., 0.\n25., 100.", -40.0, step2));
+  const JobResult r =
+      run_deck(gapunit_deck("*GAP CONDUCTANCE, PRESSURE\n5., 0.\n25., 100.", -40.0, step2));
   ASSERT_EQ(r.exit_code, 0) << r.error;
   const GapRecord& g1 = gap(r, last_frame(r, 1), 10);
   EXPECT_NEAR(g1.pressure, 40.0, 1e-9);
@@ -303,7 +310,8 @@ S, E, HFL
   EXPECT_NEAR(closed.conductance, 13.0, 1e-9);
   EXPECT_NEAR(closed.heat_flux, 650.0, 1e-7);
   // a second clearance table is an error
-  const JobResult bad = run_deck(gapunit_deck("*GAP CONDUCTANCE\n4., 0.\n0., 1.\n*GAP CONDUCTANCE\n4., 0.\n0., 1.", 0.25));
+  const JobResult bad = run_deck(
+      gapunit_deck("*GAP CONDUCTANCE\n4., 0.\n0., 1.\n*GAP CONDUCTANCE\n4., 0.\n0., 1.", 0.25));
   EXPECT_EQ(bad.exit_code, 1);
   EXPECT_NE(bad.error.find("already given"), std::string::npos) << bad.error;
 }
@@ -388,7 +396,8 @@ U, NT
     total += gap(r, f, e).pressure * 0.3;
   }
   EXPECT_NEAR(total, 4e5, 1e-6 * 4e5);
-  for (Label n : {1, 6, 7, 12, 13, 16, 17, 18}) EXPECT_NEAR(NT(r, f, n), 20.0, 1e-9) << "node " << n;
+  for (Label n : {1, 6, 7, 12, 13, 16, 17, 18})
+    EXPECT_NEAR(NT(r, f, n), 20.0, 1e-9) << "node " << n;
   // nothing is nonlinear once the gaps are closed: one iteration per increment
   EXPECT_EQ(r.run.stats.iterations, r.run.stats.increments);
 }

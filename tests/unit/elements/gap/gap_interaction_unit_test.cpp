@@ -7,9 +7,8 @@
 #include "elements/gap/normal_law.hpp"
 #include "gap_test_util.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace gapfem;
 using gapfem::test::SingleElement;
@@ -89,11 +88,13 @@ TEST(GapLaws, FrictionReturnMapping) {
   FrictionLaw law(coulomb(0.3, 0.01), 1.0);
   const Eigen::Vector2d zero = Eigen::Vector2d::Zero();
   // stick: force = (mu N / gamma) * elastic slip
-  auto stick = law.penalty(Eigen::Vector2d(0.004, 0.0), Eigen::Vector2d(0.004, 0.0), zero, 100.0, 1.0, 0, 0.01);
+  auto stick = law.penalty(Eigen::Vector2d(0.004, 0.0), Eigen::Vector2d(0.004, 0.0), zero, 100.0,
+                           1.0, 0, 0.01);
   EXPECT_FALSE(stick.slipping);
   EXPECT_NEAR(stick.force[0], 30.0 / 0.01 * 0.004, 1e-12);
   // slip: force = mu N along the trial direction, plastic slip = slip - force / k
-  auto slip = law.penalty(Eigen::Vector2d(0.03, 0.04), Eigen::Vector2d(0.03, 0.04), zero, 100.0, 1.0, 0, 0.01);
+  auto slip = law.penalty(Eigen::Vector2d(0.03, 0.04), Eigen::Vector2d(0.03, 0.04), zero, 100.0,
+                          1.0, 0, 0.01);
   EXPECT_TRUE(slip.slipping);
   EXPECT_NEAR(slip.force.norm(), 30.0, 1e-12);
   EXPECT_NEAR(slip.force[0] / slip.force[1], 0.75, 1e-12);
@@ -112,7 +113,8 @@ TEST(GapLaws, FrictionReturnMapping) {
     for (int i = 0; i < 2; ++i)
       EXPECT_NEAR((p.force[i] - m.force[i]) / (2 * h), slip.dforce_dslip(i, j), 1e-5);
   }
-  auto pN = law.penalty(Eigen::Vector2d(0.03, 0.04), Eigen::Vector2d(0.03, 0.04), zero, 100.0 + h, 1.0, 0, 0.01);
+  auto pN = law.penalty(Eigen::Vector2d(0.03, 0.04), Eigen::Vector2d(0.03, 0.04), zero, 100.0 + h,
+                        1.0, 0, 0.01);
   EXPECT_NEAR((pN.force[0] - slip.force[0]) / h, slip.dforce_dnormal[0], 1e-6);
 }
 
@@ -148,7 +150,8 @@ TEST(GapInteraction, PenaltyFrictionTangentStickAndSlip) {
       s.behavior.given = true;
       s.behavior.law = PressureOverclosure::Linear;
       s.behavior.slope = 2e4;
-      Model m = two_node_gap_model(type, {0, 0, 0}, {0, type == ElementType::GAPUNI ? -1.0 : 0.0, 0}, s);
+      Model m =
+          two_node_gap_model(type, {0, 0, 0}, {0, type == ElementType::GAPUNI ? -1.0 : 0.0, 0}, s);
       SingleElement el(m);
       // overclosed by 0.01 along the closure direction, tangential increment 0.0005 or 0.005
       const double t = slipping ? 0.005 : 0.0002;
@@ -272,7 +275,11 @@ TEST(GapInteraction, EveryNormalLawTangentOnARotatingGap) {
     std::function<void(GapSection&)> set;
   };
   const std::vector<Case> cases = {
-      {"linear", [](GapSection& s) { s.behavior.law = PressureOverclosure::Linear; s.behavior.slope = 1e4; }},
+      {"linear",
+       [](GapSection& s) {
+         s.behavior.law = PressureOverclosure::Linear;
+         s.behavior.slope = 1e4;
+       }},
       {"exponential",
        [](GapSection& s) {
          s.behavior.law = PressureOverclosure::Exponential;
@@ -292,8 +299,18 @@ TEST(GapInteraction, EveryNormalLawTangentOnARotatingGap) {
          s.behavior.table_p = {0.0, 5.0, 25.0};
          s.behavior.table_g = {0.0, 0.001, 0.002};
        }},
-      {"penalty", [](GapSection& s) { s.behavior.method = ContactMethod::Penalty; s.behavior.penalty_stiffness = 3e4; }},
-      {"ccx", [](GapSection& s) { s.behavior.given = false; s.ccx_penalty = true; s.ccx_stiffness = 1e5; s.ccx_tension = 1e-3; }},
+      {"penalty",
+       [](GapSection& s) {
+         s.behavior.method = ContactMethod::Penalty;
+         s.behavior.penalty_stiffness = 3e4;
+       }},
+      {"ccx",
+       [](GapSection& s) {
+         s.behavior.given = false;
+         s.ccx_penalty = true;
+         s.ccx_stiffness = 1e5;
+         s.ccx_tension = 1e-3;
+       }},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);
