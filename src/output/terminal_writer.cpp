@@ -53,7 +53,11 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
       log::info("  equilibrium error {:.3e}", c.equilibrium_error);
   }
   if (c.thermal) {
-    if (c.heat_scale > 0)
+    // below the zero-flux level (1e-5 x 1e-2, newton.hpp) no heat flows: a ratio would be noise
+    if (c.heat_scale > 0 && c.heat_scale <= 1e-7)
+      log::info("  heat balance error {:.3e} (no heat flows: heat scale {:.3g})",
+                c.heat_balance_error, c.heat_scale);
+    else if (c.heat_scale > 0)
       log::info("  heat balance error {:.3e} ({:.2e} of heat scale {:.4g})", c.heat_balance_error,
                 c.heat_balance_error / c.heat_scale, c.heat_scale);
     else
