@@ -11,6 +11,8 @@ Cases (generators in this directory):
   agree-11k-ccx       the penalty block made 1e7 times stiffer than the gaps, so that the gap forces
                       do not depend on the C3D8 formulation (gapfem's is Abaqus's B-bar element,
                       ccx's is fully integrated: ~1% apart in reactions): closed sets must be equal
+  block-50k-friction  the 50k block with Coulomb friction (mu = 0.3): pressure, then a lateral load
+  slab-10k            a flat slab, 212,807 equations and 10,201 gaps (exact contact)
   slab-1M             a flat slab, 1.09M equations and 40,401 gaps (exact contact)
   pipe-rack-<size>    B31 pipe lines on GAPCYL guides and GAPUNI rest supports, thermal expansion
   stack-<size>        DGAP thermal stack (steady heat transfer)
@@ -45,7 +47,10 @@ CASES = [
     ("block-50k-ccx", "medium", "gen_block.py", "--nx 25 --nz 24 --penalty 1e7", True),
     ("pipe-rack-50k", "medium", "gen_pipe_rack.py", "--lines 40 --spans 20 --elems 10", False),
     ("stack-150k", "medium", "gen_thermal_stack.py", "--nx 60 --nz 4 --layers 10", False),
+    ("block-50k-friction", "medium", "gen_block.py", "--nx 25 --nz 24 --friction 0.3 --shear 2.8",
+     False),
     ("block-200k", "large", "gen_block.py", "--nx 40 --nz 39", False),
+    ("slab-10k", "large", "gen_block.py", "--nx 100 --nz 6 --length 10 --height 0.4", False),
     ("block-200k-ccx", "large", "gen_block.py", "--nx 40 --nz 39 --penalty 1e7", True),
     ("pipe-rack-250k", "large", "gen_pipe_rack.py", "--lines 200 --spans 20 --elems 10", False),
     ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
