@@ -397,11 +397,11 @@ S, E
   }
 }
 
-TEST(VerificationGapBehavior, AugmentedLagrangeMatchesDirectWithinItsTolerance) {
-  // Propped spring system: node 10 on k = 100 pushed by 100 against a gap with d = 0.5 (M1).
-  // DIRECT: u = -0.5, F = 50. AUGMENTED LAGRANGE (automatic stiffness): same within its
-  // penetration tolerance 1e-3 x characteristic length (here the node distance 1).
-  const std::string deck = R"(*NODE
+namespace {
+/// Model data of the propped spring (spec M1): node 10 on a spring k = 100 in y, a GAPUNI with
+/// d = 0.5 closing as node 10 moves in -y, AUGMENTED LAGRANGE with the automatic stiffness.
+std::string propped_spring_augmented() {
+  return R"(*NODE
 10, 0., 0., 0.
 12, 0., -1., 0.
 *ELEMENT, TYPE=SPRING1, ELSET=SY
@@ -418,7 +418,15 @@ TEST(VerificationGapBehavior, AugmentedLagrangeMatchesDirectWithinItsTolerance) 
 12, 1, 3
 10, 1, 1
 10, 3, 3
-*STEP
+)";
+}
+} // namespace
+
+TEST(VerificationGapBehavior, AugmentedLagrangeMatchesDirectWithinItsTolerance) {
+  // Propped spring system: node 10 on k = 100 pushed by 100 against a gap with d = 0.5 (M1).
+  // DIRECT: u = -0.5, F = 50. AUGMENTED LAGRANGE (automatic stiffness): same within its
+  // penetration tolerance 1e-3 x characteristic length (here the node distance 1).
+  const std::string deck = propped_spring_augmented() + R"(*STEP
 *STATIC
 *CLOAD
 10, 2, -100.
@@ -448,24 +456,7 @@ TEST(VerificationGapBehavior, AugmentedLagrangeGapForgetsItsMultiplierWhenItOpen
   // u = -0.4998, clearance 2e-4, still open. A gap that kept its multiplier would re-engage at
   // the clearance 950 / 1e5 = 9.5e-3 and carry a force; the Uzawa update max(lambda + K g, 0)
   // resets it when the gap opens.
-  const std::string deck = R"(*NODE
-10, 0., 0., 0.
-12, 0., -1., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=SY
-2, 10
-*SPRING, ELSET=SY
-2
-100.
-*ELEMENT, TYPE=GAPUNI, ELSET=G1
-101, 10, 12
-*GAP, ELSET=G1
-0.5, 0., -1., 0., 1.
-*SURFACE BEHAVIOR, AUGMENTED LAGRANGE
-*BOUNDARY
-12, 1, 3
-10, 1, 1
-10, 3, 3
-*STEP
+  const std::string deck = propped_spring_augmented() + R"(*STEP
 *STATIC
 *CLOAD
 10, 2, -1000.
