@@ -63,6 +63,9 @@ struct Analysis::Impl {
   }
 
   StepSummary run_step(int index);
+  /// Is the stiffness at the committed state (step time t0) non-singular? Used to tell a limit
+  /// point or crushed element (singular only in the increment) from a missing support.
+  bool supported_at_last_converged(StepProblem& prob, double t0);
   /// Largest |damping force| of the gaps at the current state (0 when no gap has damping).
   double damping_peak(StepProblem& prob);
   double step_damping_peak = 0.0;
@@ -112,6 +115,22 @@ RunSummary Analysis::run() {
   for (auto* w : m.writers) w->end(m.model, run);
   if (!run.completed) throw AnalysisError(run.failure);
   return run;
+}
+
+bool Analysis::Impl::supported_at_last_converged(StepProblem& prob, double t0) {
+  prob.begin_increment(t0, 0.0);
+  try {
+    const Evaluation ev = prob.evaluate();
+    std::vector<double> du(prob.rhs().size()), dl(static_cast<std::size_t>(prob.constraints().n_rows()));
+    KktOptions opt;
+    opt.force_fresh = true;
+    kkt.solve(prob.matrix(), prob.rhs(), prob.constraints(), du, dl, ev.symmetric, opt, &stats);
+  } catch (const SingularSystem&) {
+    return false;
+  } catch (const ConvergenceFailure&) {
+    return false;
+  }
+  return true;
 }
 
 StepSummary Analysis::Impl::run_step(int index) {
@@ -173,6 +192,7 @@ StepSummary Analysis::Impl::run_step(int index) {
   step_damping_peak = 0.0;
   std::vector<double> converged_f_int, converged_f_ext;
   std::string last_problem;
+  AttemptLog attempts_log;
   while (!ctrl.finished()) {
     if (ctrl.increment() >= step.max_increments) {
       sum.converged = false;
@@ -234,6 +254,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     for (auto* w : writers) w->increment(info);
     if (redo) continue;
     if (res.converged) {
+      attempts_log.clear();
       prob.commit();
       converged_f_int = st.f_int;
       converged_f_ext = st.f_ext;
@@ -248,9 +269,14 @@ StepSummary Analysis::Impl::run_step(int index) {
       continue;
     }
     // Failed attempt: explain, cut back or stop.
+    std::string kind = std::to_string(static_cast<int>(res.cause));
     if (res.singular) {
-      last_problem = describe_singularity(model, disc, assembler, prob, res.singular_equations);
-      if (!disc.has_gaps()) {
+      const bool supported = supported_at_last_converged(prob, t0);
+      last_problem =
+          describe_singularity(model, disc, assembler, prob, res.singular_equations, supported);
+      // A model without gaps whose stiffness is singular from the start cannot be cured by a
+      // smaller increment; one that became singular in the increment may be (a limit point).
+      if (!disc.has_gaps() && !supported) {
         sum.converged = false;
         sum.failure = last_problem;
         break;
@@ -259,12 +285,17 @@ StepSummary Analysis::Impl::run_step(int index) {
       last_problem = describe_chattering(model, res.chattering);
     } else {
       last_problem = res.reason;
+      // repeats of one element's failure are one cause ("element 12: ...")
+      if (res.cause == FailureCause::Element) kind += last_problem.substr(0, last_problem.find(':'));
     }
+    const bool structural = res.singular || !res.chattering.empty() ||
+                            res.cause == FailureCause::Element;
+    attempts_log.add(info.increment, info.attempts, kind, last_problem, structural);
     log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
                   last_problem);
     if (!ctrl.reject()) {
       sum.converged = false;
-      sum.failure = ctrl.failure() + ". Last problem: " + last_problem;
+      sum.failure = ctrl.failure() + ". " + attempts_log.summary();
       break;
     }
   }

@@ -24,7 +24,8 @@ std::string list_labels(const std::vector<Label>& labels, std::size_t max_count 
 } // namespace
 
 std::string describe_singularity(const Model& model, Discretization& disc, Assembler& assembler,
-                                 StepProblem& prob, std::span<const LocalIndex> equations) {
+                                 StepProblem& prob, std::span<const LocalIndex> equations,
+                                 bool supported) {
   const DofMap& dofs = disc.dofs();
   const EquationMap& eqm = prob.equations();
   std::vector<std::string> where;
@@ -96,6 +97,15 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "nodes {} (in a steady-state step it exchanges no heat with its surroundings). Prescribe "
         "a temperature there (*BOUNDARY, DOF 11) or add a film condition (*FILM, *SFILM)",
         at, list_labels(body));
+  if (supported)
+    return fmt::format(
+        "the stiffness became singular at {} in the course of the increment, although the model "
+        "is supported (its stiffness at the last converged state is not singular): the part made "
+        "of nodes {} has reached a limit load (collapse or snap-through under a prescribed load) "
+        "or an element has been crushed flat. Reduce the load, apply it as a prescribed "
+        "displacement (*BOUNDARY) to follow the response past the limit, or refine the mesh "
+        "where it is crushed",
+        at, list_labels(body));
   return fmt::format(
       "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
       "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "
@@ -110,6 +120,42 @@ std::string describe_chattering(const Model& model, std::span<const ElemId> elem
   return fmt::format("the contact status of gap element(s) {} keeps switching between open and "
                      "closed within the increment",
                      list_labels(labels));
+}
+
+void AttemptLog::add(int increment, int attempt, std::string kind, std::string text,
+                     bool structural) {
+  if (structural) _structural = {kind, text, {increment}};
+  _last_kind = kind;
+  for (Entry& e : _entries)
+    if (e.kind == kind) {
+      e.text = std::move(text);
+      e.attempts.push_back(attempt);
+      return;
+    }
+  _entries.push_back({std::move(kind), std::move(text), {attempt}});
+}
+
+std::string AttemptLog::summary() const {
+  std::string last, earlier;
+  for (const Entry& e : _entries) {
+    if (e.kind == _last_kind) {
+      last = e.text;
+      continue;
+    }
+    std::string attempts;
+    for (std::size_t i = 0; i < e.attempts.size(); ++i)
+      attempts += (i ? ", " : "") + std::to_string(e.attempts[i]);
+    earlier += fmt::format("{}{} (attempt{} {})", earlier.empty() ? "" : "; ", e.text,
+                           e.attempts.size() > 1 ? "s" : "", attempts);
+  }
+  std::string out = "Last problem: " + last;
+  if (!earlier.empty()) out += ". Earlier attempts of this increment: " + earlier;
+  const bool seen = std::any_of(_entries.begin(), _entries.end(),
+                                [&](const Entry& e) { return e.kind == _structural.kind; });
+  if (!_structural.kind.empty() && !seen)
+    out += fmt::format(". Earlier in the step (increment {}): {}", _structural.attempts.front(),
+                       _structural.text);
+  return out;
 }
 
 } // namespace gapfem

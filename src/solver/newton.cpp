@@ -23,6 +23,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     ev = p.evaluate();
   } catch (const ConvergenceFailure& e) {
     res.reason = e.what();
+    res.cause = FailureCause::Element;
     return res;
   }
   // The flux scale of the increment is the largest average flux seen in any of its evaluations:
@@ -52,6 +53,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.singular = true;
       res.singular_equations = e.equations();
       res.reason = "the system of equations is singular";
+      res.cause = FailureCause::Singular;
       return res;
     }
     p.apply(du, dl);
@@ -67,6 +69,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       ev = p.evaluate();
     } catch (const ConvergenceFailure& e) {
       res.reason = e.what();
+      res.cause = FailureCause::Element;
       return res;
     }
     for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
@@ -79,6 +82,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
         res.chattering.erase(std::unique(res.chattering.begin(), res.chattering.end()),
                              res.chattering.end());
         res.reason = "contact status is chattering";
+        res.cause = FailureCause::Chattering;
         return res;
       }
     } else {
@@ -122,12 +126,14 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
         res.reason = fmt::format("augmented Lagrange did not reach its penetration tolerance in {} "
                                  "augmentations; increase the penalty stiffness",
                                  c.max_augmentations);
+        res.cause = FailureCause::Augmentation;
         return res;
       }
       try {
         ev = p.evaluate();
       } catch (const ConvergenceFailure& e) {
         res.reason = e.what();
+        res.cause = FailureCause::Element;
         return res;
       }
       equilibrium_iterations = 0;
@@ -137,6 +143,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     }
     if (!std::isfinite(worst_ratio)) {
       res.reason = "the residual is not finite";
+      res.cause = FailureCause::NonFinite;
       return res;
     }
     // A stale factor that no longer contracts the residual well is replaced.
@@ -150,6 +157,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
         increases = 0;
       if (equilibrium_iterations >= c.divergence_check_after && increases >= 2) {
         res.reason = fmt::format("the solution is diverging (residual/flux {:.3e})", worst_ratio);
+        res.cause = FailureCause::Diverging;
         return res;
       }
     }
@@ -157,11 +165,13 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     if (equilibrium_iterations >= c.max_equilibrium_iterations) {
       res.reason = fmt::format("no convergence in {} equilibrium iterations (residual/flux {:.3e})",
                                equilibrium_iterations, worst_ratio);
+      res.cause = FailureCause::Iterations;
       return res;
     }
     if (res.severe_iterations > c.max_severe_iterations) {
       res.reason =
           fmt::format("contact status did not settle in {} iterations", c.max_severe_iterations);
+      res.cause = FailureCause::Status;
       return res;
     }
   }

@@ -41,6 +41,19 @@ struct FluxHistory {
   int n = 0;
 };
 
+/// Why an increment attempt failed, for the diagnosis of a step that cannot go on.
+enum class FailureCause : std::uint8_t {
+  None,
+  Element,      ///< an element could not be evaluated (turned inside out, non-finite force)
+  Singular,     ///< the Newton system is singular
+  Chattering,   ///< contact status flips back and forth
+  Status,       ///< contact status did not settle
+  Augmentation, ///< augmented Lagrange did not reach its tolerance
+  Diverging,    ///< the residual grows
+  Iterations,   ///< too many equilibrium iterations
+  NonFinite     ///< the residual is not finite
+};
+
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;                    ///< linear solves of the Newton system
@@ -48,6 +61,7 @@ struct NewtonResult {
   int augmentations = 0;                 ///< augmented-Lagrange updates
   std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
   std::string reason;                    ///< why it did not converge
+  FailureCause cause = FailureCause::None;
   std::vector<ElemId> chattering;
   std::vector<double> residual_history; ///< worst residual/flux ratio after each iteration
   bool singular = false;

@@ -101,7 +101,8 @@ double FrictionLaw::critical_force(double FN, double rate, double temperature, d
 
 FrictionResponse FrictionLaw::penalty(const Eigen::Vector2d& slip, const Eigen::Vector2d& dslip,
                                       const Eigen::Vector2d& plastic_start, double FN, double dt,
-                                      double temperature, double gamma) const {
+                                      double temperature, double gamma,
+                                      const Eigen::Vector2d* previous_slip) const {
   FrictionResponse out;
   out.plastic_slip = plastic_start;
   if (!(FN > 0.0)) return out;
@@ -114,7 +115,9 @@ FrictionResponse FrictionLaw::penalty(const Eigen::Vector2d& slip, const Eigen::
   const Eigen::Vector2d e = slip - plastic_start; // elastic slip (trial)
   const Eigen::Vector2d trial = k * e;
   const double tn = trial.norm();
-  if (tn <= crit || crit <= 0.0) {
+  const bool reversed = previous_slip && tn > crit && crit > 0.0 && e.dot(*previous_slip) < 0.0;
+  if (tn <= crit || crit <= 0.0 || reversed) {
+    out.predicted_stick = reversed;
     out.force = trial;
     out.dforce_dslip = k * Eigen::Matrix2d::Identity();
     out.dforce_dnormal = dk_dN * e;

@@ -18,6 +18,9 @@ struct FrictionResponse {
   Eigen::Vector2d dforce_dnormal = Eigen::Vector2d::Zero(); ///< d force / d F_N
   Eigen::Vector2d plastic_slip = Eigen::Vector2d::Zero();   ///< updated plastic slip
   double dissipation = 0.0; ///< force · plastic slip increment of this evaluation
+  /// the trial force exceeded tau_crit against the slip direction of the previous iteration, so
+  /// the evaluation was taken as stick (see FrictionLaw::penalty)
+  bool predicted_stick = false;
 };
 
 class FrictionLaw {
@@ -40,9 +43,20 @@ public:
   /// Penalty return mapping. slip: accumulated slip (t1, t2) now; slip_increment: its change in this
   /// increment; plastic_start: plastic slip at the start of the increment; dt: increment size (for
   /// the slip rate); gamma: elastic slip.
+  ///
+  /// previous_slip: the slip direction of the previous Newton iteration when that iteration
+  /// slipped (else nullptr). The slip tangent has no stiffness along the slip direction, so a
+  /// Newton step from a slipping state that should end in stick jumps over the whole stick band
+  /// (width 2 gamma, tiny for a small elastic slip) and lands in slip the other way; the next step
+  /// jumps back, and Newton alternates between the two. A trial force that has turned against the
+  /// previous slip direction is therefore taken as stick (the stick predictor): the stick branch is
+  /// linear, so the next step lands on the stick solution, which is then either consistent (stick,
+  /// converged) or outside the band in the true slip direction. The predicted evaluation is
+  /// flagged (predicted_stick) so that Newton does not accept it.
   FrictionResponse penalty(const Eigen::Vector2d& slip, const Eigen::Vector2d& slip_increment,
                            const Eigen::Vector2d& plastic_start, double normal_force, double dt,
-                           double temperature, double gamma) const;
+                           double temperature, double gamma,
+                           const Eigen::Vector2d* previous_slip = nullptr) const;
 
 private:
   FrictionSpec _spec;

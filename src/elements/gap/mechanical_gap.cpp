@@ -313,6 +313,7 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
   Eigen::Vector2d dD_de = Eigen::Vector2d::Zero();
   double dD_dN = 0.0;
   bool friction_rows = false;
+  bool predicted_stick = false; // penalty friction: stick predicted after a slip reversal
   if (fl) {
     const double FNc = std::max(FN, 0.0);
     if (fl->lagrange()) {
@@ -379,14 +380,32 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
         st[GapStateLayout::slip_dir + 1] = m[1];
       }
     } else {
-      const FrictionResponse fr = fl->penalty(R.slip, dslip, plastic_start, FNc, dt, temperature,
-                                              fl->elastic_slip(_lc[in.block_index]));
+      // stick predictor: the slip direction of the previous iteration, if it slipped
+      const Eigen::Vector2d m_prev(st[GapStateLayout::slip_dir], st[GapStateLayout::slip_dir + 1]);
+      const bool was_slip = previous == ContactStatus::Slip && m_prev.squaredNorm() > 0.0;
+      const FrictionResponse fr =
+          fl->penalty(R.slip, dslip, plastic_start, FNc, dt, temperature,
+                      fl->elastic_slip(_lc[in.block_index]), was_slip ? &m_prev : nullptr);
       R.friction = fr.force;
       dtau_ds = fr.dforce_dslip;
       dtau_dN = fr.dforce_dnormal;
       plastic = fr.plastic_slip;
       R.dissipation = fr.dissipation;
+      predicted_stick = fr.predicted_stick;
       if (FNc > 0) status = fr.slipping ? ContactStatus::Slip : ContactStatus::Stick;
+      if (FNc <= 0.0 && lagrange_normal) {
+        // Closed at zero force (a gap that closes in this iteration, or starts closed unloaded):
+        // friction has no stiffness yet, and a tangential motion held only by friction would be
+        // singular. The tangent (not the force) takes the attached elements' stiffness, so the
+        // first step does not slide the gap freely; the next iteration has the normal force.
+        dtau_ds = std::max(hint, 0.0) * Eigen::Matrix2d::Identity();
+      }
+      if (update) {
+        const Eigen::Vector2d m = fr.slipping ? Eigen::Vector2d(fr.force.normalized())
+                                              : Eigen::Vector2d::Zero();
+        st[GapStateLayout::slip_dir] = m[0];
+        st[GapStateLayout::slip_dir + 1] = m[1];
+      }
       if (fr.slipping) {
         // D = crit (|e| - gamma) with e the trial elastic slip
         const double gamma = fl->elastic_slip(_lc[in.block_index]);
@@ -453,7 +472,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
   const bool normal_changed = closed(status) != closed(previous);
   const bool friction_changed = fl && fl->lagrange() && closed(status) && closed(previous) &&
                                 status != previous && previous != ContactStatus::Closed;
-  if ((_mode == NormalMode::Direct && normal_changed) || friction_changed) out->status_changes = 1;
+  if ((_mode == NormalMode::Direct && normal_changed) || friction_changed || predicted_stick)
+    out->status_changes = 1;
   R.status = status;
   st[GapStateLayout::status] = static_cast<double>(status);
   if (!G.degenerate)
@@ -565,16 +585,49 @@ bool MechanicalGapKernel::augment(const ElementInput& in) const {
   std::copy(in.state.begin(), in.state.end(), st.begin());
   std::array<double, 3> mult{in.multipliers[0], in.multipliers[1], in.multipliers[2]};
   respond(in, st, mult, nullptr, R);
+  double& lambda = in.state[GapStateLayout::lambda_aug];
+  double* previous = &in.state[GapStateLayout::aug_previous]; // lambda, g, valid
   if (!closed(R.status)) {
     // Uzawa update max(lambda^ + K g, 0) of an open gap: it forgets its multiplier, so it
     // re-engages at zero clearance rather than at the clearance lambda^/K
-    if (in.state[GapStateLayout::lambda_aug] == 0.0) return false;
-    in.state[GapStateLayout::lambda_aug] = 0.0;
+    previous[2] = 0.0;
+    if (lambda == 0.0) return false;
+    lambda = 0.0;
     return true;
   }
+  // The constraint must be met to the tolerance in both senses: a penetration (g > 0), and a
+  // positive clearance (g < 0) at which the gap still carries the force lambda^ + K g > 0 because
+  // its multiplier is left over from a heavier load (unloading): that force must go, and the gap
+  // opens or re-settles at g = 0.
   const double tolerance = 1e-3 * _lc[in.block_index];
-  if (R.g <= tolerance) return false;
-  in.state[GapStateLayout::lambda_aug] = R.normal_force;
+  if (std::abs(R.g) <= tolerance) {
+    previous[2] = 0.0; // the committed state never carries a stale secant
+    return false;
+  }
+  // Uzawa: lambda^ <- lambda^ + K g (= F_N). It contracts the error only by k_s/(k_s + K), k_s the
+  // stiffness of the structure at the gap, which is slow for a soft penalty. From the second
+  // augmentation of the increment on, the secant of (lambda^, g) over the last two augmentations
+  // estimates dg/dlambda^ = -1/(k_s + K) and the update lambda^ - g / (dg/dlambda^) reaches g = 0
+  // (exactly for a gap whose neighbours do not change). It is used only while it points the same
+  // way as Uzawa, reaches further, and the overclosure decreases.
+  double next = R.normal_force;
+  if (previous[2] == 1.0) {
+    const double dlambda = lambda - previous[0];
+    const double dg = R.g - previous[1];
+    if (dlambda != 0.0 && std::abs(R.g) < std::abs(previous[1])) {
+      const double slope = dg / dlambda; // < 0 for a stable gap
+      if (slope < 0.0) {
+        const double secant = lambda - R.g / slope;
+        const double uzawa_step = next - lambda, secant_step = secant - lambda;
+        if (secant_step * uzawa_step > 0.0 && std::abs(secant_step) > std::abs(uzawa_step))
+          next = secant;
+      }
+    }
+  }
+  previous[0] = lambda;
+  previous[1] = R.g;
+  previous[2] = 1.0;
+  lambda = _no_separation ? next : std::max(next, 0.0);
   return true;
 }
 

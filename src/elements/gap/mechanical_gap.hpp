@@ -27,7 +27,10 @@ struct GapStateLayout {
   static constexpr int lambda_aug = 9;  ///< augmented-Lagrange multiplier estimate
   static constexpr int slip_dir = 10;   ///< slip direction (Lagrange friction), 2
   static constexpr int damping = 12;    ///< damping forces of the increment: normal, t1, t2
-  static constexpr int size = 15;
+  /// augmented Lagrange: the previous augmentation of this increment (multiplier estimate,
+  /// overclosure, 1 when valid) for the secant update
+  static constexpr int aug_previous = 15;
+  static constexpr int size = 18;
 };
 
 class MechanicalGapKernel final : public ElementKernel {
