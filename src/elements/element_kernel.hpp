@@ -42,6 +42,9 @@ struct StepContext {
   ModelSpace space = ModelSpace::ThreeD;
   double model_size = 1.0;   ///< bounding-box diagonal, for tolerances
   int step_index = 0;        ///< 0-based index of the current step in Model::steps
+  /// *STEP, UNSYMM=NO: the assembler keeps only the symmetric part of every element tangent (and
+  /// the constraint rows as their own columns), so the symmetric solver is used throughout
+  bool symmetric_only = false;
   const PhysicalConstants* constants = nullptr;
 };
 

@@ -57,6 +57,20 @@ void parallel_chunks(int threads, std::size_t n, Body&& body) {
 }
 } // namespace
 
+namespace {
+/// *STEP, UNSYMM=NO: the symmetric part of the element tangent, constraint rows as their columns.
+void symmetrize(ElementOutput& out, int nd) {
+  if (out.want_tangent)
+    for (int i = 0; i < nd; ++i)
+      for (int j = i + 1; j < nd; ++j) {
+        const double m = 0.5 * (out.tangent[i * nd + j] + out.tangent[j * nd + i]);
+        out.tangent[i * nd + j] = out.tangent[j * nd + i] = m;
+      }
+  out.has_columns = false;
+  out.unsymmetric = false;
+}
+} // namespace
+
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
                                    std::span<double> f_int, CsrMatrix* K, ConstraintBlock* C) {
   const DofMap& dofs = _disc.dofs();
@@ -90,6 +104,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
         ElementInput& in = g.gather(_disc, *block, i, fields, &ctx);
         ElementOutput& out = g.output(*block, K != nullptr);
         block->kernel->evaluate(in, out);
+        if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);
         const auto slots = block->element_slots(i);
         for (int k = 0; k < nd; ++k) {
           const double r = out.residual[k];

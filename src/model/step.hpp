@@ -7,6 +7,7 @@
 #include "model/output_request.hpp"
 #include "model/section.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,32 @@ struct Incrementation {
   bool direct = false;  ///< DIRECT: fixed increments of `initial`, no cut-backs
   bool steady_state = true; ///< heat transfer / coupled: STEADY STATE (true) or transient
   double deltmx = 0.0;  ///< transient: max temperature change per increment (0: none)
+};
+
+/// *CONTROLS: Abaqus/Standard's solution controls (defaults as in Abaqus). They stay in effect in
+/// later steps until changed or reset (*CONTROLS, RESET).
+struct SolutionControls {
+  /// PARAMETERS=FIELD, per field (displacement, rotation, temperature)
+  struct Field {
+    double residual = 0.005;    ///< R_n
+    double correction = 0.01;   ///< C_n
+    double initial_flux = 1e-2; ///< q~_0
+    double user_flux = 0.0;     ///< q~_u (> 0: replaces the time-averaged flux)
+    double zero_flux = 1e-5;    ///< epsilon: zero-flux criterion relative to q~_0
+    double linear = 1e-8;       ///< epsilon_l: convergence of a linear increment in one iteration
+  };
+  std::array<Field, 3> field{};
+  /// PARAMETERS=TIME INCREMENTATION
+  int divergence_check_after = 4; ///< I_0 (8 with ANALYSIS=DISCONTINUOUS)
+  int max_iterations = 16;        ///< I_C
+  int hard_iterations = 10;       ///< I_L
+  int easy_iterations = 4;        ///< I_G
+  int max_attempts = 5;           ///< I_A
+  int max_severe_iterations = 12; ///< I_S (Abaqus: 12, 50 with ANALYSIS=DISCONTINUOUS)
+  double cutback = 0.25;          ///< D_f
+  double shrink = 0.75;           ///< D_B
+  double deltmx_cutback = 0.85;   ///< D_A
+  double growth = 1.5;            ///< D_D
 };
 
 /// *CHANGE FRICTION, ELSET= followed by *FRICTION: new friction for some gap elements.
@@ -44,7 +71,11 @@ struct Step {
   /// *STEP, UNSYMM=YES: keep the unsymmetric load stiffness of follower loads (unsymmetric solver);
   /// by default its symmetric part is used, as in Abaqus/Standard
   bool unsymmetric = false;
+  /// *STEP, UNSYMM=NO: symmetric tangents only (friction, coupled terms): the symmetric solver
+  /// throughout, at the price of more iterations
+  bool symmetric_only = false;
   Incrementation inc;
+  SolutionControls controls;
 
   std::vector<BoundaryEntry> boundary;
   std::vector<NodalLoad> cloads; ///< *CLOAD (DOF 1-6) and *CFLUX (DOF 11)

@@ -31,6 +31,28 @@ long peak_memory_kb() {
   return 0;
 }
 
+namespace {
+/// Newton's controls from a step's *CONTROLS.
+NewtonControls newton_controls(const SolutionControls& sc, FactorReuse reuse) {
+  NewtonControls c;
+  for (int f = 0; f < kNumFields; ++f) {
+    const SolutionControls::Field& in = sc.field[f];
+    NewtonControls::Field& out = c.field[f];
+    out.residual_ratio = in.residual;
+    out.correction_ratio = in.correction;
+    out.linear_ratio = in.linear;
+    out.zero_flux_ratio = in.zero_flux;
+    out.initial_flux = in.initial_flux;
+    out.user_flux = in.user_flux;
+  }
+  c.divergence_check_after = sc.divergence_check_after;
+  c.max_equilibrium_iterations = sc.max_iterations;
+  c.max_severe_iterations = sc.max_severe_iterations;
+  c.factor_reuse = reuse;
+  return c;
+}
+} // namespace
+
 struct Analysis::Impl {
   const Model& model;
   std::vector<ResultWriter*> writers;
@@ -156,6 +178,7 @@ StepSummary Analysis::Impl::run_step(int index) {
   base.model_size = model.model_size();
   base.constants = &model.constants;
   base.step_index = index;
+  base.symmetric_only = step.symmetric_only;
   StepProblem prob(disc, assembler, loads, st, base, pattern);
   prob.set_unsymmetric_loads(step.unsymmetric);
   prob.set_statistics(&stats);
@@ -181,14 +204,13 @@ StepSummary Analysis::Impl::run_step(int index) {
   sum.step = step.number;
   sum.name = step.name;
   sum.procedure = std::string(procedure_name(step.procedure));
-  IncrementRules rules;
+  IncrementRules rules = increment_rules(step.controls);
   if (fixed_transient_increments(step)) rules.growth = rules.shrink = 1.0;
   IncrementController ctrl(step.inc, step.max_increments, rules);
   HeatBalance heat(has_temperature_dofs && step.procedure != Procedure::Static, base.transient,
                    st.u_start);
   FluxHistory flux;
-  NewtonControls controls;
-  controls.factor_reuse = options.factor_reuse;
+  const NewtonControls controls = newton_controls(step.controls, options.factor_reuse);
   step_damping_peak = 0.0;
   std::vector<double> converged_f_int, converged_f_ext;
   std::string last_problem;
@@ -241,7 +263,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     if (res.converged && base.transient && step.inc.deltmx > 0.0) {
       const double dT =
           max_free_temperature_change(disc.dofs(), loads.equations(), st.u, st.u_start);
-      const TemperatureAccuracy acc = deltmx_rule(dT, step.inc.deltmx);
+      const TemperatureAccuracy acc = deltmx_rule(dT, step.inc.deltmx, rules.deltmx_cutback);
       growth = acc.ratio;
       redo = acc.redo && ctrl.retry_smaller(acc.ratio);
       if (redo)

@@ -5,6 +5,18 @@
 
 namespace gapfem {
 
+IncrementRules increment_rules(const SolutionControls& c) {
+  IncrementRules r;
+  r.cutback = c.cutback;
+  r.growth = c.growth;
+  r.shrink = c.shrink;
+  r.easy_iterations = c.easy_iterations;
+  r.hard_iterations = c.hard_iterations;
+  r.max_attempts = c.max_attempts;
+  r.deltmx_cutback = c.deltmx_cutback;
+  return r;
+}
+
 IncrementController::IncrementController(const Incrementation& inc, int max_increments,
                                          IncrementRules rules)
     : _period(inc.period > 0 ? inc.period : 1.0), _direct(inc.direct),

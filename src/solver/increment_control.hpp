@@ -19,7 +19,10 @@ struct IncrementRules {
   int easy_iterations = 4;  ///< I_G
   int hard_iterations = 10; ///< I_L
   int max_attempts = 5;     ///< I_A
+  double deltmx_cutback = 0.85; ///< D_A (transient heat transfer, thermal_step.hpp)
 };
+/// The rules of a step's *CONTROLS, PARAMETERS=TIME INCREMENTATION.
+IncrementRules increment_rules(const SolutionControls& c);
 
 class IncrementController {
  public:

@@ -94,21 +94,22 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     double worst_ratio = 0.0;
     for (int f = 0; f < kNumFields; ++f) {
       if (!ev.has_field[f]) continue;
-      const double qt = (history.sum[f] + flux[f]) / (history.n + 1);
+      const NewtonControls::Field& fc = c.field[f];
+      const double qt = fc.user_flux > 0 ? fc.user_flux : (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
       // zero flux: a field whose time-averaged flux is below q~_0 (round-off heat in a coupled step
       // without heat load) is converged once its residual is below epsilon q~_0; it does not count
       // in the ratio
-      if (qt < c.initial_flux && r <= c.zero_flux_ratio * c.initial_flux) continue;
+      if (qt < fc.initial_flux && r <= fc.zero_flux_ratio * fc.initial_flux) continue;
       const double ratio = qt > 0 ? r / qt : std::numeric_limits<double>::infinity();
       worst_ratio = std::max(worst_ratio, ratio);
       bool ok;
       if (qt <= 0)
         ok = false;
-      else if (r <= c.linear_ratio * qt)
+      else if (r <= fc.linear_ratio * qt)
         ok = true;
       else
-        ok = r <= c.residual_ratio * qt && cmax[f] <= c.correction_ratio * inc[f];
+        ok = r <= fc.residual_ratio * qt && cmax[f] <= fc.correction_ratio * inc[f];
       converged &= ok;
     }
     res.residual_history.push_back(worst_ratio);

@@ -15,15 +15,19 @@
 namespace gapfem {
 
 struct NewtonControls {
-  double residual_ratio = 0.005;  ///< R_n
-  double correction_ratio = 0.01; ///< C_n
-  double linear_ratio = 1e-8;     ///< epsilon_l
-  /// Zero flux (Abaqus epsilon^alpha and q~_0^alpha of *CONTROLS, FIELD): a field whose
-  /// time-averaged flux is below initial_flux is also converged when its residual is below
-  /// zero_flux_ratio * initial_flux. A coupled step with no heat load (uniform temperature) thus
-  /// converges on its displacements alone.
-  double zero_flux_ratio = 1e-5;
-  double initial_flux = 1e-2;
+  /// Convergence criteria of one field (Abaqus *CONTROLS, PARAMETERS=FIELD).
+  struct Field {
+    double residual_ratio = 0.005;  ///< R_n
+    double correction_ratio = 0.01; ///< C_n
+    double linear_ratio = 1e-8;     ///< epsilon_l
+    /// Zero flux (Abaqus epsilon^alpha and q~_0^alpha): a field whose time-averaged flux is below
+    /// initial_flux is also converged when its residual is below zero_flux_ratio * initial_flux. A
+    /// coupled step with no heat load (uniform temperature) thus converges on its displacements.
+    double zero_flux_ratio = 1e-5;
+    double initial_flux = 1e-2;
+    double user_flux = 0.0; ///< q~_u: when > 0, replaces the time-averaged flux
+  };
+  std::array<Field, kNumFields> field{};
   int max_equilibrium_iterations = 16; ///< I_C
   int divergence_check_after = 4;      ///< I_0
   int max_severe_iterations = 12;      ///< contact status iterations per attempt

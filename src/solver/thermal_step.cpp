@@ -53,13 +53,13 @@ double max_free_temperature_change(const DofMap& dofs, const EquationMap& eqs,
   return m;
 }
 
-TemperatureAccuracy deltmx_rule(double dT_max, double deltmx) {
-  constexpr double kCutback = 0.85;  // D_F, Abaqus's default
+TemperatureAccuracy deltmx_rule(double dT_max, double deltmx, double cutback) {
+  // cutback: D_A of *CONTROLS, PARAMETERS=TIME INCREMENTATION (Abaqus's default 0.85)
   constexpr double kMaxGrowth = 2.0; // W_M for diffusion-dominated procedures
   TemperatureAccuracy a;
   if (dT_max > deltmx) {
     a.redo = true;
-    a.ratio = kCutback * deltmx / dT_max;
+    a.ratio = cutback * deltmx / dT_max;
     return a;
   }
   a.ratio = dT_max > 0.0 ? std::min(deltmx / dT_max, kMaxGrowth) : kMaxGrowth;

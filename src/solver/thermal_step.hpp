@@ -47,7 +47,7 @@ struct TemperatureAccuracy {
 /// dt_new = 0.85 (DELTMX / dT_max) dt; otherwise the next increment may grow to
 /// (DELTMX / dT_max) dt, at most by the factor 2 of diffusion-dominated procedures. The convergence
 /// rules of IncrementController limit it further.
-TemperatureAccuracy deltmx_rule(double dT_max, double deltmx);
+TemperatureAccuracy deltmx_rule(double dT_max, double deltmx, double cutback = 0.85);
 
 /// Heat balance of one step (StepChecks): reaction fluxes RFL + applied fluxes (CFLUX, DFLUX,
 /// films) against the heat stored by the capacity. Transient steps integrate the fluxes over the

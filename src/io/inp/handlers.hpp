@@ -59,6 +59,8 @@ void handle_static(BuildState& s, const Keyword& kw);
 void handle_heat_transfer(BuildState& s, const Keyword& kw);
 void handle_coupled(BuildState& s, const Keyword& kw);
 void handle_change_friction(BuildState& s, const Keyword& kw);
+/// *CONTROLS (handlers_controls.cpp)
+void handle_controls(BuildState& s, const Keyword& kw);
 /// Closes an open step at the end of the deck or at a *STEP without *END STEP.
 void close_step(BuildState& s);
 ///@}

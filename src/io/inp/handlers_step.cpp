@@ -103,6 +103,7 @@ void handle_step(BuildState& s, const Keyword& kw) {
                            : fmt::format("Step-{}", st.number);
   st.boundary = carried(prev ? prev->boundary : s.model_boundary);
   if (prev) {
+    st.controls = prev->controls; // *CONTROLS stay in effect until changed or reset
     st.cloads = carried(prev->cloads);
     st.dloads = carried(prev->dloads);
     st.temperatures = carried(prev->temperatures);
@@ -110,7 +111,10 @@ void handle_step(BuildState& s, const Keyword& kw) {
   }
   reject_param(kw, "PERTURBATION", "gapfem runs general (nonlinear) steps only");
   st.nlgeom = yes_no_param(kw, "NLGEOM", false);
-  st.unsymmetric = yes_no_param(kw, "UNSYMM", false);
+  if (kw.has("UNSYMM")) {
+    st.unsymmetric = yes_no_param(kw, "UNSYMM", false);
+    st.symmetric_only = !st.unsymmetric;
+  }
   if (auto inc = int_param(kw, "INC")) {
     if (*inc < 1)
       throw InputError(kw.loc, "INC", "the maximum number of increments must be at least 1");

@@ -61,6 +61,7 @@ constexpr std::array<KeywordSpec, 51> kTable = {{
   {"*STATIC", handle_static, W::History, "DIRECT|RIKS"},
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
   {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
+  {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*CHANGE FRICTION", handle_change_friction, W::History, "ELSET|INTERACTION", 0, P::ChangeFriction},
   // history: loads
   {"*CLOAD", handle_cload, W::History, "OP|AMPLITUDE"},
