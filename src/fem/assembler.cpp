@@ -154,12 +154,15 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     if (C)
       for (int t = 0; t < _threads; ++t) {
         const auto& tc = _thread_constraints[t];
-        if (tc.has_columns() && !C->has_columns()) C->dval = C->val;
+        // rows with their own columns make every row carry one (D = C^T where none was given);
+        // `columns` is kept apart from has_columns() because an empty C has no dval to show it
+        const bool columns = C->has_columns() || tc.has_columns();
+        if (columns && C->dval.size() < C->val.size()) C->dval = C->val;
         for (int r = 0; r < tc.n_rows(); ++r) {
           const auto b0 = tc.row_ptr[r], b1 = tc.row_ptr[r + 1];
           C->col.insert(C->col.end(), tc.col.begin() + b0, tc.col.begin() + b1);
           C->val.insert(C->val.end(), tc.val.begin() + b0, tc.val.begin() + b1);
-          if (C->has_columns()) {
+          if (columns) {
             const auto& src = tc.has_columns() ? tc.dval : tc.val;
             C->dval.insert(C->dval.end(), src.begin() + b0, src.begin() + b1);
           }

@@ -39,7 +39,7 @@ struct KktOptions {
   int max_iterations = 200;
   FactorReuse reuse = FactorReuse::Auto;
   bool force_fresh = false; ///< factorise the current matrix (the caller saw slow convergence)
-  double max_drift = 1e-3;  ///< reuse only if max|K - K_F| <= max_drift * max|diag K_F|
+  double max_drift = 1e-3;  ///< reuse only if |K - K_F|_ij <= max_drift sqrt(|K_F,ii K_F,jj|)
 };
 
 struct KktStatistics {
@@ -86,7 +86,8 @@ class KktSolver {
   int _solves = 0;
   // What the current factor is of: K_F (before augmentation) and the augmenting rows.
   std::vector<double> _factored;
-  double _factored_scale = 1.0; ///< max |diag K_F|
+  double _factored_scale = 1.0;       ///< max |diag K_F|
+  std::vector<double> _factored_diag; ///< |diag K_F| per row (floored), for the drift measure
   bool _factored_symmetric = true;
   ConstraintBlock _frows;                         ///< rows of C_F (g unused)
   std::vector<double> _fR;                        ///< their weights

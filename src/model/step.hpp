@@ -20,11 +20,11 @@ std::string_view procedure_name(Procedure p);
 struct Incrementation {
   double initial = 0.0; ///< 0: default (= period)
   double period = 1.0;
-  double minimum = 0.0; ///< 0: default min(initial, 1e-5 * period)
-  double maximum = 0.0; ///< 0: default (= period)
-  bool direct = false;  ///< DIRECT: fixed increments of `initial`, no cut-backs
+  double minimum = 0.0;     ///< 0: default min(initial, 1e-5 * period)
+  double maximum = 0.0;     ///< 0: default (= period)
+  bool direct = false;      ///< DIRECT: fixed increments of `initial`, no cut-backs
   bool steady_state = true; ///< heat transfer / coupled: STEADY STATE (true) or transient
-  double deltmx = 0.0;  ///< transient: max temperature change per increment (0: none)
+  double deltmx = 0.0;      ///< transient: max temperature change per increment (0: none)
 };
 
 /// *CONTROLS: Abaqus/Standard's solution controls (defaults as in Abaqus). They stay in effect in
@@ -66,8 +66,8 @@ struct Step {
   SourceLocation loc;
   Procedure procedure = Procedure::Static;
   bool nlgeom = false;
-  int max_increments = 100;      ///< *STEP, INC=
-  bool ramp_default = true;      ///< default amplitude variation: RAMP (true) or STEP
+  int max_increments = 100; ///< *STEP, INC=
+  bool ramp_default = true; ///< default amplitude variation: RAMP (true) or STEP
   /// *STEP, UNSYMM=YES: keep the unsymmetric load stiffness of follower loads (unsymmetric solver);
   /// by default its symmetric part is used, as in Abaqus/Standard
   bool unsymmetric = false;

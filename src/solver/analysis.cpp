@@ -143,7 +143,8 @@ bool Analysis::Impl::supported_at_last_converged(StepProblem& prob, double t0) {
   prob.begin_increment(t0, 0.0);
   try {
     const Evaluation ev = prob.evaluate();
-    std::vector<double> du(prob.rhs().size()), dl(static_cast<std::size_t>(prob.constraints().n_rows()));
+    std::vector<double> du(prob.rhs().size()),
+        dl(static_cast<std::size_t>(prob.constraints().n_rows()));
     KktOptions opt;
     opt.force_fresh = true;
     kkt.solve(prob.matrix(), prob.rhs(), prob.constraints(), du, dl, ev.symmetric, opt, &stats);
@@ -308,10 +309,11 @@ StepSummary Analysis::Impl::run_step(int index) {
     } else {
       last_problem = res.reason;
       // repeats of one element's failure are one cause ("element 12: ...")
-      if (res.cause == FailureCause::Element) kind += last_problem.substr(0, last_problem.find(':'));
+      if (res.cause == FailureCause::Element)
+        kind += last_problem.substr(0, last_problem.find(':'));
     }
-    const bool structural = res.singular || !res.chattering.empty() ||
-                            res.cause == FailureCause::Element;
+    const bool structural =
+        res.singular || !res.chattering.empty() || res.cause == FailureCause::Element;
     attempts_log.add(info.increment, info.attempts, kind, last_problem, structural);
     log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
                   last_problem);

@@ -14,12 +14,12 @@ namespace gapfem {
 struct Model;
 
 struct AnalysisOptions {
-  int threads = 0; ///< 0: default_thread_count()
+  int threads = 0;                              ///< 0: default_thread_count()
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
 };
 
 class Analysis {
-public:
+ public:
   Analysis(const Model& model, std::vector<ResultWriter*> writers, AnalysisOptions options = {});
   ~Analysis();
   /// Run every step. Returns the run summary; throws AnalysisError when a step cannot be completed
@@ -27,7 +27,7 @@ public:
   RunSummary run();
   const std::vector<StepSummary>& step_summaries() const;
 
-private:
+ private:
   struct Impl;
   std::unique_ptr<Impl> _impl;
 };

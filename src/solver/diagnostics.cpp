@@ -4,10 +4,9 @@
 #include "model/model.hpp"
 #include "solver/step_problem.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <deque>
+#include <fmt/format.h>
 #include <set>
 
 namespace gapfem {
@@ -41,7 +40,8 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
   if (nodes.empty()) return "the system of equations is singular";
   std::string at = where.front();
   for (std::size_t i = 1; i < where.size(); ++i) at += ", " + where[i];
-  if (equations.size() > where.size()) at += fmt::format(" (and {} more)", equations.size() - where.size());
+  if (equations.size() > where.size())
+    at += fmt::format(" (and {} more)", equations.size() - where.size());
 
   // The body around the first singular node: nodes connected through elements, open gaps excluded.
   const Mesh& mesh = model.mesh;

@@ -27,7 +27,7 @@ std::string describe_chattering(const Model& model, std::span<const ElemId> elem
 /// cannot go on names every cause seen in its cut-backs (an element turned inside out in one
 /// attempt and a singular system in the next is an inverted element, not a missing support).
 class AttemptLog {
-public:
+ public:
   /// A new increment starts: forget the previous one's problems (but not the last structural
   /// one, see add()).
   void clear() { _entries.clear(); }
@@ -40,7 +40,7 @@ public:
   /// "; earlier attempts: <text> (attempts 1, 3); …".
   std::string summary() const;
 
-private:
+ private:
   struct Entry {
     std::string kind, text;
     std::vector<int> attempts;
@@ -48,7 +48,6 @@ private:
   std::vector<Entry> _entries;
   std::string _last_kind;
   Entry _structural; ///< attempts holds the increment number
-
 };
 
 } // namespace gapfem

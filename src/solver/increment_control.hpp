@@ -13,12 +13,12 @@
 namespace gapfem {
 
 struct IncrementRules {
-  double cutback = 0.25;    ///< D_f
-  double growth = 1.5;      ///< D_A
-  double shrink = 0.75;     ///< D_B
-  int easy_iterations = 4;  ///< I_G
-  int hard_iterations = 10; ///< I_L
-  int max_attempts = 5;     ///< I_A
+  double cutback = 0.25;        ///< D_f
+  double growth = 1.5;          ///< D_A
+  double shrink = 0.75;         ///< D_B
+  int easy_iterations = 4;      ///< I_G
+  int hard_iterations = 10;     ///< I_L
+  int max_attempts = 5;         ///< I_A
   double deltmx_cutback = 0.85; ///< D_A (transient heat transfer, thermal_step.hpp)
 };
 /// The rules of a step's *CONTROLS, PARAMETERS=TIME INCREMENTATION.

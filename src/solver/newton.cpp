@@ -26,9 +26,13 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     res.cause = FailureCause::Element;
     return res;
   }
-  // The flux scale of the increment is the largest average flux seen in any of its evaluations:
-  // a free thermal expansion has large thermal forces at the start and none at convergence.
-  std::array<double, kNumFields> flux = ev.flux;
+  // The flux scale of the increment is the largest average flux seen in any of its evaluations
+  // without contact status changes: a free thermal expansion has large thermal forces at the start
+  // and none at convergence. An evaluation that changes status is transitional and may carry
+  // forces no converged state has (a stick predicted after a slip reversal carries k_s e, far
+  // beyond mu N); counted in the scale they would let a large residual pass as small.
+  std::array<double, kNumFields> flux{};
+  if (ev.status_changes == 0) flux = ev.flux;
   if (p.rhs().empty() && p.constraints().n_rows() == 0) {
     // every DOF is prescribed: nothing to solve, the evaluation gives the reactions
     res.converged = true;
@@ -72,7 +76,8 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.cause = FailureCause::Element;
       return res;
     }
-    for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
+    if (ev.status_changes == 0)
+      for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
     if (ev.status_changes > 0) {
       ++res.severe_iterations;
       for (ElemId e : ev.changed)
@@ -95,14 +100,16 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
     for (int f = 0; f < kNumFields; ++f) {
       if (!ev.has_field[f]) continue;
       const NewtonControls::Field& fc = c.field[f];
-      const double qt = fc.user_flux > 0 ? fc.user_flux : (history.sum[f] + flux[f]) / (history.n + 1);
+      const double qt =
+          fc.user_flux > 0 ? fc.user_flux : (history.sum[f] + flux[f]) / (history.n + 1);
       const double r = ev.residual_max[f];
       // zero flux: a field whose time-averaged flux is below q~_0 (round-off heat in a coupled step
       // without heat load) is converged once its residual is below epsilon q~_0; it does not count
       // in the ratio
       if (qt < fc.initial_flux && r <= fc.zero_flux_ratio * fc.initial_flux) continue;
-      const double ratio = qt > 0 ? r / qt : std::numeric_limits<double>::infinity();
-      worst_ratio = std::max(worst_ratio, ratio);
+      // (no scale yet when every evaluation so far changed contact status: not converged)
+      if (qt > 0) worst_ratio = std::max(worst_ratio, r / qt);
+      if (!std::isfinite(r)) worst_ratio = std::numeric_limits<double>::infinity();
       bool ok;
       if (qt <= 0)
         ok = false;

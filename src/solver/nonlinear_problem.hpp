@@ -14,18 +14,18 @@ namespace gapfem {
 
 /// Result of one evaluation at the trial state.
 struct Evaluation {
-  std::array<double, kNumFields> residual_max{};  ///< max |r| over the free equations of each field
+  std::array<double, kNumFields> residual_max{}; ///< max |r| over the free equations of each field
   std::array<LocalIndex, kNumFields> residual_eq{-1, -1, -1};
-  std::array<double, kNumFields> flux{};          ///< average force/flux magnitude this iteration
-  std::array<bool, kNumFields> has_field{};       ///< the field has free equations
-  double constraint_max = 0.0;                    ///< max |g| of the active constraint rows
+  std::array<double, kNumFields> flux{};    ///< average force/flux magnitude this iteration
+  std::array<bool, kNumFields> has_field{}; ///< the field has free equations
+  double constraint_max = 0.0;              ///< max |g| of the active constraint rows
   int status_changes = 0;
   std::vector<ElemId> changed; ///< elements whose contact status changed
   bool symmetric = true;
 };
 
 class NonlinearProblem {
-public:
+ public:
   virtual ~NonlinearProblem() = default;
   /// Assemble residual, tangent and constraints at the trial state. May throw ConvergenceFailure.
   virtual Evaluation evaluate() = 0;

@@ -5,7 +5,6 @@
 #include "model/model.hpp"
 
 #include <fmt/format.h>
-
 #include <set>
 
 namespace gapfem {
@@ -26,8 +25,8 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     const LocalIndex s = dofs.slot(bc.node, bc.dof);
     if (s < 0) {
       if (ignored++ == 0)
-        example = fmt::format("node {} DOF {} ({})", model.node_label(bc.node), abaqus_number(bc.dof),
-                              bc.loc.str());
+        example = fmt::format("node {} DOF {} ({})", model.node_label(bc.node),
+                              abaqus_number(bc.dof), bc.loc.str());
       continue;
     }
     Scalar sc;
@@ -91,10 +90,12 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     const auto key = std::make_tuple(l.elem, static_cast<int>(l.kind), l.face);
     auto it = history.distributed.find(key);
     Dist d{&l, {}, {}, {}};
-    d.magnitude = Scalar{it == history.distributed.end() ? 0.0 : it->second.first, l.magnitude,
-                         l.kind == DistLoadKind::Film ? l.film_amplitude : l.amplitude, l.propagated};
-    d.sink = Scalar{it == history.distributed.end() ? l.sink_temperature : it->second.second,
-                    l.sink_temperature, l.kind == DistLoadKind::Film ? l.amplitude : -1, l.propagated};
+    d.magnitude =
+        Scalar{it == history.distributed.end() ? 0.0 : it->second.first, l.magnitude,
+               l.kind == DistLoadKind::Film ? l.film_amplitude : l.amplitude, l.propagated};
+    d.sink =
+        Scalar{it == history.distributed.end() ? l.sink_temperature : it->second.second,
+               l.sink_temperature, l.kind == DistLoadKind::Film ? l.amplitude : -1, l.propagated};
     _dist.push_back(d);
     dseen.insert(key);
   }

@@ -1,12 +1,12 @@
 #pragma once
 /// @file step_loads.hpp
 /// Values of boundary conditions, loads, predefined temperatures and interference allowances at a
-/// step time, following Abaqus: without an amplitude a new or changed value is ramped from the value
-/// at the end of the previous step (RAMP, the default in static steps) or applied at once (STEP);
-/// with an amplitude the magnitude is scaled by a(t) (VALUE=ABSOLUTE: a(t) itself); unchanged
-/// (propagated) values stay constant; removed values go to zero (temperatures to the initial
-/// condition) with the step's default variation; the reaction of a released boundary condition is
-/// applied as a load that follows the same variation down to zero.
+/// step time, following Abaqus: without an amplitude a new or changed value is ramped from the
+/// value at the end of the previous step (RAMP, the default in static steps) or applied at once
+/// (STEP); with an amplitude the magnitude is scaled by a(t) (VALUE=ABSOLUTE: a(t) itself);
+/// unchanged (propagated) values stay constant; removed values go to zero (temperatures to the
+/// initial condition) with the step's default variation; the reaction of a released boundary
+/// condition is applied as a load that follows the same variation down to zero.
 #include "fem/assembler.hpp"
 #include "fem/dof_map.hpp"
 
@@ -22,18 +22,20 @@ class Discretization;
 
 /// What a step leaves behind for the next one.
 struct LoadHistory {
-  std::map<std::pair<NodeId, int>, double> nodal;                  ///< CLOAD/CFLUX values at step end
-  std::map<std::tuple<ElemId, int, int>, std::pair<double, double>> distributed; ///< magnitude, sink
-  std::vector<double> temperature;                                  ///< predefined field per node
-  std::vector<std::uint8_t> prescribed;                             ///< per slot, in the last step
-  std::vector<double> reaction;                                     ///< per slot, at the end of the last step
+  std::map<std::pair<NodeId, int>, double> nodal; ///< CLOAD/CFLUX values at step end
+  std::map<std::tuple<ElemId, int, int>, std::pair<double, double>>
+      distributed;                      ///< magnitude, sink
+  std::vector<double> temperature;      ///< predefined field per node
+  std::vector<std::uint8_t> prescribed; ///< per slot, in the last step
+  std::vector<double> reaction;         ///< per slot, at the end of the last step
 };
 
 class StepLoads {
-public:
+ public:
   /// u_now: solution per slot at the start of the step.
-  StepLoads(const Model& model, const Discretization& disc, int step_index, const LoadHistory& history,
-            std::span<const double> u_now, double step_start_total_time);
+  StepLoads(const Model& model, const Discretization& disc, int step_index,
+            const LoadHistory& history, std::span<const double> u_now,
+            double step_start_total_time);
 
   const EquationMap& equations() const { return _eqmap; }
   std::span<const std::uint8_t> prescribed() const { return _prescribed; }
@@ -55,9 +57,10 @@ public:
   const std::vector<ElemId>& shrink_elements() const { return _shrink_elems; }
 
   /// Record the end-of-step values (call after the last increment).
-  void finish(double step_period_time, std::span<const double> reaction, LoadHistory& history) const;
+  void finish(double step_period_time, std::span<const double> reaction,
+              LoadHistory& history) const;
 
-private:
+ private:
   struct Scalar {
     double start = 0.0, end = 0.0;
     int amplitude = -1;

@@ -14,17 +14,18 @@ namespace gapfem {
 /// The solution and its history: slot-sized displacement/temperature vectors and node-sized
 /// predefined temperatures, each with a trial and a committed copy.
 struct SolutionState {
-  std::vector<double> u, u_start;        ///< per slot: trial, committed
-  std::vector<double> T, T_start;        ///< predefined temperature per node: trial, committed
-  std::vector<double> T_initial;         ///< per node
-  std::vector<double> f_int, f_ext;      ///< per slot, at the last evaluation
-  double total_time = 0.0;               ///< total time at the start of the current step
+  std::vector<double> u, u_start;   ///< per slot: trial, committed
+  std::vector<double> T, T_start;   ///< predefined temperature per node: trial, committed
+  std::vector<double> T_initial;    ///< per node
+  std::vector<double> f_int, f_ext; ///< per slot, at the last evaluation
+  double total_time = 0.0;          ///< total time at the start of the current step
 };
 
 class StepProblem final : public NonlinearProblem {
-public:
-  StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads, SolutionState& state,
-              const StepContext& base, std::shared_ptr<const SparsityPattern> pattern);
+ public:
+  StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
+              SolutionState& state, const StepContext& base,
+              std::shared_ptr<const SparsityPattern> pattern);
 
   /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
   /// values, temperatures and interference at t0 + dt.
@@ -57,7 +58,7 @@ public:
   /// Concentrated loads per slot at the end of the current increment.
   std::vector<double> concentrated_loads() const;
 
-private:
+ private:
   Discretization& _disc;
   Assembler& _asm;
   const StepLoads& _loads;

@@ -41,7 +41,8 @@ double FrictionLaw::mu(double rate, double pressure, double temperature, double*
   const auto& rows = _spec.rows;
   if (rows.size() == 1 || _spec.n_columns <= 1) return rows.front().mu;
   // Abaqus tables: the first dependency varies fastest. Interpolate in slip rate within groups of
-  // equal (pressure, temperature), then in pressure, then in temperature (linear, constant outside).
+  // equal (pressure, temperature), then in pressure, then in temperature (linear, constant
+  // outside).
   auto group_value = [&](auto pred, double* dr) {
     std::vector<std::pair<double, double>> pts;
     for (const auto& r : rows)
@@ -50,7 +51,8 @@ double FrictionLaw::mu(double rate, double pressure, double temperature, double*
   };
   std::vector<double> temps, pressures;
   for (const auto& r : rows) {
-    if (std::find(temps.begin(), temps.end(), r.temperature) == temps.end()) temps.push_back(r.temperature);
+    if (std::find(temps.begin(), temps.end(), r.temperature) == temps.end())
+      temps.push_back(r.temperature);
   }
   std::sort(temps.begin(), temps.end());
   auto at_temperature = [&](double T, double* dr, double* dp) {
@@ -62,7 +64,8 @@ double FrictionLaw::mu(double rate, double pressure, double temperature, double*
     std::vector<std::pair<double, double>> by_p, drate_by_p;
     for (double P : ps) {
       double d = 0.0;
-      const double v = group_value([&](const FrictionSpec::Row& r) { return r.temperature == T && r.pressure == P; }, &d);
+      const double v = group_value(
+          [&](const FrictionSpec::Row& r) { return r.temperature == T && r.pressure == P; }, &d);
       by_p.emplace_back(v, P);
       drate_by_p.emplace_back(d, P);
     }
@@ -110,7 +113,7 @@ FrictionResponse FrictionLaw::penalty(const Eigen::Vector2d& slip, const Eigen::
   const double rate = dt > 0 ? dnorm / dt : 0.0;
   double dcrit_dN = 0.0, dcrit_drate = 0.0;
   const double crit = critical_force(FN, rate, temperature, &dcrit_dN, &dcrit_drate);
-  const double k = crit / gamma;      // stick stiffness
+  const double k = crit / gamma; // stick stiffness
   const double dk_dN = dcrit_dN / gamma;
   const Eigen::Vector2d e = slip - plastic_start; // elastic slip (trial)
   const Eigen::Vector2d trial = k * e;

@@ -14,7 +14,7 @@ namespace gapfem {
 struct FrictionResponse {
   bool slipping = false;
   Eigen::Vector2d force = Eigen::Vector2d::Zero(); ///< friction force on the elastic-slip sense
-  Eigen::Matrix2d dforce_dslip = Eigen::Matrix2d::Zero(); ///< d force / d (slip increment)
+  Eigen::Matrix2d dforce_dslip = Eigen::Matrix2d::Zero();   ///< d force / d (slip increment)
   Eigen::Vector2d dforce_dnormal = Eigen::Vector2d::Zero(); ///< d force / d F_N
   Eigen::Vector2d plastic_slip = Eigen::Vector2d::Zero();   ///< updated plastic slip
   double dissipation = 0.0; ///< force · plastic slip increment of this evaluation
@@ -24,7 +24,7 @@ struct FrictionResponse {
 };
 
 class FrictionLaw {
-public:
+ public:
   /// area: the gap area (pressure = F_N / area, taumax in stress units); elastic_slip: absolute
   /// allowable elastic slip gamma_crit.
   FrictionLaw(const FrictionSpec& spec, double area);
@@ -40,9 +40,9 @@ public:
   double critical_force(double normal_force, double slip_rate, double temperature,
                         double* dcrit_dnormal = nullptr, double* dcrit_drate = nullptr) const;
 
-  /// Penalty return mapping. slip: accumulated slip (t1, t2) now; slip_increment: its change in this
-  /// increment; plastic_start: plastic slip at the start of the increment; dt: increment size (for
-  /// the slip rate); gamma: elastic slip.
+  /// Penalty return mapping. slip: accumulated slip (t1, t2) now; slip_increment: its change in
+  /// this increment; plastic_start: plastic slip at the start of the increment; dt: increment size
+  /// (for the slip rate); gamma: elastic slip.
   ///
   /// previous_slip: the slip direction of the previous Newton iteration when that iteration
   /// slipped (else nullptr). The slip tangent has no stiffness along the slip direction, so a
@@ -58,7 +58,7 @@ public:
                            double temperature, double gamma,
                            const Eigen::Vector2d* previous_slip = nullptr) const;
 
-private:
+ private:
   FrictionSpec _spec;
   double _area;
 };

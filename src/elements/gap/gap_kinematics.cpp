@@ -28,8 +28,8 @@ GapGeometry gap_geometry(const GapGeometryParams& p, const Eigen::Vector3d& r12,
     g.c = fallback_c;
     return g;
   }
-  const Eigen::Vector3d nr = r / rho;        // radial direction, from node 2's axis/centre to node 1
-  g.c = s * nr;                              // -dh/dx1 = s * d(rho)/dx1 = s * nr
+  const Eigen::Vector3d nr = r / rho; // radial direction, from node 2's axis/centre to node 1
+  g.c = s * nr;                       // -dh/dx1 = s * d(rho)/dx1 = s * nr
   g.H = -s * (P - nr * nr.transpose()) / rho; // d2h/dx1^2 = -s d2(rho)/dx1^2
   return g;
 }

@@ -20,14 +20,14 @@ enum class GapShape : std::uint8_t { Uni, Cyl, Sph };
 struct GapGeometryParams {
   GapShape shape = GapShape::Uni;
   double d = 0.0;
-  Eigen::Vector3d n = Eigen::Vector3d::Zero(); ///< GAPUNI: unit closure direction
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();  ///< GAPUNI: unit closure direction
   Eigen::Vector3d a = Eigen::Vector3d::UnitX(); ///< GAPCYL: unit axis
 };
 
 struct GapGeometry {
-  double h = 0.0;                                   ///< clearance
-  Eigen::Vector3d c = Eigen::Vector3d::UnitX();     ///< closure direction = -dh/dx1 (unit)
-  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();      ///< d2h/dx1dx1
+  double h = 0.0;                               ///< clearance
+  Eigen::Vector3d c = Eigen::Vector3d::UnitX(); ///< closure direction = -dh/dx1 (unit)
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();  ///< d2h/dx1dx1
   bool degenerate = false; ///< cyl/sph nodes on the axis/centre: c is not defined by the positions
   double rho = 0.0;
 };

@@ -48,7 +48,8 @@ DgapKernel::DgapKernel(const KernelContext& ctx)
 void DgapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   // h = d: no displacements in a heat-transfer analysis; the contact pressure is zero.
   const double A = _section.area;
-  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
+  const GapThermalModel::Flux f =
+      _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
   out.residual[0] += A * f.q;
   out.residual[1] -= A * f.q;
   if (out.want_tangent) {
@@ -61,7 +62,8 @@ void DgapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
 }
 
 void DgapKernel::recover(const ElementInput& in, ElementRecovery& out) const {
-  const GapThermalModel::Flux f = _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
+  const GapThermalModel::Flux f =
+      _thermal.flux(in.u[0], in.u[1], _section.d, 0.0, _section.d <= 0.0);
   GapRecord rec;
   rec.status = _section.d > 0 ? ContactStatus::Open : ContactStatus::Closed;
   rec.clearance = _section.d;

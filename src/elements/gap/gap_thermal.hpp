@@ -15,7 +15,7 @@ struct PhysicalConstants;
 
 /// q = q_conduction(h or p, Tbar) + q_radiation(h), per area, positive from node 1 to node 2.
 class GapThermalModel {
-public:
+ public:
   GapThermalModel(const GapSection& section, const PhysicalConstants& constants);
   bool conducts() const { return _conductance.has_value() || _radiation.has_value(); }
   const std::optional<GapHeatGeneration>& heat_generation() const { return _heat; }
@@ -31,7 +31,7 @@ public:
   /// it is open.
   Flux flux(double Ta, double Tb, double h, double p, bool closed) const;
 
-private:
+ private:
   std::optional<GapConductanceLaw> _conductance;
   std::optional<GapConductanceLaw> _conductance_closed; ///< pressure table used while closed
   std::optional<GapRadiationLaw> _radiation;
@@ -40,7 +40,7 @@ private:
 
 /// DGAP: heat transfer only (DOF 11), h = d constant, direction ignored (spec §1.5).
 class DgapKernel final : public ElementKernel {
-public:
+ public:
   explicit DgapKernel(const KernelContext& ctx);
   ElementType type() const override { return ElementType::DGAP; }
   std::span<const DofType> node_dofs(int) const override { return _dofs; }
@@ -48,7 +48,7 @@ public:
   bool supports_output(ElemVar v) const override { return v == ElemVar::HFL; }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 
-private:
+ private:
   const GapSection& _section;
   GapThermalModel _thermal;
   std::array<DofType, 1> _dofs{DofType::NT};

@@ -301,6 +301,9 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
 
   // ---------------------------------------------------------------- friction
   const FrictionLaw* fl = is_closed ? friction_for(in) : nullptr;
+  // An open gap carries no friction, and one that closes starts from none (its friction
+  // multipliers are not left over from an earlier contact).
+  if (update && (!is_closed || !was_closed)) mult[1] = mult[2] = 0.0;
   Eigen::Vector2d plastic = is_closed ? plastic_start : R.slip; // open: the stick point follows
   Eigen::Matrix2d dtau_ds = Eigen::Matrix2d::Zero();
   Eigen::Vector2d dtau_dN = Eigen::Vector2d::Zero();
@@ -335,6 +338,15 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
         // the tangential motion is prescribed: any relative motion is slip
         slipping = e.norm() > slip_tol;
         if (slipping) m = e / e.norm();
+      } else if (!was_closed && e.norm() > slip_tol) {
+        // Closing in this iteration after moving tangentially since the start of the increment:
+        // a stick row would pull the gap back to where it was (its stick point) with a friction
+        // force that zero normal force cannot hold, and the normal force then turns to tension
+        // and reopens it. Start slipping along the motion instead; the next iteration sticks if
+        // the slip reverses (the converged state is the same: stick or slip is decided by the
+        // conditions below).
+        slipping = true;
+        m = e / e.norm();
       } else if (!was_slip) {
         const Eigen::Vector2d lt(mult[1], mult[2]);
         if (lt.norm() > crit0 * (1.0 + 1e-9) + 1e-300 && previous == ContactStatus::Stick) {
@@ -401,8 +413,8 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
         dtau_ds = std::max(hint, 0.0) * Eigen::Matrix2d::Identity();
       }
       if (update) {
-        const Eigen::Vector2d m = fr.slipping ? Eigen::Vector2d(fr.force.normalized())
-                                              : Eigen::Vector2d::Zero();
+        const Eigen::Vector2d m =
+            fr.slipping ? Eigen::Vector2d(fr.force.normalized()) : Eigen::Vector2d::Zero();
         st[GapStateLayout::slip_dir] = m[0];
         st[GapStateLayout::slip_dir + 1] = m[1];
       }

@@ -7,8 +7,8 @@
 /// ROUGH) stick multipliers; contact damping. docs/theory/gap_elements.md has the equations.
 #include "elements/element_kernel.hpp"
 #include "elements/gap/friction.hpp"
-#include "elements/gap/gap_thermal.hpp"
 #include "elements/gap/gap_kinematics.hpp"
+#include "elements/gap/gap_thermal.hpp"
 #include "elements/gap/normal_law.hpp"
 
 #include <array>
@@ -34,7 +34,7 @@ struct GapStateLayout {
 };
 
 class MechanicalGapKernel final : public ElementKernel {
-public:
+ public:
   explicit MechanicalGapKernel(const KernelContext& ctx);
 
   ElementType type() const override { return _type; }
@@ -53,7 +53,7 @@ public:
   /// Characteristic length of element `block_index` (attached elements' mean size).
   double characteristic_length(LocalIndex block_index) const { return _lc[block_index]; }
 
-private:
+ private:
   enum class NormalMode { Direct, Force, Augmented };
   struct Response; // everything one evaluation computes
   void respond(const ElementInput& in, std::span<double> state, std::span<double> mult,
@@ -74,8 +74,8 @@ private:
   NormalMode _mode = NormalMode::Direct;
   bool _no_separation = false;
   std::unique_ptr<NormalForceLaw> _law;
-  double _augmented_k = 0.0; ///< 0: automatic
-  std::vector<FrictionLaw> _friction;          ///< [0] the section's (if any), then *CHANGE FRICTION
+  double _augmented_k = 0.0;          ///< 0: automatic
+  std::vector<FrictionLaw> _friction; ///< [0] the section's (if any), then *CHANGE FRICTION
   std::vector<std::vector<std::pair<int, int>>> _friction_schedule; ///< per element: (step, law)
   int _section_friction = -1;
   std::vector<double> _lc; ///< per element of the block

@@ -21,7 +21,8 @@ void LinearLaw::force(double g, double, double& F, double& dF_dg) const {
 }
 
 ExponentialLaw::ExponentialLaw(double c0, double p0, double kmax, double area)
-    : _c0(c0), _p0(p0), _kmax(kmax), _area(area), _g_switch(std::numeric_limits<double>::infinity()) {
+    : _c0(c0), _p0(p0), _kmax(kmax), _area(area),
+      _g_switch(std::numeric_limits<double>::infinity()) {
   if (_kmax > 0) {
     // the slope grows monotonically with g: bisection for dp/dg = K_max
     double lo = -_c0, hi = _c0;
@@ -79,7 +80,8 @@ void TabularLaw::force(double g, double, double& F, double& dF_dg) const {
     p = _p.back() + s * (g - _g.back());
     dp = s;
   } else {
-    const auto hi = static_cast<std::size_t>(std::upper_bound(_g.begin(), _g.end(), g) - _g.begin());
+    const auto hi =
+        static_cast<std::size_t>(std::upper_bound(_g.begin(), _g.end(), g) - _g.begin());
     const std::size_t lo = hi - 1;
     dp = (_p[hi] - _p[lo]) / (_g[hi] - _g[lo]);
     p = _p[lo] + dp * (g - _g[lo]);
@@ -99,10 +101,12 @@ std::unique_ptr<NormalForceLaw> make_normal_law(const GapSection& s) {
   const SurfaceBehavior& b = s.behavior;
   if (!b.given) return nullptr;
   switch (b.law) {
-  case PressureOverclosure::Linear: return std::make_unique<LinearLaw>(b.slope, s.area);
+  case PressureOverclosure::Linear:
+    return std::make_unique<LinearLaw>(b.slope, s.area);
   case PressureOverclosure::Exponential:
     return std::make_unique<ExponentialLaw>(b.c0, b.p0, b.max_stiffness, s.area);
-  case PressureOverclosure::Tabular: return std::make_unique<TabularLaw>(b.table_p, b.table_g, s.area);
+  case PressureOverclosure::Tabular:
+    return std::make_unique<TabularLaw>(b.table_p, b.table_g, s.area);
   case PressureOverclosure::Hard:
     if (b.method == ContactMethod::Penalty && !b.no_separation)
       return std::make_unique<PenaltyLaw>(b.penalty_stiffness * s.area);

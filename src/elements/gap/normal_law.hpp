@@ -14,7 +14,7 @@ namespace gapfem {
 struct GapSection;
 
 class NormalForceLaw {
-public:
+ public:
   virtual ~NormalForceLaw() = default;
   /// Compressive contact force F(g) and dF/dg. `stiffness_hint` is the representative stiffness of
   /// the elements connected to the gap (for automatic penalty stiffnesses).
@@ -23,22 +23,22 @@ public:
 
 /// CalculiX's GAPUNI law (fields 6-7 of *GAP): F = k g (1/2 + atan(g/eps)/pi), eps = pi f_inf / k.
 class CcxPenaltyLaw final : public NormalForceLaw {
-public:
+ public:
   CcxPenaltyLaw(double stiffness, double tension)
       : _k(stiffness), _eps(3.141592653589793 * tension / stiffness) {}
   void force(double g, double, double& F, double& dF_dg) const override;
 
-private:
+ private:
   double _k, _eps;
 };
 
 /// PRESSURE-OVERCLOSURE=LINEAR: p = k g for g > 0.
 class LinearLaw final : public NormalForceLaw {
-public:
+ public:
   LinearLaw(double slope, double area) : _k(slope * area) {}
   void force(double g, double, double& F, double& dF_dg) const override;
 
-private:
+ private:
   double _k;
 };
 
@@ -46,11 +46,11 @@ private:
 /// x = g/c0 + 1 otherwise (p(0) = p0); with K_max > 0 the curve continues linearly with slope K_max
 /// beyond the point where its slope reaches K_max.
 class ExponentialLaw final : public NormalForceLaw {
-public:
+ public:
   ExponentialLaw(double c0, double p0, double kmax, double area);
   void force(double g, double, double& F, double& dF_dg) const override;
 
-private:
+ private:
   void raw(double g, double& p, double& dp) const;
   double _c0, _p0, _kmax, _area, _g_switch;
 };
@@ -58,11 +58,11 @@ private:
 /// PRESSURE-OVERCLOSURE=TABULAR: piecewise linear p(g) through the pairs, 0 below the first
 /// overclosure, extrapolated with the last slope beyond the last.
 class TabularLaw final : public NormalForceLaw {
-public:
+ public:
   TabularLaw(std::vector<double> p, std::vector<double> g, double area);
   void force(double g, double, double& F, double& dF_dg) const override;
 
-private:
+ private:
   std::vector<double> _p, _g;
   double _area;
 };
@@ -70,12 +70,12 @@ private:
 /// Hard contact by the penalty method: F = K max(g, 0). K: the given stiffness times the area, or
 /// (automatic) 10 x the stiffness of the connected elements.
 class PenaltyLaw final : public NormalForceLaw {
-public:
+ public:
   explicit PenaltyLaw(double stiffness) : _k(stiffness) {}
   void force(double g, double hint, double& F, double& dF_dg) const override;
   static constexpr double kAutomaticFactor = 10.0;
 
-private:
+ private:
   double _k; ///< 0: automatic
 };
 

@@ -17,14 +17,14 @@ struct Slot {
 };
 
 // Abaqus's field order of PARAMETERS=FIELD.
-constexpr Slot kFieldSlots[] = {{"R_n", true},     {"C_n", true},   {"q_0", true},
-                                {"q_u", true},     {"R_P", false},  {"epsilon", true},
+constexpr Slot kFieldSlots[] = {{"R_n", true},        {"C_n", true},       {"q_0", true},
+                                {"q_u", true},        {"R_P", false},      {"epsilon", true},
                                 {"C_epsilon", false}, {"epsilon_l", true}, {"epsilon_d", false}};
 // PARAMETERS=TIME INCREMENTATION, first line and second line.
-constexpr Slot kIterationSlots[] = {{"I_0", true},  {"I_R", false}, {"I_P", false}, {"I_C", true},
-                                    {"I_L", true},  {"I_G", true},  {"I_S", true},  {"I_A", true},
-                                    {"I_J", false}, {"I_T", false}, {"I_S^max", false},
-                                    {"I_PD", false}, {"I_AD", false}};
+constexpr Slot kIterationSlots[] = {
+    {"I_0", true},      {"I_R", false},  {"I_P", false}, {"I_C", true},  {"I_L", true},
+    {"I_G", true},      {"I_S", true},   {"I_A", true},  {"I_J", false}, {"I_T", false},
+    {"I_S^max", false}, {"I_PD", false}, {"I_AD", false}};
 constexpr Slot kFactorSlots[] = {{"D_f", true},  {"D_C", false}, {"D_B", true},  {"D_A", true},
                                  {"D_S", false}, {"D_H", false}, {"D_D", true},  {"W_G", false},
                                  {"D_G", false}, {"D_M", false}, {"D_PD", false}};
@@ -34,7 +34,8 @@ void warn_unused(BuildState& s, const FieldReader& r, std::span<const Slot> slot
                  std::string_view what) {
   std::string unused;
   for (std::size_t i = 0; i < slots.size(); ++i)
-    if (!r.blank(i) && !slots[i].used) unused += fmt::format("{}{}", unused.empty() ? "" : ", ", slots[i].symbol);
+    if (!r.blank(i) && !slots[i].used)
+      unused += fmt::format("{}{}", unused.empty() ? "" : ", ", slots[i].symbol);
   if (!unused.empty())
     s.warn(r.loc(), fmt::format("*CONTROLS, PARAMETERS={}: {} ha{} no effect in gapfem (it has no "
                                 "logarithmic rate check, no alternative residual criterion and no "
@@ -79,7 +80,8 @@ void read_field(BuildState& s, const Keyword& kw, SolutionControls& c) {
     }
   if (!line) return; // no data line: the defaults
   const FieldReader r = s.reader(kw, *line);
-  r.at_most(std::size(kFieldSlots), "R_n, C_n, q_0, q_u, R_P, epsilon, C_epsilon, epsilon_l, epsilon_d");
+  r.at_most(std::size(kFieldSlots),
+            "R_n, C_n, q_0, q_u, R_P, epsilon, C_epsilon, epsilon_l, epsilon_d");
   warn_unused(s, r, kFieldSlots, "FIELD");
   auto apply = [&](SolutionControls::Field& f) {
     f.residual = positive(r, 0, f.residual, kFieldSlots[0]);

@@ -3,9 +3,8 @@
 #include "elements/gap/mechanical_gap.hpp"
 #include "gap_test_util.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <random>
 
 using namespace gapfem;
@@ -25,7 +24,8 @@ GapSection section(double d, Vec3 dir = {0, 0, 0}, double area = 1.0) {
 
 const std::vector<ElemId> kOnlyElement{0};
 std::unique_ptr<ElementKernel> kernel_for(const Model& m) {
-  return make_gap_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0], kOnlyElement});
+  return make_gap_kernel(
+      KernelContext{m, m.mesh.elem_types[0], m.element_property[0], kOnlyElement});
 }
 
 // Central differences of the residual (multiplier fixed) and of g against the tangent and the
@@ -63,7 +63,8 @@ void check_tangent(SingleElement& el, double scale) {
 
 TEST(GapKernel, GapuniClearanceAndSign) {
   // M1 geometry: node 1 at origin, node 2 at (0,-1,0), d = 0.5, n = (0,-1,0).
-  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, section(0.5, {0, -1, 0}));
+  Model m =
+      two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, section(0.5, {0, -1, 0}));
   SingleElement el(m, kernel_for(m));
   el.u = {0, -0.4, 0, 0, 0, 0}; // node 1 moves down 0.4 towards node 2: h = 0.5 + n.(u2-u1) = 0.1
   EXPECT_NEAR(el.record().clearance, 0.1, 1e-15);
@@ -104,12 +105,14 @@ TEST(GapKernel, CoincidentNodesWithoutDirectionAreRejected) {
 
 TEST(GapKernel, CylinderAndSphereClearance) {
   // GAPCYL d>0 about the x axis: h = d - |P(x1-x2)|; axial motion does not count.
-  Model m = two_node_gap_model(ElementType::GAPCYL, {0, 0, 0}, {0, 0, 0}, section(0.0208, {1, 0, 0}));
+  Model m =
+      two_node_gap_model(ElementType::GAPCYL, {0, 0, 0}, {0, 0, 0}, section(0.0208, {1, 0, 0}));
   SingleElement el(m, kernel_for(m));
   el.u = {5.0, 0.0115378, 0.0173066, 0, 0, 0};
   EXPECT_NEAR(el.record().clearance, 0.0208 - std::hypot(0.0115378, 0.0173066), 1e-12);
   // GAPCYL d<0: h = |P r| + d
-  Model m2 = two_node_gap_model(ElementType::GAPCYL, {0, 2, 0}, {0, 0, 0}, section(-1.0, {1, 0, 0}));
+  Model m2 =
+      two_node_gap_model(ElementType::GAPCYL, {0, 2, 0}, {0, 0, 0}, section(-1.0, {1, 0, 0}));
   SingleElement e2(m2, kernel_for(m2));
   e2.u = {3.0, -0.5, 0, 0, 0, 0};
   EXPECT_NEAR(e2.record().clearance, 1.5 - 1.0, 1e-14);
@@ -149,7 +152,8 @@ TEST(GapKernel, ClosedStateTangentMatchesFiniteDifferences) {
 }
 
 TEST(GapKernel, TensionOpensAClosedGap) {
-  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, section(0.0, {0, -1, 0}));
+  Model m =
+      two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, section(0.0, {0, -1, 0}));
   SingleElement el(m, kernel_for(m));
   el.evaluate();
   EXPECT_EQ(el.n_constraints, 1) << "d = 0 starts closed";

@@ -3,17 +3,16 @@
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <memory>
 #include <vector>
 
 namespace gapfem::test {
 
 /// A model with two nodes and one gap element of `type` using `section`.
-inline Model two_node_gap_model(ElementType type, const Vec3& X1, const Vec3& X2, GapSection section,
-                                ModelSpace space = ModelSpace::ThreeD) {
+inline Model two_node_gap_model(ElementType type, const Vec3& X1, const Vec3& X2,
+                                GapSection section, ModelSpace space = ModelSpace::ThreeD) {
   Model m;
   m.space = space;
   m.source_files = {"unit.inp"};
@@ -50,7 +49,8 @@ struct SingleElement {
 
   static inline const std::vector<ElemId> kFirst{0};
   explicit SingleElement(const Model& m)
-      : SingleElement(m, make_element_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0], kFirst})) {}
+      : SingleElement(m, make_element_kernel(KernelContext{m, m.mesh.elem_types[0],
+                                                           m.element_property[0], kFirst})) {}
   SingleElement(const Model& m, std::unique_ptr<ElementKernel> k) : kernel(std::move(k)) {
     X = m.mesh.coords;
     const int nd = kernel->n_dofs();
@@ -109,10 +109,12 @@ struct SingleElement {
   }
 };
 
-inline /// Central differences of the residual against the tangent (multipliers fixed; the trial state is
-/// restored before every evaluation so the status does not change), and of the residual against
-/// the normal multiplier against the constraint column.
-void check_element_tangent(SingleElement& el, double h_scale, double tol = 1e-6) {
+inline /// Central differences of the residual against the tangent (multipliers fixed; the trial
+       /// state is
+    /// restored before every evaluation so the status does not change), and of the residual against
+    /// the normal multiplier against the constraint column.
+    void
+    check_element_tangent(SingleElement& el, double h_scale, double tol = 1e-6) {
   const auto state = el.state;
   const auto mult = el.mult;
   el.evaluate();
@@ -139,7 +141,30 @@ void check_element_tangent(SingleElement& el, double h_scale, double tol = 1e-6)
     const auto rm = el.r;
     el.u[j] = keep;
     for (std::size_t i = 0; i < nd; ++i)
-      EXPECT_NEAR((rp[i] - rm[i]) / (2 * h), K[i * nd + j], tol * kmax) << "K(" << i << "," << j << ")";
+      EXPECT_NEAR((rp[i] - rm[i]) / (2 * h), K[i * nd + j], tol * kmax)
+          << "K(" << i << "," << j << ")";
+  }
+  // the constraint rows: d g_i / d u against the row coefficients
+  const auto cval0 = el.cval;
+  const auto ccoef0 = el.ccoef;
+  for (std::size_t j = 0; j < nd && n_rows > 0; ++j) {
+    const double keep = el.u[j];
+    el.u[j] = keep + h;
+    el.state = state;
+    el.mult = mult;
+    el.evaluate();
+    const auto gp = el.cval;
+    const int np = el.n_constraints;
+    el.u[j] = keep - h;
+    el.state = state;
+    el.mult = mult;
+    el.evaluate();
+    const auto gm = el.cval;
+    el.u[j] = keep;
+    if (np != n_rows || el.n_constraints != n_rows) continue; // the row set changed: no derivative
+    for (int row = 0; row < n_rows; ++row)
+      EXPECT_NEAR((gp[row] - gm[row]) / (2 * h), ccoef0[row * nd + j], 1e-6)
+          << "constraint row " << row << " dof " << j;
   }
   // d r / d lambda for each active row
   for (int row = 0; row < n_rows; ++row) {
@@ -164,6 +189,5 @@ void check_element_tangent(SingleElement& el, double h_scale, double tol = 1e-6)
   el.mult = mult;
   el.evaluate();
 }
-
 
 } // namespace gapfem::test
