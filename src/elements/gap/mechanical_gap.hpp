@@ -55,9 +55,31 @@ class MechanicalGapKernel final : public ElementKernel {
 
  private:
   enum class NormalMode { Direct, Force, Augmented };
-  struct Response; // everything one evaluation computes
+  struct Response; // what one evaluation computes for output and augmentation (gap_response.hpp)
+  struct Local;    // its intermediate quantities, stage to stage
+  /// One evaluation (gap_response.cpp): with `out`, writes the trial state and multipliers and
+  /// assembles; without, only computes R.
   void respond(const ElementInput& in, std::span<double> state, std::span<double> mult,
                ElementOutput* out, Response& r) const;
+  // the stages of respond()
+  void setup(const ElementInput& in, std::span<const double> st, Response& R, Local& L) const;
+  void normal(const ElementInput& in, std::span<double> st, std::span<double> mult, Response& R,
+              Local& L) const;
+  void friction(const ElementInput& in, std::span<double> st, std::span<double> mult,
+                ElementOutput* out, Response& R, Local& L) const;
+  void friction_lagrange(const ElementInput& in, std::span<double> st, std::span<double> mult,
+                         ElementOutput* out, Response& R, Local& L) const;
+  void friction_penalty(const ElementInput& in, std::span<double> st, Response& R, Local& L) const;
+  void damping(const ElementInput& in, Response& R, Local& L) const;
+  void heat(const ElementInput& in, Response& R, Local& L) const;
+  void store(const ElementInput& in, std::span<double> st, ElementOutput& out, Response& R,
+             const Local& L) const;
+  void assemble(const ElementInput& in, ElementOutput& out, const Response& R,
+                const Local& L) const;
+  void assemble_heat(ElementOutput& out, const Response& R, const Local& L) const;
+  /// Can the solver enforce a row with these coefficients (does it touch a free DOF)?
+  bool enforceable(const ElementInput& in, const Local& L,
+                   const Eigen::Matrix<double, 8, 1>& row) const;
   GapGeometry geometry(const ElementInput& in, std::span<const double> u,
                        std::span<const double> state) const;
   GapGeometryParams params_for(const ElementInput& in) const;
