@@ -179,6 +179,13 @@ public:
   /// constraint is not yet met to its tolerance. Returns true when something changed (the Newton
   /// iteration then continues).
   virtual bool augment(const ElementInput& in) const { return false; }
+  /// Line-search hook: the largest fraction (0, 1] of the Newton correction `du` (local DOFs) the
+  /// element accepts from its trial state. Elements whose response is nonsmooth along the step
+  /// (a frictional gap whose slip would reverse past its whole stick band) return less.
+  virtual bool limits_steps() const { return false; }
+  virtual double step_limit(const ElementInput& in, std::span<const double> du) const {
+    return 1.0;
+  }
 
   /// Can the element carry this distributed load on this face (0 = body)?
   virtual bool supports_load(DistLoadKind kind, int face) const { return false; }

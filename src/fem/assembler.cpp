@@ -229,6 +229,23 @@ void Assembler::element_residual(ElemId e, const FieldView& fields, const StepCo
   slots.assign(s.begin(), s.end());
 }
 
+double Assembler::step_limit(const FieldView& fields, const StepContext& ctx,
+                             std::span<const double> du) {
+  double alpha = 1.0;
+  ElementGather& g = _scratch[0];
+  std::vector<double> local;
+  for (auto& b : _disc.blocks()) {
+    if (!b.kernel->limits_steps()) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const auto slots = b.element_slots(i);
+      local.resize(slots.size());
+      for (std::size_t k = 0; k < slots.size(); ++k) local[k] = du[slots[k]];
+      alpha = std::min(alpha, b.kernel->step_limit(g.gather(_disc, b, i, fields, &ctx), local));
+    }
+  }
+  return alpha;
+}
+
 int Assembler::augment(const FieldView& fields, const StepContext& ctx) {
   int changed = 0;
   ElementGather& g = _scratch[0];

@@ -45,6 +45,9 @@ public:
   /// Residual of one element at the given state (no tangent); out has n_dofs entries.
   void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
                         std::vector<double>& out, std::vector<LocalIndex>& slots);
+  /// Largest fraction (0, 1] of the correction du (per slot) that every element accepts
+  /// (ElementKernel::step_limit).
+  double step_limit(const FieldView& fields, const StepContext& ctx, std::span<const double> du);
   /// Augmented-Lagrange updates of all elements (at a converged state); returns how many changed.
   int augment(const FieldView& fields, const StepContext& ctx);
   /// Per-slot diagonal of the tangent of all elements (optionally without gap elements).

@@ -60,6 +60,15 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.cause = FailureCause::Singular;
       return res;
     }
+    // line search: a frictional gap whose slip would reverse past its stick band stops the step
+    // where its slip turns (the slip branch has no stiffness along the slip, so the full step
+    // would jump over the whole band)
+    const double alpha = p.step_limit(du, dl);
+    if (alpha < 1.0) {
+      for (double& v : du) v *= alpha;
+      for (double& v : dl) v *= alpha;
+      log::debug("  step limited to {:.3g} of the correction (slip reversal)", alpha);
+    }
     p.apply(du, dl);
     ++res.iterations;
     if (stats) ++stats->iterations;

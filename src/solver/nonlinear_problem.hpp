@@ -44,6 +44,9 @@ class NonlinearProblem {
   /// Augmented Lagrange: at a converged state, update multiplier estimates that do not yet meet
   /// their tolerance. Returns how many changed (0: the state is final).
   virtual int augment() { return 0; }
+  /// Line search: the fraction (0, 1] of the correction (du over the free equations, dl over the
+  /// active rows) to apply.
+  virtual double step_limit(std::span<const double> du, std::span<const double> dl) { return 1.0; }
 };
 
 } // namespace gapfem

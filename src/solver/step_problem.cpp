@@ -101,6 +101,14 @@ void StepProblem::apply(std::span<const double> du, std::span<const double> dl) 
   for (int r = 0; r < _C.n_rows(); ++r) _disc.multiplier_trial(_C.multiplier[r]) += dl[r];
 }
 
+double StepProblem::step_limit(std::span<const double> du, std::span<const double>) {
+  if (!_disc.has_gaps()) return 1.0;
+  const EquationMap& eqm = _loads.equations();
+  _du_slots.assign(_s.u.size(), 0.0);
+  for (LocalIndex i = 0; i < eqm.n_eq(); ++i) _du_slots[eqm.eq_slot[i]] = du[i];
+  return _asm.step_limit(fields(), _ctx, _du_slots);
+}
+
 int StepProblem::augment() {
   if (!_disc.has_gaps()) return 0;
   return _asm.augment(fields(), _ctx);

@@ -46,6 +46,7 @@ class StepProblem final : public NonlinearProblem {
   std::array<double, kNumFields> increment_max() const override;
   double constraint_tolerance() const override { return _constraint_tol; }
   int augment() override;
+  double step_limit(std::span<const double> du, std::span<const double> dl) override;
   /// Representative stiffness of the non-gap elements at every gap element's DOFs (mean diagonal
   /// of their displacement DOFs), stored for the kernels' automatic penalty stiffnesses.
   void compute_stiffness_hints();
@@ -68,6 +69,7 @@ class StepProblem final : public NonlinearProblem {
   ConstraintBlock _C;
   std::vector<double> _rhs;
   std::vector<ActiveLoad> _active;
+  std::vector<double> _du_slots; ///< a Newton correction per slot (step_limit)
   double _constraint_tol;
   bool _unsymmetric_loads = false;
   RunStatistics* _stats = nullptr;

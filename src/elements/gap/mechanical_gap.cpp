@@ -95,6 +95,11 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
         _friction_schedule[it->second].emplace_back(s, law);
       }
     }
+  // Line search for elastic-slip friction on rotating gaps only: on a fixed direction the stick
+  // predictor's step lands exactly on the stick solution (the stick branch is linear), on a
+  // curved gap its large k_s e force would also rotate the contact frame (step_limit()).
+  if (_base.shape != GapShape::Uni)
+    for (const FrictionLaw& f : _friction) _penalty_friction |= !f.lagrange();
   // Characteristic length per element: mean diameter of the non-gap elements at its nodes, else
   // the distance between its nodes, else 1e-3 of the model size.
   _lc.assign(ctx.elements.size(), 0.0);
@@ -197,6 +202,27 @@ void MechanicalGapKernel::initialize(const ElementInput& in) const {
 void MechanicalGapKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   Response R;
   respond(in, in.state, in.multipliers, &out, R);
+}
+
+double MechanicalGapKernel::step_limit(const ElementInput& in, std::span<const double> du) const {
+  // An elastic-slip gap slipping along m whose correction would carry its elastic slip past the
+  // far side of the stick band: stop where the slip along m reaches zero. The slip is linear in
+  // the displacements (the basis is frozen over the increment), so the fraction is exact.
+  const auto& st = in.state;
+  if (status_of(st[GapStateLayout::status]) != ContactStatus::Slip) return 1.0;
+  const FrictionLaw* fl = friction_for(in);
+  const Eigen::Vector2d m(st[GapStateLayout::slip_dir], st[GapStateLayout::slip_dir + 1]);
+  if (!fl || fl->lagrange() || m.squaredNorm() == 0.0) return 1.0;
+  Response R;
+  Local L;
+  setup(in, st, R, L);
+  Eigen::Vector2d de = Eigen::Vector2d::Zero();
+  for (int a = 0; a < 2; ++a)
+    for (int i = 0; i < L.nd; ++i) de[a] += L.ds[a][i] * du[i];
+  const double gamma = fl->elastic_slip(_lc[in.block_index]);
+  const double em = (R.slip - L.plastic_start).dot(m), dm = de.dot(m);
+  if (em <= 0.0 || dm >= 0.0 || em + dm >= -gamma) return 1.0;
+  return em / -dm;
 }
 
 bool MechanicalGapKernel::augment(const ElementInput& in) const {

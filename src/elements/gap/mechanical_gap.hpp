@@ -45,6 +45,8 @@ class MechanicalGapKernel final : public ElementKernel {
   void initialize(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
   bool augment(const ElementInput& in) const override;
+  bool limits_steps() const override { return _penalty_friction; }
+  double step_limit(const ElementInput& in, std::span<const double> du) const override;
   bool supports_output(ElemVar v) const override {
     return v == ElemVar::S || v == ElemVar::E || (v == ElemVar::HFL && _thermal.has_value());
   }
@@ -100,6 +102,7 @@ class MechanicalGapKernel final : public ElementKernel {
   std::vector<FrictionLaw> _friction; ///< [0] the section's (if any), then *CHANGE FRICTION
   std::vector<std::vector<std::pair<int, int>>> _friction_schedule; ///< per element: (step, law)
   int _section_friction = -1;
+  bool _penalty_friction = false; ///< a rotating gap with an elastic-slip friction law (step_limit)
   std::vector<double> _lc; ///< per element of the block
   double _length_scale = 1.0;
   std::optional<GapThermalModel> _thermal; ///< GAPUNIT: conductance, radiation, heat generation
