@@ -29,7 +29,7 @@ struct ActiveLoad {
 };
 
 class Assembler {
-public:
+ public:
   explicit Assembler(Discretization& disc, int threads = 1);
   int threads() const { return _threads; }
 
@@ -56,7 +56,7 @@ public:
   /// Output quantities of one element at the given state.
   void recover(ElemId e, const FieldView& fields, const StepContext& ctx, ElementRecovery& out);
 
-private:
+ private:
   Discretization& _disc;
   int _threads;
   std::vector<ElementGather> _scratch;

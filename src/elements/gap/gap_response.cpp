@@ -158,6 +158,7 @@ void MechanicalGapKernel::friction_lagrange(const ElementInput& in, std::span<do
   const bool was_slip = L.previous == ContactStatus::Slip;
   bool slipping = was_slip;
   const double slip_tol = 1e-12 * _length_scale;
+  const double slip_small = 1e-6 * _lc[in.block_index];
   if (fl.rough()) {
     slipping = false;
   } else if (!enforceable(in, L, L.ds[0]) && !enforceable(in, L, L.ds[1])) {
@@ -179,9 +180,13 @@ void MechanicalGapKernel::friction_lagrange(const ElementInput& in, std::span<do
       m = lt / lt.norm();
     }
   } else if (e.norm() > slip_tol) {
+    // A slip that turns against its direction sticks again (the stick step lands on the stick
+    // solution, which the next iteration accepts or breaks). A significant slip sets the
+    // direction; a slip below slip_small (right after stick breaks, e is mostly drift across the
+    // slip and its own direction is noise) keeps the direction of the broken stick force.
     if (e.dot(m) < 0)
-      slipping = false; // slip reversed: stick again
-    else
+      slipping = false;
+    else if (e.norm() > slip_small)
       m = e / e.norm();
   }
   if (!slipping) {
@@ -198,9 +203,10 @@ void MechanicalGapKernel::friction_lagrange(const ElementInput& in, std::span<do
     if (m.squaredNorm() == 0.0) m = Eigen::Vector2d(1.0, 0.0);
     R.friction = crit * m;
     L.dtau_dN = dcrit * m;
-    const double en = e.norm();
-    if (en > 1e-12 * _length_scale && e.dot(m) > 0)
-      L.dtau_ds = (crit / en) * (Eigen::Matrix2d::Identity() - m * m.transpose());
+    // d(crit m)/de of m = e/|e|, with |e| bounded below by slip_small: right after stick breaks
+    // the slip has no stiffness across it, and the drift would turn the direction at random
+    L.dtau_ds =
+        (crit / std::max(e.norm(), slip_small)) * (Eigen::Matrix2d::Identity() - m * m.transpose());
     const double dn = L.dslip.norm();
     if (L.dt > 0 && dn > 0 && dcrit_drate != 0.0)
       L.dtau_ds += m * (dcrit_drate / L.dt) * (L.dslip / dn).transpose();

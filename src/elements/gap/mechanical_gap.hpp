@@ -103,7 +103,7 @@ class MechanicalGapKernel final : public ElementKernel {
   std::vector<std::vector<std::pair<int, int>>> _friction_schedule; ///< per element: (step, law)
   int _section_friction = -1;
   bool _penalty_friction = false; ///< a rotating gap with an elastic-slip friction law (step_limit)
-  std::vector<double> _lc; ///< per element of the block
+  std::vector<double> _lc;        ///< per element of the block
   double _length_scale = 1.0;
   std::optional<GapThermalModel> _thermal; ///< GAPUNIT: conductance, radiation, heat generation
 };

@@ -188,28 +188,28 @@ TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {
   // GAPCYL and GAPSPHER closed by a multiplier, friction by elastic slip (stick and slip) or
   // LAGRANGE (slip): residual, rows and the normal column against central differences
   for (ElementType type : {ElementType::GAPCYL, ElementType::GAPSPHER})
-    for (int kind = 0; kind < 3; ++kind) {
+    for (int kind = 0; kind < 6; ++kind) {
       SCOPED_TRACE(std::string(element_info(type).name) + " case " + std::to_string(kind));
       GapSection s;
-      s.d = 0.5;
+      s.d = kind < 3 ? 0.5 : -0.5; // inside, or outside (external cylinders / spheres)
       if (type == ElementType::GAPCYL) {
         s.direction = {1, 0, 0};
         s.direction_given = true;
       }
       s.friction = coulomb(0.3, 1e-3);
-      s.friction.lagrange = kind == 2;
-      if (kind == 2) s.friction.elastic_slip.reset();
+      s.friction.lagrange = kind % 3 == 2;
+      if (kind % 3 == 2) s.friction.elastic_slip.reset();
       Model m = two_node_gap_model(type, {0, 0, 0}, {0, 0, 0}, s);
       SingleElement el(m);
-      set_state_closed(el, kind == 0 ? ContactStatus::Stick : ContactStatus::Slip);
+      set_state_closed(el, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
       el.state[GapStateLayout::direction + 1] = el.state0[GapStateLayout::direction + 1] = 1.0;
       el.state[GapStateLayout::slip_dir] = el.state0[GapStateLayout::slip_dir] = 1.0;
       el.mult[0] = 100.0;
       // on the surface, moved sideways (rotating the contact direction) by 0.0004 or 0.02
-      const double t = kind == 0 ? 0.0002 : 0.02;
+      const double t = kind % 3 == 0 ? 0.0002 : 0.02;
       el.u = {0.3 * t, std::sqrt(0.25 - t * t), t, 0, 0, 0};
       el.evaluate();
-      ASSERT_EQ(el.record().status, kind == 0 ? ContactStatus::Stick : ContactStatus::Slip);
+      ASSERT_EQ(el.record().status, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
       check_element_tangent(el, 0.001);
     }
 }
