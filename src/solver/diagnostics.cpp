@@ -117,8 +117,9 @@ std::string describe_chattering(const Model& model, std::span<const ElemId> elem
   std::vector<Label> labels;
   for (ElemId e : elements) labels.push_back(model.element_label(e));
   std::sort(labels.begin(), labels.end());
-  return fmt::format("the contact status of gap element(s) {} keeps switching between open and "
-                     "closed within the increment",
+  return fmt::format("the contact status of gap element(s) {} keeps switching (open/closed or "
+                     "stick/slip) within the increment; a smaller increment, a larger elastic "
+                     "slip or *CONTACT DAMPING may let it settle",
                      list_labels(labels));
 }
 

@@ -2,9 +2,8 @@
 // against its closed-form answer (derivations next to each expectation).
 #include "test_util.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 using namespace gapfem;
@@ -35,7 +34,8 @@ M1 GAPUNI open/closed with a spring
 *STEP
 *STATIC
 *CLOAD
-10, 2, )" + std::to_string(fy) + R"(
+10, 2, )" +
+         std::to_string(fy) + R"(
 *EL PRINT, ELSET=G1
 S, E
 *NODE PRINT
@@ -234,11 +234,14 @@ std::string m6_deck(double fy, double fz, bool nlgeom = true) {
 0.208
 *BOUNDARY
 2, 1, 3
-*STEP)") + (nlgeom ? ", NLGEOM" : "") + R"(
+*STEP)") +
+         (nlgeom ? ", NLGEOM" : "") + R"(
 *STATIC
 0.25, 1.
 *CLOAD
-1, 2, )" + std::to_string(fy) + "\n1, 3, " + std::to_string(fz) + "\n*NODE PRINT\nU\n*EL PRINT\nS, E\n*END STEP\n";
+1, 2, )" +
+         std::to_string(fy) + "\n1, 3, " + std::to_string(fz) +
+         "\n*NODE PRINT\nU\n*EL PRINT\nS, E\n*END STEP\n";
 }
 } // namespace
 
@@ -290,14 +293,16 @@ TEST(VerificationGap, M6RotatingLoadTracksTheSphereWithQuadraticConvergence) {
     EXPECT_EQ(gap(r, f, 101).status, ContactStatus::Closed);
   }
   // Quadratic convergence once the contact set is settled: every increment after the first
-  // converges and its error ratio falls at least quadratically, r_{k+1} <= 10 r_k^2, until round-off.
+  // converges and its error ratio falls at least quadratically, r_{k+1} <= 10 r_k^2, until
+  // round-off.
   bool saw_multi_iteration = false;
   for (const auto& inc : r.increments) {
     const auto& h = inc.residual_history;
     for (std::size_t k = 1; k < h.size(); ++k) {
       if (h[k] < 1e-12) break;
       saw_multi_iteration = true;
-      EXPECT_LE(h[k], 10.0 * h[k - 1] * h[k - 1]) << "increment " << inc.increment << " iteration " << k;
+      EXPECT_LE(h[k], 10.0 * h[k - 1] * h[k - 1])
+          << "increment " << inc.increment << " iteration " << k;
     }
   }
   EXPECT_TRUE(saw_multi_iteration);
@@ -321,10 +326,12 @@ std::string m7_deck(const std::string& interference, const std::string& extra = 
 12, 1, 3
 10, 1, 1
 10, 3, 3
-)") + extra + R"(*STEP
+)") + extra +
+         R"(*STEP
 *STATIC
 0.25, 1., 1e-5, 0.25
-)" + interference + "*NODE PRINT\nU\n*EL PRINT\nS, E\n*END STEP\n";
+)" + interference +
+         "*NODE PRINT\nU\n*EL PRINT\nS, E\n*END STEP\n";
 }
 } // namespace
 

@@ -3,10 +3,9 @@
 // through GAPUNI elements (with and without *CONTACT INTERFERENCE), against closed forms.
 #include "test_util.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 using namespace gapfem;
 using namespace gapfem::test;
@@ -141,7 +140,8 @@ std::string ring_deck(double delta, const std::string& interference) {
     d += fmt::format("{}, {:.17g}, 0.\n{}, {:.17g}, 0.1\n", 1 + i, r, 101 + i, r);
   }
   d += "1001, 1., 0.\n1002, 1., 0.1\n*ELEMENT, TYPE=CAX4, ELSET=RING\n";
-  for (int i = 0; i < n; ++i) d += fmt::format("{}, {}, {}, {}, {}\n", 1 + i, 1 + i, 2 + i, 102 + i, 101 + i);
+  for (int i = 0; i < n; ++i)
+    d += fmt::format("{}, {}, {}, {}, {}\n", 1 + i, 1 + i, 2 + i, 102 + i, 101 + i);
   d += fmt::format(R"(*NSET, NSET=ALL, GENERATE
 1, 21, 1
 101, 121, 1
@@ -181,7 +181,8 @@ TEST(VerificationGapStructures, AxisymmetricShrinkFitOnRigidShaft) {
   const double A = (1 - 2 * nu) * B / (b * b);
   const double p = E * B * (1 / (a * a) - 1 / (b * b)) / (1 + nu);
   const double total = p * 2 * 3.141592653589793 * a * H;
-  for (const std::string opt : {std::string(""), std::string("*CONTACT INTERFERENCE, TYPE=ELEMENT, SHRINK\nFIT\n")}) {
+  for (const std::string opt :
+       {std::string(""), std::string("*CONTACT INTERFERENCE, TYPE=ELEMENT, SHRINK\nFIT\n")}) {
     SCOPED_TRACE(opt.empty() ? "resolved at once" : "SHRINK");
     const JobResult r = run_deck(ring_deck(delta, opt));
     ASSERT_EQ(r.exit_code, 0) << r.error;

@@ -3,10 +3,9 @@
 // contact, *STEP UNSYMM=NO, and the diagnosis of a crushed NLGEOM element.
 #include "test_util.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 using namespace gapfem;
 using namespace gapfem::test;
@@ -23,8 +22,8 @@ const double kTheta = 20.0 * std::acos(-1.0) / 180.0;
 
 std::string incline_deck(double fx, const std::string& friction, bool planar) {
   const double s = std::sin(kTheta), c = std::cos(kTheta);
-  std::string d = fmt::format("*NODE\n1, 0., 0., 0.\n2, {:.17g}, {:.17g}, 0.\n3, {:.17g}, {:.17g}, 0.\n",
-                              s, -c, c, s);
+  std::string d = fmt::format(
+      "*NODE\n1, 0., 0., 0.\n2, {:.17g}, {:.17g}, 0.\n3, {:.17g}, {:.17g}, 0.\n", s, -c, c, s);
   d += "*ELEMENT, TYPE=GAPUNI, ELSET=G\n10, 1, 2\n*GAP, ELSET=G\n0., , , , 1.\n" + friction + "\n";
   if (planar) // the spring as a truss up the slope: the model is planar
     d += "*ELEMENT, TYPE=T2D2, ELSET=S\n20, 1, 3\n*SOLID SECTION, ELSET=S, MATERIAL=M\n1.\n"
@@ -32,7 +31,8 @@ std::string incline_deck(double fx, const std::string& friction, bool planar) {
   else
     d += "*ELEMENT, TYPE=SPRINGA, ELSET=S\n20, 1, 3\n*SPRING, ELSET=S\n\n1.\n"
          "*BOUNDARY\n2, 1, 3\n3, 1, 3\n1, 3, 3\n";
-  d += fmt::format("*STEP\n*STATIC\n*CLOAD\n1, 1, {}\n1, 2, -100.\n*EL PRINT\nS, E\n*END STEP\n", fx);
+  d += fmt::format("*STEP\n*STATIC\n*CLOAD\n1, 1, {}\n1, 2, -100.\n*EL PRINT\nS, E\n*END STEP\n",
+                   fx);
   return d;
 }
 
@@ -193,7 +193,8 @@ BOT, 3, 3
 *STEP, NLGEOM
 *STATIC
 0.1, 1.
-)" + load + "*END STEP\n";
+)" + load +
+         "*END STEP\n";
 }
 } // namespace
 

@@ -10,10 +10,9 @@
 // form.
 #include "test_util.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-
-#include <cmath>
 
 using namespace gapfem;
 using namespace gapfem::test;
@@ -24,12 +23,18 @@ enum class Variant { Gapuni3d, GapuniPlanar, GapuniAxisymmetric, Gapcyl, Gapsphe
 
 std::string variant_name(Variant v) {
   switch (v) {
-  case Variant::Gapuni3d: return "GAPUNI 3-D";
-  case Variant::GapuniPlanar: return "GAPUNI planar";
-  case Variant::GapuniAxisymmetric: return "GAPUNI axisymmetric";
-  case Variant::Gapcyl: return "GAPCYL";
-  case Variant::Gapspher: return "GAPSPHER";
-  case Variant::Gapunit: return "GAPUNIT";
+  case Variant::Gapuni3d:
+    return "GAPUNI 3-D";
+  case Variant::GapuniPlanar:
+    return "GAPUNI planar";
+  case Variant::GapuniAxisymmetric:
+    return "GAPUNI axisymmetric";
+  case Variant::Gapcyl:
+    return "GAPCYL";
+  case Variant::Gapspher:
+    return "GAPSPHER";
+  case Variant::Gapunit:
+    return "GAPUNIT";
   }
   return "";
 }
@@ -53,7 +58,8 @@ std::string history_deck(Variant v, const std::string& friction, bool tight) {
   else
     d += "2, 0., -1., 0.\n";
   d += "3, 1., 0., 0.\n";
-  if (v == Variant::GapuniAxisymmetric) d += "11, 1., 1., 0.\n12, 2., 1., 0.\n13, 2., 2., 0.\n14, 1., 2., 0.\n";
+  if (v == Variant::GapuniAxisymmetric)
+    d += "11, 1., 1., 0.\n12, 2., 1., 0.\n13, 2., 2., 0.\n14, 1., 2., 0.\n";
   if (v == Variant::GapuniPlanar) d += "4, 0., 1., 0.\n";
   const std::string type = v == Variant::Gapcyl     ? "GAPCYL"
                            : v == Variant::Gapspher ? "GAPSPHER"
