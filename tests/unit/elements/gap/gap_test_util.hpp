@@ -127,43 +127,30 @@ inline /// Central differences of the residual against the tangent (multipliers 
   const double h = std::cbrt(2.2e-16) * h_scale;
   double kmax = 1.0;
   for (double v : K) kmax = std::max(kmax, std::abs(v));
-  for (std::size_t j = 0; j < nd; ++j) {
-    const double keep = el.u[j];
-    el.u[j] = keep + h;
+  // residual and constraint values at u_j +- h, from the same trial state
+  struct Probe {
+    std::vector<double> r, g;
+    int rows = 0;
+  };
+  auto probe = [&](std::size_t dof, double offset) {
+    const double keep = el.u[dof];
+    el.u[dof] = keep + offset;
     el.state = state;
     el.mult = mult;
     el.evaluate();
-    const auto rp = el.r;
-    el.u[j] = keep - h;
-    el.state = state;
-    el.mult = mult;
-    el.evaluate();
-    const auto rm = el.r;
-    el.u[j] = keep;
-    for (std::size_t i = 0; i < nd; ++i)
-      EXPECT_NEAR((rp[i] - rm[i]) / (2 * h), K[i * nd + j], tol * kmax)
-          << "K(" << i << "," << j << ")";
-  }
-  // the constraint rows: d g_i / d u against the row coefficients
-  const auto cval0 = el.cval;
+    el.u[dof] = keep;
+    return Probe{el.r, el.cval, el.n_constraints};
+  };
   const auto ccoef0 = el.ccoef;
-  for (std::size_t j = 0; j < nd && n_rows > 0; ++j) {
-    const double keep = el.u[j];
-    el.u[j] = keep + h;
-    el.state = state;
-    el.mult = mult;
-    el.evaluate();
-    const auto gp = el.cval;
-    const int np = el.n_constraints;
-    el.u[j] = keep - h;
-    el.state = state;
-    el.mult = mult;
-    el.evaluate();
-    const auto gm = el.cval;
-    el.u[j] = keep;
-    if (np != n_rows || el.n_constraints != n_rows) continue; // the row set changed: no derivative
+  for (std::size_t j = 0; j < nd; ++j) {
+    const Probe p = probe(j, h), m = probe(j, -h);
+    for (std::size_t i = 0; i < nd; ++i)
+      EXPECT_NEAR((p.r[i] - m.r[i]) / (2 * h), K[i * nd + j], tol * kmax)
+          << "K(" << i << "," << j << ")";
+    // the constraint rows: d g_i / d u against the row coefficients (unless the row set changed)
+    if (p.rows != n_rows || m.rows != n_rows) continue;
     for (int row = 0; row < n_rows; ++row)
-      EXPECT_NEAR((gp[row] - gm[row]) / (2 * h), ccoef0[row * nd + j], 1e-6)
+      EXPECT_NEAR((p.g[row] - m.g[row]) / (2 * h), ccoef0[row * nd + j], 1e-6)
           << "constraint row " << row << " dof " << j;
   }
   // d r / d lambda for each active row
