@@ -26,20 +26,32 @@ import tempfile
 
 
 def classify(message):
-    """The blocking construct of an input error: an unknown keyword, element type or parameter."""
-    m = re.search(r"the keyword (\*[A-Z][A-Z _-]*) is not supported", message)
+    """The construct an input error names: an unknown keyword, element type or parameter."""
+    m = re.search(r"the keyword (\*[A-Z][A-Z0-9 _-]*) is not supported", message)
     if m:
         return "keyword " + m.group(1).strip()
-    m = re.search(r"element type ([A-Z0-9]+)", message)
+    m = re.search(r"TYPE=([A-Z0-9]+): gapfem does not know this element type", message)
     if m:
         return "element " + m.group(1)
-    m = re.search(r"(\*[A-Z][A-Z _-]*): (?:the )?parameter ([A-Z][A-Z _-]*)", message)
+    m = re.search(r"(\*[A-Z][A-Z0-9 _-]*): ([A-Z][A-Z0-9 _-]*)(=[^:]*)?: this parameter is not supported", message)
     if m:
         return "parameter " + m.group(1).strip() + ", " + m.group(2).strip()
-    m = re.search(r"(\*[A-Z][A-Z _-]*):", message)
+    m = re.search(r"(\*[A-Z][A-Z0-9 _-]*): (.*)", message)
     if m:
-        return "other " + m.group(1).strip()
+        return "other " + m.group(1).strip() + ": " + re.sub(r"(?<![A-Za-z])[-+]?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?", "#", m.group(2))[:70]
     return "other"
+
+
+def blockers_of(lines):
+    """The distinct constructs named by the error lines of one run (the summary line skipped)."""
+    found = []
+    for line in lines:
+        if "input errors; fix each of them" in line or not re.search(r"\.inp:\d+:", line):
+            continue
+        what = classify(line)
+        if what not in found:
+            found.append(what)
+    return found
 
 
 def main():
@@ -51,37 +63,35 @@ def main():
     args = ap.parse_args()
     decks = sorted(f for f in os.listdir(args.suite) if f.endswith(".inp"))
     outcome = {}
-    blockers = collections.Counter()
-    first_lines = {}
+    per_deck = {}
     with tempfile.TemporaryDirectory() as out:
         for deck in decks:
             path = os.path.join(args.suite, deck)
             try:
                 p = subprocess.run([args.gapfem, "-q", "-o", out, path], capture_output=True,
                                    text=True, timeout=args.timeout)
-                code = p.returncode
-                msg = (p.stderr or p.stdout).strip().splitlines()
             except subprocess.TimeoutExpired:
                 outcome[deck] = "timeout"
                 continue
+            code = p.returncode
             if code in (0, 2):
                 outcome[deck] = "ran" if code == 0 else "ran (stopped)"
             elif code == 1:
-                first = next((l for l in msg if "error" in l.lower() or ".inp:" in l), msg[0] if msg else "")
-                what = classify(first)
-                outcome[deck] = "input: " + what
-                blockers[what] += 1
-                first_lines[deck] = first
+                per_deck[deck] = blockers_of((p.stderr + p.stdout).splitlines())
+                outcome[deck] = "input"
             else:
                 outcome[deck] = f"crash (exit {code})"
-    counts = collections.Counter(v.split(":")[0] for v in outcome.values())
+    counts = collections.Counter(outcome.values())
     print(f"{len(decks)} decks: " + ", ".join(f"{k} {v}" for k, v in counts.most_common()))
-    print("blocking constructs (first input error of each deck):")
-    for what, n in blockers.most_common():
-        print(f"  {n:4d}  {what}")
+    appears = collections.Counter(b for bs in per_deck.values() for b in bs)
+    alone = collections.Counter(bs[0] for bs in per_deck.values() if len(bs) == 1)
+    print("constructs that stop decks (decks naming it / decks it alone stops):")
+    for what, n in appears.most_common():
+        print(f"  {n:4d} {alone.get(what, 0):4d}  {what}")
     if args.list:
         for deck in decks:
-            print(f"{deck}: {outcome[deck]}" + (f"  [{first_lines[deck]}]" if deck in first_lines else ""))
+            extra = "; ".join(per_deck.get(deck, []))
+            print(f"{deck}: {outcome[deck]}" + (f"  [{extra}]" if extra else ""))
     return 0
 
 

@@ -13,6 +13,21 @@
 
 namespace gapfem {
 
+/// Node and element keys: the deck label, with the index of its part instance (1-based; 0 for a
+/// flat deck and for assembly-level nodes and elements) in the bits above kInstanceShift, so that
+/// `Part-1-1.12` and `Part-2-1.12` are different keys and a flat deck's keys are its labels.
+inline constexpr int kInstanceShift = 40;
+inline constexpr Label kLocalLabelMask = (Label{1} << kInstanceShift) - 1;
+constexpr Label make_key(int instance, Label local) {
+  return (static_cast<Label>(instance) << kInstanceShift) | local;
+}
+constexpr int key_instance(Label key) {
+  return static_cast<int>(key >> kInstanceShift);
+}
+constexpr Label key_local(Label key) {
+  return key & kLocalLabelMask;
+}
+
 /// Compact deck location of an entity: index into Model::source_files plus line and keyword id.
 struct SourceRef {
   std::int32_t file = -1;
@@ -20,7 +35,7 @@ struct SourceRef {
 };
 
 struct Mesh {
-  // nodes
+  // nodes (labels are keys: see make_key)
   std::vector<Label> node_labels;
   std::vector<Vec3> coords; ///< reference coordinates X (2-D models: z = 0)
   std::unordered_map<Label, NodeId> node_index;
@@ -28,7 +43,8 @@ struct Mesh {
   // elements
   std::vector<Label> elem_labels;
   std::vector<ElementType> elem_types;
-  std::vector<std::int64_t> conn_offset{0}; ///< element e has nodes conn[conn_offset[e] .. conn_offset[e+1])
+  std::vector<std::int64_t> conn_offset{
+      0}; ///< element e has nodes conn[conn_offset[e] .. conn_offset[e+1])
   std::vector<NodeId> conn;
   std::vector<SourceRef> elem_src; ///< where each element was defined (*ELEMENT data line)
   std::unordered_map<Label, ElemId> elem_index;
@@ -36,18 +52,19 @@ struct Mesh {
   std::int32_t n_nodes() const { return static_cast<std::int32_t>(node_labels.size()); }
   std::int32_t n_elements() const { return static_cast<std::int32_t>(elem_labels.size()); }
 
-  /// Internal index of a node label, or -1.
+  /// Internal index of a node key, or -1.
   NodeId find_node(Label label) const {
     auto it = node_index.find(label);
     return it == node_index.end() ? -1 : it->second;
   }
-  /// Internal index of an element label, or -1.
+  /// Internal index of an element key, or -1.
   ElemId find_element(Label label) const {
     auto it = elem_index.find(label);
     return it == elem_index.end() ? -1 : it->second;
   }
   std::span<const NodeId> element_nodes(ElemId e) const {
-    return {conn.data() + conn_offset[e], static_cast<std::size_t>(conn_offset[e + 1] - conn_offset[e])};
+    return {conn.data() + conn_offset[e],
+            static_cast<std::size_t>(conn_offset[e + 1] - conn_offset[e])};
   }
 };
 

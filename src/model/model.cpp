@@ -8,9 +8,12 @@ namespace gapfem {
 
 std::string_view procedure_name(Procedure p) {
   switch (p) {
-  case Procedure::Static: return "STATIC";
-  case Procedure::HeatTransfer: return "HEAT TRANSFER";
-  case Procedure::CoupledTempDisp: return "COUPLED TEMPERATURE-DISPLACEMENT";
+  case Procedure::Static:
+    return "STATIC";
+  case Procedure::HeatTransfer:
+    return "HEAT TRANSFER";
+  case Procedure::CoupledTempDisp:
+    return "COUPLED TEMPERATURE-DISPLACEMENT";
   }
   return "?";
 }
@@ -19,10 +22,17 @@ SourceLocation Model::element_location(ElemId e) const {
   SourceLocation loc;
   if (e < 0 || e >= mesh.n_elements()) return loc;
   const SourceRef ref = mesh.elem_src[e];
-  if (ref.file >= 0 && ref.file < static_cast<int>(source_files.size())) loc.file = source_files[ref.file];
+  if (ref.file >= 0 && ref.file < static_cast<int>(source_files.size()))
+    loc.file = source_files[ref.file];
   loc.line = ref.line;
   loc.keyword = "*ELEMENT";
   return loc;
+}
+
+std::string EntityLabel::str() const {
+  const int i = instance();
+  if (i == 0 || !instances || i > static_cast<int>(instances->size())) return std::to_string(key);
+  return (*instances)[static_cast<std::size_t>(i - 1)] + "." + std::to_string(local());
 }
 
 double Model::model_size() const {

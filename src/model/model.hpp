@@ -8,6 +8,7 @@
 #include "model/section.hpp"
 #include "model/step.hpp"
 
+#include <fmt/format.h>
 #include <map>
 #include <optional>
 #include <string>
@@ -31,6 +32,17 @@ struct PhysicalConstants {
   std::optional<double> absolute_zero;
   std::optional<double> stefan_boltzmann;
   SourceLocation loc;
+};
+
+/// A node or element label as the deck names it: the number of a flat deck (or of an
+/// assembly-level node), or `INSTANCE.number` for one of a part instance. Formats with fmt like a
+/// string (widths apply), so messages and tables name entities the way Abaqus does.
+struct EntityLabel {
+  Label key = 0;
+  const std::vector<std::string>* instances = nullptr; ///< Model::instances
+  Label local() const { return key_local(key); }
+  int instance() const { return key_instance(key); }
+  std::string str() const;
 };
 
 struct Model {
@@ -64,10 +76,23 @@ struct Model {
 
   /// Deck location of an element's definition line.
   SourceLocation element_location(ElemId e) const;
-  Label node_label(NodeId n) const { return mesh.node_labels[n]; }
-  Label element_label(ElemId e) const { return mesh.elem_labels[e]; }
+  /// Part instances of an assembly deck (upper-case names); key_instance(k) = index + 1.
+  std::vector<std::string> instances;
+
+  EntityLabel node_label(NodeId n) const { return {mesh.node_labels[n], &instances}; }
+  EntityLabel element_label(ElemId e) const { return {mesh.elem_labels[e], &instances}; }
+  EntityLabel label_of_key(Label key) const { return {key, &instances}; }
   /// Characteristic model size: the diagonal of the bounding box of all nodes (>0).
   double model_size() const;
 };
 
 } // namespace gapfem
+
+template <>
+struct fmt::formatter<gapfem::EntityLabel> : fmt::formatter<std::string_view> {
+  template <typename Ctx>
+  auto format(const gapfem::EntityLabel& l, Ctx& ctx) const {
+    const std::string s = l.str();
+    return fmt::formatter<std::string_view>::format(std::string_view(s), ctx);
+  }
+};

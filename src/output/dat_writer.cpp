@@ -321,12 +321,12 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
   std::size_t rows = 0;
   for (NodeId n : nodes) {
     if (static_cast<std::size_t>(n) >= n_avail || !carries(r, n, cols.carrier)) continue;
-    const Label label = model.node_label(n);
+    const EntityLabel label = model.node_label(n);
     fmt::format_to(out, "{:>11}    ", label);
     for (int c = 0; c < cols.n; ++c) {
       const double v = cols.vec ? (*cols.vec)[n][cols.comp[c]] : (*cols.scalar)[n];
       append_e12(buf, v);
-      track(c, v, label, _max, _min, _total, _max_at, _min_at);
+      track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
     }
     buf.push_back('\n');
     ++rows;
@@ -341,11 +341,11 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
     fmt::format_to(out, "\n MAXIMUM       ");
     for (int c = 0; c < cols.n; ++c) append_e12(buf, _max[c]);
     fmt::format_to(out, "\n AT NODE       ");
-    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", _max_at[c]);
+    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", model.label_of_key(_max_at[c]));
     fmt::format_to(out, "\n\n MINIMUM       ");
     for (int c = 0; c < cols.n; ++c) append_e12(buf, _min[c]);
     fmt::format_to(out, "\n AT NODE       ");
-    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", _min_at[c]);
+    for (int c = 0; c < cols.n; ++c) fmt::format_to(out, "{:>12}", model.label_of_key(_min_at[c]));
     buf.push_back('\n');
   }
   if (request.totals) {
@@ -409,7 +409,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     const ElementResult* res = frame.element(e);
     const OutputBlock* block = res ? res->data.find(var) : nullptr;
     if (!block) continue;
-    const Label label = model.element_label(e);
+    const EntityLabel label = model.element_label(e);
     const std::size_t ncols = std::min(nc, block->names.size());
     if (ncols == 0) continue;
     if (at_points) {
@@ -420,7 +420,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
         for (std::size_t c = 0; c < ncols; ++c) {
           const double v = block->values[p * bn + c];
           append_e12(buf, v);
-          track(c, v, label, _max, _min, _total, _max_at, _min_at);
+          track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
         }
         buf.push_back('\n');
       }
@@ -429,7 +429,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
       fmt::format_to(out, "{:>12}           ", label);
       for (std::size_t c = 0; c < ncols; ++c) {
         append_e12(buf, _avg[c]);
-        track(c, _avg[c], label, _max, _min, _total, _max_at, _min_at);
+        track(c, _avg[c], label.key, _max, _min, _total, _max_at, _min_at);
       }
       buf.push_back('\n');
     }
@@ -439,11 +439,13 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     fmt::format_to(out, "\n MAXIMUM               ");
     for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _max[c]);
     fmt::format_to(out, "\n ELEMENT               ");
-    for (std::size_t c = 0; c < nc; ++c) fmt::format_to(out, "{:>12}", _max_at[c]);
+    for (std::size_t c = 0; c < nc; ++c)
+      fmt::format_to(out, "{:>12}", model.label_of_key(_max_at[c]));
     fmt::format_to(out, "\n\n MINIMUM               ");
     for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _min[c]);
     fmt::format_to(out, "\n ELEMENT               ");
-    for (std::size_t c = 0; c < nc; ++c) fmt::format_to(out, "{:>12}", _min_at[c]);
+    for (std::size_t c = 0; c < nc; ++c)
+      fmt::format_to(out, "{:>12}", model.label_of_key(_min_at[c]));
     buf.push_back('\n');
   }
   if (request.totals) {
@@ -485,10 +487,11 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     fmt::format_to(out, " MAXIMUM PENETRATION OF A CLOSED GAP  ");
     append_e12(buf, c.max_penetration);
     if (c.max_penetration_elem != 0)
-      fmt::format_to(out, "   AT ELEMENT {}", c.max_penetration_elem);
+      fmt::format_to(out, "   AT ELEMENT {}", model.label_of_key(c.max_penetration_elem));
     fmt::format_to(out, "\n MAXIMUM TENSILE FORCE IN A CLOSED GAP");
     append_e12(buf, c.max_tensile_force);
-    if (c.max_tensile_elem != 0) fmt::format_to(out, "   AT ELEMENT {}", c.max_tensile_elem);
+    if (c.max_tensile_elem != 0)
+      fmt::format_to(out, "   AT ELEMENT {}", model.label_of_key(c.max_tensile_elem));
     fmt::format_to(out, "\n\n");
   }
   if (mechanical) {

@@ -60,11 +60,15 @@ bool nonzero(const Vec3& v) {
   return v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0;
 }
 
-void label_or_null(fmt::memory_buffer& b, Label l) {
+/// An element key as JSON: null for none, the number of a flat deck, the string "INSTANCE.n" of a
+/// part instance.
+void label_or_null(fmt::memory_buffer& b, const Model& model, Label l) {
   if (l == 0)
     b.append(std::string_view("null"));
-  else
+  else if (key_instance(l) == 0)
     fmt::format_to(fmt::appender(b), "{}", l);
+  else
+    append_json_string(b, model.label_of_key(l).str());
 }
 
 } // namespace
@@ -73,6 +77,7 @@ JsonWriter::JsonWriter(std::filesystem::path path, std::string job)
     : _path(std::move(path)), _job(std::move(job)) {}
 
 void JsonWriter::begin(const Model& model) {
+  _model = &model;
   _out.open(_path);
   auto& b = _out.buffer();
   b.append(std::string_view("{\"schema\":\"gapfem.results/1\",\"job\":"));
@@ -305,11 +310,11 @@ void JsonWriter::close_step(const StepSummary* s) {
   b.append(std::string_view(",\"max_penetration\":{\"value\":"));
   append_json_number(b, c.max_penetration);
   b.append(std::string_view(",\"element\":"));
-  label_or_null(b, c.max_penetration_elem);
+  label_or_null(b, *_model, c.max_penetration_elem);
   b.append(std::string_view("},\"max_tensile_force\":{\"value\":"));
   append_json_number(b, c.max_tensile_force);
   b.append(std::string_view(",\"element\":"));
-  label_or_null(b, c.max_tensile_elem);
+  label_or_null(b, *_model, c.max_tensile_elem);
   b.append(std::string_view("},\"equilibrium\":{\"reaction_sum\":"));
   append_json_array(b, c.reaction_sum);
   b.append(std::string_view(",\"applied_sum\":"));

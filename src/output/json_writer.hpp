@@ -33,6 +33,7 @@ class JsonWriter : public ResultWriter {
 
   std::filesystem::path _path;
   std::string _job;
+  const Model* _model = nullptr; ///< the model of begin() (names of instance entities)
   output::OutputFile _out;
   bool _step_open = false;
   bool _first_step = true;

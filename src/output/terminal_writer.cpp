@@ -38,10 +38,12 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
     log::info("  gaps: {} open, {} closed, {} stick, {} slip; max penetration "
               "{:.4g}{}",
               c.n_open, c.n_closed, c.n_stick, c.n_slip, c.max_penetration,
-              c.max_penetration_elem ? fmt::format(" (element {})", c.max_penetration_elem) : "");
+              c.max_penetration_elem
+                  ? fmt::format(" (element {})", model.label_of_key(c.max_penetration_elem))
+                  : "");
     if (c.max_tensile_force > 0)
       log::info("  max tensile force in a closed gap {:.4g} (element {})", c.max_tensile_force,
-                c.max_tensile_elem);
+                model.label_of_key(c.max_tensile_elem));
   }
   const bool mechanical = step_index < 0 || step_index >= static_cast<int>(model.steps.size()) ||
                           model.steps[step_index].procedure != Procedure::HeatTransfer;

@@ -471,7 +471,7 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
       if (!rec.gap) continue;
       const GapRecord& g = *rec.gap;
       ++c.n_gaps;
-      const Label label = model.element_label(b.elements[i]);
+      const Label label = model.element_label(b.elements[i]).key;
       switch (g.status) {
       case ContactStatus::Open:
         ++c.n_open;

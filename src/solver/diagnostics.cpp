@@ -12,10 +12,12 @@
 namespace gapfem {
 namespace {
 
-std::string list_labels(const std::vector<Label>& labels, std::size_t max_count = 12) {
+/// Node or element keys, sorted by the caller, as the deck names them.
+std::string list_labels(const Model& model, const std::vector<Label>& labels,
+                        std::size_t max_count = 12) {
   std::string out;
   for (std::size_t i = 0; i < labels.size() && i < max_count; ++i)
-    out += (i ? ", " : "") + std::to_string(labels[i]);
+    out += (i ? ", " : "") + model.label_of_key(labels[i]).str();
   if (labels.size() > max_count) out += fmt::format(", … ({} in all)", labels.size());
   return out;
 }
@@ -63,7 +65,7 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
   while (!queue.empty()) {
     const NodeId n = queue.front();
     queue.pop_front();
-    body.push_back(model.node_label(n));
+    body.push_back(model.node_label(n).key);
     for (ElemId e : node_elems[n]) {
       if (is_open_gap(e)) {
         open_gaps.insert(e);
@@ -79,14 +81,14 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
   std::sort(body.begin(), body.end());
   if (!open_gaps.empty()) {
     std::vector<Label> gaps;
-    for (ElemId e : open_gaps) gaps.push_back(model.element_label(e));
+    for (ElemId e : open_gaps) gaps.push_back(model.element_label(e).key);
     std::sort(gaps.begin(), gaps.end());
     return fmt::format(
         "the system is singular at {}: the body made of nodes {} is held only by open gap "
         "elements {}, so nothing resists its rigid-body motion. Remedies: start at least one of "
         "these gaps closed (d = 0), add a soft spring (SPRING1/SPRING2) from the body to ground, "
         "or add *CONTACT DAMPING after *GAP so the body is held while the gaps close",
-        at, list_labels(body), list_labels(gaps));
+        at, list_labels(model, body), list_labels(model, gaps));
   }
   const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
     return eq >= 0 && eq < eqm.n_eq() && dofs.slot_dof(eqm.eq_slot[eq]) == DofType::NT;
@@ -96,7 +98,7 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "the system is singular at {}: nothing fixes the temperature level of the part made of "
         "nodes {} (in a steady-state step it exchanges no heat with its surroundings). Prescribe "
         "a temperature there (*BOUNDARY, DOF 11) or add a film condition (*FILM, *SFILM)",
-        at, list_labels(body));
+        at, list_labels(model, body));
   if (supported)
     return fmt::format(
         "the stiffness became singular at {} in the course of the increment, although the model "
@@ -105,22 +107,22 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "or an element has been crushed flat. Reduce the load, apply it as a prescribed "
         "displacement (*BOUNDARY) to follow the response past the limit, or refine the mesh "
         "where it is crushed",
-        at, list_labels(body));
+        at, list_labels(model, body));
   return fmt::format(
       "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
       "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "
       "constrain it",
-      at, list_labels(body));
+      at, list_labels(model, body));
 }
 
 std::string describe_chattering(const Model& model, std::span<const ElemId> elements) {
   std::vector<Label> labels;
-  for (ElemId e : elements) labels.push_back(model.element_label(e));
+  for (ElemId e : elements) labels.push_back(model.element_label(e).key);
   std::sort(labels.begin(), labels.end());
   return fmt::format("the contact status of gap element(s) {} keeps switching (open/closed or "
                      "stick/slip) within the increment; a smaller increment, a larger elastic "
                      "slip or *CONTACT DAMPING may let it settle",
-                     list_labels(labels));
+                     list_labels(model, labels));
 }
 
 void AttemptLog::add(int increment, int attempt, std::string kind, std::string text,

@@ -1,7 +1,7 @@
 // make_continuum_kernel: the continuum stress/displacement element family.
 #include "elements/solid/continuum_factory.hpp"
-#include "elements/solid/coupled_continuum.hpp"
 
+#include "elements/solid/coupled_continuum.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -31,7 +31,7 @@ void check_gravity_density(const KernelContext& ctx, const Material& mat) {
         std::sort(sorted.begin(), sorted.end());
       }
       if (!std::binary_search(sorted.begin(), sorted.end(), ld.elem)) continue;
-      const Label label = ctx.model.element_label(ld.elem);
+      const EntityLabel label = ctx.model.element_label(ld.elem);
       throw InputError(
           ld.loc, fmt::format("element {}", label),
           fmt::format("GRAV on element {} needs *DENSITY in material {}", label, mat.name));

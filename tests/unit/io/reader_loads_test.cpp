@@ -19,14 +19,14 @@ std::string with(std::string_view history) {
 std::vector<int> bc_dofs(const Model& m, const Step& s, Label node) {
   std::vector<int> out;
   for (const auto& b : s.boundary)
-    if (m.node_label(b.node) == node) out.push_back(abaqus_number(b.dof));
+    if (m.node_label(b.node).key == node) out.push_back(abaqus_number(b.dof));
   std::sort(out.begin(), out.end());
   return out;
 }
 
 const BoundaryEntry* find_bc(const Model& m, const Step& s, Label node, int dof) {
   for (const auto& b : s.boundary)
-    if (m.node_label(b.node) == node && abaqus_number(b.dof) == dof) return &b;
+    if (m.node_label(b.node).key == node && abaqus_number(b.dof) == dof) return &b;
   return nullptr;
 }
 

@@ -19,13 +19,13 @@ using test::read;
 
 std::vector<Label> labels(const Model& m, const std::vector<NodeId>& nodes) {
   std::vector<Label> out;
-  for (NodeId n : nodes) out.push_back(m.node_label(n));
+  for (NodeId n : nodes) out.push_back(m.node_label(n).key);
   std::sort(out.begin(), out.end());
   return out;
 }
 std::vector<Label> elem_labels(const Model& m, const std::vector<ElemId>& elems) {
   std::vector<Label> out;
-  for (ElemId e : elems) out.push_back(m.element_label(e));
+  for (ElemId e : elems) out.push_back(m.element_label(e).key);
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -161,7 +161,7 @@ TEST(ReaderSyntax, ElementDataContinuedAfterTrailingComma) {
   ASSERT_EQ(m.mesh.n_elements(), 1);
   const auto nodes = m.mesh.element_nodes(0);
   ASSERT_EQ(nodes.size(), 8u);
-  EXPECT_EQ(m.node_label(nodes[7]), 8);
+  EXPECT_EQ(m.node_label(nodes[7]).key, 8);
   EXPECT_EQ(m.mesh.elem_src[0].line, 11); // the element's first line
 }
 
