@@ -13,6 +13,7 @@
 #include "common/types.hpp"
 #include "model/element_types.hpp"
 #include "model/loads.hpp"
+#include "model/mesh.hpp"
 #include "model/output_request.hpp"
 #include "model/section.hpp"
 #include "model/step.hpp"
@@ -34,14 +35,14 @@ struct PhysicalConstants;
 struct StepContext {
   Procedure procedure = Procedure::Static;
   bool nlgeom = false;
-  bool transient = false;    ///< transient heat transfer / coupled step
-  double step_time = 0.0;    ///< step time at the end of the increment being solved
+  bool transient = false; ///< transient heat transfer / coupled step
+  double step_time = 0.0; ///< step time at the end of the increment being solved
   double step_period = 1.0;
-  double total_time = 0.0;   ///< total time at the end of the increment
-  double dt = 0.0;           ///< increment size
+  double total_time = 0.0; ///< total time at the end of the increment
+  double dt = 0.0;         ///< increment size
   ModelSpace space = ModelSpace::ThreeD;
-  double model_size = 1.0;   ///< bounding-box diagonal, for tolerances
-  int step_index = 0;        ///< 0-based index of the current step in Model::steps
+  double model_size = 1.0; ///< bounding-box diagonal, for tolerances
+  int step_index = 0;      ///< 0-based index of the current step in Model::steps
   /// *STEP, UNSYMM=NO: the assembler keeps only the symmetric part of every element tangent (and
   /// the constraint rows as their own columns), so the symmetric solver is used throughout
   bool symmetric_only = false;
@@ -51,21 +52,23 @@ struct StepContext {
 /// Local data of one element.
 struct ElementInput {
   ElemId elem = -1;
-  Label label = 0;
-  LocalIndex block_index = 0;          ///< position of the element in its block
-  std::span<const Vec3> X;             ///< reference coordinates of the element's nodes
-  std::span<const double> u;           ///< trial total values of the local DOFs (node-major)
-  std::span<const double> u_start;     ///< values at the start of the increment (committed)
-  std::span<const double> temperature; ///< predefined nodal temperatures now (stress elements), or empty
-  std::span<const double> temperature_start;   ///< … at the start of the increment
-  std::span<const double> initial_temperature; ///< *INITIAL CONDITIONS temperatures (thermal-strain reference)
+  EntityLabel label;               ///< the element as the deck names it (for messages)
+  LocalIndex block_index = 0;      ///< position of the element in its block
+  std::span<const Vec3> X;         ///< reference coordinates of the element's nodes
+  std::span<const double> u;       ///< trial total values of the local DOFs (node-major)
+  std::span<const double> u_start; ///< values at the start of the increment (committed)
+  std::span<const double>
+      temperature; ///< predefined nodal temperatures now (stress elements), or empty
+  std::span<const double> temperature_start; ///< … at the start of the increment
+  std::span<const double>
+      initial_temperature; ///< *INITIAL CONDITIONS temperatures (thermal-strain reference)
   std::span<const double> state_start; ///< committed history (n_state)
   std::span<double> state;             ///< trial history, written by evaluate()
   std::span<double> multipliers;       ///< trial Lagrange multipliers (n_multipliers)
   /// per local DOF: 1 when it is an unknown of the step, 0 when prescribed (empty: all free).
   /// Constraint rows acting only on prescribed DOFs cannot be enforced by the solver.
   std::span<const std::uint8_t> free;
-  double interference = 0.0;           ///< gap elements: allowable interference v(t) now
+  double interference = 0.0; ///< gap elements: allowable interference v(t) now
   /// gap elements: representative stiffness of the elements connected to the gap's nodes
   /// (mean diagonal stiffness of their displacement DOFs), for automatic penalty stiffnesses
   double stiffness_hint = 0.0;
@@ -118,10 +121,10 @@ struct GapRecord {
   std::array<double, 2> shear{};          ///< S12, S13 (force/area)
   std::array<double, 2> friction_force{}; ///< friction forces in t1, t2
   double damping_force = 0.0;
-  double dissipation = 0.0;               ///< accumulated frictional dissipation
+  double dissipation = 0.0; ///< accumulated frictional dissipation
   bool thermal = false;
-  double heat_flux = 0.0;   ///< HFL1: per area, positive from node 1 to node 2
-  double heat_flow = 0.0;   ///< heat_flux * area
+  double heat_flux = 0.0; ///< HFL1: per area, positive from node 1 to node 2
+  double heat_flow = 0.0; ///< heat_flux * area
   double conductance = 0.0;
   double area = 1.0;
 };
@@ -152,7 +155,7 @@ struct ElementRecovery {
 /// The kernel of one element block (one element type with one property). Kernels are immutable
 /// after construction and may be called concurrently for different elements.
 class ElementKernel {
-public:
+ public:
   virtual ~ElementKernel() = default;
   virtual ElementType type() const = 0;
   int n_nodes() const { return element_info(type()).n_nodes; }

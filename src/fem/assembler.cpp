@@ -109,8 +109,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
         for (int k = 0; k < nd; ++k) {
           const double r = out.residual[k];
           if (!std::isfinite(r))
-            throw ConvergenceFailure("a non-finite force appeared in element " +
-                                     std::to_string(in.label));
+            throw ConvergenceFailure("a non-finite force appeared in element " + in.label.str());
           f[slots[k]] += r;
           const int fld = static_cast<int>(dofs.slot_field(slots[k]));
           if (r != 0.0) {

@@ -4,9 +4,8 @@
 #include "fem/element_gather.hpp"
 #include "model/model.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 #include <map>
 #include <tuple>
 
@@ -20,9 +19,10 @@ Discretization::Discretization(const Model& model) : _model(model) {
   _elem_block.assign(static_cast<std::size_t>(ne), -1);
   _elem_index.assign(static_cast<std::size_t>(ne), -1);
   for (ElemId e = 0; e < ne; ++e) {
-    const PropertyRef prop = model.element_property.empty() ? PropertyRef{} : model.element_property[e];
-    const auto key = std::make_tuple(static_cast<int>(mesh.elem_types[e]), static_cast<int>(prop.kind),
-                                     static_cast<int>(prop.index));
+    const PropertyRef prop =
+        model.element_property.empty() ? PropertyRef{} : model.element_property[e];
+    const auto key = std::make_tuple(static_cast<int>(mesh.elem_types[e]),
+                                     static_cast<int>(prop.kind), static_cast<int>(prop.index));
     auto [it, inserted] = block_of.try_emplace(key, static_cast<int>(_blocks.size()));
     if (inserted) {
       _blocks.emplace_back();
@@ -61,7 +61,8 @@ Discretization::Discretization(const Model& model) : _model(model) {
       const auto nodes = mesh.element_nodes(b.elements[i]);
       std::size_t k = 0;
       for (int a = 0; a < b.n_nodes; ++a)
-        for (DofType d : b.kernel->node_dofs(a)) b.slots[i * b.n_dofs + k++] = _dofs.slot(nodes[a], d);
+        for (DofType d : b.kernel->node_dofs(a))
+          b.slots[i * b.n_dofs + k++] = _dofs.slot(nodes[a], d);
     }
     b.state_committed.assign(b.size() * static_cast<std::size_t>(b.n_state), 0.0);
     b.mult_committed.assign(b.size() * static_cast<std::size_t>(b.n_mult), 0.0);
@@ -93,10 +94,10 @@ Discretization::Discretization(const Model& model) : _model(model) {
       ElementInput& in = gather.gather(*this, b, i, fields, &ctx);
       const std::string msg = b.kernel->validate(in);
       if (!msg.empty()) {
-        problems.push_back(InputError(model.element_location(b.elements[i]),
-                                      fmt::format("element {} ({})", in.label, element_info(b.type).name),
-                                      msg)
-                               .what());
+        problems.push_back(
+            InputError(model.element_location(b.elements[i]),
+                       fmt::format("element {} ({})", in.label, element_info(b.type).name), msg)
+                .what());
         if (problems.size() >= 50) break;
         continue;
       }

@@ -23,7 +23,7 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   }
   _in = ElementInput{};
   _in.elem = e;
-  _in.label = model.mesh.elem_labels[e];
+  _in.label = model.element_label(e);
   _in.block_index = static_cast<LocalIndex>(i);
   _in.X = _X;
   _in.u = _u;
@@ -44,10 +44,12 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   if (block.n_state > 0) {
     _in.state_start = {block.state_committed.data() + i * block.n_state,
                        static_cast<std::size_t>(block.n_state)};
-    _in.state = {block.state_trial.data() + i * block.n_state, static_cast<std::size_t>(block.n_state)};
+    _in.state = {block.state_trial.data() + i * block.n_state,
+                 static_cast<std::size_t>(block.n_state)};
   }
   if (block.n_mult > 0)
-    _in.multipliers = {block.mult_trial.data() + i * block.n_mult, static_cast<std::size_t>(block.n_mult)};
+    _in.multipliers = {block.mult_trial.data() + i * block.n_mult,
+                       static_cast<std::size_t>(block.n_mult)};
   if (!block.eqs.empty()) {
     const auto eqs = block.element_eqs(i);
     _free.resize(eqs.size());

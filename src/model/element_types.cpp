@@ -35,8 +35,10 @@ constexpr std::array<ElementTypeInfo, 35> kInfo = {{
     {ElementType::DC1D2, "DC1D2", 2, F::HeatTransfer, S::Any, P::None, false, true},
     {ElementType::DC2D3, "DC2D3", 3, F::HeatTransfer, S::Planar, P::None, false, true},
     {ElementType::DC2D4, "DC2D4", 4, F::HeatTransfer, S::Planar, P::None, false, true},
-    {ElementType::DCAX3, "DCAX3", 3, F::HeatTransfer, S::Axisymmetric, P::Axisymmetric, false, true},
-    {ElementType::DCAX4, "DCAX4", 4, F::HeatTransfer, S::Axisymmetric, P::Axisymmetric, false, true},
+    {ElementType::DCAX3, "DCAX3", 3, F::HeatTransfer, S::Axisymmetric, P::Axisymmetric, false,
+     true},
+    {ElementType::DCAX4, "DCAX4", 4, F::HeatTransfer, S::Axisymmetric, P::Axisymmetric, false,
+     true},
     {ElementType::DC3D4, "DC3D4", 4, F::HeatTransfer, S::ThreeD, P::None, false, true},
     {ElementType::DC3D8, "DC3D8", 8, F::HeatTransfer, S::ThreeD, P::None, false, true},
     {ElementType::DC3D10, "DC3D10", 10, F::HeatTransfer, S::ThreeD, P::None, false, true},
@@ -66,13 +68,18 @@ std::optional<ElementType> element_type_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::span<const ElementTypeInfo> all_element_types() { return kInfo; }
+std::span<const ElementTypeInfo> all_element_types() {
+  return kInfo;
+}
 
 std::string_view model_space_name(ModelSpace s) {
   switch (s) {
-  case ModelSpace::ThreeD: return "three-dimensional";
-  case ModelSpace::Planar: return "two-dimensional (planar)";
-  case ModelSpace::Axisymmetric: return "axisymmetric";
+  case ModelSpace::ThreeD:
+    return "three-dimensional";
+  case ModelSpace::Planar:
+    return "two-dimensional (planar)";
+  case ModelSpace::Axisymmetric:
+    return "axisymmetric";
   }
   return "?";
 }

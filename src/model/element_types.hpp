@@ -11,15 +11,45 @@ namespace gapfem {
 
 enum class ElementType : std::uint8_t {
   // structural
-  SPRING1, SPRING2, SPRINGA, T2D2, T3D2, B31,
+  SPRING1,
+  SPRING2,
+  SPRINGA,
+  T2D2,
+  T3D2,
+  B31,
   // continuum stress/displacement
-  C3D8, C3D4, C3D10, CPS3, CPS4, CPE3, CPE4, CAX3, CAX4,
+  C3D8,
+  C3D4,
+  C3D10,
+  CPS3,
+  CPS4,
+  CPE3,
+  CPE4,
+  CAX3,
+  CAX4,
   // gap contact
-  GAPUNI, GAPCYL, GAPSPHER, GAPUNIT, DGAP,
+  GAPUNI,
+  GAPCYL,
+  GAPSPHER,
+  GAPUNIT,
+  DGAP,
   // heat transfer
-  DC1D2, DC2D3, DC2D4, DCAX3, DCAX4, DC3D4, DC3D8, DC3D10,
+  DC1D2,
+  DC2D3,
+  DC2D4,
+  DCAX3,
+  DCAX4,
+  DC3D4,
+  DC3D8,
+  DC3D10,
   // coupled temperature-displacement
-  T2D2T, T3D2T, CPS4T, CPE4T, CAX4T, C3D4T, C3D8T,
+  T2D2T,
+  T3D2T,
+  CPS4T,
+  CPE4T,
+  CAX4T,
+  C3D4T,
+  C3D8T,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };

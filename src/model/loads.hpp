@@ -14,8 +14,8 @@ struct BoundaryEntry {
   NodeId node = -1;
   DofType dof = DofType::U1;
   double value = 0.0;
-  int amplitude = -1;     ///< index into Model::amplitudes, -1: the step's default variation
-  bool fixed = false;     ///< *BOUNDARY, FIXED: hold the value reached at the start of the step
+  int amplitude = -1;      ///< index into Model::amplitudes, -1: the step's default variation
+  bool fixed = false;      ///< *BOUNDARY, FIXED: hold the value reached at the start of the step
   bool propagated = false; ///< carried over unchanged from the previous step (held constant)
   SourceLocation loc;
 };
@@ -43,8 +43,8 @@ enum class DistLoadKind : std::uint8_t {
 struct DistributedLoad {
   ElemId elem = -1;
   DistLoadKind kind = DistLoadKind::Pressure;
-  int face = 0;                  ///< 1-based face (Pn, Sn, Fn, surface faces), 0: body or whole element
-  double magnitude = 0.0;        ///< pressure, g, body force, flux, film coefficient
+  int face = 0;           ///< 1-based face (Pn, Sn, Fn, surface faces), 0: body or whole element
+  double magnitude = 0.0; ///< pressure, g, body force, flux, film coefficient
   Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
   double sink_temperature = 0.0; ///< Film
   int amplitude = -1;            ///< magnitude amplitude (film: sink temperature amplitude)
@@ -65,9 +65,9 @@ struct NodalTemperature {
 /// *CONTACT INTERFERENCE, TYPE=ELEMENT entry (one gap element).
 struct InterferenceEntry {
   ElemId elem = -1;
-  double allowance = 0.0; ///< v: allowable interference at amplitude 1
-  bool shrink = false;    ///< SHRINK: v = the element's own initial overclosure
-  int amplitude = -1;     ///< -1: ramp from 1 at step start to 0 at step end
+  double allowance = 0.0;  ///< v: allowable interference at amplitude 1
+  bool shrink = false;     ///< SHRINK: v = the element's own initial overclosure
+  int amplitude = -1;      ///< -1: ramp from 1 at step start to 0 at step end
   bool propagated = false; ///< carried over unchanged from the previous step
   SourceLocation loc;
 };

@@ -13,9 +13,10 @@ namespace gapfem {
 struct Material {
   std::string name;
   SourceLocation loc;
-  PropertyTable elastic;       ///< *ELASTIC (ISOTROPIC): values E, nu; key temperature
-  PropertyTable density;       ///< *DENSITY: rho; key temperature
-  PropertyTable expansion;     ///< *EXPANSION (ISO): alpha (secant, from `expansion_zero`); key temperature
+  PropertyTable elastic; ///< *ELASTIC (ISOTROPIC): values E, nu; key temperature
+  PropertyTable density; ///< *DENSITY: rho; key temperature
+  PropertyTable
+      expansion; ///< *EXPANSION (ISO): alpha (secant, from `expansion_zero`); key temperature
   double expansion_zero = 0.0; ///< *EXPANSION, ZERO= reference temperature of the secant alpha
   PropertyTable conductivity;  ///< *CONDUCTIVITY (ISO): k; key temperature
   PropertyTable specific_heat; ///< *SPECIFIC HEAT: c; key temperature

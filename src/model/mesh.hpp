@@ -6,6 +6,7 @@
 #include "common/types.hpp"
 #include "model/element_types.hpp"
 
+#include <fmt/format.h>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -27,6 +28,17 @@ constexpr int key_instance(Label key) {
 constexpr Label key_local(Label key) {
   return key & kLocalLabelMask;
 }
+
+/// A node or element label as the deck names it: the number of a flat deck (or of an
+/// assembly-level node), or `INSTANCE.number` for one of a part instance. Formats with fmt like a
+/// string (widths apply), so messages and tables name entities the way Abaqus does.
+struct EntityLabel {
+  Label key = 0;
+  const std::vector<std::string>* instances = nullptr; ///< Model::instances
+  Label local() const { return key_local(key); }
+  int instance() const { return key_instance(key); }
+  std::string str() const;
+};
 
 /// Compact deck location of an entity: index into Model::source_files plus line and keyword id.
 struct SourceRef {
@@ -69,3 +81,12 @@ struct Mesh {
 };
 
 } // namespace gapfem
+
+template <>
+struct fmt::formatter<gapfem::EntityLabel> : fmt::formatter<std::string_view> {
+  template <typename Ctx>
+  auto format(const gapfem::EntityLabel& l, Ctx& ctx) const {
+    const std::string s = l.str();
+    return fmt::formatter<std::string_view>::format(std::string_view(s), ctx);
+  }
+};

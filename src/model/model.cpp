@@ -31,7 +31,7 @@ SourceLocation Model::element_location(ElemId e) const {
 
 std::string EntityLabel::str() const {
   const int i = instance();
-  if (i == 0 || !instances || i > static_cast<int>(instances->size())) return std::to_string(key);
+  if (i <= 0 || !instances || i > static_cast<int>(instances->size())) return std::to_string(key);
   return (*instances)[static_cast<std::size_t>(i - 1)] + "." + std::to_string(local());
 }
 

@@ -34,17 +34,6 @@ struct PhysicalConstants {
   SourceLocation loc;
 };
 
-/// A node or element label as the deck names it: the number of a flat deck (or of an
-/// assembly-level node), or `INSTANCE.number` for one of a part instance. Formats with fmt like a
-/// string (widths apply), so messages and tables name entities the way Abaqus does.
-struct EntityLabel {
-  Label key = 0;
-  const std::vector<std::string>* instances = nullptr; ///< Model::instances
-  Label local() const { return key_local(key); }
-  int instance() const { return key_instance(key); }
-  std::string str() const;
-};
-
 struct Model {
   std::string heading;
   std::string job_name;
@@ -87,12 +76,3 @@ struct Model {
 };
 
 } // namespace gapfem
-
-template <>
-struct fmt::formatter<gapfem::EntityLabel> : fmt::formatter<std::string_view> {
-  template <typename Ctx>
-  auto format(const gapfem::EntityLabel& l, Ctx& ctx) const {
-    const std::string s = l.str();
-    return fmt::formatter<std::string_view>::format(std::string_view(s), ctx);
-  }
-};

@@ -6,12 +6,21 @@
 namespace gapfem {
 namespace {
 constexpr std::array<std::pair<std::string_view, NodeVar>, 9> kNodeVars = {{
-    {"U", NodeVar::U}, {"UR", NodeVar::UR}, {"RF", NodeVar::RF}, {"RM", NodeVar::RM},
-    {"CF", NodeVar::CF}, {"CM", NodeVar::CM}, {"NT", NodeVar::NT}, {"RFL", NodeVar::RFL},
+    {"U", NodeVar::U},
+    {"UR", NodeVar::UR},
+    {"RF", NodeVar::RF},
+    {"RM", NodeVar::RM},
+    {"CF", NodeVar::CF},
+    {"CM", NodeVar::CM},
+    {"NT", NodeVar::NT},
+    {"RFL", NodeVar::RFL},
     {"CFL", NodeVar::CFL},
 }};
 constexpr std::array<std::pair<std::string_view, ElemVar>, 4> kElemVars = {{
-    {"S", ElemVar::S}, {"E", ElemVar::E}, {"SF", ElemVar::SF}, {"HFL", ElemVar::HFL},
+    {"S", ElemVar::S},
+    {"E", ElemVar::E},
+    {"SF", ElemVar::SF},
+    {"HFL", ElemVar::HFL},
 }};
 } // namespace
 

@@ -37,8 +37,8 @@ struct BeamSection {
 /// *SPRING (SPRING1, SPRING2, SPRINGA): linear stiffness, optionally temperature dependent.
 struct SpringSection {
   std::string elset;
-  int dof1 = 0; ///< Abaqus DOF number at node 1 (SPRING1/SPRING2); 0 for SPRINGA
-  int dof2 = 0; ///< Abaqus DOF number at node 2 (SPRING2)
+  int dof1 = 0;            ///< Abaqus DOF number at node 1 (SPRING1/SPRING2); 0 for SPRINGA
+  int dof2 = 0;            ///< Abaqus DOF number at node 2 (SPRING2)
   PropertyTable stiffness; ///< k; key temperature
   SourceLocation loc;
 };
@@ -54,11 +54,12 @@ struct SurfaceBehavior {
   PressureOverclosure law = PressureOverclosure::Hard;
   ContactMethod method = ContactMethod::Direct;
   bool no_separation = false;
-  double c0 = 0.0, p0 = 0.0;         ///< EXPONENTIAL: clearance at zero pressure, pressure at zero clearance
-  double slope = 0.0;                ///< LINEAR: pressure per unit overclosure
+  double c0 = 0.0,
+         p0 = 0.0;    ///< EXPONENTIAL: clearance at zero pressure, pressure at zero clearance
+  double slope = 0.0; ///< LINEAR: pressure per unit overclosure
   std::vector<double> table_p, table_g; ///< TABULAR: pressure vs overclosure, ascending overclosure
-  double penalty_stiffness = 0.0;    ///< PENALTY / AUGMENTED LAGRANGE stiffness; 0 = automatic
-  double max_stiffness = 0.0;        ///< K_max (EXPONENTIAL), 0 = none
+  double penalty_stiffness = 0.0;       ///< PENALTY / AUGMENTED LAGRANGE stiffness; 0 = automatic
+  double max_stiffness = 0.0;           ///< K_max (EXPONENTIAL), 0 = none
   SourceLocation loc;
 };
 
@@ -82,9 +83,9 @@ struct FrictionSpec {
 /// *CONTACT DAMPING after *GAP.
 struct ContactDampingSpec {
   bool given = false;
-  double coefficient = 0.0;    ///< force per unit relative velocity (per area if an area is given)
-  double clearance = 0.0;      ///< c0: damping zero for clearance >= c0, full at contact
-  double fraction = 0.0;       ///< fraction of c0 over which the coefficient stays at full value
+  double coefficient = 0.0; ///< force per unit relative velocity (per area if an area is given)
+  double clearance = 0.0;   ///< c0: damping zero for clearance >= c0, full at contact
+  double fraction = 0.0;    ///< fraction of c0 over which the coefficient stays at full value
   double tangent_fraction = 0.0;
   SourceLocation loc;
 };
@@ -112,7 +113,7 @@ struct GapRadiationSpec {
 /// *GAP HEAT GENERATION after *GAP.
 struct GapHeatGenerationSpec {
   bool given = false;
-  double eta = 1.0;     ///< fraction of dissipated energy converted to heat
+  double eta = 1.0;      ///< fraction of dissipated energy converted to heat
   double fraction = 0.5; ///< f: share of node 1 (the rest to node 2)
   SourceLocation loc;
 };
@@ -125,13 +126,13 @@ struct GapSection {
   bool direction_given = false;  ///< some of fields 2-4 non-zero
   double area = 1.0;
   bool area_given = false;
-  bool ccx_penalty = false;      ///< CalculiX field 6 given: penalty gap of ccx
-  double ccx_stiffness = 1e12;   ///< field 6
-  double ccx_tension = 1e-3;     ///< field 7
+  bool ccx_penalty = false;    ///< CalculiX field 6 given: penalty gap of ccx
+  double ccx_stiffness = 1e12; ///< field 6
+  double ccx_tension = 1e-3;   ///< field 7
   SurfaceBehavior behavior;
   FrictionSpec friction;
   ContactDampingSpec damping;
-  GapConductanceSpec conductance;          ///< clearance-dependent (or the only, PRESSURE) table
+  GapConductanceSpec conductance; ///< clearance-dependent (or the only, PRESSURE) table
   /// a second *GAP CONDUCTANCE, PRESSURE after a clearance-dependent one: used while the gap is
   /// closed, the clearance table while it is open (docs/theory/gap_elements.md)
   GapConductanceSpec conductance_pressure;

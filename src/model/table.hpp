@@ -7,7 +7,8 @@
 namespace gapfem {
 
 /// Rows of n_values property values plus one independent variable (usually temperature), sorted by
-/// that variable. Interpolation is linear, extrapolation constant (Abaqus's rule for material data).
+/// that variable. Interpolation is linear, extrapolation constant (Abaqus's rule for material
+/// data).
 struct PropertyTable {
   int n_values = 0;
   std::vector<double> values; ///< row-major, n_rows × n_values

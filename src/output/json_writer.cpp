@@ -84,8 +84,17 @@ void JsonWriter::begin(const Model& model) {
   append_json_string(b, _job.empty() ? model.job_name : _job);
   b.append(std::string_view(",\"heading\":"));
   append_json_string(b, model.heading);
-  fmt::format_to(fmt::appender(b), ",\"model\":{{\"space\":\"{}\",\"nodes\":{},\"elements\":{}}}",
+  fmt::format_to(fmt::appender(b), ",\"model\":{{\"space\":\"{}\",\"nodes\":{},\"elements\":{}",
                  space_key(model.space), model.mesh.n_nodes(), model.mesh.n_elements());
+  if (!model.instances.empty()) { // part instances: node and element keys are "INSTANCE.label"
+    b.append(std::string_view(",\"instances\":["));
+    for (std::size_t i = 0; i < model.instances.size(); ++i) {
+      if (i) b.push_back(',');
+      append_json_string(b, model.instances[i]);
+    }
+    b.push_back(']');
+  }
+  b.push_back('}');
   b.append(std::string_view(",\"steps\":["));
   _first_step = true;
   _step_open = false;

@@ -85,6 +85,21 @@ void VtuWriter::begin(const Model& model) {
   _offsets.resize(ne);
   _cell_types.resize(ne);
   _type_ids.resize(ne);
+  if (!model.instances.empty()) {
+    _elem_local.resize(ne);
+    _elem_instance.resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+      _elem_local[e] = key_local(mesh.elem_labels[e]);
+      _elem_instance[e] = key_instance(mesh.elem_labels[e]);
+    }
+    const std::size_t nn = mesh.node_labels.size();
+    _node_local.resize(nn);
+    _node_instance.resize(nn);
+    for (std::size_t n = 0; n < nn; ++n) {
+      _node_local[n] = key_local(mesh.node_labels[n]);
+      _node_instance[n] = key_instance(mesh.node_labels[n]);
+    }
+  }
   _has_gaps = false;
   std::vector<bool> present(all_element_types().size(), false);
   for (std::size_t e = 0; e < ne; ++e) {
@@ -180,7 +195,14 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   }
 
   std::vector<Array> cell_arrays;
-  cell_arrays.push_back(make_array("element_label", "Int64", 1, mesh.elem_labels));
+  if (_elem_local.empty()) {
+    cell_arrays.push_back(make_array("element_label", "Int64", 1, mesh.elem_labels));
+  } else { // labels in their parts, and the instance (1-based, in the order of the deck)
+    cell_arrays.push_back(make_array("element_label", "Int64", 1, _elem_local));
+    cell_arrays.push_back(make_array("instance", "Int32", 1, _elem_instance));
+    point_arrays.push_back(make_array("node_label", "Int64", 1, _node_local));
+    point_arrays.push_back(make_array("node_instance", "Int32", 1, _node_instance));
+  }
   cell_arrays.push_back(make_array("element_type", "Int32", 1, _type_ids));
   if (any_S) {
     cell_arrays.push_back(make_array("S", "Float64", 6, _S));

@@ -48,6 +48,10 @@ class VtuWriter : public ResultWriter {
   std::vector<std::int64_t> _offsets;
   std::vector<std::uint8_t> _cell_types;
   std::vector<std::int32_t> _type_ids; ///< ElementType value per cell
+  /// with part instances: the element's label in its part and its instance (1-based; 0 for the
+  /// assembly level), and the same for the nodes
+  std::vector<Label> _elem_local, _node_local;
+  std::vector<std::int32_t> _elem_instance, _node_instance;
   bool _has_gaps = false;
   std::string _type_legend; ///< " 6=C3D8 15=GAPUNI": the element_type ids present in the model
 

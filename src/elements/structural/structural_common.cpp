@@ -31,7 +31,7 @@ bool material_uses_temperature(const Material& material) {
 }
 
 double line_load_intensity(const Material& material, double area, const DistributedLoad& load,
-                           double magnitude, std::optional<double> T, Label label) {
+                           double magnitude, std::optional<double> T, const EntityLabel& label) {
   switch (load.kind) {
   case DistLoadKind::Gravity:
     if (material.density.empty())

@@ -67,7 +67,7 @@ bool material_uses_temperature(const Material& material);
 /// line element of cross-section `area`; multiply by load.direction for the vector. Throws
 /// InputError naming the load and the element when GRAV meets a material without *DENSITY.
 double line_load_intensity(const Material& material, double area, const DistributedLoad& load,
-                           double magnitude, std::optional<double> T, Label label);
+                           double magnitude, std::optional<double> T, const EntityLabel& label);
 
 // ------------------------------------------------------------------ axial two-node kinematics
 

@@ -18,6 +18,19 @@ void handle_elset(BuildState& s, const Keyword& kw);
 void handle_surface(BuildState& s, const Keyword& kw);
 ///@}
 
+/// @name *PART, *ASSEMBLY, *INSTANCE (handlers_assembly.cpp)
+///@{
+/// Inside *PART … *END PART or *INSTANCE … *END INSTANCE: keeps the keyword for the instances'
+/// replay (or reports one that cannot appear there) and returns true; otherwise false.
+bool record_keyword(BuildState& s, Keyword& kw);
+void handle_part(BuildState& s, const Keyword& kw);
+void handle_end_part(BuildState& s, const Keyword& kw);
+void handle_assembly(BuildState& s, const Keyword& kw);
+void handle_end_assembly(BuildState& s, const Keyword& kw);
+void handle_instance(BuildState& s, const Keyword& kw);
+void handle_end_instance(BuildState& s, const Keyword& kw);
+///@}
+
 /// @name Materials, *AMPLITUDE, *INITIAL CONDITIONS, *PHYSICAL CONSTANTS (handlers_material.cpp)
 ///@{
 void handle_material(BuildState& s, const Keyword& kw);

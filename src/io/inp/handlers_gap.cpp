@@ -45,7 +45,7 @@ void no_data(BuildState& s, const Keyword& kw, const char* why) {
 void handle_gap(BuildState& s, const Keyword& kw) {
   s.current_gap = -1;
   GapSection gap;
-  gap.elset = name_param(kw, "ELSET", true);
+  gap.elset = set_param(s, kw, "ELSET", true);
   gap.loc = kw.loc;
   const DataLine* line = single_line(s, kw, "d, n_x, n_y, n_z, A [, k, f]");
   if (!line)
@@ -302,8 +302,9 @@ void handle_gap_conductance(BuildState& s, const Keyword& kw) {
                                  "pressure (PRESSURE)",
                                  pressure ? "pressure" : "clearance", gap.conductance.loc.line));
   if (gap.conductance_pressure.given)
-    throw InputError(kw.loc, "*GAP, ELSET=" + gap.elset,
-                     "this *GAP already has both a clearance- and a pressure-dependent conductance");
+    throw InputError(
+        kw.loc, "*GAP, ELSET=" + gap.elset,
+        "this *GAP already has both a clearance- and a pressure-dependent conductance");
   reject_param(kw, "USER", "tabulate the conductance on data lines");
   if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),

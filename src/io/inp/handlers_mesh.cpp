@@ -34,6 +34,16 @@ Range read_range(const FieldReader& r) {
   return g;
 }
 
+/// A deck with parts defines nodes and elements in parts, instances or the assembly only.
+void check_outside_parts(const BuildState& s, const Keyword& kw, const char* what) {
+  if (s.assembly_seen && s.scope.instance == 0 && !s.in_assembly)
+    throw InputError(kw.loc, "",
+                     fmt::format("this deck uses *PART/*ASSEMBLY, so its {} belong inside a "
+                                 "*PART, an *INSTANCE or the *ASSEMBLY (reference points); move "
+                                 "this keyword there",
+                                 what));
+}
+
 } // namespace
 
 void handle_heading(BuildState& s, const Keyword& kw) {
@@ -51,30 +61,33 @@ void handle_preprint(BuildState&, const Keyword&) {}
 void handle_node(BuildState& s, const Keyword& kw) {
   reject_param(kw, "SYSTEM",
                "give the coordinates in the global rectangular system (SYSTEM=R is the default)");
-  const std::string nset = name_param(kw, "NSET", false);
+  check_outside_parts(s, kw, "nodes");
+  const std::string nset = set_param(s, kw, "NSET", false);
   Mesh& mesh = s.model.mesh;
   std::vector<NodeId> added;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     const long long label = r.integer(0, "node number");
+    const Label key = s.key(label);
     try {
-      if (label <= 0)
-        r.fail(fmt::format("node {}", label), "node numbers must be positive integers");
+      if (label <= 0 || label > kLocalLabelMask)
+        r.fail(fmt::format("node {}", label), "node numbers must be positive integers below 2^40");
       r.at_most(4, "node number, x, y, z");
-      const Vec3 x{r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")};
-      if (const NodeId old = mesh.find_node(label); old >= 0)
-        r.fail(fmt::format("node {}", label),
+      const Vec3 x =
+          s.place({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")});
+      if (const NodeId old = mesh.find_node(key); old >= 0)
+        r.fail(fmt::format("node {}", s.model.label_of_key(key)),
                fmt::format(
                    "this node number is defined twice (first at {}); give each node its own number",
                    where(s, s.node_src[old])));
       const NodeId id = mesh.n_nodes();
-      mesh.node_labels.push_back(label);
+      mesh.node_labels.push_back(key);
       mesh.coords.push_back(x);
-      mesh.node_index.emplace(label, id);
+      mesh.node_index.emplace(key, id);
       s.node_src.push_back(s.ref(line));
       added.push_back(id);
     } catch (const InputError&) {
-      if (mesh.find_node(label) < 0) s.bad_nodes.insert(label);
+      if (mesh.find_node(key) < 0) s.bad_nodes.insert(key);
       throw;
     }
   });
@@ -82,7 +95,8 @@ void handle_node(BuildState& s, const Keyword& kw) {
 }
 
 void handle_element(BuildState& s, const Keyword& kw) {
-  const std::string elset = name_param(kw, "ELSET", false);
+  check_outside_parts(s, kw, "elements");
+  const std::string elset = set_param(s, kw, "ELSET", false);
   std::optional<ElementType> type;
   try {
     const std::string tname = param_value(kw, "TYPE", true);
@@ -99,7 +113,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
     // remember the labels so that later references do not raise follow-up errors
     for (const auto& d : kw.data)
       if (!d.fields.empty())
-        if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(*l);
+        if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
     if (!elset.empty()) s.bad_sets.insert(elset);
     throw;
   }
@@ -126,51 +140,62 @@ void handle_element(BuildState& s, const Keyword& kw) {
     }
     const FieldReader r = s.reader(kw, *line);
     long long label = 0;
+    Label key = 0;
     try {
       label = r.integer(0, "element number");
-      const std::string ent = fmt::format("element {}", label);
-      if (label <= 0) r.fail(ent, "element numbers must be positive integers");
-      if (const ElemId old = mesh.find_element(label); old >= 0)
+      key = s.key(label);
+      const std::string ent = fmt::format("element {}", s.model.label_of_key(key));
+      if (label <= 0 || label > kLocalLabelMask)
+        r.fail(ent, "element numbers must be positive integers below 2^40");
+      if (const ElemId old = mesh.find_element(key); old >= 0)
         r.fail(ent, fmt::format("this element number is defined twice (first at {}); give each "
                                 "element its own number",
                                 where(s, mesh.elem_src[old])));
-      std::vector<long long> node_labels;
+      // nodes by number (in this part or the assembly) or qualified by an instance
+      // (PART-1-1.12: gap elements between instances are written so by Abaqus/CAE)
+      std::vector<Label> node_keys;
       for (std::size_t f = 1; f < line->fields.size(); ++f) {
         if (line->fields[f].empty()) continue;
-        node_labels.push_back(r.integer(f, "node number"));
+        const EntityRef ref = parse_reference(s, r, f);
+        if (!ref.key)
+          r.fail(fmt::format("field {}", f + 1),
+                 fmt::format("'{}' is not a node number; list the element's nodes by number",
+                             r.text(f)));
+        node_keys.push_back(*ref.key);
       }
-      if (static_cast<int>(node_labels.size()) != info.n_nodes)
+      if (static_cast<int>(node_keys.size()) != info.n_nodes)
         r.fail(ent,
                fmt::format("{} needs {} nodes but {} are given; list exactly {} node numbers after "
                            "the element number (continue on the next line after a trailing comma)",
-                           info.name, info.n_nodes, node_labels.size(), info.n_nodes));
+                           info.name, info.n_nodes, node_keys.size(), info.n_nodes));
       std::vector<NodeId> nodes;
       bool skip = false;
-      for (long long nl : node_labels) {
-        const NodeId n = mesh.find_node(nl);
+      for (Label nk : node_keys) {
+        const NodeId n = mesh.find_node(nk);
         if (n < 0) {
-          if (s.bad_nodes.count(nl)) {
+          if (s.bad_nodes.count(nk)) {
             skip = true;
             continue;
           }
-          r.fail(ent, fmt::format("node {} is not defined; define it with *NODE before use", nl));
+          r.fail(ent, fmt::format("node {} is not defined; define it with *NODE before use",
+                                  s.model.label_of_key(nk)));
         }
         nodes.push_back(n);
       }
       if (skip) {
-        s.bad_elements.insert(label);
+        s.bad_elements.insert(key);
         continue;
       }
       const ElemId id = mesh.n_elements();
-      mesh.elem_labels.push_back(label);
+      mesh.elem_labels.push_back(key);
       mesh.elem_types.push_back(*type);
       mesh.conn.insert(mesh.conn.end(), nodes.begin(), nodes.end());
       mesh.conn_offset.push_back(static_cast<std::int64_t>(mesh.conn.size()));
       mesh.elem_src.push_back(first_line);
-      mesh.elem_index.emplace(label, id);
+      mesh.elem_index.emplace(key, id);
       added.push_back(id);
     } catch (const InputError& e) {
-      if (label > 0 && mesh.find_element(label) < 0) s.bad_elements.insert(label);
+      if (label > 0 && mesh.find_element(key) < 0) s.bad_elements.insert(key);
       s.diag.error(e);
     }
   }
@@ -181,16 +206,35 @@ void handle_element(BuildState& s, const Keyword& kw) {
 /// ranges.
 template <bool Nodes>
 static void handle_set(BuildState& s, const Keyword& kw) {
-  const std::string name = name_param(kw, Nodes ? "NSET" : "ELSET", true);
+  const std::string name = set_param(s, kw, Nodes ? "NSET" : "ELSET", true);
   const bool generate = kw.has("GENERATE");
+  // INSTANCE= (assembly level): the members are numbers and sets of that instance
+  const BuildState::Scope outer = s.scope;
+  if (kw.has("INSTANCE")) {
+    const std::string inst = name_param(kw, "INSTANCE", true);
+    const auto it = s.instance_index.find(inst);
+    if (it == s.instance_index.end())
+      throw InputError(kw.loc, fmt::format("INSTANCE={}", inst),
+                       fmt::format("instance {} is not defined; define it with *INSTANCE, NAME={} "
+                                   "inside *ASSEMBLY before this set",
+                                   inst, inst));
+    s.scope = BuildState::Scope{};
+    s.scope.instance = it->second;
+    s.scope.prefix = inst + ".";
+  }
+  struct Restore {
+    BuildState& s;
+    BuildState::Scope outer;
+    ~Restore() { s.scope = outer; }
+  } restore{s, outer};
   std::vector<std::int32_t> members;
   long long missing = 0, first_missing = 0;
   const char* what = Nodes ? "node" : "element";
   auto find = [&](long long label) {
-    return Nodes ? s.model.mesh.find_node(label) : s.model.mesh.find_element(label);
+    return Nodes ? s.model.mesh.find_node(s.key(label)) : s.model.mesh.find_element(s.key(label));
   };
   auto bad = [&](long long label) {
-    return Nodes ? s.bad_nodes.count(label) > 0 : s.bad_elements.count(label) > 0;
+    return Nodes ? s.bad_nodes.count(s.key(label)) > 0 : s.bad_elements.count(s.key(label)) > 0;
   };
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
@@ -234,7 +278,7 @@ void handle_surface(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "TYPE=NODE",
                      "node-based surfaces are not supported by gapfem; connect nodes with gap "
                      "elements, or define an element-based surface (TYPE=ELEMENT)");
-  const std::string name = name_param(kw, "NAME", true);
+  const std::string name = set_param(s, kw, "NAME", true);
   Surface& surf = s.model.surfaces[name];
   if (surf.name.empty()) {
     surf.name = name;

@@ -73,7 +73,7 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
   req.summary = yes_no_param(kw, "SUMMARY", true);
   yes_no_param(kw, "GLOBAL",
                false); // accepted: all output is in global directions
-  req.nset = name_param(kw, "NSET", false);
+  req.nset = set_param(s, kw, "NSET", false);
   if (req.nset.empty()) {
     req.nodes.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()));
     for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) req.nodes[n] = n;
@@ -107,7 +107,7 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
                      "nodal averaging of element output is not supported in the .dat file; use "
                      "INTEGRATION POINTS or CENTROIDAL");
   req.position = pos == 0 ? ElPosition::IntegrationPoints : ElPosition::Centroidal;
-  req.elset = name_param(kw, "ELSET", false);
+  req.elset = set_param(s, kw, "ELSET", false);
   if (req.elset.empty()) {
     req.elements.resize(static_cast<std::size_t>(s.model.mesh.n_elements()));
     for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) req.elements[e] = e;

@@ -30,7 +30,7 @@ void handle_solid_section(BuildState& s, const Keyword& kw) {
   reject_param(kw, "ORIENTATION",
                "gapfem materials are isotropic, so no orientation is needed; remove the parameter");
   SolidSection sec;
-  sec.elset = name_param(kw, "ELSET", true);
+  sec.elset = set_param(s, kw, "ELSET", true);
   const std::string material = name_param(kw, "MATERIAL", true);
   sec.loc = kw.loc;
   const auto lines = lines_of(kw);
@@ -51,7 +51,7 @@ void handle_solid_section(BuildState& s, const Keyword& kw) {
 
 void handle_beam_section(BuildState& s, const Keyword& kw) {
   BeamSection sec;
-  sec.elset = name_param(kw, "ELSET", true);
+  sec.elset = set_param(s, kw, "ELSET", true);
   const std::string material = name_param(kw, "MATERIAL", true);
   const int shape = enum_param(kw, "SECTION", {"RECT", "CIRC", "PIPE"}, -1);
   if (shape < 0) param_value(kw, "SECTION", true); // throws "SECTION= is required"
@@ -102,7 +102,7 @@ void handle_spring(BuildState& s, const Keyword& kw) {
   reject_param(kw, "NONLINEAR", "give a linear stiffness (optionally temperature dependent)");
   reject_param(kw, "ORIENTATION", "springs act in the global DOF directions");
   SpringSection sec;
-  sec.elset = name_param(kw, "ELSET", true);
+  sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
   if (kw.data.empty())
     throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),

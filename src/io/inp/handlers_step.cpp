@@ -182,7 +182,7 @@ void handle_coupled(BuildState& s, const Keyword& kw) {
 void handle_change_friction(BuildState& s, const Keyword& kw) {
   s.current_change = -1;
   reject_param(kw, "INTERACTION", "gapfem has element-based (gap) contact only; use ELSET=");
-  const std::string elset = name_param(kw, "ELSET", true);
+  const std::string elset = set_param(s, kw, "ELSET", true);
   const auto* set = find_elset(s, elset);
   if (!set)
     throw InputError(kw.loc, fmt::format("ELSET={}", elset),

@@ -5,25 +5,74 @@
 
 namespace gapfem::inp {
 
+// ---------------------------------------------------------------- scope
+
+Vec3 BuildState::place(const Vec3& x) const {
+  if (!scope.placed) return x;
+  // translation first, then the rotation about the axis through axis_point (Abaqus *INSTANCE)
+  Vec3 y{x[0] + scope.translation[0] - scope.axis_point[0],
+         x[1] + scope.translation[1] - scope.axis_point[1],
+         x[2] + scope.translation[2] - scope.axis_point[2]};
+  const auto& R = scope.rotation;
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i)
+    out[i] = scope.axis_point[i] + R[3 * i] * y[0] + R[3 * i + 1] * y[1] + R[3 * i + 2] * y[2];
+  return out;
+}
+
 // ---------------------------------------------------------------- references
+
+EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field) {
+  const std::string t = std::string(trim(r.text(field)));
+  EntityRef ref;
+  const auto dot = t.find('.');
+  if (dot == std::string::npos) {
+    if (const auto label = parse_integer(t))
+      ref.key = s.key(*label);
+    else
+      ref.set = s.set_name(to_upper(t));
+    return ref;
+  }
+  // qualified by an instance: INSTANCE.label or INSTANCE.SET
+  const std::string inst = to_upper(trim(std::string_view(t).substr(0, dot)));
+  const std::string rest = std::string(trim(std::string_view(t).substr(dot + 1)));
+  const auto it = s.instance_index.find(inst);
+  if (it == s.instance_index.end())
+    r.fail(fmt::format("'{}'", t),
+           s.instance_index.empty()
+               ? fmt::format("'{}' is not a number or set name of this deck, and the deck defines "
+                             "no part instances (*INSTANCE) that it could qualify",
+                             t)
+               : fmt::format("instance {} is not defined; define it with *INSTANCE, NAME={} inside "
+                             "*ASSEMBLY before it is used, or check the spelling",
+                             inst, inst));
+  if (const auto label = parse_integer(rest))
+    ref.key = make_key(it->second, *label);
+  else
+    ref.set = inst + "." + to_upper(rest);
+  return ref;
+}
 
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field) {
   const std::string& t = r.text(field);
   if (t.empty())
     r.fail(fmt::format("field {}", field + 1), "a node number or node set name is required here");
-  if (const auto label = parse_integer(t)) {
-    const NodeId n = s.model.mesh.find_node(*label);
+  const EntityRef ref = parse_reference(s, r, field);
+  if (ref.key) {
+    const NodeId n = s.model.mesh.find_node(*ref.key);
     if (n >= 0) return {n};
-    if (s.bad_nodes.count(*label)) return {};
-    r.fail(fmt::format("node {}", *label),
-           "this node is not defined; define it with *NODE before use");
+    if (s.bad_nodes.count(*ref.key)) return {};
+    r.fail(fmt::format("node {}", s.model.label_of_key(*ref.key)),
+           key_instance(*ref.key) > 0
+               ? "this node is not defined in its part; check the number"
+               : "this node is not defined; define it with *NODE before use");
   }
-  const std::string name = to_upper(t);
-  const auto it = s.model.nsets.find(name);
+  const auto it = s.model.nsets.find(ref.set);
   if (it != s.model.nsets.end()) return it->second;
-  if (s.bad_sets.count(name)) return {};
-  r.fail(fmt::format("node set {}", name), "this node set is not defined; define it with *NSET (or "
-                                           "NSET= on *NODE) before use, or check the spelling");
+  if (s.bad_sets.count(ref.set)) return {};
+  r.fail(fmt::format("node set {}", ref.set),
+         "this node set is not defined; define it with *NSET (or "
+         "NSET= on *NODE) before use, or check the spelling");
 }
 
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field) {
@@ -31,17 +80,19 @@ std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::s
   if (t.empty())
     r.fail(fmt::format("field {}", field + 1),
            "an element number or element set name is required here");
-  if (const auto label = parse_integer(t)) {
-    const ElemId e = s.model.mesh.find_element(*label);
+  const EntityRef ref = parse_reference(s, r, field);
+  if (ref.key) {
+    const ElemId e = s.model.mesh.find_element(*ref.key);
     if (e >= 0) return {e};
-    if (s.bad_elements.count(*label)) return {};
-    r.fail(fmt::format("element {}", *label),
-           "this element is not defined; define it with *ELEMENT before use");
+    if (s.bad_elements.count(*ref.key)) return {};
+    r.fail(fmt::format("element {}", s.model.label_of_key(*ref.key)),
+           key_instance(*ref.key) > 0
+               ? "this element is not defined in its part; check the number"
+               : "this element is not defined; define it with *ELEMENT before use");
   }
-  const std::string name = to_upper(t);
-  if (const auto* set = find_elset(s, name)) return *set;
-  if (s.bad_sets.count(name)) return {};
-  r.fail(fmt::format("element set {}", name),
+  if (const auto* set = find_elset(s, ref.set)) return *set;
+  if (s.bad_sets.count(ref.set)) return {};
+  r.fail(fmt::format("element set {}", ref.set),
          "this element set is not defined; define it with *ELSET (or ELSET= on *ELEMENT) before "
          "use, or check the spelling");
 }
@@ -83,6 +134,14 @@ std::string param_value(const Keyword& kw, std::string_view param, bool required
 
 std::string name_param(const Keyword& kw, std::string_view param, bool required) {
   return to_upper(trim(param_value(kw, param, required)));
+}
+
+std::string set_param(BuildState& s, const Keyword& kw, std::string_view param, bool required) {
+  const std::string name = name_param(kw, param, required);
+  if (name.empty()) return name;
+  const auto dot = name.find('.');
+  if (dot != std::string::npos && s.instance_index.count(name.substr(0, dot))) return name;
+  return s.set_name(name);
 }
 
 int enum_param(const Keyword& kw, std::string_view param,

@@ -10,8 +10,10 @@
 #include "io/inp/reader.hpp"
 #include "model/model.hpp"
 
+#include <array>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -75,6 +77,49 @@ struct BuildState {
   Step step;
   StepScratch scratch;
 
+  // ---------------------------------------------------------------- parts and instances
+  /// Where the labels and set names of the keywords being read belong: a flat deck or the
+  /// assembly level (instance 0, no prefix), or a part instance (its keys and "INSTANCE." names;
+  /// the part's coordinates are placed by the instance's translation and rotation).
+  struct Scope {
+    int instance = 0;
+    std::string prefix;
+    bool placed = false;
+    Vec3 translation{}, axis_point{};
+    std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1}; ///< row-major
+  };
+  Scope scope;
+  /// A *PART ... *END PART block: its keywords, read again for every instance.
+  struct PartDef {
+    std::string name;
+    SourceLocation loc;
+    std::vector<Keyword*> keywords;
+    bool failed = false; ///< its first instance had input errors (not read again)
+    int instances = 0;
+  };
+  std::map<std::string, PartDef> parts;
+  PartDef* recording = nullptr; ///< inside *PART ... *END PART
+  bool in_assembly = false;     ///< inside *ASSEMBLY ... *END ASSEMBLY
+  bool assembly_seen = false;
+  /// The *INSTANCE being read (up to *END INSTANCE) and its own keywords.
+  struct InstanceDef {
+    bool open = false;
+    bool failed = false; ///< *INSTANCE had an error: the instance is skipped
+    std::string name, part;
+    SourceLocation loc;
+    Scope scope;
+    std::vector<Keyword*> keywords;
+  };
+  InstanceDef instance;
+  std::map<std::string, int> instance_index; ///< upper-case name → 1-based instance index
+
+  /// Key of a node or element label read in the current scope.
+  Label key(long long label) const { return make_key(scope.instance, label); }
+  /// Name of a set defined or referenced (without an instance qualifier) in the current scope.
+  std::string set_name(const std::string& upper) const { return scope.prefix + upper; }
+  /// Reference coordinates of a node read in the current scope (placed by its instance).
+  Vec3 place(const Vec3& x) const;
+
   // ---------------------------------------------------------------- helpers
   /// Location of a data line of `kw`.
   SourceLocation loc(const Keyword& kw, const DataLine& line) const {
@@ -119,6 +164,14 @@ PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<co
                                   std::vector<std::string_view> names, RowCheck check);
 
 // ---------------------------------------------------------------- references
+/// What a node or element reference names: a label key, or a set name (upper case, qualified).
+struct EntityRef {
+  std::optional<Label> key;
+  std::string set;
+};
+/// Reads a reference of the current scope: `12`, `SET-1`, or qualified by an instance,
+/// `PART-1-1.12` or `PART-1-1.SET-1` (the instance must exist). `what` names the field for errors.
+EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field);
 /// Nodes named by a data field: a node label or an NSET name. Throws InputError naming the field
 /// when neither exists. Returns nothing (silently) for labels/sets whose definition already failed.
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
@@ -134,6 +187,10 @@ int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param = "
 std::string param_value(const Keyword& kw, std::string_view param, bool required);
 /// Upper-case name value (set, material and amplitude names): trimmed and upper case.
 std::string name_param(const Keyword& kw, std::string_view param, bool required);
+/// A set name parameter (NSET=, ELSET=, NAME= of a surface) in the current scope: upper case,
+/// qualified by the instance inside a part instance, or as written (`PART-1-1.SET-1`) when the
+/// value already names an instance.
+std::string set_param(BuildState& s, const Keyword& kw, std::string_view param, bool required);
 /// An enumerated parameter: returns the index of the matching choice (compared canonically) or
 /// `def` when the parameter is absent; throws listing the choices when the value is not one.
 int enum_param(const Keyword& kw, std::string_view param,

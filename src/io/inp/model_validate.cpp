@@ -255,6 +255,23 @@ void finish_model_data(BuildState& s) {
   if (s.model_done) return;
   s.model_done = true;
   Model& m = s.model;
+  if (s.recording) {
+    s.error(s.recording->loc, fmt::format("part {}", s.recording->name),
+            "the part has no *END PART; close it before the assembly and the steps");
+    s.recording = nullptr;
+  }
+  if (s.instance.open) {
+    s.error(s.instance.loc, fmt::format("instance {}", s.instance.name),
+            "the instance has no *END INSTANCE; close it before *END ASSEMBLY");
+    s.instance.open = false;
+  }
+  if (s.in_assembly) s.error(SourceLocation{}, "", "the deck has *ASSEMBLY but no *END ASSEMBLY");
+  for (const auto& [name, part] : s.parts) {
+    if (part.instances == 0)
+      s.warn(part.loc, fmt::format("part {} is never instanced (*INSTANCE, PART={}), so it is "
+                                   "not part of the model",
+                                   name, name));
+  }
   try {
     for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
       m.solid_sections[i].material =

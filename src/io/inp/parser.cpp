@@ -20,15 +20,21 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 51> kTable = {{
+constexpr std::array<KeywordSpec, 57> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_preprint, W::Model, "*"},
+  {"*PART", handle_part, W::Model, "NAME"},
+  {"*END PART", handle_end_part, W::Model, ""},
+  {"*ASSEMBLY", handle_assembly, W::Model, "NAME"},
+  {"*END ASSEMBLY", handle_end_assembly, W::Model, ""},
+  {"*INSTANCE", handle_instance, W::Model, "NAME|PART"},
+  {"*END INSTANCE", handle_end_instance, W::Model, ""},
   {"*NODE", handle_node, W::Model, "NSET|INPUT|SYSTEM"},
   {"*ELEMENT", handle_element, W::Model, "TYPE|ELSET|INPUT"},
-  {"*NSET", handle_nset, W::Model, "NSET|GENERATE|INPUT|UNSORTED"},
-  {"*ELSET", handle_elset, W::Model, "ELSET|GENERATE|INPUT|UNSORTED"},
-  {"*SURFACE", handle_surface, W::Model, "NAME|TYPE"},
+  {"*NSET", handle_nset, W::Model, "NSET|GENERATE|INPUT|UNSORTED|INSTANCE|INTERNAL"},
+  {"*ELSET", handle_elset, W::Model, "ELSET|GENERATE|INPUT|UNSORTED|INSTANCE|INTERNAL"},
+  {"*SURFACE", handle_surface, W::Model, "NAME|TYPE|INTERNAL"},
   // materials and properties
   {"*MATERIAL", handle_material, W::Model, "NAME", 0, P::Material},
   {"*ELASTIC", handle_elastic, W::Model, "TYPE|DEPENDENCIES|MODULI", kMaterial},
@@ -126,7 +132,42 @@ void unknown(BuildState& s, const SourceLocation& loc, const std::string& what) 
                    "it with a warning");
 }
 
+void dispatch(BuildState& s, Keyword& kw);
+
+/// *END INSTANCE: reads the part's keywords (and the instance's own) again in the instance's
+/// scope. Errors of a part are reported for its first instance only: a later instance whose part
+/// failed is not read again.
+void expand_instance(BuildState& s) {
+  BuildState::InstanceDef def = std::move(s.instance);
+  s.instance = BuildState::InstanceDef{};
+  if (def.failed) return; // its *INSTANCE line was reported
+  BuildState::PartDef& part = s.parts.at(def.part);
+  const int index = static_cast<int>(s.model.instances.size()) + 1;
+  s.model.instances.push_back(def.name);
+  s.instance_index[def.name] = index;
+  ++part.instances;
+  if (part.failed) return;
+  def.scope.instance = index;
+  const BuildState::Scope outer = s.scope;
+  s.scope = def.scope;
+  s.parent = Parent::None;
+  const std::size_t errors_before = static_cast<std::size_t>(s.diag.n_errors());
+  auto run = [&](Keyword* kw) {
+    try {
+      dispatch(s, *kw);
+    } catch (const InputError& e) {
+      s.diag.error(e);
+    }
+  };
+  for (Keyword* kw : part.keywords) run(kw);
+  part.failed = static_cast<std::size_t>(s.diag.n_errors()) > errors_before;
+  for (Keyword* kw : def.keywords) run(kw);
+  s.scope = outer;
+  s.parent = Parent::None;
+}
+
 void dispatch(BuildState& s, Keyword& kw) {
+  if (record_keyword(s, kw)) return; // inside *PART or *INSTANCE: read per instance
   const KeywordSpec* spec = find_spec(kw.key);
   if (!spec) {
     // unknown keyword: the current block stays open (an ignored *PLASTIC keeps its *MATERIAL)
@@ -166,6 +207,7 @@ void dispatch(BuildState& s, Keyword& kw) {
     if (!accepts(*spec, p.key))
       unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name));
   spec->handler(s, kw);
+  if (spec->handler == handle_end_instance) expand_instance(s);
 }
 
 } // namespace

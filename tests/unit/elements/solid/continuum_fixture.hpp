@@ -143,7 +143,7 @@ struct ElementHarness {
   ElementInput input() {
     ElementInput in;
     in.elem = 0;
-    in.label = 1;
+    in.label = EntityLabel{1};
     in.X = X;
     in.u = u;
     in.u_start = u;

@@ -117,7 +117,7 @@ struct LocalElement {
   }
   ElementInput input() const {
     ElementInput in;
-    in.label = 1;
+    in.label = EntityLabel{1};
     in.X = X;
     in.u = u;
     in.u_start = u;
