@@ -163,4 +163,18 @@ void handle_controls(BuildState& s, const Keyword& kw) {
   }
 }
 
+void handle_restart(BuildState& s, const Keyword& kw) {
+  // Abaqus/CAE writes "*Restart, write, frequency=0" (no restart data) into every step
+  if (kw.has("READ"))
+    throw InputError(kw.loc, "READ",
+                     "gapfem cannot restart from Abaqus restart files; run the analysis from its "
+                     "first step");
+  const auto frequency = int_param(kw, "FREQUENCY");
+  const auto interval = int_param(kw, "NUMBER INTERVAL");
+  if ((frequency && *frequency == 0) || (interval && *interval == 0)) return; // no restart data
+  throw InputError(kw.loc, kw.has("WRITE") ? "WRITE" : "",
+                   "gapfem does not write restart data; use FREQUENCY=0 (as Abaqus/CAE writes "
+                   "when no restart is requested) or remove *RESTART");
+}
+
 } // namespace gapfem::inp

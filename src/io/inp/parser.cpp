@@ -20,7 +20,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 57> kTable = {{
+constexpr std::array<KeywordSpec, 58> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_preprint, W::Model, "*"},
@@ -68,6 +68,7 @@ constexpr std::array<KeywordSpec, 57> kTable = {{
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
   {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
+  {"*RESTART", handle_restart, W::Both, "WRITE|READ|FREQUENCY|NUMBER INTERVAL|OVERLAY|TIME MARKS|STEP|INC|END STEP"},
   {"*CHANGE FRICTION", handle_change_friction, W::History, "ELSET|INTERACTION", 0, P::ChangeFriction},
   // history: loads
   {"*CLOAD", handle_cload, W::History, "OP|AMPLITUDE"},

@@ -207,3 +207,26 @@ TEST(Assembly, BadInstancesAndQualifiedReferencesAreInputErrors) {
   EXPECT_EQ(r.exit_code, kExitInputError);
   EXPECT_NE(r.error.find("*MATERIAL cannot appear inside *PART"), std::string::npos) << r.error;
 }
+
+TEST(Assembly, DeckInTheAbaqusCaeLayoutRuns) {
+  // tests/verification/assembly/cae_layout.inp: two placed instances of a block on eight GAPUNI
+  // supports at assembly level, a surface of internal instance sets, *Restart, write,
+  // frequency=0 and PRESELECT output requests as Abaqus/CAE writes them
+  JobOptions o;
+  o.deck = std::filesystem::path(GAPFEM_TEST_DIR) / "verification/assembly/cae_layout.inp";
+  o.write_files = false;
+  o.quiet = true;
+  const JobResult r = run_job(o);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Model& m = *r.model;
+  // Block-2.1: (0,0,0) + (3,0,0), turned by 90 degrees about the vertical through (3.5, 0.5)
+  const Vec3& x = m.mesh.coords[m.mesh.find_node(make_key(2, 1))];
+  EXPECT_NEAR(x[0], 4.0, 1e-12);
+  EXPECT_NEAR(x[1], 0.0, 1e-12);
+  EXPECT_NEAR(x[2], 0.0, 1e-12);
+  // pressure 10 on each 1 x 1 top: every support carries a quarter
+  const Frame& f = last_frame(r);
+  for (Label g : {101, 102, 103, 104, 201, 202, 203, 204})
+    EXPECT_NEAR(gap(r, f, g).normal_force, 2.5, 1e-9) << g;
+  EXPECT_EQ(m.warnings.size(), 1u) << "only the *OUTPUT, HISTORY remark";
+}
