@@ -352,14 +352,14 @@ TEST(ReaderSyntax, UnknownSetNameIsError) {
 }
 
 TEST(ReaderSyntax, UnknownKeywordIsErrorOrWarning) {
-  const std::string deck = std::string(kTrussModel) + "*RESTART, WRITE\n";
+  const std::string deck = std::string(kTrussModel) + "*FILE FORMAT, ASCII\n";
   const std::string e = error_text(deck);
-  EXPECT_CONTAINS(e, "deck.inp:11: *RESTART: the keyword *RESTART is not supported");
+  EXPECT_CONTAINS(e, "deck.inp:11: *FILE FORMAT: the keyword *FILE FORMAT is not supported");
   EXPECT_CONTAINS(e, "--ignore-unknown");
   const Model m = read(deck, ReadOptions{true});
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_CONTAINS(m.warnings[0], "deck.inp:11");
-  EXPECT_CONTAINS(m.warnings[0], "*RESTART");
+  EXPECT_CONTAINS(m.warnings[0], "*FILE FORMAT");
 }
 
 TEST(ReaderSyntax, UnknownKeywordInsideMaterialKeepsTheMaterialOpen) {
