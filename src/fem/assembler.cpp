@@ -172,6 +172,9 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
       }
     if (gap_block) total.gap_seconds += block_watch.seconds();
   }
+  // Linear constraints: constraint forces and their rows, after the elements' rows.
+  _disc.constraints().assemble(fields.u, f_int, C, _disc.constraint_multiplier_offset(), dofs,
+                               total.flux_sum, total.flux_count);
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;

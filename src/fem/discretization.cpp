@@ -52,7 +52,12 @@ Discretization::Discretization(const Model& model) : _model(model) {
         for (DofType d : k.node_dofs(a)) masks[nodes[a]] |= dof_bit(d);
     }
   }
+  // Constraints bring their DOFs to nodes no element carries them at (reference nodes).
+  for (const LinearConstraint& c : model.constraints)
+    if (c.activates_dofs)
+      for (const ConstraintTerm& t : c.terms) masks[t.node] |= dof_bit(t.dof);
   _dofs = DofMap(std::move(masks));
+  _constraints = ConstraintSet(model, _dofs);
   // Gather lists and storage.
   for (std::size_t bi = 0; bi < _blocks.size(); ++bi) {
     auto& b = _blocks[bi];
@@ -117,6 +122,7 @@ void Discretization::set_equations(const EquationMap& eqmap) {
     b.eqs.resize(b.slots.size());
     for (std::size_t k = 0; k < b.slots.size(); ++k) b.eqs[k] = eqmap.slot_eq[b.slots[k]];
   }
+  _constraints.set_equations(_model, eqmap);
 }
 
 void Discretization::reset_trial() {
@@ -124,6 +130,7 @@ void Discretization::reset_trial() {
     std::copy(b.state_committed.begin(), b.state_committed.end(), b.state_trial.begin());
     std::copy(b.mult_committed.begin(), b.mult_committed.end(), b.mult_trial.begin());
   }
+  _constraints.mult_trial = _constraints.mult_committed;
 }
 
 void Discretization::commit() {
@@ -131,9 +138,14 @@ void Discretization::commit() {
     std::copy(b.state_trial.begin(), b.state_trial.end(), b.state_committed.begin());
     std::copy(b.mult_trial.begin(), b.mult_trial.end(), b.mult_committed.begin());
   }
+  _constraints.mult_committed = _constraints.mult_trial;
 }
 
 double& Discretization::multiplier_trial(std::int64_t index) {
+  if (index >= _n_mult) {
+    FE_CHECK(index - _n_mult < _constraints.n_rows(), "multiplier index out of range");
+    return _constraints.mult_trial[static_cast<std::size_t>(index - _n_mult)];
+  }
   auto it = std::upper_bound(_mult_blocks.begin(), _mult_blocks.end(), index,
                              [](std::int64_t v, const auto& p) { return v < p.second; });
   FE_CHECK(it != _mult_blocks.begin(), "multiplier index out of range");

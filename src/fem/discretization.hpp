@@ -1,9 +1,10 @@
 #pragma once
 /// @file discretization.hpp
 /// The runtime view of a Model: element blocks (one kernel per element type and property), the
-/// DOF map, per-element gather lists, and the model-owned flat history and multiplier storage with a
-/// committed and a trial copy (style.md §3-4). Built once per analysis.
+/// DOF map, per-element gather lists, and the model-owned flat history and multiplier storage with
+/// a committed and a trial copy (style.md §3-4). Built once per analysis.
 #include "elements/element_kernel.hpp"
+#include "fem/constraint_set.hpp"
 #include "fem/dof_map.hpp"
 
 #include <memory>
@@ -20,13 +21,13 @@ struct ElementBlock {
   std::vector<ElemId> elements;
   int n_nodes = 0, n_dofs = 0, n_state = 0, n_mult = 0;
   bool uses_temperature = false;
-  std::vector<LocalIndex> slots;       ///< elements.size() x n_dofs
-  std::vector<LocalIndex> eqs;         ///< per step: slot → equation
-  std::vector<double> state_committed, state_trial;  ///< elements.size() x n_state
-  std::vector<double> mult_committed, mult_trial;    ///< elements.size() x n_mult
-  std::int64_t mult_offset = 0;        ///< first global multiplier index of the block
-  std::vector<double> interference;    ///< per element, current allowance v(t) (gap blocks)
-  std::vector<double> stiffness_hint;  ///< per element (gap blocks), see ElementInput
+  std::vector<LocalIndex> slots;                    ///< elements.size() x n_dofs
+  std::vector<LocalIndex> eqs;                      ///< per step: slot → equation
+  std::vector<double> state_committed, state_trial; ///< elements.size() x n_state
+  std::vector<double> mult_committed, mult_trial;   ///< elements.size() x n_mult
+  std::int64_t mult_offset = 0;                     ///< first global multiplier index of the block
+  std::vector<double> interference;   ///< per element, current allowance v(t) (gap blocks)
+  std::vector<double> stiffness_hint; ///< per element (gap blocks), see ElementInput
 
   std::size_t size() const { return elements.size(); }
   std::span<const LocalIndex> element_slots(std::size_t i) const {
@@ -38,7 +39,7 @@ struct ElementBlock {
 };
 
 class Discretization {
-public:
+ public:
   /// Builds kernels, the DOF map and the storage; validates every element (InputError).
   explicit Discretization(const Model& model);
 
@@ -48,11 +49,16 @@ public:
   const std::vector<ElementBlock>& blocks() const { return _blocks; }
   /// (block, index in block) of an element.
   std::pair<int, LocalIndex> locate(ElemId e) const { return {_elem_block[e], _elem_index[e]}; }
-  std::int64_t n_multipliers() const { return _n_mult; }
+  /// All multipliers: the elements' (block by block), then one per constraint row.
+  std::int64_t n_multipliers() const { return _n_mult + _constraints.n_rows(); }
+  /// Index of the first constraint-row multiplier.
+  std::int64_t constraint_multiplier_offset() const { return _n_mult; }
+  ConstraintSet& constraints() { return _constraints; }
+  const ConstraintSet& constraints() const { return _constraints; }
   bool has_gaps() const { return _has_gaps; }
   bool has_temperature_field() const { return _uses_temperature_field; }
 
-  /// Set per-step equation numbers in every block.
+  /// Set per-step equation numbers in every block and in the constraint rows.
   void set_equations(const EquationMap& eqmap);
   /// Trial := committed (start of an increment attempt).
   void reset_trial();
@@ -61,9 +67,10 @@ public:
   /// Multiplier value by global index (trial).
   double& multiplier_trial(std::int64_t index);
 
-private:
+ private:
   const Model& _model;
   DofMap _dofs;
+  ConstraintSet _constraints;
   std::vector<ElementBlock> _blocks;
   std::vector<int> _elem_block;
   std::vector<LocalIndex> _elem_index;

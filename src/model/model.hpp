@@ -3,6 +3,7 @@
 /// The Model aggregate: mesh, sets, materials, sections, amplitudes and steps. Built once by the
 /// input layer (io/inp/model_builder) and read-only afterwards.
 #include "model/amplitude.hpp"
+#include "model/constraints.hpp"
 #include "model/material.hpp"
 #include "model/mesh.hpp"
 #include "model/section.hpp"
@@ -55,6 +56,8 @@ struct Model {
   std::vector<PropertyRef> element_property; ///< per element
 
   std::vector<Amplitude> amplitudes;
+  /// Linear constraints (*EQUATION, *MPC, couplings, *TIE), one row each.
+  std::vector<LinearConstraint> constraints;
 
   std::vector<double> initial_temperature; ///< per node (0 where not given)
   bool has_initial_temperature = false;

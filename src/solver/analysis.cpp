@@ -166,6 +166,10 @@ StepSummary Analysis::Impl::run_step(int index) {
     std::vector<std::span<const LocalIndex>> lists;
     for (const auto& b : disc.blocks())
       for (std::size_t i = 0; i < b.size(); ++i) lists.push_back(b.element_eqs(i));
+    // a constraint row couples its DOFs (the KKT augmentation C^T R C lies inside its block)
+    const ConstraintSet& cs = disc.constraints();
+    for (int r = 0; r < cs.n_rows(); ++r)
+      if (cs.active(r)) lists.push_back(cs.row_eqs(r));
     pattern = build_pattern(loads.equations().n_eq(), lists);
   }
   kkt.analyze(pattern);

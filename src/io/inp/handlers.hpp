@@ -98,6 +98,14 @@ void check_predefined_temperatures(BuildState& s);
 void handle_contact_interference(BuildState& s, const Keyword& kw);
 ///@}
 
+/// @name Linear constraints (handlers_constraints.cpp)
+///@{
+void handle_equation(BuildState& s, const Keyword& kw);
+/// After the deck: a DOF is the dependent DOF of one constraint only, and a boundary condition on
+/// a dependent DOF is an error unless the constraint yields to it (then one warning).
+void check_constraints(BuildState& s);
+///@}
+
 /// @name Output requests (handlers_output.cpp)
 ///@{
 void handle_node_print(BuildState& s, const Keyword& kw);

@@ -19,7 +19,8 @@ bool part_keyword(const std::string& key) {
   static const char* const kAllowed[] = {
       "NODE",         "ELEMENT",        "NSET",           "ELSET",        "SURFACE",
       "SOLIDSECTION", "BEAMSECTION",    "SPRING",         "GAP",          "SURFACEBEHAVIOR",
-      "FRICTION",     "CONTACTDAMPING", "GAPCONDUCTANCE", "GAPRADIATION", "GAPHEATGENERATION"};
+      "FRICTION",     "CONTACTDAMPING", "GAPCONDUCTANCE", "GAPRADIATION", "GAPHEATGENERATION",
+      "EQUATION"};
   for (const char* k : kAllowed)
     if (key == k) return true;
   return false;

@@ -12,7 +12,8 @@ namespace {
 
 /// Keywords whose data lines may come from another file via INPUT=.
 bool takes_input_file(std::string_view key) {
-  return key == "NODE" || key == "ELEMENT" || key == "NSET" || key == "ELSET" || key == "AMPLITUDE";
+  return key == "NODE" || key == "ELEMENT" || key == "NSET" || key == "ELSET" ||
+         key == "AMPLITUDE" || key == "EQUATION";
 }
 
 constexpr int kMaxIncludeDepth = 16;

@@ -332,6 +332,7 @@ void finish_deck(BuildState& s) {
     close_step(s);
   }
   finish_model_data(s);
+  check_constraints(s);
 }
 
 } // namespace gapfem::inp

@@ -20,7 +20,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 58> kTable = {{
+constexpr std::array<KeywordSpec, 80> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_preprint, W::Model, "*"},
@@ -59,6 +59,8 @@ constexpr std::array<KeywordSpec, 58> kTable = {{
   {"*GAP CONDUCTANCE", handle_gap_conductance, W::Model, "PRESSURE|USER|DEPENDENCIES", kGap},
   {"*GAP RADIATION", handle_gap_radiation, W::Model, "", kGap},
   {"*GAP HEAT GENERATION", handle_gap_heat_generation, W::Model, "", kGap},
+  // linear constraints
+  {"*EQUATION", handle_equation, W::Model, "INPUT"},
   // model or history
   {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED"},
   // history: steps and procedures

@@ -1,0 +1,180 @@
+// Linear constraints: *EQUATION, and the checks every constraint keyword shares (a DOF is the
+// dependent DOF of one constraint only; a boundary condition on it is an error unless the
+// constraint yields to it). The rows go to Model::constraints (model/constraints.hpp).
+#include "io/inp/handlers.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+
+namespace gapfem::inp {
+namespace {
+
+/// Nodes of a field in the order Abaqus pairs node sets in an equation: by label.
+std::vector<NodeId> nodes_by_label(BuildState& s, const FieldReader& r, std::size_t field) {
+  std::vector<NodeId> nodes = resolve_nodes(s, r, field);
+  const auto& labels = s.model.mesh.node_labels;
+  std::sort(nodes.begin(), nodes.end(), [&](NodeId a, NodeId b) { return labels[a] < labels[b]; });
+  return nodes;
+}
+
+DofType equation_dof(const FieldReader& r, std::size_t field) {
+  const long long n = r.integer(field, "degree of freedom");
+  DofType d{};
+  if (n < 1 || n > 11 || !dof_from_abaqus(static_cast<int>(n), d))
+    r.fail(fmt::format("field {} (degree of freedom)", field + 1),
+           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, "
+                       "rotations) and 11 (temperature)",
+                       n));
+  return d;
+}
+
+/// One term of an equation as written: the nodes (one, or a node set's), the DOF, coefficient.
+struct TermSpec {
+  std::vector<NodeId> nodes;
+  DofType dof{};
+  double coeff = 0.0;
+  SourceLocation loc;
+  std::string text;
+};
+
+/// Makes the equations of one *EQUATION block entry: one per node of the node sets.
+void add_equations(BuildState& s, const std::vector<TermSpec>& terms, const SourceLocation& loc) {
+  std::size_t count = 1;
+  for (const TermSpec& t : terms) {
+    if (t.nodes.empty()) return; // a failed set (already reported)
+    if (t.nodes.size() == 1) continue;
+    if (count != 1 && t.nodes.size() != count)
+      throw InputError(t.loc, fmt::format("term {}", t.text),
+                       fmt::format("node set terms of one equation must hold the same number of "
+                                   "nodes (this one has {}, another {}); the n-th equation uses "
+                                   "the n-th node of every set, ordered by label",
+                                   t.nodes.size(), count));
+    count = t.nodes.size();
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    LinearConstraint c;
+    c.kind = ConstraintKind::Equation;
+    c.loc = loc;
+    for (const TermSpec& t : terms) {
+      const NodeId n = t.nodes.size() == 1 ? t.nodes[0] : t.nodes[i];
+      for (const ConstraintTerm& prev : c.terms)
+        if (prev.node == n && prev.dof == t.dof)
+          throw InputError(t.loc, fmt::format("node {}", s.model.node_label(n)),
+                           fmt::format("DOF {} appears twice in one equation; combine the two "
+                                       "terms into one coefficient",
+                                       abaqus_number(t.dof)));
+      c.terms.push_back({n, t.dof, t.coeff});
+    }
+    s.model.constraints.push_back(std::move(c));
+  }
+}
+
+} // namespace
+
+void handle_equation(BuildState& s, const Keyword& kw) {
+  // Data: a line with the number of terms N, then N terms (node or node set, DOF, coefficient),
+  // at most four per line; then the next equation.
+  std::size_t i = 0;
+  const auto& lines = kw.data;
+  while (i < lines.size()) {
+    if (lines[i].empty()) {
+      ++i;
+      continue;
+    }
+    const FieldReader head = s.reader(kw, lines[i]);
+    ++i;
+    long long n = 0;
+    try {
+      head.at_most(1, "number of terms");
+      n = head.integer(0, "number of terms");
+      if (n < 1 || n > 10000)
+        head.fail("field 1 (number of terms)",
+                  fmt::format("an equation needs at least one term (got {}); the first line of "
+                              "each equation gives its number of terms",
+                              n));
+    } catch (const InputError& e) {
+      s.diag.error(e);
+      return; // the rest of the block cannot be read reliably
+    }
+    std::vector<TermSpec> terms;
+    try {
+      while (static_cast<long long>(terms.size()) < n) {
+        if (i >= lines.size())
+          head.fail("equation", fmt::format("the equation has {} terms but the data ends after {}",
+                                            n, terms.size()));
+        const DataLine& line = lines[i++];
+        if (line.empty()) continue;
+        const FieldReader r = s.reader(kw, line);
+        if (r.size() % 3 != 0 || r.size() > 12)
+          r.fail("terms", "write up to four terms per line, each as node (or node set), DOF, "
+                          "coefficient");
+        for (std::size_t f = 0; f < r.size(); f += 3) {
+          if (static_cast<long long>(terms.size()) == n)
+            r.fail("terms", fmt::format("the equation has {} terms; this line holds more", n));
+          TermSpec t;
+          t.nodes = nodes_by_label(s, r, f);
+          t.dof = equation_dof(r, f + 1);
+          t.coeff = r.real(f + 2, "coefficient");
+          t.loc = r.loc();
+          t.text = r.text(f);
+          if (terms.empty() && t.coeff == 0.0)
+            r.fail(fmt::format("field {} (coefficient)", f + 3),
+                   "the first term's coefficient must not be zero: its DOF is the one the "
+                   "equation eliminates");
+          terms.push_back(std::move(t));
+        }
+      }
+      add_equations(s, terms, head.loc());
+    } catch (const InputError& e) {
+      s.diag.error(e);
+    }
+  }
+}
+
+void check_constraints(BuildState& s) {
+  Model& m = s.model;
+  // a DOF is the dependent DOF of one constraint only
+  std::map<std::pair<NodeId, int>, std::size_t> dependent;
+  for (std::size_t c = 0; c < m.constraints.size(); ++c) {
+    const LinearConstraint& lc = m.constraints[c];
+    const ConstraintTerm& t = lc.terms.front();
+    const auto [it, fresh] = dependent.try_emplace({t.node, static_cast<int>(t.dof)}, c);
+    if (fresh) continue;
+    const LinearConstraint& other = m.constraints[it->second];
+    s.error(lc.loc, lc.entity(m.node_label(t.node).str()),
+            fmt::format("DOF {} is already the dependent DOF of the constraint at {}; a DOF can "
+                        "be the dependent (first) DOF of one constraint only: remove one of them "
+                        "or reorder the terms",
+                        abaqus_number(t.dof), other.where()));
+  }
+  // boundary conditions on dependent DOFs
+  std::map<std::size_t, int> yielded; // constraint → steps in which a BC holds its dependent DOF
+  for (const Step& step : m.steps)
+    for (const BoundaryEntry& bc : step.boundary) {
+      const auto it = dependent.find({bc.node, static_cast<int>(bc.dof)});
+      if (it == dependent.end()) continue;
+      const LinearConstraint& lc = m.constraints[it->second];
+      if (lc.yields_to_bc) {
+        ++yielded[it->second];
+        continue;
+      }
+      s.error(bc.loc, fmt::format("node {}", m.node_label(bc.node)),
+              fmt::format(
+                  "DOF {} has a boundary condition and is the dependent (first) DOF of the "
+                  "constraint at {}; a constraint's dependent DOF cannot be prescribed: move the "
+                  "boundary condition to another DOF of the constraint or reorder its "
+                  "terms",
+                  abaqus_number(bc.dof), lc.where()));
+      dependent.erase(it); // one message per DOF
+    }
+  std::map<std::string, int> per_origin;
+  for (const auto& [c, n] : yielded) per_origin[m.constraints[c].where()] += 1;
+  for (const auto& [origin, n] : per_origin)
+    m.warnings.push_back(fmt::format(
+        "{}: {} constrained DOF(s) also have boundary conditions; in those steps the boundary "
+        "condition holds the node and the constraint is not applied to that DOF",
+        origin, n));
+}
+
+} // namespace gapfem::inp

@@ -1,0 +1,52 @@
+#pragma once
+/// @file constraints.hpp
+/// Linear multi-point constraints of the model, as the input layer resolved them: every *EQUATION,
+/// *MPC, *KINEMATIC COUPLING, *COUPLING and *TIE becomes a list of rows
+///
+///     sum_k c_k u(node_k, dof_k) = 0,
+///
+/// whose first term is the row's dependent DOF (the one Abaqus eliminates). The solver enforces
+/// them exactly with Lagrange multipliers (fem/constraint_set.hpp); the dependent DOF is used for
+/// the redundancy checks and for "a boundary condition wins over a tie" (yields_to_bc).
+#include "common/error.hpp"
+#include "common/types.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+/// Which keyword made a constraint (for messages and for the NLGEOM rule).
+enum class ConstraintKind : std::uint8_t { Equation, Mpc, KinematicCoupling, Coupling, Tie };
+
+struct ConstraintTerm {
+  NodeId node = -1;
+  DofType dof = DofType::U1;
+  double coeff = 0.0;
+};
+
+struct LinearConstraint {
+  std::vector<ConstraintTerm> terms; ///< terms[0]: the dependent DOF (coefficient != 0)
+  ConstraintKind kind = ConstraintKind::Equation;
+  /// How messages name it besides its location: "" (an *EQUATION, *MPC), "tie T1", "coupling C1".
+  std::string name;
+  SourceLocation loc; ///< the data line (or keyword line) that defined it
+  /// "node 12" prefixed by the constraint's name ("tie T1: node 12").
+  std::string entity(const std::string& node) const {
+    return name.empty() ? "node " + node : name + ": node " + node;
+  }
+  /// "tie T1 at deck.inp:40 (*TIE)" or "deck.inp:40 (*EQUATION)".
+  std::string where() const { return name.empty() ? loc.str() : name + " at " + loc.str(); }
+  /// Its DOFs exist at its nodes even where no element carries them (a reference node of a
+  /// coupling, the rotations an MPC BEAM gives a solid node).
+  bool activates_dofs = false;
+  /// In a step whose boundary conditions prescribe the dependent DOF, the row is not applied
+  /// (ties and couplings: the boundary condition holds the node, as Abaqus resolves it); otherwise
+  /// such a boundary condition is an input error.
+  bool yields_to_bc = false;
+  /// The row is the small-rotation (linearised) form of a constraint that is nonlinear in the
+  /// rotations (MPC BEAM/LINK, kinematic coupling): a step with NLGEOM rejects it.
+  bool small_rotation = false;
+};
+
+} // namespace gapfem
