@@ -6,14 +6,22 @@
 
 #include <cmath>
 #include <fmt/format.h>
+#include <map>
 
 namespace gapfem {
 
 ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
+  std::map<LocalIndex, int> dependent; // dependent slot -> constraint
   for (std::size_t c = 0; c < model.constraints.size(); ++c) {
     const LinearConstraint& lc = model.constraints[c];
+    const auto start = _slot.size();
+    bool dropped = false;
     for (const ConstraintTerm& t : lc.terms) {
       const LocalIndex s = dofs.slot(t.node, t.dof);
+      if (s < 0 && lc.drop_if_missing) {
+        dropped = true;
+        break;
+      }
       if (s < 0)
         throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),
                          fmt::format("no element at this node has DOF {}, so the constraint "
@@ -21,6 +29,24 @@ ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
                                      abaqus_number(t.dof)));
       _slot.push_back(s);
       _coeff.push_back(t.coeff);
+    }
+    if (dropped) {
+      _slot.resize(start);
+      _coeff.resize(start);
+      continue;
+    }
+    // a DOF is the dependent DOF of one constraint only (Abaqus eliminates it once)
+    const auto [it, fresh] = lc.eliminates
+                                 ? dependent.try_emplace(_slot[start], static_cast<int>(c))
+                                 : std::pair{dependent.end(), true};
+    if (!fresh) {
+      const LinearConstraint& other = model.constraints[it->second];
+      const ConstraintTerm& t = lc.terms.front();
+      throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),
+                       fmt::format("DOF {} is already the dependent DOF of the constraint at {}; a "
+                                   "DOF can be the dependent (first) DOF of one constraint only: "
+                                   "remove one of them or reorder the terms",
+                                   abaqus_number(t.dof), other.where()));
     }
     _ptr.push_back(static_cast<LocalIndex>(_slot.size()));
     _value.push_back(0.0);
@@ -35,8 +61,8 @@ ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
 void ConstraintSet::set_equations(const Model& model, const EquationMap& eqmap) {
   for (std::size_t k = 0; k < _slot.size(); ++k) _eq[k] = eqmap.slot_eq[_slot[k]];
   for (int r = 0; r < n_rows(); ++r) {
-    const bool dependent_free = _eq[_ptr[r]] >= 0;
     const LinearConstraint& lc = model.constraints[_source[r]];
+    const bool dependent_free = _eq[_ptr[r]] >= 0 || !lc.eliminates;
     if (!dependent_free && !lc.yields_to_bc) {
       const ConstraintTerm& t = lc.terms.front();
       throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),

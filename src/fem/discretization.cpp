@@ -54,8 +54,8 @@ Discretization::Discretization(const Model& model) : _model(model) {
   }
   // Constraints bring their DOFs to nodes no element carries them at (reference nodes).
   for (const LinearConstraint& c : model.constraints)
-    if (c.activates_dofs)
-      for (const ConstraintTerm& t : c.terms) masks[t.node] |= dof_bit(t.dof);
+    for (const ConstraintTerm& t : c.terms)
+      if (t.activates) masks[t.node] |= dof_bit(t.dof);
   _dofs = DofMap(std::move(masks));
   _constraints = ConstraintSet(model, _dofs);
   // Gather lists and storage.

@@ -23,6 +23,9 @@ struct ConstraintTerm {
   NodeId node = -1;
   DofType dof = DofType::U1;
   double coeff = 0.0;
+  /// The DOF exists at the node even where no element carries it (a coupling's reference node,
+  /// the rotations an MPC BEAM gives a solid node).
+  bool activates = false;
 };
 
 struct LinearConstraint {
@@ -37,9 +40,14 @@ struct LinearConstraint {
   }
   /// "tie T1 at deck.inp:40 (*TIE)" or "deck.inp:40 (*EQUATION)".
   std::string where() const { return name.empty() ? loc.str() : name + " at " + loc.str(); }
-  /// Its DOFs exist at its nodes even where no element carries them (a reference node of a
-  /// coupling, the rotations an MPC BEAM gives a solid node).
-  bool activates_dofs = false;
+  /// A term on a DOF its node does not carry (and does not activate) drops the row instead of
+  /// being an error: "every active DOF" of MPC TIE, the rotations of a kinematic coupling's
+  /// nodes that have none.
+  bool drop_if_missing = false;
+  /// The first term is a dependent DOF Abaqus eliminates (one constraint per dependent DOF, no
+  /// boundary condition on it). A distributing coupling eliminates nothing (Abaqus enforces it
+  /// with multipliers): boundary conditions may hold any of its DOFs.
+  bool eliminates = true;
   /// In a step whose boundary conditions prescribe the dependent DOF, the row is not applied
   /// (ties and couplings: the boundary condition holds the node, as Abaqus resolves it); otherwise
   /// such a boundary condition is an input error.

@@ -17,14 +17,21 @@
 
 namespace gapfem {
 
-/// An element-based surface (*SURFACE, TYPE=ELEMENT): element faces (1-based face numbers).
+/// A surface: element-based (*SURFACE, TYPE=ELEMENT: element faces, 1-based face numbers) or
+/// node-based (TYPE=NODE: nodes with an area or weight each, default 1).
 struct Surface {
   struct Face {
     ElemId elem = -1;
     int face = 0;
   };
+  struct WeightedNode {
+    NodeId node = -1;
+    double area = 1.0;
+  };
   std::string name;
+  bool node_based = false;
   std::vector<Face> faces;
+  std::vector<WeightedNode> nodes; ///< node-based surfaces
   SourceLocation loc;
 };
 

@@ -101,8 +101,17 @@ void handle_contact_interference(BuildState& s, const Keyword& kw);
 /// @name Linear constraints (handlers_constraints.cpp)
 ///@{
 void handle_equation(BuildState& s, const Keyword& kw);
-/// After the deck: a DOF is the dependent DOF of one constraint only, and a boundary condition on
-/// a dependent DOF is an error unless the constraint yields to it (then one warning).
+/// *MPC, *KINEMATIC COUPLING, *COUPLING and its *KINEMATIC / *DISTRIBUTING (handlers_couplings.cpp)
+void handle_mpc(BuildState& s, const Keyword& kw);
+void handle_kinematic_coupling(BuildState& s, const Keyword& kw);
+void handle_coupling(BuildState& s, const Keyword& kw);
+void handle_kinematic(BuildState& s, const Keyword& kw);
+void handle_distributing(BuildState& s, const Keyword& kw);
+/// Builds the rows of the constraints that waited for the complete model data (ties first).
+void build_deferred_constraints(BuildState& s);
+/// After the deck: a boundary condition on a constraint's dependent DOF is an error naming both
+/// lines, unless the constraint yields to it (then one warning per constraint). (A DOF that is the
+/// dependent DOF of two constraints is reported by fem/ConstraintSet, which knows the DOFs.)
 void check_constraints(BuildState& s);
 ///@}
 

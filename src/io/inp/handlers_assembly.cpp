@@ -16,11 +16,27 @@ namespace {
 
 /// Keywords a part may hold (canonical names). Others (materials, steps, …) belong to the model.
 bool part_keyword(const std::string& key) {
-  static const char* const kAllowed[] = {
-      "NODE",         "ELEMENT",        "NSET",           "ELSET",        "SURFACE",
-      "SOLIDSECTION", "BEAMSECTION",    "SPRING",         "GAP",          "SURFACEBEHAVIOR",
-      "FRICTION",     "CONTACTDAMPING", "GAPCONDUCTANCE", "GAPRADIATION", "GAPHEATGENERATION",
-      "EQUATION"};
+  static const char* const kAllowed[] = {"NODE",
+                                         "ELEMENT",
+                                         "NSET",
+                                         "ELSET",
+                                         "SURFACE",
+                                         "SOLIDSECTION",
+                                         "BEAMSECTION",
+                                         "SPRING",
+                                         "GAP",
+                                         "SURFACEBEHAVIOR",
+                                         "FRICTION",
+                                         "CONTACTDAMPING",
+                                         "GAPCONDUCTANCE",
+                                         "GAPRADIATION",
+                                         "GAPHEATGENERATION",
+                                         "EQUATION",
+                                         "MPC",
+                                         "KINEMATICCOUPLING",
+                                         "COUPLING",
+                                         "KINEMATIC",
+                                         "DISTRIBUTING"};
   for (const char* k : kAllowed)
     if (key == k) return true;
   return false;

@@ -132,21 +132,61 @@ void handle_equation(BuildState& s, const Keyword& kw) {
   }
 }
 
+namespace {
+/// Rows in their small-rotation form are exact under NLGEOM only while the rotations they use
+/// stay zero: every rotation term must be held at zero by a boundary condition of the step.
+void check_nlgeom_rows(BuildState& s) {
+  const Model& m = s.model;
+  for (const Step& step : m.steps) {
+    if (!step.nlgeom) continue;
+    std::map<std::pair<NodeId, int>, bool> held; // (node, dof) -> prescribed to zero
+    for (const BoundaryEntry& bc : step.boundary)
+      held[{bc.node, static_cast<int>(bc.dof)}] = bc.value == 0.0 && !bc.fixed;
+    for (const LinearConstraint& c : m.constraints) {
+      if (!c.small_rotation) continue;
+      bool exact = true, has_rotation = false; // an MPC LINK row has no rotation terms
+      for (std::size_t k = 1; k < c.terms.size(); ++k) {
+        const ConstraintTerm& t = c.terms[k];
+        if (field_of(t.dof) != Field::Rotation) continue;
+        has_rotation = true;
+        const auto it = held.find({t.node, static_cast<int>(t.dof)});
+        if (it == held.end() || !it->second) exact = false;
+      }
+      if (has_rotation && exact) continue;
+      s.error(c.loc, c.name.empty() ? "" : c.name,
+              fmt::format("step {} has NLGEOM, but this constraint is linear in the rotations "
+                          "(its small-rotation form{}); gapfem does not have its large-rotation "
+                          "form: run the step without NLGEOM, or hold the reference node's "
+                          "rotations with *BOUNDARY (then the form is exact)",
+                          step.number, has_rotation ? "" : ": MPC LINK keeps a distance"));
+      return; // one message
+    }
+  }
+}
+} // namespace
+
+void build_deferred_constraints(BuildState& s) {
+  std::stable_sort(s.deferred_constraints.begin(), s.deferred_constraints.end(),
+                   [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (const auto& d : s.deferred_constraints) {
+    try {
+      d.build(s);
+    } catch (const InputError& e) {
+      s.diag.error(e);
+    }
+  }
+  s.deferred_constraints.clear();
+}
+
 void check_constraints(BuildState& s) {
   Model& m = s.model;
-  // a DOF is the dependent DOF of one constraint only
+  // the first row per dependent DOF (a DOF that is the dependent DOF of two constraints is an
+  // error reported by the solver's constraint set, which knows which DOFs exist)
   std::map<std::pair<NodeId, int>, std::size_t> dependent;
   for (std::size_t c = 0; c < m.constraints.size(); ++c) {
-    const LinearConstraint& lc = m.constraints[c];
-    const ConstraintTerm& t = lc.terms.front();
-    const auto [it, fresh] = dependent.try_emplace({t.node, static_cast<int>(t.dof)}, c);
-    if (fresh) continue;
-    const LinearConstraint& other = m.constraints[it->second];
-    s.error(lc.loc, lc.entity(m.node_label(t.node).str()),
-            fmt::format("DOF {} is already the dependent DOF of the constraint at {}; a DOF can "
-                        "be the dependent (first) DOF of one constraint only: remove one of them "
-                        "or reorder the terms",
-                        abaqus_number(t.dof), other.where()));
+    if (!m.constraints[c].eliminates) continue;
+    const ConstraintTerm& t = m.constraints[c].terms.front();
+    dependent.try_emplace({t.node, static_cast<int>(t.dof)}, c);
   }
   // boundary conditions on dependent DOFs
   std::map<std::size_t, int> yielded; // constraint → steps in which a BC holds its dependent DOF
@@ -168,6 +208,7 @@ void check_constraints(BuildState& s) {
                   abaqus_number(bc.dof), lc.where()));
       dependent.erase(it); // one message per DOF
     }
+  check_nlgeom_rows(s);
   std::map<std::string, int> per_origin;
   for (const auto& [c, n] : yielded) per_origin[m.constraints[c].where()] += 1;
   for (const auto& [origin, n] : per_origin)

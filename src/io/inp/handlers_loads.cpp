@@ -113,6 +113,10 @@ const Surface& find_surface(BuildState& s, const FieldReader& r) {
   if (it == s.model.surfaces.end())
     r.fail(fmt::format("surface {}", name),
            "this surface is not defined; define it with *SURFACE, NAME=… in the model data");
+  if (it->second.node_based)
+    r.fail(fmt::format("surface {}", name),
+           "this is a node-based surface (TYPE=NODE); a distributed load needs element faces: "
+           "define the surface with TYPE=ELEMENT");
   return it->second;
 }
 

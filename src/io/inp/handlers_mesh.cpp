@@ -273,16 +273,29 @@ void handle_elset(BuildState& s, const Keyword& kw) {
 }
 
 void handle_surface(BuildState& s, const Keyword& kw) {
-  const int type = enum_param(kw, "TYPE", {"ELEMENT", "NODE"}, 0);
-  if (type == 1)
-    throw InputError(kw.loc, "TYPE=NODE",
-                     "node-based surfaces are not supported by gapfem; connect nodes with gap "
-                     "elements, or define an element-based surface (TYPE=ELEMENT)");
+  const bool node_based = enum_param(kw, "TYPE", {"ELEMENT", "NODE"}, 0) == 1;
   const std::string name = set_param(s, kw, "NAME", true);
   Surface& surf = s.model.surfaces[name];
   if (surf.name.empty()) {
     surf.name = name;
     surf.loc = kw.loc;
+    surf.node_based = node_based;
+  } else if (surf.node_based != node_based) {
+    throw InputError(kw.loc, fmt::format("surface {}", name),
+                     fmt::format("the surface is already defined as {}-based ({}); a surface is "
+                                 "either element-based or node-based",
+                                 surf.node_based ? "node" : "element", surf.loc.str()));
+  }
+  if (node_based) {
+    for_each_line(s, kw, [&](const DataLine& line) {
+      const FieldReader r = s.reader(kw, line);
+      r.at_most(2, "node or node set, area (or weight)");
+      const double area = r.real_or(1, 1.0, "area");
+      if (!(area > 0))
+        r.fail("field 2 (area)", "the area (weight) of a surface node must be positive");
+      for (NodeId n : resolve_nodes(s, r, 0)) surf.nodes.push_back({n, area});
+    });
+    return;
   }
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);

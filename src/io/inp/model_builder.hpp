@@ -11,6 +11,7 @@
 #include "model/model.hpp"
 
 #include <array>
+#include <functional>
 #include <initializer_list>
 #include <map>
 #include <optional>
@@ -29,7 +30,8 @@ enum class Parent : std::uint8_t {
   Gap,
   FieldOutput,
   HistoryOutput,
-  ChangeFriction
+  ChangeFriction,
+  Coupling
 };
 
 /// What a step has seen so far (for defaults and "exactly one" rules).
@@ -69,6 +71,25 @@ struct BuildState {
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;
+
+  /// Constraints whose rows need the complete model data (the model space, the nodes' final
+  /// coordinates): built at the end of the model data, ties first (ADJUST moves slave nodes).
+  struct DeferredConstraint {
+    int order = 1; ///< 0: ties, 1: everything else
+    std::function<void(BuildState&)> build;
+  };
+  std::vector<DeferredConstraint> deferred_constraints;
+  /// The *COUPLING being read (its *KINEMATIC / *DISTRIBUTING follow it).
+  struct CouplingDef {
+    std::string name;
+    SourceLocation loc;
+    NodeId ref = -1;
+    std::vector<std::pair<NodeId, double>> nodes; ///< coupling nodes and tributary areas
+    double radius = 0.0;                          ///< INFLUENCE RADIUS (0: none)
+    bool defined = false;                         ///< a *KINEMATIC or *DISTRIBUTING was given
+    bool failed = false; ///< the *COUPLING line had an error (its sub-options are skipped)
+  };
+  std::vector<CouplingDef> couplings;
 
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
   bool model_done = false;                   ///< finish_model_data() has run

@@ -59,8 +59,8 @@ int resolve_material(BuildState& s, const std::string& name, const SourceLocatio
 
 /// Binds the elements of one property's ELSET; reports missing sets, wrong families and elements
 /// that already have a property.
-void bind(BuildState& s, Kind kind, int index, const std::string& elset, const SourceLocation& loc,
-          std::vector<SourceLocation>& owner_loc) {
+void bind_property(BuildState& s, Kind kind, int index, const std::string& elset,
+                   const SourceLocation& loc, std::vector<SourceLocation>& owner_loc) {
   const auto* set = find_elset(s, elset);
   if (!set) {
     if (!s.bad_sets.count(elset))
@@ -179,7 +179,7 @@ void check_gap(BuildState& s, const GapSection& gap) {
   bool sphere_warned = false;
   for (ElemId e : *set) {
     const ElementType t = mesh.elem_types[e];
-    if (element_info(t).family != ElementFamily::Gap) continue; // reported by bind()
+    if (element_info(t).family != ElementFamily::Gap) continue; // reported by bind_property()
     if (t == ElementType::GAPSPHER && gap.direction_given && !sphere_warned) {
       s.warn(gap.loc, fmt::format("ELSET={}: fields 2-4 (direction) are not used by GAPSPHER "
                                   "elements (spec §2.2: blank) and were ignored",
@@ -282,19 +282,19 @@ void finish_model_data(BuildState& s) {
     m.element_property.assign(static_cast<std::size_t>(m.mesh.n_elements()), PropertyRef{});
     std::vector<SourceLocation> owner(static_cast<std::size_t>(m.mesh.n_elements()));
     for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
-      bind(s, Kind::Solid, static_cast<int>(i), m.solid_sections[i].elset, m.solid_sections[i].loc,
-           owner);
+      bind_property(s, Kind::Solid, static_cast<int>(i), m.solid_sections[i].elset,
+                    m.solid_sections[i].loc, owner);
     for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
-      bind(s, Kind::Beam, static_cast<int>(i), m.beam_sections[i].elset, m.beam_sections[i].loc,
-           owner);
+      bind_property(s, Kind::Beam, static_cast<int>(i), m.beam_sections[i].elset,
+                    m.beam_sections[i].loc, owner);
     for (std::size_t i = 0; i < m.spring_sections.size(); ++i) {
-      bind(s, Kind::Spring, static_cast<int>(i), m.spring_sections[i].elset,
-           m.spring_sections[i].loc, owner);
+      bind_property(s, Kind::Spring, static_cast<int>(i), m.spring_sections[i].elset,
+                    m.spring_sections[i].loc, owner);
       check_spring(s, static_cast<int>(i));
     }
     for (std::size_t i = 0; i < m.gap_sections.size(); ++i)
-      bind(s, Kind::Gap, static_cast<int>(i), m.gap_sections[i].elset, m.gap_sections[i].loc,
-           owner);
+      bind_property(s, Kind::Gap, static_cast<int>(i), m.gap_sections[i].elset,
+                    m.gap_sections[i].loc, owner);
 
     // elements without a property: one error per element type (naming the first element)
     std::map<ElementType, std::pair<ElemId, int>> missing;
@@ -316,6 +316,7 @@ void finish_model_data(BuildState& s) {
 
     check_materials(s);
     check_space(s);
+    build_deferred_constraints(s);
     for (const auto& gap : m.gap_sections) check_gap(s, gap);
 
     m.initial_temperature.assign(static_cast<std::size_t>(m.mesh.n_nodes()), 0.0);

@@ -15,6 +15,7 @@ constexpr unsigned kMaterial = bit(Parent::Material);
 constexpr unsigned kGap = bit(Parent::Gap);
 constexpr unsigned kOutput = bit(Parent::FieldOutput) | bit(Parent::HistoryOutput);
 constexpr unsigned kFriction = bit(Parent::Gap) | bit(Parent::ChangeFriction);
+constexpr unsigned kCoupling = bit(Parent::Coupling);
 
 using W = Where;
 using P = Parent;
@@ -61,6 +62,11 @@ constexpr std::array<KeywordSpec, 80> kTable = {{
   {"*GAP HEAT GENERATION", handle_gap_heat_generation, W::Model, "", kGap},
   // linear constraints
   {"*EQUATION", handle_equation, W::Model, "INPUT"},
+  {"*MPC", handle_mpc, W::Model, "MODE|USER"},
+  {"*KINEMATIC COUPLING", handle_kinematic_coupling, W::Model, "REF NODE"},
+  {"*COUPLING", handle_coupling, W::Model, "CONSTRAINT NAME|REF NODE|SURFACE|INFLUENCE RADIUS|ORIENTATION", 0, P::Coupling},
+  {"*KINEMATIC", handle_kinematic, W::Model, "", kCoupling},
+  {"*DISTRIBUTING", handle_distributing, W::Model, "COUPLING|WEIGHTING METHOD|ROTATIONAL COUPLING|FREE NODES", kCoupling},
   // model or history
   {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED"},
   // history: steps and procedures
@@ -123,6 +129,7 @@ std::string parent_names(unsigned parents) {
   if (parents == kMaterial) return "*MATERIAL (it defines a property of the material above it)";
   if (parents == kGap) return "*GAP (it defines a property of the gap elements above it)";
   if (parents == kOutput) return "*OUTPUT inside a step";
+  if (parents == kCoupling) return "*COUPLING (it defines the coupling above it)";
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 

@@ -117,8 +117,11 @@ TEST(ReaderMesh, SurfaceErrors) {
                   "deck.inp:17: *SURFACE: element 1 (C3D8): face S7 does not exist; this element "
                   "type has faces S1-S6");
   EXPECT_CONTAINS(error_text(b + "*SURFACE, NAME=S\n1, P2\n"), "face 'P2'");
-  EXPECT_CONTAINS(error_text(b + "*SURFACE, NAME=S, TYPE=NODE\n1, 1.\n"),
-                  "deck.inp:16: *SURFACE: TYPE=NODE: node-based surfaces are not supported");
+  EXPECT_CONTAINS(error_text(b + "*SURFACE, NAME=S, TYPE=NODE\n1, -1.\n"),
+                  "deck.inp:17: *SURFACE: field 2 (area): the area (weight) of a surface node "
+                  "must be positive");
+  EXPECT_CONTAINS(error_text(b + "*SURFACE, NAME=S, TYPE=NODE\n1\n*SURFACE, NAME=S\n1, S1\n"),
+                  "surface S: the surface is already defined as node-based");
   EXPECT_CONTAINS(error_text(std::string(kTrussModel) + "*SURFACE, NAME=S\n1, S1\n"),
                   "element 1 (T3D2): this element type has no faces");
   // faces of tetrahedra, quads and triangles
