@@ -203,9 +203,9 @@ void mpc_rows(BuildState& s, MpcType type, const SourceLocation& loc, NodeId a, 
   const SpaceDofs sd = space_dofs(s.model.space);
   const Vec3 d = sub(s.model.mesh.coords[a], s.model.mesh.coords[b]);
   switch (type) {
-  case MpcType::Pin:
+  case MpcType::Pin: // an MPC gives its nodes the DOFs it constrains (e.g. a node without elements)
     for (int i : sd.translations)
-      s.model.constraints.push_back(equal_row(o, a, b, i, false, false));
+      s.model.constraints.push_back(equal_row(o, a, b, i, true, true));
     break;
   case MpcType::Tie: // every active DOF: the rows of DOFs the nodes do not both carry are dropped
     for (int i : {1, 2, 3, 4, 5, 6, 11}) {
@@ -217,7 +217,7 @@ void mpc_rows(BuildState& s, MpcType type, const SourceLocation& loc, NodeId a, 
     break;
   case MpcType::Beam:
     for (int i : sd.translations)
-      s.model.constraints.push_back(rigid_row(o, s.model.space, a, b, i, d, false));
+      s.model.constraints.push_back(rigid_row(o, s.model.space, a, b, i, d, true));
     for (int i : sd.rotations) s.model.constraints.push_back(equal_row(o, a, b, i, true, true));
     break;
   case MpcType::Link: {
@@ -229,11 +229,11 @@ void mpc_rows(BuildState& s, MpcType type, const SourceLocation& loc, NodeId a, 
     const int dep = dominant_translation(s.model.space, d);
     LinearConstraint c = new_row(o);
     c.small_rotation = true; // a fixed distance is nonlinear in large displacements
-    c.terms.push_back({a, dof_of(dep), d[dep - 1], false});
+    c.terms.push_back({a, dof_of(dep), d[dep - 1], true});
     for (int i : sd.translations)
-      if (i != dep && d[i - 1] != 0.0) c.terms.push_back({a, dof_of(i), d[i - 1], false});
+      if (i != dep && d[i - 1] != 0.0) c.terms.push_back({a, dof_of(i), d[i - 1], true});
     for (int i : sd.translations)
-      if (d[i - 1] != 0.0) c.terms.push_back({b, dof_of(i), -d[i - 1], false});
+      if (d[i - 1] != 0.0) c.terms.push_back({b, dof_of(i), -d[i - 1], true});
     s.model.constraints.push_back(std::move(c));
     break;
   }
