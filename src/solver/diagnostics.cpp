@@ -45,11 +45,17 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
   if (equations.size() > where.size())
     at += fmt::format(" (and {} more)", equations.size() - where.size());
 
-  // The body around the first singular node: nodes connected through elements, open gaps excluded.
+  // The body around the first singular node: nodes connected through elements (open gaps
+  // excluded) and through the linear constraints that apply in the step.
   const Mesh& mesh = model.mesh;
   std::vector<std::vector<ElemId>> node_elems(static_cast<std::size_t>(mesh.n_nodes()));
   for (ElemId e = 0; e < mesh.n_elements(); ++e)
     for (NodeId n : mesh.element_nodes(e)) node_elems[n].push_back(e);
+  const ConstraintSet& cs = disc.constraints();
+  std::vector<std::vector<int>> node_rows(static_cast<std::size_t>(mesh.n_nodes()));
+  for (int r = 0; r < cs.n_rows(); ++r)
+    if (cs.active(r))
+      for (LocalIndex sl : cs.row_slots(r)) node_rows[dofs.slot_node(sl)].push_back(r);
   const FieldView fields = prob.fields();
   ElementRecovery rec;
   auto is_open_gap = [&](ElemId e) {
@@ -66,6 +72,14 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
     const NodeId n = queue.front();
     queue.pop_front();
     body.push_back(model.node_label(n).key);
+    for (int r : node_rows[n])
+      for (LocalIndex sl : cs.row_slots(r)) {
+        const NodeId m = dofs.slot_node(sl);
+        if (!in_body[m]) {
+          in_body[m] = 1;
+          queue.push_back(m);
+        }
+      }
     for (ElemId e : node_elems[n]) {
       if (is_open_gap(e)) {
         open_gaps.insert(e);

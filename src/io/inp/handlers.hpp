@@ -107,6 +107,8 @@ void handle_kinematic_coupling(BuildState& s, const Keyword& kw);
 void handle_coupling(BuildState& s, const Keyword& kw);
 void handle_kinematic(BuildState& s, const Keyword& kw);
 void handle_distributing(BuildState& s, const Keyword& kw);
+/// *TIE (handlers_tie.cpp)
+void handle_tie(BuildState& s, const Keyword& kw);
 /// Builds the rows of the constraints that waited for the complete model data (ties first).
 void build_deferred_constraints(BuildState& s);
 /// After the deck: a boundary condition on a constraint's dependent DOF is an error naming both

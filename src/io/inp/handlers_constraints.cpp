@@ -209,13 +209,18 @@ void check_constraints(BuildState& s) {
       dependent.erase(it); // one message per DOF
     }
   check_nlgeom_rows(s);
-  std::map<std::string, int> per_origin;
-  for (const auto& [c, n] : yielded) per_origin[m.constraints[c].where()] += 1;
-  for (const auto& [origin, n] : per_origin)
-    m.warnings.push_back(fmt::format(
-        "{}: {} constrained DOF(s) also have boundary conditions; in those steps the boundary "
-        "condition holds the node and the constraint is not applied to that DOF",
-        origin, n));
+  std::map<std::string, std::pair<std::size_t, int>> per_constraint; // where -> (first row, DOFs)
+  for (const auto& [c, n] : yielded) {
+    auto& e = per_constraint.try_emplace(m.constraints[c].where(), c, 0).first->second;
+    ++e.second;
+  }
+  for (const auto& [where, e] : per_constraint) {
+    const LinearConstraint& lc = m.constraints[e.first];
+    s.warn(lc.loc, fmt::format("{}{} constrained DOF(s) also have boundary conditions; in those "
+                               "steps the boundary condition holds the node and the constraint is "
+                               "not applied to that DOF",
+                               lc.name.empty() ? "" : lc.name + ": ", e.second));
+  }
 }
 
 } // namespace gapfem::inp

@@ -63,6 +63,7 @@ constexpr std::array<KeywordSpec, 80> kTable = {{
   // linear constraints
   {"*EQUATION", handle_equation, W::Model, "INPUT"},
   {"*MPC", handle_mpc, W::Model, "MODE|USER"},
+  {"*TIE", handle_tie, W::Model, "NAME|POSITION TOLERANCE|ADJUST|TYPE|NO ROTATION|NO THICKNESS|CYCLIC SYMMETRY"},
   {"*KINEMATIC COUPLING", handle_kinematic_coupling, W::Model, "REF NODE"},
   {"*COUPLING", handle_coupling, W::Model, "CONSTRAINT NAME|REF NODE|SURFACE|INFLUENCE RADIUS|ORIENTATION", 0, P::Coupling},
   {"*KINEMATIC", handle_kinematic, W::Model, "", kCoupling},
