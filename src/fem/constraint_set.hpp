@@ -10,6 +10,7 @@
 #include "linalg/constraint_block.hpp"
 
 #include <array>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -28,7 +29,8 @@ class ConstraintSet {
 
   int n_rows() const { return static_cast<int>(_value.size()); }
   bool empty() const { return _value.empty(); }
-  /// Model constraint a row came from (index into Model::constraints).
+  /// Model constraint a row came from (index into Model::constraints; -1: a boundary condition in a
+  /// local system).
   int source(int r) const { return _source[r]; }
   std::span<const LocalIndex> row_slots(int r) const {
     return {_slot.data() + _ptr[r], static_cast<std::size_t>(_ptr[r + 1] - _ptr[r])};
@@ -38,9 +40,15 @@ class ConstraintSet {
   }
 
   /// Per step: equation numbers of the terms and the rows that apply (a row that yields to a
-  /// boundary condition on its dependent DOF does not). Throws InputError for a prescribed
-  /// dependent DOF of a row that does not yield.
-  void set_equations(const Model& model, const EquationMap& eqmap);
+  /// boundary condition on its dependent DOF does not; the rows of boundary conditions in local
+  /// systems apply where `local_bcs` (node, DOF 1-6) lists them). Throws InputError for a
+  /// prescribed dependent DOF of a row that does not yield.
+  void set_equations(const Model& model, const EquationMap& eqmap,
+                     std::span<const std::pair<NodeId, int>> local_bcs = {});
+  /// The row of a boundary condition on DOF `dof` (1-6) of a node with a *TRANSFORM, or -1.
+  int bc_row(NodeId node, int dof) const;
+  /// Right-hand side of row r (a boundary condition's value in its local system).
+  void set_value(int r, double v) { _value[r] = v; }
   bool active(int r) const { return _active[r] != 0; }
   /// Equations of row r in the current step (-1: prescribed), for the sparsity pattern.
   std::span<const LocalIndex> row_eqs(int r) const {
@@ -64,6 +72,7 @@ class ConstraintSet {
   std::vector<double> _value;
   std::vector<int> _source;
   std::vector<std::uint8_t> _active;
+  std::map<std::pair<NodeId, int>, int> _bc_row;
 };
 
 } // namespace gapfem

@@ -117,12 +117,13 @@ Discretization::Discretization(const Model& model) : _model(model) {
   }
 }
 
-void Discretization::set_equations(const EquationMap& eqmap) {
+void Discretization::set_equations(const EquationMap& eqmap,
+                                   std::span<const std::pair<NodeId, int>> local_bcs) {
   for (auto& b : _blocks) {
     b.eqs.resize(b.slots.size());
     for (std::size_t k = 0; k < b.slots.size(); ++k) b.eqs[k] = eqmap.slot_eq[b.slots[k]];
   }
-  _constraints.set_equations(_model, eqmap);
+  _constraints.set_equations(_model, eqmap, local_bcs);
 }
 
 void Discretization::reset_trial() {

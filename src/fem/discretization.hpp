@@ -59,7 +59,9 @@ class Discretization {
   bool has_temperature_field() const { return _uses_temperature_field; }
 
   /// Set per-step equation numbers in every block and in the constraint rows.
-  void set_equations(const EquationMap& eqmap);
+  /// `local_bcs`: the (node, DOF) boundary conditions of the step in local systems (*TRANSFORM).
+  void set_equations(const EquationMap& eqmap,
+                     std::span<const std::pair<NodeId, int>> local_bcs = {});
   /// Trial := committed (start of an increment attempt).
   void reset_trial();
   /// Committed := trial (increment accepted).

@@ -12,7 +12,7 @@
 namespace gapfem {
 
 class DofMap {
-public:
+ public:
   DofMap() = default;
   /// masks[n]: bit dof_bit(d) set when node n carries DOF d.
   explicit DofMap(std::vector<std::uint8_t> masks);
@@ -31,7 +31,7 @@ public:
   DofType slot_dof(LocalIndex s) const { return _slot_dof[s]; }
   Field slot_field(LocalIndex s) const { return field_of(_slot_dof[s]); }
 
-private:
+ private:
   std::vector<std::uint8_t> _mask;
   std::vector<LocalIndex> _first;
   std::vector<NodeId> _slot_node;

@@ -10,17 +10,18 @@
 
 namespace gapfem {
 
-/// The solution-dependent fields an assembly pass reads (slot-sized vectors, node-sized temperatures).
+/// The solution-dependent fields an assembly pass reads (slot-sized vectors, node-sized
+/// temperatures).
 struct FieldView {
-  std::span<const double> u;                   ///< trial values per slot
-  std::span<const double> u_start;             ///< committed values per slot
-  std::span<const double> temperature;         ///< predefined temperature per node now (may be empty)
-  std::span<const double> temperature_start;   ///< … at the increment start
+  std::span<const double> u;                 ///< trial values per slot
+  std::span<const double> u_start;           ///< committed values per slot
+  std::span<const double> temperature;       ///< predefined temperature per node now (may be empty)
+  std::span<const double> temperature_start; ///< … at the increment start
   std::span<const double> initial_temperature; ///< per node
 };
 
 class ElementGather {
-public:
+ public:
   /// Fill `input` for element i of block b; spans point into this object's buffers.
   ElementInput& gather(const Discretization& disc, ElementBlock& block, std::size_t i,
                        const FieldView& fields, const StepContext* ctx);
@@ -28,7 +29,7 @@ public:
   ElementOutput& output(const ElementBlock& block, bool want_tangent);
   ElementInput& input() { return _in; }
 
-private:
+ private:
   ElementInput _in;
   ElementOutput _out;
   std::vector<Vec3> _X;

@@ -11,6 +11,8 @@
 #include "common/error.hpp"
 #include "common/types.hpp"
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,8 @@ struct LinearConstraint {
   /// boundary condition on it). A distributing coupling eliminates nothing (Abaqus enforces it
   /// with multipliers): boundary conditions may hold any of its DOFs.
   bool eliminates = true;
+  /// The terms' DOFs 1-6 at nodes with a *TRANSFORM are in the local system (*EQUATION).
+  bool local_dofs = false;
   /// In a step whose boundary conditions prescribe the dependent DOF, the row is not applied
   /// (ties and couplings: the boundary condition holds the node, as Abaqus resolves it); otherwise
   /// such a boundary condition is an input error.
@@ -56,5 +60,18 @@ struct LinearConstraint {
   /// rotations (MPC BEAM/LINK, kinematic coupling): a step with NLGEOM rejects it.
   bool small_rotation = false;
 };
+
+/// *TRANSFORM: a local coordinate system at nodes. Boundary conditions, concentrated loads,
+/// *EQUATION terms and nodal output (U, RF, CF, UR, RM, CM) at these nodes refer to its axes.
+struct NodeTransform {
+  enum class Type : std::uint8_t { Rectangular, Cylindrical };
+  Type type = Type::Rectangular;
+  Vec3 a{}, b{}; ///< R: a on local x, b in the local x-y plane; C: two points on the z axis
+  SourceLocation loc;
+};
+
+/// The local axes at a node at X: rows e1, e2, e3 (row-major 3 x 3, orthonormal); nullopt where
+/// they are undefined (a node on the axis of a cylindrical system).
+std::optional<std::array<double, 9>> local_axes(const NodeTransform& t, const Vec3& X);
 
 } // namespace gapfem

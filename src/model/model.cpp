@@ -35,6 +35,33 @@ std::string EntityLabel::str() const {
   return (*instances)[static_cast<std::size_t>(i - 1)] + "." + std::to_string(local());
 }
 
+std::optional<std::array<double, 9>> local_axes(const NodeTransform& t, const Vec3& X) {
+  auto norm = [](const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  auto cross = [](const Vec3& a, const Vec3& b) {
+    return Vec3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  Vec3 e1, e3;
+  if (t.type == NodeTransform::Type::Rectangular) {
+    e1 = t.a;
+    e3 = cross(t.a, t.b);
+  } else {
+    e3 = {t.b[0] - t.a[0], t.b[1] - t.a[1], t.b[2] - t.a[2]};
+    const double l3 = norm(e3);
+    if (!(l3 > 0)) return std::nullopt;
+    for (double& v : e3) v /= l3;
+    const Vec3 r{X[0] - t.a[0], X[1] - t.a[1], X[2] - t.a[2]};
+    const double axial = r[0] * e3[0] + r[1] * e3[1] + r[2] * e3[2];
+    e1 = {r[0] - axial * e3[0], r[1] - axial * e3[1], r[2] - axial * e3[2]};
+    if (!(norm(e1) > 1e-12 * std::max(1.0, norm(r)))) return std::nullopt;
+  }
+  const double l1 = norm(e1), l3 = norm(e3);
+  if (!(l1 > 0) || !(l3 > 0)) return std::nullopt;
+  for (double& v : e1) v /= l1;
+  for (double& v : e3) v /= l3;
+  const Vec3 e2 = cross(e3, e1);
+  return std::array<double, 9>{e1[0], e1[1], e1[2], e2[0], e2[1], e2[2], e3[0], e3[1], e3[2]};
+}
+
 double Model::model_size() const {
   if (mesh.coords.empty()) return 1.0;
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),

@@ -65,6 +65,14 @@ struct Model {
   std::vector<Amplitude> amplitudes;
   /// Linear constraints (*EQUATION, *MPC, couplings, *TIE), one row each.
   std::vector<LinearConstraint> constraints;
+  /// *TRANSFORM systems and, per node, the index of its system (-1: global); empty if none.
+  std::vector<NodeTransform> transforms;
+  std::vector<int> node_transform;
+  /// The local axes of a transformed node (rows e1, e2, e3), nullopt for a global node.
+  std::optional<std::array<double, 9>> node_axes(NodeId n) const {
+    if (node_transform.empty() || node_transform[n] < 0) return std::nullopt;
+    return local_axes(transforms[node_transform[n]], mesh.coords[n]);
+  }
 
   std::vector<double> initial_temperature; ///< per node (0 where not given)
   bool has_initial_temperature = false;

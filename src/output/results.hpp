@@ -7,6 +7,7 @@
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct NodeResults {
   std::vector<Vec3> U, UR, RF, RM, CF, CM;
   std::vector<double> NT, RFL, CFL;
   std::vector<std::uint8_t> dof_mask; ///< per node: bit dof_bit(DofType) set when the DOF is active
+  /// Nodes with a *TRANSFORM: their vectors above are in the local system with these axes (rows
+  /// e1, e2, e3), as Abaqus reports them; the VTU writer turns them back to global components.
+  std::map<NodeId, std::array<double, 9>> local_axes;
   bool any_rotation = false;
   bool any_temperature = false;
   bool any_displacement = false;

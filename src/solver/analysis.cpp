@@ -92,6 +92,9 @@ struct Analysis::Impl {
   double damping_peak(StepProblem& prob);
   double step_damping_peak = 0.0;
   void write_frame(int index, StepProblem& prob, int increment, bool last, double dt);
+  /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of
+  /// the boundary conditions given there.
+  void to_local_systems(NodeResults& nr) const;
   StepChecks checks(StepProblem& prob);
 };
 
@@ -156,10 +159,30 @@ bool Analysis::Impl::supported_at_last_converged(StepProblem& prob, double t0) {
   return true;
 }
 
+void Analysis::Impl::to_local_systems(NodeResults& nr) const {
+  if (model.transforms.empty()) return;
+  const ConstraintSet& rows = disc.constraints();
+  auto rotate = [](const std::array<double, 9>& Q, Vec3& v) {
+    const Vec3 g = v;
+    for (int i = 0; i < 3; ++i) v[i] = Q[3 * i] * g[0] + Q[3 * i + 1] * g[1] + Q[3 * i + 2] * g[2];
+  };
+  for (NodeId n = 0; n < static_cast<NodeId>(model.node_transform.size()); ++n) {
+    const auto Q = model.node_axes(n);
+    if (!Q) continue;
+    nr.local_axes[n] = *Q;
+    for (auto* v : {&nr.U, &nr.UR, &nr.CF, &nr.CM}) rotate(*Q, (*v)[n]);
+    for (int d = 1; d <= 6; ++d) {
+      const int r = rows.bc_row(n, d);
+      const double reaction = r >= 0 && rows.active(r) ? -rows.mult_committed[r] : 0.0;
+      (d <= 3 ? nr.RF[n][d - 1] : nr.RM[n][d - 4]) = reaction;
+    }
+  }
+}
+
 StepSummary Analysis::Impl::run_step(int index) {
   const Step& step = model.steps[index];
   StepLoads loads(model, disc, index, history, st.u_start, st.total_time);
-  disc.set_equations(loads.equations());
+  disc.set_equations(loads.equations(), loads.local_bcs());
   std::shared_ptr<const SparsityPattern> pattern;
   {
     ScopedTimer t(&stats, TimeCategory::Assembly);
@@ -342,7 +365,7 @@ StepSummary Analysis::Impl::run_step(int index) {
     }
     write_frame(index, prob, ctrl.increment(), true, 0.0);
   } else {
-    loads.finish(ctrl.period(), prob.reactions(), history);
+    loads.finish(ctrl.period(), prob.reactions(), disc.constraints(), history);
   }
   sum.checks = checks(prob);
   heat.finish(disc, prob.context(), st.u_start, prob.reactions(), st.f_ext, sum.checks);
@@ -418,6 +441,7 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
     }
   }
   for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);
+  to_local_systems(nr);
   // Stress analyses report the predefined temperature field as NT.
   if (!nr.any_temperature && disc.has_temperature_field()) {
     nr.NT = st.T_start;
@@ -513,6 +537,19 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
     c.reaction_sum[d] += reaction[s];
     c.applied_sum[d] += st.f_ext[s];
     scale += std::abs(reaction[s]) + std::abs(st.f_ext[s]);
+  }
+  // reactions of boundary conditions in local systems: -lambda along each held local axis
+  const ConstraintSet& rows = disc.constraints();
+  for (NodeId n = 0; n < static_cast<NodeId>(model.node_transform.size()); ++n) {
+    const auto Q = model.node_axes(n);
+    if (!Q) continue;
+    for (int d = 0; d < 3; ++d) {
+      const int row = rows.bc_row(n, d + 1);
+      if (row < 0 || !rows.active(row)) continue;
+      const double R = -rows.mult_trial[row];
+      for (int j = 0; j < 3; ++j) c.reaction_sum[j] += R * (*Q)[3 * d + j];
+      scale += std::abs(R);
+    }
   }
   std::array<double, 3> ground{};
   std::vector<double> r;

@@ -1,6 +1,7 @@
 #include "solver/step_loads.hpp"
 
 #include "common/log.hpp"
+#include "fem/constraint_set.hpp"
 #include "fem/discretization.hpp"
 #include "model/model.hpp"
 
@@ -21,7 +22,45 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
   _prescribed.assign(static_cast<std::size_t>(dofs.n_slots()), 0);
   int ignored = 0;
   std::string example;
+  const ConstraintSet& rows = disc.constraints();
+  // the value of u along local DOF d (1-6) of a transformed node
+  auto local_value = [&](NodeId n, int d, const std::array<double, 9>& Q) {
+    const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
+    double v = 0.0;
+    for (int j = 0; j < 3; ++j) {
+      const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
+      if (s >= 0) v += Q[3 * i + j] * u_now[s];
+    }
+    return v;
+  };
   for (const BoundaryEntry& bc : _step.boundary) {
+    const int d = abaqus_number(bc.dof);
+    if (d <= 6)
+      if (const auto Q = model.node_axes(bc.node)) {
+        const int row = rows.bc_row(bc.node, d);
+        if (row < 0) {
+          if (ignored++ == 0)
+            example =
+                fmt::format("node {} DOF {} ({})", model.node_label(bc.node), d, bc.loc.str());
+          continue;
+        }
+        Scalar sc;
+        sc.start = local_value(bc.node, d, *Q);
+        sc.end = bc.fixed ? sc.start : bc.value;
+        sc.amplitude = bc.fixed ? -1 : bc.amplitude;
+        sc.constant = bc.fixed || bc.propagated;
+        bool replaced = false;
+        for (LocalBc& l : _local)
+          if (l.row == row) {
+            l.value = sc;
+            replaced = true;
+          }
+        if (!replaced) {
+          _local.push_back({bc.node, d, row, sc});
+          _local_keys.emplace_back(bc.node, d);
+        }
+        continue;
+      }
     const LocalIndex s = dofs.slot(bc.node, bc.dof);
     if (s < 0) {
       if (ignored++ == 0)
@@ -52,10 +91,27 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
   }
   _eqmap = EquationMap::build(_prescribed);
 
+  // A load on DOF d of a node: on its slot, or along the local axis of a transformed node.
+  auto add_nodal = [&](NodeId n, int d, const std::optional<std::array<double, 9>>& Q,
+                       const Scalar& sc) {
+    if (!Q) {
+      DofType t{};
+      dof_from_abaqus(d, t);
+      _nodal.push_back({dofs.slot(n, t), sc, 1.0});
+      return;
+    }
+    const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
+    for (int j = 0; j < 3; ++j) {
+      const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
+      if (s >= 0 && (*Q)[3 * i + j] != 0.0) _nodal.push_back({s, sc, (*Q)[3 * i + j]});
+    }
+  };
   // Concentrated loads (CLOAD, CFLUX), including removed ones (to zero).
   std::set<std::pair<NodeId, int>> seen;
   for (const NodalLoad& l : _step.cloads) {
     const LocalIndex s = dofs.slot(l.node, l.dof);
+    const int d = abaqus_number(l.dof);
+    const auto Q = d <= 6 ? model.node_axes(l.node) : std::nullopt;
     if (s < 0)
       throw InputError(l.loc, fmt::format("node {}", model.node_label(l.node)),
                        fmt::format("no element at this node has DOF {}; the load cannot be applied",
@@ -67,22 +123,28 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     sc.end = l.value;
     sc.amplitude = l.amplitude;
     sc.constant = l.propagated;
-    _nodal.emplace_back(s, sc);
+    add_nodal(l.node, d, Q, sc);
     _nodal_keys.emplace_back(key, sc);
     seen.insert(key);
   }
   for (const auto& [key, v] : history.nodal)
     if (!seen.count(key) && v != 0.0) {
-      const LocalIndex s = dofs.slot(key.first, static_cast<DofType>(key.second));
+      const int d = abaqus_number(static_cast<DofType>(key.second));
       Scalar sc{v, 0.0, -1, false};
-      _nodal.emplace_back(s, sc);
+      add_nodal(key.first, d, d <= 6 ? model.node_axes(key.first) : std::nullopt, sc);
       _nodal_keys.emplace_back(key, sc);
     }
   // Released boundary conditions: their reaction goes to zero like a removed load.
   if (!history.prescribed.empty())
     for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
       if (history.prescribed[s] && !_prescribed[s] && history.reaction[s] != 0.0)
-        _nodal.emplace_back(s, Scalar{history.reaction[s], 0.0, -1, false});
+        _nodal.push_back({s, Scalar{history.reaction[s], 0.0, -1, false}, 1.0});
+  for (const auto& [key, r] : history.local_reaction) {
+    bool held = false;
+    for (const auto& k : _local_keys) held |= k == key;
+    if (!held && r != 0.0)
+      add_nodal(key.first, key.second, model.node_axes(key.first), Scalar{r, 0.0, -1, false});
+  }
 
   // Distributed loads.
   std::set<std::tuple<ElemId, int, int>> dseen;
@@ -157,7 +219,11 @@ void StepLoads::apply_prescribed(double step_time, std::span<double> u) const {
 }
 
 void StepLoads::add_nodal_loads(double step_time, std::span<double> f_ext) const {
-  for (const auto& [s, sc] : _nodal) f_ext[s] += value(sc, step_time);
+  for (const NodalEntry& e : _nodal) f_ext[e.slot] += e.factor * value(e.value, step_time);
+}
+
+void StepLoads::apply_local_bcs(double step_time, ConstraintSet& rows) const {
+  for (const LocalBc& l : _local) rows.set_value(l.row, value(l.value, step_time));
 }
 
 void StepLoads::distributed_loads(double step_time, std::vector<ActiveLoad>& out) const {
@@ -194,7 +260,10 @@ void StepLoads::set_shrink_allowance(ElemId e, double v) {
     if (i.elem == e) i.allowance = v;
 }
 
-void StepLoads::finish(double t_end, std::span<const double> reaction, LoadHistory& h) const {
+void StepLoads::finish(double t_end, std::span<const double> reaction, const ConstraintSet& rows,
+                       LoadHistory& h) const {
+  h.local_reaction.clear();
+  for (const LocalBc& l : _local) h.local_reaction[{l.node, l.dof}] = -rows.mult_committed[l.row];
   h.nodal.clear();
   for (const auto& [key, sc] : _nodal_keys) {
     const double v = value(sc, t_end);

@@ -19,6 +19,7 @@ namespace gapfem {
 struct Model;
 struct Step;
 class Discretization;
+class ConstraintSet;
 
 /// What a step leaves behind for the next one.
 struct LoadHistory {
@@ -28,6 +29,8 @@ struct LoadHistory {
   std::vector<double> temperature;      ///< predefined field per node
   std::vector<std::uint8_t> prescribed; ///< per slot, in the last step
   std::vector<double> reaction;         ///< per slot, at the end of the last step
+  /// Boundary conditions in local systems (*TRANSFORM): (node, DOF) -> reaction at step end.
+  std::map<std::pair<NodeId, int>, double> local_reaction;
 };
 
 class StepLoads {
@@ -43,6 +46,10 @@ class StepLoads {
 
   /// Write the prescribed values at `step_time` into u (prescribed slots only).
   void apply_prescribed(double step_time, std::span<double> u) const;
+  /// Boundary conditions of this step in local systems (*TRANSFORM nodes): (node, DOF 1-6).
+  std::span<const std::pair<NodeId, int>> local_bcs() const { return _local_keys; }
+  /// Their values at `step_time` as the right-hand sides of their constraint rows.
+  void apply_local_bcs(double step_time, ConstraintSet& rows) const;
   /// Add the concentrated loads (and released-reaction loads) at `step_time` to f_ext (per slot).
   void add_nodal_loads(double step_time, std::span<double> f_ext) const;
   /// The distributed loads active at `step_time`.
@@ -56,8 +63,9 @@ class StepLoads {
   void set_shrink_allowance(ElemId e, double v);
   const std::vector<ElemId>& shrink_elements() const { return _shrink_elems; }
 
-  /// Record the end-of-step values (call after the last increment).
-  void finish(double step_period_time, std::span<const double> reaction,
+  /// Record the end-of-step values (call after the last increment); `rows` holds the
+  /// multipliers (reactions) of the boundary conditions in local systems.
+  void finish(double step_period_time, std::span<const double> reaction, const ConstraintSet& rows,
               LoadHistory& history) const;
 
  private:
@@ -75,7 +83,20 @@ class StepLoads {
   EquationMap _eqmap;
   std::vector<std::uint8_t> _prescribed;
   std::vector<std::pair<LocalIndex, Scalar>> _bc;
-  std::vector<std::pair<LocalIndex, Scalar>> _nodal;
+  struct NodalEntry {
+    LocalIndex slot;
+    Scalar value;
+    double factor = 1.0; ///< component of a load given in a local system
+  };
+  std::vector<NodalEntry> _nodal;
+  struct LocalBc {
+    NodeId node;
+    int dof; ///< 1-6
+    int row; ///< its ConstraintSet row
+    Scalar value;
+  };
+  std::vector<LocalBc> _local;
+  std::vector<std::pair<NodeId, int>> _local_keys;
   std::vector<std::pair<std::pair<NodeId, int>, Scalar>> _nodal_keys;
   struct Dist {
     const DistributedLoad* load;

@@ -25,6 +25,7 @@ void StepProblem::begin_increment(double t0, double dt) {
   std::copy(_s.u_start.begin(), _s.u_start.end(), _s.u.begin());
   _disc.reset_trial();
   _loads.apply_prescribed(_ctx.step_time, _s.u);
+  _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
   _loads.interference(_ctx.step_time, _disc);
 }

@@ -101,6 +101,7 @@ void handle_contact_interference(BuildState& s, const Keyword& kw);
 /// @name Linear constraints (handlers_constraints.cpp)
 ///@{
 void handle_equation(BuildState& s, const Keyword& kw);
+void handle_transform(BuildState& s, const Keyword& kw);
 /// *MPC, *KINEMATIC COUPLING, *COUPLING and its *KINEMATIC / *DISTRIBUTING (handlers_couplings.cpp)
 void handle_mpc(BuildState& s, const Keyword& kw);
 void handle_kinematic_coupling(BuildState& s, const Keyword& kw);

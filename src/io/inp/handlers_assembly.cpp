@@ -36,7 +36,8 @@ bool part_keyword(const std::string& key) {
                                          "KINEMATICCOUPLING",
                                          "COUPLING",
                                          "KINEMATIC",
-                                         "DISTRIBUTING"};
+                                         "DISTRIBUTING",
+                                         "TRANSFORM"};
   for (const char* k : kAllowed)
     if (key == k) return true;
   return false;

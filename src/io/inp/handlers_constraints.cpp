@@ -4,6 +4,7 @@
 #include "io/inp/handlers.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <map>
 
@@ -55,6 +56,7 @@ void add_equations(BuildState& s, const std::vector<TermSpec>& terms, const Sour
   for (std::size_t i = 0; i < count; ++i) {
     LinearConstraint c;
     c.kind = ConstraintKind::Equation;
+    c.local_dofs = true;
     c.loc = loc;
     for (const TermSpec& t : terms) {
       const NodeId n = t.nodes.size() == 1 ? t.nodes[0] : t.nodes[i];
@@ -166,6 +168,8 @@ void check_nlgeom_rows(BuildState& s) {
 } // namespace
 
 void build_deferred_constraints(BuildState& s) {
+  if (!s.model.node_transform.empty())
+    s.model.node_transform.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()), -1);
   std::stable_sort(s.deferred_constraints.begin(), s.deferred_constraints.end(),
                    [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& d : s.deferred_constraints) {
@@ -176,6 +180,71 @@ void build_deferred_constraints(BuildState& s) {
     }
   }
   s.deferred_constraints.clear();
+}
+
+void handle_transform(BuildState& s, const Keyword& kw) {
+  const std::string nset = set_param(s, kw, "NSET", true);
+  const int type = enum_param(kw, "TYPE", {"R", "C", "S"}, 0);
+  if (type == 2)
+    throw InputError(kw.loc, "TYPE=S",
+                     "spherical transforms are not available; use TYPE=R (rectangular) or TYPE=C "
+                     "(cylindrical)");
+  const auto it = s.model.nsets.find(nset);
+  if (it == s.model.nsets.end()) {
+    if (s.bad_sets.count(nset)) return;
+    throw InputError(kw.loc, fmt::format("NSET={}", nset),
+                     "this node set is not defined; define it with *NSET before *TRANSFORM");
+  }
+  NodeTransform t;
+  t.type = type == 0 ? NodeTransform::Type::Rectangular : NodeTransform::Type::Cylindrical;
+  t.loc = kw.loc;
+  bool read = false;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    if (read) r.fail("data", "a *TRANSFORM takes one data line");
+    r.at_most(6, "a_x, a_y, a_z, b_x, b_y, b_z");
+    for (int i = 0; i < 3; ++i) {
+      t.a[i] = r.real(i, "coordinate of point a");
+      t.b[i] = r.real(3 + i, "coordinate of point b");
+    }
+    read = true;
+  });
+  if (!read)
+    throw InputError(kw.loc, "", "*TRANSFORM needs a data line: a_x, a_y, a_z, b_x, b_y, b_z");
+  Model& m = s.model;
+  if (m.node_transform.empty())
+    m.node_transform.assign(static_cast<std::size_t>(m.mesh.n_nodes()), -1);
+  m.node_transform.resize(static_cast<std::size_t>(m.mesh.n_nodes()), -1);
+  const int index = static_cast<int>(m.transforms.size());
+  for (NodeId n : it->second) {
+    if (m.node_transform[n] >= 0)
+      throw InputError(kw.loc, fmt::format("node {}", m.node_label(n)),
+                       fmt::format("the node already has a local system (*TRANSFORM at {}); give "
+                                   "each node one *TRANSFORM",
+                                   m.transforms[m.node_transform[n]].loc.str()));
+    if (!local_axes(t, m.mesh.coords[n]))
+      throw InputError(kw.loc, fmt::format("node {}", m.node_label(n)),
+                       t.type == NodeTransform::Type::Rectangular
+                           ? "the points a and b do not define a system (a is zero or b is "
+                             "parallel to a); give a on the local x axis and b in the local x-y "
+                             "plane"
+                           : "the node lies on the axis of the cylindrical system (or a = b), "
+                             "where its radial direction is undefined");
+  }
+  m.transforms.push_back(t);
+  for (NodeId n : it->second) m.node_transform[n] = index;
+  const std::vector<NodeId> nodes = it->second;
+  s.deferred_constraints.push_back(
+      {1, [nodes, t](BuildState& st) {
+         if (st.model.space == ModelSpace::ThreeD) return;
+         for (NodeId n : nodes) {
+           const auto q = st.model.node_axes(n);
+           if (q && std::abs(std::abs((*q)[8]) - 1.0) > 1e-12)
+             throw InputError(t.loc, fmt::format("node {}", st.model.node_label(n)),
+                              "in a planar or axisymmetric model the local system must keep the z "
+                              "axis; give a and b in the x-y plane");
+         }
+       }});
 }
 
 void check_constraints(BuildState& s) {

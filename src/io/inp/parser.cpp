@@ -62,6 +62,7 @@ constexpr std::array<KeywordSpec, 80> kTable = {{
   {"*GAP HEAT GENERATION", handle_gap_heat_generation, W::Model, "", kGap},
   // linear constraints
   {"*EQUATION", handle_equation, W::Model, "INPUT"},
+  {"*TRANSFORM", handle_transform, W::Model, "NSET|TYPE"},
   {"*MPC", handle_mpc, W::Model, "MODE|USER"},
   {"*TIE", handle_tie, W::Model, "NAME|POSITION TOLERANCE|ADJUST|TYPE|NO ROTATION|NO THICKNESS|CYCLIC SYMMETRY"},
   {"*KINEMATIC COUPLING", handle_kinematic_coupling, W::Model, "REF NODE"},
