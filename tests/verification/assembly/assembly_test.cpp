@@ -230,3 +230,32 @@ TEST(Assembly, DeckInTheAbaqusCaeLayoutRuns) {
     EXPECT_NEAR(gap(r, f, g).normal_force, 2.5, 1e-9) << g;
   EXPECT_EQ(m.warnings.size(), 1u) << "only the *OUTPUT, HISTORY remark";
 }
+
+TEST(Assembly, CaeLayoutTieAndCouplingAtAssemblyLevel) {
+  // tests/verification/assembly/cae_constraints.inp: a cap tied (surface to surface, non-matching
+  // meshes) on a base block, the cap's top kinematically coupled in DOF 3 to a reference point
+  // pushed down by 20; surfaces of internal instance element sets, as Abaqus/CAE writes them.
+  // Closed form: uniaxial stress -20 over the unit section, E = 1000, nu = 0.3:
+  // u3 = -0.02 z, u1 = 0.006 x, u2 = 0.006 y everywhere (exact for C3D8 and the mortar tie).
+  JobOptions o;
+  o.deck = std::filesystem::path(GAPFEM_TEST_DIR) / "verification/assembly/cae_constraints.inp";
+  o.write_files = false;
+  o.quiet = true;
+  const JobResult r = run_job(o);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Model& m = *r.model;
+  const Frame& f = last_frame(r);
+  ASSERT_EQ(m.mesh.n_nodes(), 27 + 32 + 1);
+  for (NodeId n = 0; n < m.mesh.n_nodes(); ++n) {
+    const Vec3& X = m.mesh.coords[n];
+    const Vec3& u = f.nodes.U[n];
+    const std::string name = m.node_label(n).str();
+    if (name == "1") { // the reference point follows the cap's top (z = 1.5)
+      EXPECT_NEAR(u[2], -0.03, 1e-12);
+      continue;
+    }
+    EXPECT_NEAR(u[0], 0.006 * X[0], 1e-12) << name;
+    EXPECT_NEAR(u[1], 0.006 * X[1], 1e-12) << name;
+    EXPECT_NEAR(u[2], -0.02 * X[2], 1e-12) << name;
+  }
+}
