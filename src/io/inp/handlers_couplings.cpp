@@ -308,12 +308,12 @@ void handle_kinematic_coupling(BuildState& s, const Keyword& kw) {
 }
 
 void handle_coupling(BuildState& s, const Keyword& kw) {
-  if (kw.has("ORIENTATION"))
-    reject_param(kw, "ORIENTATION", "couplings in a local coordinate system are not available");
   // the block is open even when the coupling fails: its *KINEMATIC / *DISTRIBUTING are then
   // skipped without a second message
   s.couplings.emplace_back();
   s.couplings.back().failed = true;
+  if (kw.has("ORIENTATION"))
+    reject_param(kw, "ORIENTATION", "couplings in a local coordinate system are not available");
   BuildState::CouplingDef c;
   c.name = name_param(kw, "CONSTRAINT NAME", true);
   c.loc = kw.loc;
@@ -348,7 +348,8 @@ void handle_coupling(BuildState& s, const Keyword& kw) {
 namespace {
 /// The coupling the sub-option belongs to; nullptr when that *COUPLING failed (reported).
 BuildState::CouplingDef* current_coupling(BuildState& s, const Keyword& kw) {
-  BuildState::CouplingDef& c = s.couplings.back(); // the parser checked the parent block
+  if (s.couplings.empty()) return nullptr; // (the parser checks the parent block)
+  BuildState::CouplingDef& c = s.couplings.back();
   if (c.failed) return nullptr;
   if (c.defined)
     throw InputError(kw.loc, fmt::format("coupling {}", c.name),

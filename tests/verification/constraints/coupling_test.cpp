@@ -283,6 +283,11 @@ TEST(Coupling, BadCouplingsAreInputErrors) {
   e = error_of("*COUPLING, CONSTRAINT NAME=C, REF NODE=9999, SURFACE=NOPE\n*KINEMATIC\n");
   EXPECT_TRUE(has(e, "SURFACE=NOPE: this surface is not defined")) << e;
   EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 0) << e;
+  // a *COUPLING rejected for its first parameter still opens its block (this crashed once)
+  e = error_of("*COUPLING, CONSTRAINT NAME=C, REF NODE=9999, SURFACE=TOPS, ORIENTATION=OR1\n"
+               "*KINEMATIC\n");
+  EXPECT_TRUE(has(e, "ORIENTATION")) << e;
+  EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 0) << e;
   e = error_of("*COUPLING, CONSTRAINT NAME=C, REF NODE=TOP, SURFACE=TOPS\n*KINEMATIC\n");
   EXPECT_TRUE(has(e, "the reference node must be one node; this set holds 9")) << e;
   e = error_of("*COUPLING, CONSTRAINT NAME=C, REF NODE=9999, SURFACE=TOPS, INFLUENCE RADIUS=0.1\n"
