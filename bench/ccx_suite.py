@@ -30,6 +30,9 @@ def classify(message):
     m = re.search(r"the keyword (\*[A-Z][A-Z0-9 _-]*) is not supported", message)
     if m:
         return "keyword " + m.group(1).strip()
+    m = re.search(r"the procedure (\*[A-Z][A-Z0-9 _-]*) is not supported", message)
+    if m:
+        return "procedure " + m.group(1).strip()
     m = re.search(r"TYPE=([A-Z0-9]+): gapfem does not know this element type", message)
     if m:
         return "element " + m.group(1)

@@ -10,7 +10,6 @@ namespace gapfem::inp {
 /// @name *HEADING, *PREPRINT, *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE (handlers_mesh.cpp)
 ///@{
 void handle_heading(BuildState& s, const Keyword& kw);
-void handle_preprint(BuildState& s, const Keyword& kw);
 void handle_node(BuildState& s, const Keyword& kw);
 void handle_element(BuildState& s, const Keyword& kw);
 void handle_nset(BuildState& s, const Keyword& kw);
@@ -127,6 +126,12 @@ void handle_node_output(BuildState& s, const Keyword& kw);
 void handle_element_output(BuildState& s, const Keyword& kw);
 /// *NODE FILE / *EL FILE (results-file output): ignored with a warning.
 void handle_file_output(BuildState& s, const Keyword& kw);
+/// *ENERGY PRINT, *CONTACT PRINT, *FILE FORMAT, *MONITOR, *PREPRINT and the other print and
+/// results-file controls: accepted with one note per keyword (they do not change the analysis).
+void handle_print_control(BuildState& s, const Keyword& kw);
+/// *ENERGY OUTPUT, *CONTACT OUTPUT after *OUTPUT: history ones silently (already remarked), field
+/// ones with a note.
+void handle_output_suboption(BuildState& s, const Keyword& kw);
 /// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is known.
 void resolve_preset_outputs(BuildState& s);
 ///@}

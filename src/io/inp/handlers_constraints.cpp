@@ -189,12 +189,13 @@ void handle_transform(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "TYPE=S",
                      "spherical transforms are not available; use TYPE=R (rectangular) or TYPE=C "
                      "(cylindrical)");
-  const auto it = s.model.nsets.find(nset);
-  if (it == s.model.nsets.end()) {
+  const std::vector<NodeId>* set = find_nset(s, nset);
+  if (!set) {
     if (s.bad_sets.count(nset)) return;
     throw InputError(kw.loc, fmt::format("NSET={}", nset),
                      "this node set is not defined; define it with *NSET before *TRANSFORM");
   }
+  const std::vector<NodeId> members = *set;
   NodeTransform t;
   t.type = type == 0 ? NodeTransform::Type::Rectangular : NodeTransform::Type::Cylindrical;
   t.loc = kw.loc;
@@ -216,7 +217,7 @@ void handle_transform(BuildState& s, const Keyword& kw) {
     m.node_transform.assign(static_cast<std::size_t>(m.mesh.n_nodes()), -1);
   m.node_transform.resize(static_cast<std::size_t>(m.mesh.n_nodes()), -1);
   const int index = static_cast<int>(m.transforms.size());
-  for (NodeId n : it->second) {
+  for (NodeId n : members) {
     if (m.node_transform[n] >= 0)
       throw InputError(kw.loc, fmt::format("node {}", m.node_label(n)),
                        fmt::format("the node already has a local system (*TRANSFORM at {}); give "
@@ -232,8 +233,8 @@ void handle_transform(BuildState& s, const Keyword& kw) {
                              "where its radial direction is undefined");
   }
   m.transforms.push_back(t);
-  for (NodeId n : it->second) m.node_transform[n] = index;
-  const std::vector<NodeId> nodes = it->second;
+  for (NodeId n : members) m.node_transform[n] = index;
+  const std::vector<NodeId> nodes = members;
   s.deferred_constraints.push_back(
       {1, [nodes, t](BuildState& st) {
          if (st.model.space == ModelSpace::ThreeD) return;

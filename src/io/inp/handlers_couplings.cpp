@@ -204,8 +204,7 @@ void mpc_rows(BuildState& s, MpcType type, const SourceLocation& loc, NodeId a, 
   const Vec3 d = sub(s.model.mesh.coords[a], s.model.mesh.coords[b]);
   switch (type) {
   case MpcType::Pin: // an MPC gives its nodes the DOFs it constrains (e.g. a node without elements)
-    for (int i : sd.translations)
-      s.model.constraints.push_back(equal_row(o, a, b, i, true, true));
+    for (int i : sd.translations) s.model.constraints.push_back(equal_row(o, a, b, i, true, true));
     break;
   case MpcType::Tie: // every active DOF: the rows of DOFs the nodes do not both carry are dropped
     for (int i : {1, 2, 3, 4, 5, 6, 11}) {

@@ -187,9 +187,14 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
                "separate lines");
       for (long long d = first; d <= last; ++d) dofs.push_back(static_cast<int>(d));
       value = r.real_or(3, 0.0, "value");
-      if (!history && value != 0.0)
-        r.fail("field 4 (value)", "model-data *BOUNDARY can only fix DOFs (value 0); prescribe "
-                                  "non-zero values with *BOUNDARY inside a step");
+      if (!history && value != 0.0 && !s.model_boundary_value_warned) {
+        // Abaqus allows only zero values here; CalculiX decks give non-zero ones, meaning the
+        // value applied in the first step (unambiguous, so read with one remark)
+        s.warn(r.loc(), "a model-data *BOUNDARY with a non-zero value (as CalculiX decks write "
+                        "it): the value is applied in the first step with the step's default "
+                        "variation, as if the line were inside step 1");
+        s.model_boundary_value_warned = true;
+      }
     }
     for (NodeId n : resolve_nodes(s, r, 0))
       for (int d : dofs) {

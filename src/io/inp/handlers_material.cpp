@@ -44,8 +44,8 @@ void handle_material(BuildState& s, const Keyword& kw) {
 
 void handle_elastic(BuildState& s, const Keyword& kw) {
   if (s.current_material < 0) return; // *MATERIAL line was in error
-  const int type = enum_param(kw, "TYPE", {"ISOTROPIC"}, 0);
-  (void)type;
+  // ISO is the abbreviation CalculiX decks use (CalculiX User's Manual, *ELASTIC)
+  enum_param(kw, "TYPE", {"ISOTROPIC", "ISO"}, 0);
   reject_param(kw, "MODULI", "give the instantaneous isotropic moduli E and nu");
   once(s, kw, current_material(s).elastic);
   current_material(s).elastic = read_property_table(
@@ -66,7 +66,7 @@ void handle_density(BuildState& s, const Keyword& kw) {
 
 void handle_expansion(BuildState& s, const Keyword& kw) {
   if (s.current_material < 0) return;
-  enum_param(kw, "TYPE", {"ISO"}, 0);
+  enum_param(kw, "TYPE", {"ISO", "ISOTROPIC"}, 0);
   once(s, kw, current_material(s).expansion);
   current_material(s).expansion_zero = real_param(kw, "ZERO").value_or(0.0);
   current_material(s).expansion =
@@ -75,7 +75,7 @@ void handle_expansion(BuildState& s, const Keyword& kw) {
 
 void handle_conductivity(BuildState& s, const Keyword& kw) {
   if (s.current_material < 0) return;
-  enum_param(kw, "TYPE", {"ISO"}, 0);
+  enum_param(kw, "TYPE", {"ISO", "ISOTROPIC"}, 0);
   once(s, kw, current_material(s).conductivity);
   current_material(s).conductivity =
       read_property_table(s, kw, kw.data, {"conductivity"}, positive_first);

@@ -56,8 +56,6 @@ void handle_heading(BuildState& s, const Keyword& kw) {
   }
 }
 
-void handle_preprint(BuildState&, const Keyword&) {}
-
 void handle_node(BuildState& s, const Keyword& kw) {
   reject_param(kw, "SYSTEM",
                "give the coordinates in the global rectangular system (SYSTEM=R is the default)");

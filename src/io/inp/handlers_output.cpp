@@ -58,7 +58,9 @@ std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool str
 }
 
 int frequency_param(const Keyword& kw) {
-  const auto f = int_param(kw, "FREQUENCY");
+  // FREQ: the abbreviation CalculiX decks use; FREQUENCYF (CalculiX's frequency of its fluid
+  // results) has no meaning here and is left aside
+  const auto f = kw.has("FREQUENCY") ? int_param(kw, "FREQUENCY") : int_param(kw, "FREQ");
   if (f && *f < 0) throw InputError(kw.loc, "FREQUENCY", "the frequency must not be negative");
   return f ? static_cast<int>(*f) : 1;
 }
@@ -78,11 +80,11 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
     req.nodes.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()));
     for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) req.nodes[n] = n;
   } else {
-    const auto it = s.model.nsets.find(req.nset);
-    if (it == s.model.nsets.end())
+    const auto* set = find_nset(s, req.nset);
+    if (!set)
       throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
                        "this node set is not defined; define it with *NSET in the model data");
-    req.nodes = it->second;
+    req.nodes = *set;
   }
   req.vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
   if (req.vars.empty())
@@ -98,6 +100,7 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
   ElPrintRequest req;
   req.loc = kw.loc;
   req.frequency = frequency_param(kw);
+  yes_no_param(kw, "GLOBAL", true); // accepted: gapfem's elements report global components
   req.totals = yes_no_param(kw, "TOTALS", false);
   req.summary = yes_no_param(kw, "SUMMARY", true);
   const int pos =
@@ -177,6 +180,21 @@ void handle_file_output(BuildState& s, const Keyword& kw) {
          fmt::format("{} (results-file output) is not written by gapfem and was ignored; use "
                      "*OUTPUT, FIELD for ParaView frames or *NODE PRINT / *EL PRINT for tables",
                      kw.name));
+}
+
+void handle_print_control(BuildState& s, const Keyword& kw) {
+  if (!s.noted_keywords.insert(kw.key).second) return; // one note per keyword and deck
+  s.warn(kw.loc, fmt::format("{} controls Abaqus's printed or results-file output; gapfem writes "
+                             "its own job.dat, job.results.json and ParaView files, so it was "
+                             "ignored (it does not change the analysis)",
+                             kw.name));
+}
+
+void handle_output_suboption(BuildState& s, const Keyword& kw) {
+  // history requests were ignored with the *OUTPUT, HISTORY remark; in a field request these
+  // (energy, contact-pair) variables do not exist in gapfem
+  if (s.parent != Parent::FieldOutput) return;
+  handle_print_control(s, kw);
 }
 
 void resolve_preset_outputs(BuildState& s) {

@@ -102,6 +102,8 @@ void handle_step(BuildState& s, const Keyword& kw) {
   st.name = kw.has("NAME") ? std::string(trim(param_value(kw, "NAME", true)))
                            : fmt::format("Step-{}", st.number);
   st.boundary = carried(prev ? prev->boundary : s.model_boundary);
+  if (!prev) // non-zero model-data values (CalculiX dialect) are reached in the first step
+    for (BoundaryEntry& b : st.boundary) b.propagated = b.value == 0.0;
   if (prev) {
     st.controls = prev->controls; // *CONTROLS stay in effect until changed or reset
     st.cloads = carried(prev->cloads);

@@ -67,8 +67,7 @@ std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size
                ? "this node is not defined in its part; check the number"
                : "this node is not defined; define it with *NODE before use");
   }
-  const auto it = s.model.nsets.find(ref.set);
-  if (it != s.model.nsets.end()) return it->second;
+  if (const auto* set = find_nset(s, ref.set)) return *set;
   if (s.bad_sets.count(ref.set)) return {};
   r.fail(fmt::format("node set {}", ref.set),
          "this node set is not defined; define it with *NSET (or "
@@ -99,7 +98,24 @@ std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::s
 
 const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name) {
   const auto it = s.model.elsets.find(name);
-  return it == s.model.elsets.end() ? nullptr : &it->second;
+  if (it != s.model.elsets.end()) return &it->second;
+  if (name == "EALL") { // CalculiX's implicit set of every element (when the deck has none)
+    s.all_elements.resize(static_cast<std::size_t>(s.model.mesh.n_elements()));
+    for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) s.all_elements[e] = e;
+    return &s.all_elements;
+  }
+  return nullptr;
+}
+
+const std::vector<NodeId>* find_nset(BuildState& s, const std::string& name) {
+  const auto it = s.model.nsets.find(name);
+  if (it != s.model.nsets.end()) return &it->second;
+  if (name == "NALL") { // CalculiX's implicit set of every node (when the deck has none)
+    s.all_nodes.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()));
+    for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) s.all_nodes[n] = n;
+    return &s.all_nodes;
+  }
+  return nullptr;
 }
 
 int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param) {

@@ -55,7 +55,9 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
-  std::vector<SourceRef> node_src; ///< per node: its *NODE data line
+  std::vector<SourceRef> node_src;  ///< per node: its *NODE data line
+  std::vector<NodeId> all_nodes;    ///< the implicit set NALL (find_nset)
+  std::vector<ElemId> all_elements; ///< the implicit set EALL (find_elset)
 
   /// *INITIAL CONDITIONS, TYPE=TEMPERATURE entries, applied when the model data
   /// is complete.
@@ -92,9 +94,11 @@ struct BuildState {
   std::vector<CouplingDef> couplings;
 
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
+  bool model_boundary_value_warned = false;  ///< the non-zero model-data *BOUNDARY remark
   bool model_done = false;                   ///< finish_model_data() has run
   bool in_step = false;
   bool history_warned = false; ///< the *OUTPUT, HISTORY warning was given (once per deck)
+  std::unordered_set<std::string> noted_keywords; ///< print controls already remarked
   Step step;
   StepScratch scratch;
 
@@ -198,8 +202,11 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
 /// Elements named by a data field: an element label or an ELSET name.
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field);
-/// Elements of an ELSET parameter value (upper-cased); throws when the set does not exist.
+/// Elements of an ELSET parameter value (upper-cased), or nullptr when the set does not exist.
+/// EALL, when the deck defines no set of that name, holds every element (CalculiX dialect).
 const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name);
+/// Nodes of a node set (upper-cased name), or nullptr; NALL as EALL for nodes.
+const std::vector<NodeId>* find_nset(BuildState& s, const std::string& name);
 /// Index of the amplitude named by the AMPLITUDE (or `param`) parameter, -1 when absent.
 int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param = "AMPLITUDE");
 

@@ -21,10 +21,10 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 80> kTable = {{
+constexpr std::array<KeywordSpec, 100> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
-  {"*PREPRINT", handle_preprint, W::Model, "*"},
+  {"*PREPRINT", handle_print_control, W::Model, "*"},
   {"*PART", handle_part, W::Model, "NAME"},
   {"*END PART", handle_end_part, W::Model, ""},
   {"*ASSEMBLY", handle_assembly, W::Model, "NAME"},
@@ -92,12 +92,26 @@ constexpr std::array<KeywordSpec, 80> kTable = {{
   {"*TEMPERATURE", handle_temperature, W::History, "OP|AMPLITUDE|FILE"},
   {"*CONTACT INTERFERENCE", handle_contact_interference, W::History, "TYPE|SHRINK|AMPLITUDE|OP"},
   // history: output
-  {"*NODE PRINT", handle_node_print, W::History, "NSET|FREQUENCY|TOTALS|SUMMARY|GLOBAL"},
-  {"*EL PRINT", handle_el_print, W::History, "ELSET|FREQUENCY|POSITION|TOTALS|SUMMARY"},
-  {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|VARIABLE|NUMBER INTERVAL|TIME INTERVAL"},
+  {"*NODE PRINT", handle_node_print, W::History, "NSET|FREQUENCY|FREQ|TOTALS|SUMMARY|GLOBAL|FREQUENCYF"},
+  {"*EL PRINT", handle_el_print, W::History, "ELSET|FREQUENCY|FREQ|POSITION|TOTALS|SUMMARY|GLOBAL|FREQUENCYF"},
+  {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|FREQ|VARIABLE|NUMBER INTERVAL|TIME INTERVAL|FREQUENCYF"},
   {"*NODE OUTPUT", handle_node_output, W::History, "NSET", kOutput},
   {"*ELEMENT OUTPUT", handle_element_output, W::History, "ELSET|DIRECTIONS|POSITION", kOutput},
   {"*NODE FILE", handle_file_output, W::History, "*"},
+  {"*ENERGY OUTPUT", handle_output_suboption, W::History, "*", kOutput},
+  {"*CONTACT OUTPUT", handle_output_suboption, W::History, "*", kOutput},
+  // print and results-file controls: accepted with a note
+  {"*ENERGY PRINT", handle_print_control, W::Both, "*"},
+  {"*ENERGY FILE", handle_print_control, W::Both, "*"},
+  {"*CONTACT PRINT", handle_print_control, W::Both, "*"},
+  {"*CONTACT FILE", handle_print_control, W::Both, "*"},
+  {"*SECTION PRINT", handle_print_control, W::Both, "*"},
+  {"*SECTION FILE", handle_print_control, W::Both, "*"},
+  {"*FILE FORMAT", handle_print_control, W::Both, "*"},
+  {"*FILE OUTPUT", handle_print_control, W::Both, "*"},
+  {"*MONITOR", handle_print_control, W::Both, "*"},
+  {"*PRINT", handle_print_control, W::Both, "*"},
+  {"*DIAGNOSTICS", handle_print_control, W::Both, "*"},
   {"*EL FILE", handle_file_output, W::History, "*"},
 }};
 // clang-format on
@@ -135,13 +149,80 @@ std::string parent_names(unsigned parents) {
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 
-void unknown(BuildState& s, const SourceLocation& loc, const std::string& what) {
-  if (s.opts.ignore_unknown)
+/// Unknown keywords that change nothing gapfem computes, so --ignore-unknown may skip them:
+/// output controls, and named definitions only used through parameters gapfem rejects anyway.
+bool skippable_keyword(const std::string& key) {
+  static const char* const kSkippable[] = {
+      "ORIENTATION",       "INTEGRATEDOUTPUT", "INTEGRATEDOUTPUTSECTION",
+      "NODERESPONSE",      "ELEMENTRESPONSE",  "RADIATIONPRINT",
+      "RADIATIONFILE",     "MODALPRINT",       "MODALFILE",
+      "SUBSTRUCTUREPRINT", "EQUATIONPRINT"};
+  for (const char* k : kSkippable)
+    if (key == k) return true;
+  return false;
+}
+
+/// Keywords whose unknown parameters --ignore-unknown may skip: output requests only.
+bool output_keyword(const std::string& key) {
+  static const char* const kOutput[] = {"NODEPRINT",     "ELPRINT",  "OUTPUT", "NODEOUTPUT",
+                                        "ELEMENTOUTPUT", "NODEFILE", "ELFILE", "PREPRINT"};
+  for (const char* k : kOutput)
+    if (key == k) return true;
+  return false;
+}
+
+/// Analysis procedures of Abaqus and CalculiX that gapfem does not run.
+bool procedure_keyword(const std::string& key) {
+  static const char* const kProcedures[] = {"FREQUENCY",
+                                            "DYNAMIC",
+                                            "MODALDYNAMIC",
+                                            "STEADYSTATEDYNAMICS",
+                                            "BUCKLE",
+                                            "VISCO",
+                                            "SOILS",
+                                            "GEOSTATIC",
+                                            "MASSDIFFUSION",
+                                            "ELECTROMAGNETIC",
+                                            "ELECTROMAGNETICS",
+                                            "COUPLEDTHERMAL-ELECTRIC",
+                                            "COUPLEDTHERMAL-ELECTRICAL-STRUCTURAL",
+                                            "RANDOMRESPONSE",
+                                            "RESPONSESPECTRUM",
+                                            "COMPLEXFREQUENCY",
+                                            "SUBSTRUCTUREGENERATE",
+                                            "MATRIXGENERATE",
+                                            "DIRECTCYCLIC",
+                                            "ANNEAL",
+                                            "CFD",
+                                            "GREEN",
+                                            "SENSITIVITY",
+                                            "UNCOUPLEDTEMPERATURE-DISPLACEMENT",
+                                            "CRACKPROPAGATION",
+                                            "HEATTRANSFERCFD",
+                                            "FEASIBILITY",
+                                            "ACOUSTIC"};
+  for (const char* k : kProcedures)
+    if (key == k) return true;
+  return false;
+}
+
+/// An unknown keyword (`keyword` empty) or an unknown parameter of `keyword`.
+void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
+             const std::string& key, bool parameter) {
+  const bool skippable = parameter ? output_keyword(key) : skippable_keyword(key);
+  if (s.opts.ignore_unknown && skippable) {
     s.warn(loc, what + " is not supported by gapfem and was ignored (--ignore-unknown)");
-  else
+  } else if (s.opts.ignore_unknown) {
     s.error(loc, "",
-            what + " is not supported by gapfem; remove it, or run with --ignore-unknown to skip "
-                   "it with a warning");
+            what + " is not supported by gapfem, and --ignore-unknown does not skip it: it would "
+                   "change the model (--ignore-unknown skips only output requests and unused "
+                   "definitions); remove it or replace it with what gapfem supports");
+  } else {
+    s.error(loc, "",
+            what + " is not supported by gapfem; remove it" +
+                (skippable ? std::string(", or run with --ignore-unknown to skip it with a warning")
+                           : std::string(" or replace it with what gapfem supports")));
+  }
 }
 
 void dispatch(BuildState& s, Keyword& kw);
@@ -183,7 +264,17 @@ void dispatch(BuildState& s, Keyword& kw) {
   const KeywordSpec* spec = find_spec(kw.key);
   if (!spec) {
     // unknown keyword: the current block stays open (an ignored *PLASTIC keeps its *MATERIAL)
-    unknown(s, kw.loc, fmt::format("the keyword {}", kw.name));
+    if (s.in_step && procedure_keyword(kw.key)) {
+      // the step has its procedure, one gapfem does not run: no "step has no procedure" later
+      s.scratch.procedure_given = true;
+      s.error(kw.loc, "",
+              fmt::format("the procedure {} is not supported by gapfem, which runs *STATIC, *HEAT "
+                          "TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT steps; replace the step "
+                          "or remove it",
+                          kw.name));
+      return;
+    }
+    unknown(s, kw.loc, fmt::format("the keyword {}", kw.name), kw.key, false);
     return;
   }
   kw.name = std::string(spec->name);
@@ -217,7 +308,7 @@ void dispatch(BuildState& s, Keyword& kw) {
   }
   for (const auto& p : kw.params)
     if (!accepts(*spec, p.key))
-      unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name));
+      unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name), kw.key, true);
   spec->handler(s, kw);
   if (spec->handler == handle_end_instance) expand_instance(s);
 }

@@ -73,15 +73,27 @@ TEST(ReaderErrors, ListIsCappedAtFifty) {
 }
 
 TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {
+  // an unused definition and an output request's unknown parameter are skipped with a warning
   const std::string deck = std::string(test::kTrussModel) +
-                           "*FILE FORMAT, ASCII\n1\n"
-                           "*NODE, FOO=1\n3\n";
+                           "*ORIENTATION, NAME=OR1\n1., 0., 0., 0., 1., 0.\n"
+                           "*NODE\n3\n*STEP\n*STATIC\n*NODE PRINT, FOO=1\nU\n*END STEP\n";
   const Model m = test::read(deck, ReadOptions{true});
   EXPECT_EQ(m.warnings.size(), 2u);
   EXPECT_EQ(m.mesh.n_nodes(), 3);
+  // what would change the model stays an error with --ignore-unknown
+  EXPECT_CONTAINS(test::error_text(std::string(test::kTrussModel) + "*NODE, FOO=1\n3\n",
+                                   ReadOptions{true}),
+                  "the parameter FOO of *NODE is not supported by gapfem, and --ignore-unknown "
+                  "does not skip it: it would change the model");
+  EXPECT_CONTAINS(test::error_text(std::string(test::kTrussModel) +
+                                       "*SHELL SECTION, ELSET=TRUSS, MATERIAL=STEEL\n1.\n",
+                                   ReadOptions{true}),
+                  "the keyword *SHELL SECTION is not supported by gapfem, and --ignore-unknown "
+                  "does not skip it");
   // real errors stay errors
-  const InputError e = read_error(deck + "*NODE\n3\n", ReadOptions{true});
-  EXPECT_CONTAINS(e.what(), "deck.inp:16: *NODE: node 3: this node number is defined twice");
+  const InputError e = read_error(std::string(test::kTrussModel) + "*NODE\n3\n*NODE\n3\n",
+                                  ReadOptions{true});
+  EXPECT_CONTAINS(e.what(), "*NODE: node 3: this node number is defined twice");
 }
 
 } // namespace

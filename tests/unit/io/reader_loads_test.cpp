@@ -92,9 +92,6 @@ TEST(ReaderLoads, BoundaryErrors) {
                   "deck.inp:14: *BOUNDARY: node 9: this node is not defined");
   EXPECT_CONTAINS(error_text(with("*STEP\n*STATIC\n*BOUNDARY, AMPLITUDE=NONE\n1, 1\n*END STEP\n")),
                   "deck.inp:13: *BOUNDARY: AMPLITUDE=NONE: amplitude NONE is not defined");
-  EXPECT_CONTAINS(
-      error_text(with("*BOUNDARY\n1, 1, 1, 0.5\n")),
-      "deck.inp:12: *BOUNDARY: field 4 (value): model-data *BOUNDARY can only fix DOFs");
   EXPECT_CONTAINS(error_text(with("*BOUNDARY, OP=NEW\n1, 1\n")),
                   "deck.inp:11: *BOUNDARY: OP: OP is a history-data parameter");
 }

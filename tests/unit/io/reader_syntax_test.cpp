@@ -352,33 +352,44 @@ TEST(ReaderSyntax, UnknownSetNameIsError) {
 }
 
 TEST(ReaderSyntax, UnknownKeywordIsErrorOrWarning) {
-  const std::string deck = std::string(kTrussModel) + "*FILE FORMAT, ASCII\n";
+  const std::string deck =
+      std::string(kTrussModel) + "*ORIENTATION, NAME=OR1\n1., 0., 0., 0., 1., 0.\n";
   const std::string e = error_text(deck);
-  EXPECT_CONTAINS(e, "deck.inp:11: *FILE FORMAT: the keyword *FILE FORMAT is not supported");
+  EXPECT_CONTAINS(e, "deck.inp:11: *ORIENTATION: the keyword *ORIENTATION is not supported");
   EXPECT_CONTAINS(e, "--ignore-unknown");
   const Model m = read(deck, ReadOptions{true});
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_CONTAINS(m.warnings[0], "deck.inp:11");
-  EXPECT_CONTAINS(m.warnings[0], "*FILE FORMAT");
+  EXPECT_CONTAINS(m.warnings[0], "*ORIENTATION");
+  // print controls are read with a note, with or without the option
+  const Model p = read(std::string(kTrussModel) + "*FILE FORMAT, ASCII\n*ENERGY PRINT\n");
+  EXPECT_EQ(p.warnings.size(), 2u);
 }
 
 TEST(ReaderSyntax, UnknownKeywordInsideMaterialKeepsTheMaterialOpen) {
-  const Model m = read(R"(*MATERIAL, NAME=M
+  // *PLASTIC changes the material: an error even with --ignore-unknown, and the only one (the
+  // *DENSITY after it still belongs to the material)
+  const std::string e = error_text(R"(*MATERIAL, NAME=M
 *PLASTIC
 100., 0.
 *DENSITY
 7.8E-9
 )",
-                       ReadOptions{true});
-  EXPECT_FALSE(m.materials[0].density.empty());
+                                   ReadOptions{true});
+  EXPECT_CONTAINS(e, "deck.inp:2: *PLASTIC: the keyword *PLASTIC is not supported");
+  EXPECT_EQ(e.find("DENSITY"), std::string::npos) << e;
 }
 
 TEST(ReaderSyntax, UnknownParameterIsErrorOrWarning) {
   const std::string deck = "*NODE, NSET=A, COLOR=RED\n1\n";
   const std::string e = error_text(deck);
   EXPECT_CONTAINS(e, "deck.inp:1: *NODE: the parameter COLOR of *NODE is not supported");
-  const Model m = read(deck, ReadOptions{true});
-  EXPECT_EQ(m.mesh.n_nodes(), 1);
+  EXPECT_CONTAINS(error_text(deck, ReadOptions{true}), "--ignore-unknown does not skip it");
+  // an output request's unknown parameter is skipped with the option
+  const std::string out = std::string(kTrussModel) + "*STEP\n*STATIC\n*NODE PRINT, COLOR=RED\n"
+                                                     "U\n*END STEP\n";
+  EXPECT_CONTAINS(error_text(out), "the parameter COLOR of *NODE PRINT is not supported");
+  const Model m = read(out, ReadOptions{true});
   EXPECT_EQ(test::count_warnings(m, "COLOR"), 1);
 }
 
@@ -423,3 +434,11 @@ TEST(ReaderSyntax, KeywordTableIsConsistentAndDocumented) {
 
 } // namespace
 } // namespace gapfem
+
+TEST(ReaderSyntax, UnsupportedProcedureIsOneError) {
+  // not followed by a false "the step has no procedure"
+  const std::string e =
+      error_text(std::string(kTrussModel) + "*STEP\n*FREQUENCY\n10\n*END STEP\n");
+  EXPECT_CONTAINS(e, "*FREQUENCY: the procedure *FREQUENCY is not supported by gapfem");
+  EXPECT_EQ(e.find("no procedure"), std::string::npos) << e;
+}
