@@ -432,9 +432,6 @@ TEST(ReaderSyntax, KeywordTableIsConsistentAndDocumented) {
   }
 }
 
-} // namespace
-} // namespace gapfem
-
 TEST(ReaderSyntax, UnsupportedProcedureIsOneError) {
   // not followed by a false "the step has no procedure"
   const std::string e =
@@ -442,3 +439,6 @@ TEST(ReaderSyntax, UnsupportedProcedureIsOneError) {
   EXPECT_CONTAINS(e, "*FREQUENCY: the procedure *FREQUENCY is not supported by gapfem");
   EXPECT_EQ(e.find("no procedure"), std::string::npos) << e;
 }
+
+} // namespace
+} // namespace gapfem
