@@ -8,6 +8,7 @@
 #include "model/section.hpp"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,17 @@ struct FrictionChange {
   SourceLocation loc;
 };
 
+/// *STATIC, STABILIZE: Abaqus/Standard's automatic stabilization, viscous forces
+/// f_v = c M* (u - u_start) / dt with M* the lumped mass matrix of unit density.
+struct Stabilization {
+  bool on = false;
+  double fraction = 2e-4;       ///< dissipated energy fraction (STABILIZE=value)
+  std::optional<double> factor; ///< FACTOR=: the damping factor c itself
+  double allsdtol = 0.05;       ///< adaptive: the largest ALLSD / ALLIE (0: c stays constant)
+  bool carry = false;           ///< CONTINUE=YES: the next step keeps the damping factor
+  SourceLocation loc;
+};
+
 struct Step {
   int number = 0;
   std::string name;
@@ -76,6 +88,7 @@ struct Step {
   bool symmetric_only = false;
   Incrementation inc;
   SolutionControls controls;
+  Stabilization stabilize;
 
   std::vector<BoundaryEntry> boundary;
   std::vector<NodalLoad> cloads; ///< *CLOAD (DOF 1-6) and *CFLUX (DOF 11)

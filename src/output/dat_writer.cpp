@@ -535,6 +535,20 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     append_e12(buf, c.max_damping_force);
     fmt::format_to(out, "\n\n");
   }
+  if (c.stabilized) {
+    fmt::format_to(out, " AUTOMATIC STABILIZATION\n   DAMPING FACTOR AT STEP END        ");
+    append_e12(buf, c.stabilization_factor);
+    fmt::format_to(out, "\n   ALLSD (ENERGY DISSIPATED)         ");
+    append_e12(buf, c.allsd);
+    fmt::format_to(out, "\n   ALLIE (INTERNAL ENERGY)           ");
+    append_e12(buf, c.allie);
+    fmt::format_to(out, "\n   ALLSD / ALLIE                     ");
+    if (c.allie > 0)
+      append_e12(buf, c.allsd / c.allie);
+    else
+      fmt::format_to(out, "{:>12}", "N/A");
+    fmt::format_to(out, "\n\n");
+  }
 }
 
 void DatWriter::end(const Model& model, const RunSummary& summary) {

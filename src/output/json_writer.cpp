@@ -353,6 +353,13 @@ void JsonWriter::close_step(const StepSummary* s) {
     b.append(std::string_view("null"));
   }
   number_field(b, "max_damping_force", c.max_damping_force);
+  if (c.stabilized) {
+    b.append(std::string_view(",\"stabilization\":{\"damping_factor\":"));
+    append_json_number(b, c.stabilization_factor);
+    number_field(b, "ALLSD", c.allsd);
+    number_field(b, "ALLIE", c.allie);
+    b.push_back('}');
+  }
   b.append(std::string_view("}}"));
   _step_open = false;
 }

@@ -54,6 +54,11 @@ struct StepChecks {
          heat_balance_error = 0.0;
   double heat_scale = 0.0;        ///< sum of |RFL| + |applied| (+ |stored|), for judging the error
   double max_damping_force = 0.0; ///< largest gap damping force in any increment of the step
+  /// Automatic stabilization (*STATIC, STABILIZE): the damping factor at the step end and the
+  /// energies since the analysis start, as Abaqus reports them (ALLSD dissipated by the
+  /// stabilization, ALLIE the internal energy)
+  bool stabilized = false;
+  double stabilization_factor = 0.0, allsd = 0.0, allie = 0.0;
 };
 
 /// The committed state at one output point, with what is due at this point.

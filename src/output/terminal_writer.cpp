@@ -66,6 +66,11 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
       log::info("  heat balance error {:.3e}", c.heat_balance_error);
   }
   if (c.max_damping_force != 0.0) log::info("  max damping force {:.4g}", c.max_damping_force);
+  if (c.stabilized)
+    log::info("  stabilization: damping factor {:.4g}, ALLSD {:.4g}, ALLIE {:.4g}{}",
+              c.stabilization_factor, c.allsd, c.allie,
+              c.allie > 0 ? fmt::format(" (ALLSD/ALLIE {:.3g})", c.allsd / c.allie)
+                          : std::string());
 }
 
 void TerminalWriter::end(const Model& model, const RunSummary& s) {

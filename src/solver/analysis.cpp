@@ -9,6 +9,7 @@
 #include "solver/diagnostics.hpp"
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
+#include "solver/stabilization.hpp"
 #include "solver/step_problem.hpp"
 #include "solver/thermal_step.hpp"
 
@@ -91,6 +92,10 @@ struct Analysis::Impl {
   /// Largest |damping force| of the gaps at the current state (0 when no gap has damping).
   double damping_peak(StepProblem& prob);
   double step_damping_peak = 0.0;
+  /// Automatic stabilization: M* (built once), and what CONTINUE=YES hands to the next step.
+  std::shared_ptr<const std::vector<double>> unit_mass;
+  Stabilization carried_stabilization;
+  double carried_factor = 0.0;
   void write_frame(int index, StepProblem& prob, int increment, bool last, double dt);
   /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of
   /// the boundary conditions given there.
@@ -212,6 +217,28 @@ StepSummary Analysis::Impl::run_step(int index) {
   prob.set_statistics(&stats);
   prob.begin_increment(0.0, 0.0);
   prob.compute_stiffness_hints();
+  const Stabilization* stab = nullptr;
+  if (step.procedure == Procedure::Static)
+    stab = step.stabilize.on ? &step.stabilize
+                             : (carried_stabilization.on ? &carried_stabilization : nullptr);
+  double stab_c0 = 0.0;
+  if (stab) {
+    if (!unit_mass)
+      unit_mass = std::make_shared<const std::vector<double>>(
+          unit_density_mass(disc, assembler, prob.fields(), prob.context()));
+    if (step.stabilize.on) {
+      const std::vector<double> diag =
+          assembler.diagonal_stiffness(prob.fields(), prob.context(), /*skip_gaps=*/true);
+      const double dt0 = step.inc.initial > 0 ? step.inc.initial : loads.period();
+      stab_c0 = initial_stabilization_factor(*stab, dt0, *unit_mass, diag);
+    } else {
+      stab_c0 = carried_factor;
+    }
+    prob.set_stabilization(unit_mass, stab_c0);
+    log::progress("  automatic stabilization: damping factor {:.4g}{}", stab_c0,
+                  stab->allsdtol > 0 ? fmt::format(" (adaptive, ALLSDTOL {:.3g})", stab->allsdtol)
+                                     : std::string());
+  }
 
   // SHRINK fits take the element's own overclosure at the start of the step.
   if (!loads.shrink_elements().empty()) {
@@ -306,6 +333,10 @@ StepSummary Analysis::Impl::run_step(int index) {
     if (res.converged) {
       attempts_log.clear();
       prob.commit();
+      if (stab)
+        prob.set_stabilization(
+            unit_mass,
+            adapted_stabilization_factor(*stab, prob.stabilization_factor(), st.allsd, st.allie));
       converged_f_int = st.f_int;
       converged_f_ext = st.f_ext;
       for (int f = 0; f < kNumFields; ++f) flux.sum[f] += res.flux[f];
@@ -342,6 +373,8 @@ StepSummary Analysis::Impl::run_step(int index) {
     const bool structural =
         res.singular || !res.chattering.empty() || res.cause == FailureCause::Element;
     attempts_log.add(info.increment, info.attempts, kind, last_problem, structural);
+    if (stab && prob.stabilization_factor() < 1e3 * stab_c0) // more damping for the retry
+      prob.set_stabilization(unit_mass, 2.0 * prob.stabilization_factor());
     log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
                   last_problem);
     if (!ctrl.reject()) {
@@ -370,6 +403,19 @@ StepSummary Analysis::Impl::run_step(int index) {
   sum.checks = checks(prob);
   heat.finish(disc, prob.context(), st.u_start, prob.reactions(), st.f_ext, sum.checks);
   sum.checks.max_damping_force = std::max(sum.checks.max_damping_force, step_damping_peak);
+  if (stab) {
+    sum.checks.stabilized = true;
+    sum.checks.stabilization_factor = prob.stabilization_factor();
+    sum.checks.allsd = st.allsd;
+    sum.checks.allie = st.allie;
+    if (stab->allsdtol > 0 && st.allie > 0 && st.allsd > stab->allsdtol * st.allie)
+      log::warning("step {}: the stabilization dissipated {:.3g} of the internal energy "
+                   "(ALLSD {:.4g}, ALLIE {:.4g}), more than ALLSDTOL {:.3g}; check that the "
+                   "damping does not change the answer",
+                   step.number, st.allsd / st.allie, st.allsd, st.allie, stab->allsdtol);
+  }
+  carried_stabilization = stab && stab->carry ? *stab : Stabilization{};
+  carried_factor = stab ? prob.stabilization_factor() : 0.0;
   for (auto* w : writers) w->end_step(model, index, sum);
   st.total_time += ctrl.step_time();
   return sum;
@@ -552,6 +598,14 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
     }
   }
   std::array<double, 3> ground{};
+  // the stabilization's viscous forces hold the model like springs to ground
+  const auto fstab = prob.stabilization_forces();
+  for (std::size_t k = 0; k < fstab.size(); ++k) {
+    const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
+    if (d >= 3 || fstab[k] == 0.0) continue;
+    ground[d] += fstab[k];
+    scale += std::abs(fstab[k]);
+  }
   std::vector<double> r;
   std::vector<LocalIndex> slots;
   for (auto& b : disc.blocks()) {

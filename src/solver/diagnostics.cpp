@@ -101,7 +101,8 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "the system is singular at {}: the body made of nodes {} is held only by open gap "
         "elements {}, so nothing resists its rigid-body motion. Remedies: start at least one of "
         "these gaps closed (d = 0), add a soft spring (SPRING1/SPRING2) from the body to ground, "
-        "or add *CONTACT DAMPING after *GAP so the body is held while the gaps close",
+        "add *CONTACT DAMPING after *GAP, or stabilize the step (*STATIC, STABILIZE), so the "
+        "body is held while the gaps close",
         at, list_labels(model, body), list_labels(model, gaps));
   }
   const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {

@@ -30,7 +30,24 @@ void StepProblem::begin_increment(double t0, double dt) {
   _loads.interference(_ctx.step_time, _disc);
 }
 
+void StepProblem::set_stabilization(std::shared_ptr<const std::vector<double>> mass, double c) {
+  _stab_mass = std::move(mass);
+  _stab_c = _stab_mass ? c : 0.0;
+  if (_stab_c <= 0.0) _f_stab.clear();
+}
+
 void StepProblem::commit() {
+  // ALLIE: trapezoidal work of the element forces (the constraint forces do no work on a
+  // compatible increment); ALLSD: the stabilization forces' work
+  if (_s.f_elem_start.size() != _s.u.size()) _s.f_elem_start.assign(_s.u.size(), 0.0);
+  for (std::size_t k = 0; k < _s.u.size(); ++k) {
+    const double du = _s.u[k] - _s.u_start[k];
+    const double fs = _f_stab.empty() ? 0.0 : _f_stab[k];
+    const double fe = _s.f_int[k] - fs;
+    _s.allie += 0.5 * (_s.f_elem_start[k] + fe) * du;
+    _s.allsd += fs * du;
+    _s.f_elem_start[k] = fe;
+  }
   _s.u_start = _s.u;
   _s.T_start = _s.T;
   _disc.commit();
@@ -56,6 +73,7 @@ Evaluation StepProblem::evaluate() {
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;
     (*_stats)[TimeCategory::Assembly] -= ar.gap_seconds;
   }
+  add_stabilization(ar);
   std::fill(_s.f_ext.begin(), _s.f_ext.end(), 0.0);
   _loads.add_nodal_loads(_ctx.step_time, _s.f_ext);
   _loads.distributed_loads(_ctx.step_time, _active);
@@ -94,6 +112,31 @@ Evaluation StepProblem::evaluate() {
     ev.flux[fld] = cnt[fld] > 0 ? sum[fld] / cnt[fld] : 0.0;
   for (double g : _C.g) ev.constraint_max = std::max(ev.constraint_max, std::abs(g));
   return ev;
+}
+
+void StepProblem::add_stabilization(AssemblyResult& ar) {
+  if (_stab_c <= 0.0 || !(_ctx.dt > 0.0)) {
+    if (!_f_stab.empty()) std::fill(_f_stab.begin(), _f_stab.end(), 0.0);
+    return;
+  }
+  const std::vector<double>& m = *_stab_mass;
+  _f_stab.assign(_s.u.size(), 0.0);
+  const EquationMap& eqm = _loads.equations();
+  const DofMap& dofs = _disc.dofs();
+  const double k = _stab_c / _ctx.dt;
+  for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    if (!(m[s] > 0.0)) continue;
+    const double f = k * m[s] * (_s.u[s] - _s.u_start[s]);
+    _f_stab[s] = f;
+    _s.f_int[s] += f;
+    _K.add(i, i, k * m[s]);
+    if (f != 0.0) {
+      const int fld = static_cast<int>(dofs.slot_field(s));
+      ar.flux_sum[fld] += std::abs(f);
+      ++ar.flux_count[fld];
+    }
+  }
 }
 
 void StepProblem::apply(std::span<const double> du, std::span<const double> dl) {

@@ -19,6 +19,11 @@ struct SolutionState {
   std::vector<double> T_initial;    ///< per node
   std::vector<double> f_int, f_ext; ///< per slot, at the last evaluation
   double total_time = 0.0;          ///< total time at the start of the current step
+  /// Energies since the analysis start (Abaqus's names): ALLIE the work of the element forces,
+  /// ALLSD the energy dissipated by automatic stabilization; and the element forces (without the
+  /// stabilization) per slot at the last committed state, for ALLIE's trapezoidal rule.
+  double allie = 0.0, allsd = 0.0;
+  std::vector<double> f_elem_start;
 };
 
 class StepProblem final : public NonlinearProblem {
@@ -30,12 +35,18 @@ class StepProblem final : public NonlinearProblem {
   /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
   /// values, temperatures and interference at t0 + dt.
   void begin_increment(double t0, double dt);
-  /// Accept the trial state.
+  /// Accept the trial state (and add the increment's energies to ALLIE and ALLSD).
   void commit();
   /// Keep the unsymmetric stiffness of follower loads (*STEP, UNSYMM=YES).
   void set_unsymmetric_loads(bool on);
   /// Where assembly time is accounted.
   void set_statistics(RunStatistics* stats) { _stats = stats; }
+  /// Automatic stabilization: viscous forces c m (u - u_start) / dt on the free translational
+  /// slots with a unit-density lumped mass m (per slot); c = 0 switches it off.
+  void set_stabilization(std::shared_ptr<const std::vector<double>> mass, double c);
+  double stabilization_factor() const { return _stab_c; }
+  /// The stabilization forces per slot at the last evaluation (empty when off).
+  std::span<const double> stabilization_forces() const { return _f_stab; }
 
   Evaluation evaluate() override;
   CsrMatrix& matrix() override { return _K; }
@@ -60,6 +71,9 @@ class StepProblem final : public NonlinearProblem {
   std::vector<double> concentrated_loads() const;
 
  private:
+  /// Stabilization forces into f_int and their tangent into K (after the assembly).
+  void add_stabilization(AssemblyResult& ar);
+
   Discretization& _disc;
   Assembler& _asm;
   const StepLoads& _loads;
@@ -72,6 +86,9 @@ class StepProblem final : public NonlinearProblem {
   std::vector<double> _du_slots; ///< a Newton correction per slot (step_limit)
   double _constraint_tol;
   bool _unsymmetric_loads = false;
+  std::shared_ptr<const std::vector<double>> _stab_mass;
+  double _stab_c = 0.0;
+  std::vector<double> _f_stab;
   RunStatistics* _stats = nullptr;
 };
 

@@ -167,6 +167,27 @@ void handle_static(BuildState& s, const Keyword& kw) {
   s.step.inc.direct = kw.has("DIRECT");
   s.step.inc.steady_state = true;
   read_incrementation(s, kw, 4);
+  Stabilization& st = s.step.stabilize;
+  st.on = kw.has("STABILIZE") || kw.has("FACTOR");
+  if (!st.on) {
+    for (const char* p : {"ALLSDTOL", "CONTINUE"})
+      if (kw.has(p))
+        throw InputError(kw.loc, p, fmt::format("{} needs STABILIZE (automatic stabilization)", p));
+    return;
+  }
+  st.loc = kw.loc;
+  if (const Parameter* p = kw.find("STABILIZE"); p && p->has_value) {
+    st.fraction = real_param(kw, "STABILIZE").value_or(2e-4);
+    if (!(st.fraction > 0))
+      throw InputError(kw.loc, "STABILIZE", "the dissipated energy fraction must be positive");
+  }
+  st.factor = real_param(kw, "FACTOR");
+  if (st.factor && !(*st.factor > 0))
+    throw InputError(kw.loc, "FACTOR", "the damping factor must be positive");
+  // adaptive by default; a damping factor given directly stays constant unless ALLSDTOL is given
+  st.allsdtol = real_param(kw, "ALLSDTOL").value_or(st.factor ? 0.0 : 0.05);
+  if (st.allsdtol < 0) throw InputError(kw.loc, "ALLSDTOL", "ALLSDTOL must not be negative");
+  st.carry = yes_no_param(kw, "CONTINUE", false);
 }
 
 void handle_heat_transfer(BuildState& s, const Keyword& kw) {

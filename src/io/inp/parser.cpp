@@ -74,7 +74,7 @@ constexpr std::array<KeywordSpec, 100> kTable = {{
   // history: steps and procedures
   {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION"},
   {"*END STEP", handle_end_step, W::Both, ""},
-  {"*STATIC", handle_static, W::History, "DIRECT|RIKS"},
+  {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE"},
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
   {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
