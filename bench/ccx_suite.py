@@ -11,8 +11,9 @@ For each deck it runs `gapfem --check`-like: the real solver with a time limit, 
   timeout     the time limit was reached
   crash       any other exit status
 
-and prints the counts, the blocking keywords and element types by frequency, and (with --list)
-every deck with its outcome. Example:
+and prints the counts, the blocking keywords and element types by frequency, the agreement of the
+displacements with the deck's .dat.ref for every deck that ran, and (with --list) every deck with
+its outcome. Example:
 
   python3 bench/ccx_suite.py /path/to/CalculiX/test --gapfem build/release/gapfem --timeout 20
 """
@@ -57,6 +58,67 @@ def blockers_of(lines):
     return found
 
 
+def reference_displacements(path):
+    """Last 'displacements (vx,vy,vz)' block of each step of a CalculiX .dat(.ref) file:
+    {step: {node: (ux, uy, uz)}}."""
+    out, step, block = {}, 0, None
+    with open(path, errors="replace") as f:
+        for line in f:
+            m = re.match(r"\s*S T E P\s+(\d+)", line)
+            if m:
+                step, block = int(m.group(1)), None
+                continue
+            if re.match(r"\s*displacements \(vx,vy,vz\)", line):
+                block = {}
+                out[step] = block
+                continue
+            if block is None:
+                continue
+            fields = line.split()
+            if len(fields) == 4 and re.match(r"^\d+$", fields[0]):
+                try:
+                    block[int(fields[0])] = tuple(float(v.replace("D", "E")) for v in fields[1:])
+                except ValueError:
+                    block = None
+            elif fields:
+                block = None
+    return out
+
+
+def gapfem_displacements(path):
+    """{step: {node: (u1, u2, u3)}} from job.results.json (the last frame of each step)."""
+    import json
+    with open(path) as f:
+        data = json.load(f)
+    out = {}
+    for st in data.get("steps", []):
+        frames = st.get("frames", [])
+        if not frames:
+            continue
+        nodes = frames[-1].get("nodes", {})
+        out[st["step"]] = {int(k): tuple(v["U"]) for k, v in nodes.items()
+                           if k.isdigit() and "U" in v}
+    return out
+
+
+def agreement(ref, got):
+    """Largest |u - u_ref| over the reference's nodes and steps, relative to the largest |u_ref|."""
+    err, scale, n = 0.0, 0.0, 0
+    for step, nodes in ref.items():
+        mine = got.get(step)
+        if mine is None:
+            return None
+        for node, u in nodes.items():
+            if node not in mine:
+                continue
+            n += 1
+            scale = max(scale, max(abs(c) for c in u))
+            err = max(err, max(abs(a - b) for a, b in zip(mine[node], u)))
+    if n == 0:
+        return None
+    return err / scale if scale > 0 else err
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("suite", help="folder with the .inp decks (e.g. CalculiX/test)")
@@ -67,6 +129,7 @@ def main():
     decks = sorted(f for f in os.listdir(args.suite) if f.endswith(".inp"))
     outcome = {}
     per_deck = {}
+    compared = {}
     with tempfile.TemporaryDirectory() as out:
         for deck in decks:
             path = os.path.join(args.suite, deck)
@@ -79,6 +142,11 @@ def main():
             code = p.returncode
             if code in (0, 2):
                 outcome[deck] = "ran" if code == 0 else "ran (stopped)"
+                ref = os.path.join(args.suite, deck[:-4] + ".dat.ref")
+                res = os.path.join(out, deck[:-4] + ".results.json")
+                if code == 0 and os.path.exists(ref) and os.path.exists(res):
+                    r = reference_displacements(ref)
+                    compared[deck] = agreement(r, gapfem_displacements(res)) if r else None
             elif code == 1:
                 per_deck[deck] = blockers_of((p.stderr + p.stdout).splitlines())
                 outcome[deck] = "input"
@@ -91,6 +159,11 @@ def main():
     print("constructs that stop decks (decks naming it / decks it alone stops):")
     for what, n in appears.most_common():
         print(f"  {n:4d} {alone.get(what, 0):4d}  {what}")
+    print("agreement with .dat.ref (max |u - u_ref| / max |u_ref| over the printed nodes, last "
+          "increment of each step) for the decks that ran:")
+    for deck, rel in sorted(compared.items()):
+        print(f"  {deck:28s} " + ("no displacement table to compare" if rel is None
+                                  else f"{rel:.2e}"))
     if args.list:
         for deck in decks:
             extra = "; ".join(per_deck.get(deck, []))

@@ -90,6 +90,12 @@ bool record_keyword(BuildState& s, Keyword& kw) {
 
 void handle_part(BuildState& s, const Keyword& kw) {
   const std::string name = name_param(kw, "NAME", true);
+  if (s.transparent_parts) { // no *ASSEMBLY or *INSTANCE anywhere in the deck
+    if (s.noted_keywords.insert("PART").second)
+      s.warn(kw.loc, "*PART in a deck without *ASSEMBLY or *INSTANCE (CalculiX reads such decks): "
+                     "the part's contents are read as model data of the whole model");
+    return;
+  }
   if (s.in_assembly)
     throw InputError(kw.loc, fmt::format("part {}", name),
                      "*PART cannot appear inside *ASSEMBLY; define the parts first, then the "
@@ -111,6 +117,7 @@ void handle_part(BuildState& s, const Keyword& kw) {
 }
 
 void handle_end_part(BuildState& s, const Keyword& kw) {
+  if (s.transparent_parts) return;
   if (!s.recording)
     throw InputError(kw.loc, "", "*END PART without a matching *PART; remove it or add *PART");
   s.recording = nullptr;

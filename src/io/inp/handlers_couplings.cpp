@@ -249,7 +249,6 @@ void handle_mpc(BuildState& s, const Keyword& kw) {
                      "types BEAM, TIE, PIN or LINK with their nodes");
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    r.at_most(3, "MPC type, first node (or set), second node (or set)");
     const std::string t = canonical(r.text(0));
     MpcType type{};
     if (t == "BEAM")
@@ -264,6 +263,7 @@ void handle_mpc(BuildState& s, const Keyword& kw) {
       r.fail(fmt::format("MPC type {}", r.text(0)),
              "this MPC type is not supported by gapfem; supported are BEAM, TIE, PIN and LINK "
              "(write others with *EQUATION)");
+    r.at_most(3, "MPC type, first node (or set), second node (or set)");
     std::vector<NodeId> a = resolve_nodes(s, r, 1);
     std::vector<NodeId> b = resolve_nodes(s, r, 2);
     if (a.empty() || b.empty()) return;
@@ -336,6 +336,7 @@ void handle_coupling(BuildState& s, const Keyword& kw) {
   const Vec3& XR = s.model.mesh.coords[c.ref];
   for (const auto& [n, a] : area)
     if (!radius || norm(sub(s.model.mesh.coords[n], XR)) <= *radius) c.nodes.emplace_back(n, a);
+  if (c.nodes.empty() && s.incomplete_surfaces.count(surf)) return; // reported at its elements
   if (c.nodes.empty())
     throw InputError(kw.loc, fmt::format("coupling {}", c.name),
                      radius ? "no node of the surface lies within the influence radius of the "

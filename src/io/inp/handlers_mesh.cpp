@@ -291,7 +291,9 @@ void handle_surface(BuildState& s, const Keyword& kw) {
       const double area = r.real_or(1, 1.0, "area");
       if (!(area > 0))
         r.fail("field 2 (area)", "the area (weight) of a surface node must be positive");
-      for (NodeId n : resolve_nodes(s, r, 0)) surf.nodes.push_back({n, area});
+      const auto nodes = resolve_nodes(s, r, 0);
+      if (nodes.empty()) s.incomplete_surfaces.insert(name);
+      for (NodeId n : nodes) surf.nodes.push_back({n, area});
     });
     return;
   }
@@ -299,6 +301,7 @@ void handle_surface(BuildState& s, const Keyword& kw) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(2, "element or element set, face label S1..S6");
     const auto elems = resolve_elements(s, r, 0);
+    if (elems.empty()) s.incomplete_surfaces.insert(name); // a failed definition (reported)
     const std::string face_text = canonical(r.text(1));
     const auto face = face_text.size() >= 2 && face_text[0] == 'S'
                           ? parse_integer(std::string_view(face_text).substr(1))

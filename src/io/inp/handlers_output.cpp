@@ -81,6 +81,7 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
     for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) req.nodes[n] = n;
   } else {
     const auto* set = find_nset(s, req.nset);
+    if (!set && s.bad_sets.count(req.nset)) return; // its definition failed (reported)
     if (!set)
       throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
                        "this node set is not defined; define it with *NSET in the model data");
@@ -116,6 +117,7 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
     for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) req.elements[e] = e;
   } else {
     const auto* set = find_elset(s, req.elset);
+    if (!set && s.bad_sets.count(req.elset)) return; // its definition failed (reported)
     if (!set)
       throw InputError(kw.loc, fmt::format("ELSET={}", req.elset),
                        "this element set is not defined; define it with *ELSET in the model data");

@@ -207,6 +207,7 @@ void handle_change_friction(BuildState& s, const Keyword& kw) {
   reject_param(kw, "INTERACTION", "gapfem has element-based (gap) contact only; use ELSET=");
   const std::string elset = set_param(s, kw, "ELSET", true);
   const auto* set = find_elset(s, elset);
+  if (!set && s.bad_sets.count(elset)) return; // its definition failed (reported)
   if (!set)
     throw InputError(kw.loc, fmt::format("ELSET={}", elset),
                      "this element set is not defined; define it with *ELSET in the model data");

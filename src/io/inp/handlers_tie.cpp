@@ -70,6 +70,8 @@ void build_tie(BuildState& st, const TieDef& t) {
   const Surface& slave = m.surfaces.at(t.slave);
   const Surface& master = m.surfaces.at(t.master);
   const std::vector<SurfaceFacet> facets = surface_facets(m, master);
+  if (facets.empty() && st.incomplete_surfaces.count(t.master))
+    return; // its elements failed to be defined (reported there)
   if (facets.empty())
     throw InputError(t.loc, fmt::format("tie {}", t.name),
                      fmt::format("the master surface {} has no element faces", t.master));

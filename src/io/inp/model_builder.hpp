@@ -55,6 +55,9 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
+  /// Surfaces with a data line whose elements or nodes failed to be defined (reported there):
+  /// constraints on them stay quiet when nothing is left.
+  std::unordered_set<std::string> incomplete_surfaces;
   std::vector<SourceRef> node_src;  ///< per node: its *NODE data line
   std::vector<NodeId> all_nodes;    ///< the implicit set NALL (find_nset)
   std::vector<ElemId> all_elements; ///< the implicit set EALL (find_elset)
@@ -125,6 +128,9 @@ struct BuildState {
   std::map<std::string, PartDef> parts;
   PartDef* recording = nullptr; ///< inside *PART ... *END PART
   bool in_assembly = false;     ///< inside *ASSEMBLY ... *END ASSEMBLY
+  /// The deck has *PART but no *ASSEMBLY and no *INSTANCE (a CalculiX-style deck): *PART and
+  /// *END PART only mark a region of ordinary model data.
+  bool transparent_parts = false;
   bool assembly_seen = false;
   /// The *INSTANCE being read (up to *END INSTANCE) and its own keywords.
   struct InstanceDef {

@@ -200,7 +200,9 @@ bool procedure_keyword(const std::string& key) {
                                             "CRACKPROPAGATION",
                                             "HEATTRANSFERCFD",
                                             "FEASIBILITY",
-                                            "ACOUSTIC"};
+                                            "ACOUSTIC",
+                                            "NOANALYSIS",
+                                            "ROBUSTDESIGN"};
   for (const char* k : kProcedures)
     if (key == k) return true;
   return false;
@@ -320,6 +322,12 @@ std::span<const KeywordSpec> keyword_table() {
 }
 
 void parse_deck(Deck& deck, BuildState& s) {
+  bool part = false, assembly = false;
+  for (const Keyword& kw : deck.keywords) {
+    part |= kw.key == "PART";
+    assembly |= kw.key == "ASSEMBLY" || kw.key == "INSTANCE";
+  }
+  s.transparent_parts = part && !assembly;
   for (Keyword& kw : deck.keywords) {
     try {
       dispatch(s, kw);

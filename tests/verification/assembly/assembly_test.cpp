@@ -203,7 +203,9 @@ TEST(Assembly, BadInstancesAndQualifiedReferencesAreInputErrors) {
   EXPECT_NE(rot.find("the two points of the rotation axis coincide"), std::string::npos) << rot;
   EXPECT_NE(rot.find(":"), std::string::npos); // file:line
   // a keyword that cannot be inside a part
-  const JobResult r = run_deck("*PART, NAME=P\n*MATERIAL, NAME=M\n*END PART\n" + tail);
+  const JobResult r = run_deck("*PART, NAME=P\n*MATERIAL, NAME=M\n*END PART\n*ASSEMBLY, NAME=A\n"
+                               "*INSTANCE, NAME=I, PART=P\n*END INSTANCE\n*END ASSEMBLY\n" +
+                               tail);
   EXPECT_EQ(r.exit_code, kExitInputError);
   EXPECT_NE(r.error.find("*MATERIAL cannot appear inside *PART"), std::string::npos) << r.error;
 }
