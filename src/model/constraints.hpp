@@ -71,7 +71,11 @@ struct NodeTransform {
 };
 
 /// The local axes at a node at X: rows e1, e2, e3 (row-major 3 x 3, orthonormal); nullopt where
-/// they are undefined (a node on the axis of a cylindrical system).
+/// the points do not define a system. A node on the axis of a cylindrical system gets a radial
+/// direction chosen normal to the axis (see on_cylinder_axis).
 std::optional<std::array<double, 9>> local_axes(const NodeTransform& t, const Vec3& X);
+/// True for a node on the axis of a cylindrical system, where the radial and tangential
+/// directions are arbitrary: only uses that treat local 1 and 2 alike are unambiguous.
+bool on_cylinder_axis(const NodeTransform& t, const Vec3& X);
 
 } // namespace gapfem

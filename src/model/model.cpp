@@ -29,6 +29,22 @@ SourceLocation Model::element_location(ElemId e) const {
   return loc;
 }
 
+bool on_cylinder_axis(const NodeTransform& t, const Vec3& X) {
+  if (t.type != NodeTransform::Type::Cylindrical) return false;
+  Vec3 e3{t.b[0] - t.a[0], t.b[1] - t.a[1], t.b[2] - t.a[2]};
+  const Vec3 r{X[0] - t.a[0], X[1] - t.a[1], X[2] - t.a[2]};
+  const double l3 = std::sqrt(e3[0] * e3[0] + e3[1] * e3[1] + e3[2] * e3[2]);
+  if (!(l3 > 0)) return false;
+  const double axial = (r[0] * e3[0] + r[1] * e3[1] + r[2] * e3[2]) / l3;
+  double rr = 0.0, n2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double d = r[i] - axial * e3[i] / l3;
+    rr += d * d;
+    n2 += r[i] * r[i];
+  }
+  return !(std::sqrt(rr) > 1e-12 * std::max(1.0, std::sqrt(n2)));
+}
+
 std::string EntityLabel::str() const {
   const int i = instance();
   if (i <= 0 || !instances || i > static_cast<int>(instances->size())) return std::to_string(key);
@@ -52,7 +68,16 @@ std::optional<std::array<double, 9>> local_axes(const NodeTransform& t, const Ve
     const Vec3 r{X[0] - t.a[0], X[1] - t.a[1], X[2] - t.a[2]};
     const double axial = r[0] * e3[0] + r[1] * e3[1] + r[2] * e3[2];
     e1 = {r[0] - axial * e3[0], r[1] - axial * e3[1], r[2] - axial * e3[2]};
-    if (!(norm(e1) > 1e-12 * std::max(1.0, norm(r)))) return std::nullopt;
+    if (!(norm(e1) > 1e-12 * std::max(1.0, norm(r)))) {
+      // on the axis: any direction normal to it (the global axis least aligned with e3, made
+      // normal); the reader allows only uses that do not depend on the choice
+      int k = 0;
+      for (int i = 1; i < 3; ++i)
+        if (std::abs(e3[i]) < std::abs(e3[k])) k = i;
+      Vec3 g{};
+      g[k] = 1.0;
+      e1 = {g[0] - e3[k] * e3[0], g[1] - e3[k] * e3[1], g[2] - e3[k] * e3[2]};
+    }
   }
   const double l1 = norm(e1), l3 = norm(e3);
   if (!(l1 > 0) || !(l3 > 0)) return std::nullopt;

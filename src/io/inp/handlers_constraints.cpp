@@ -229,8 +229,8 @@ void handle_transform(BuildState& s, const Keyword& kw) {
                            ? "the points a and b do not define a system (a is zero or b is "
                              "parallel to a); give a on the local x axis and b in the local x-y "
                              "plane"
-                           : "the node lies on the axis of the cylindrical system (or a = b), "
-                             "where its radial direction is undefined");
+                           : "the points a and b of the cylindrical system coincide; give two "
+                             "distinct points on its axis");
   }
   m.transforms.push_back(t);
   for (NodeId n : members) m.node_transform[n] = index;
@@ -248,7 +248,62 @@ void handle_transform(BuildState& s, const Keyword& kw) {
        }});
 }
 
+namespace {
+/// Nodes on the axis of a cylindrical *TRANSFORM have an arbitrary radial direction (CalculiX takes
+/// one as well): allowed when nothing depends on it, i.e. local DOFs 1 and 2 (and 4 and 5) are held
+/// together at zero or left free, carry no load and appear in no equation.
+void check_axis_nodes(BuildState& s) {
+  Model& m = s.model;
+  if (m.transforms.empty()) return;
+  auto on_axis = [&](NodeId n) {
+    return n >= 0 && n < static_cast<NodeId>(m.node_transform.size()) && m.node_transform[n] >= 0 &&
+           on_cylinder_axis(m.transforms[m.node_transform[n]], m.mesh.coords[n]);
+  };
+  auto pair_of = [](DofType d) -> int {
+    const int k = abaqus_number(d);
+    return k == 1 || k == 2 ? 0 : (k == 4 || k == 5 ? 1 : -1);
+  };
+  const std::string remedy =
+      "the node lies on the axis of its cylindrical *TRANSFORM (at {}), where the radial and "
+      "tangential directions are undefined; {}: hold local DOFs {} and {} together at zero, or give "
+      "the node a rectangular *TRANSFORM of its own";
+  auto fail = [&](const SourceLocation& loc, NodeId n, int pair, std::string_view what) {
+    s.error(loc, fmt::format("node {}", m.node_label(n)),
+            fmt::format(fmt::runtime(remedy), m.transforms[m.node_transform[n]].loc.str(), what,
+                        pair == 0 ? 1 : 4, pair == 0 ? 2 : 5));
+  };
+  for (const Step& step : m.steps) {
+    std::map<std::pair<NodeId, int>, std::array<const BoundaryEntry*, 2>> held;
+    for (const BoundaryEntry& bc : step.boundary) {
+      const int pr = pair_of(bc.dof);
+      if (pr < 0 || !on_axis(bc.node)) continue;
+      const int k = abaqus_number(bc.dof);
+      held[{bc.node, pr}][(k - 1) % 3] = &bc;
+    }
+    for (const auto& [key, pair] : held) {
+      const BoundaryEntry* one = pair[0] ? pair[0] : pair[1];
+      if (!pair[0] || !pair[1])
+        fail(one->loc, key.first, key.second, "a boundary condition on one of them depends on it");
+      else if (pair[0]->value != 0.0 || pair[1]->value != 0.0)
+        fail(one->loc, key.first, key.second, "a non-zero prescribed value depends on it");
+    }
+    for (const NodalLoad& ld : step.cloads)
+      if (pair_of(ld.dof) >= 0 && ld.value != 0.0 && on_axis(ld.node))
+        fail(ld.loc, ld.node, pair_of(ld.dof), "a load along them depends on it");
+  }
+  for (const LinearConstraint& lc : m.constraints) {
+    if (!lc.local_dofs) continue;
+    for (const ConstraintTerm& t : lc.terms)
+      if (pair_of(t.dof) >= 0 && on_axis(t.node)) {
+        fail(lc.loc, t.node, pair_of(t.dof), "an equation term along them depends on it");
+        break;
+      }
+  }
+}
+} // namespace
+
 void check_constraints(BuildState& s) {
+  check_axis_nodes(s);
   Model& m = s.model;
   // the first row per dependent DOF (a DOF that is the dependent DOF of two constraints is an
   // error reported by the solver's constraint set, which knows which DOFs exist)

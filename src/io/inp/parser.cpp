@@ -164,9 +164,9 @@ bool skippable_keyword(const std::string& key) {
 
 /// Keywords whose unknown parameters --ignore-unknown may skip: output requests only.
 bool output_keyword(const std::string& key) {
-  static const char* const kOutput[] = {"NODEPRINT",     "ELPRINT",  "OUTPUT", "NODEOUTPUT",
+  static const char* const kOutputKeys[] = {"NODEPRINT",     "ELPRINT",  "OUTPUT", "NODEOUTPUT",
                                         "ELEMENTOUTPUT", "NODEFILE", "ELFILE", "PREPRINT"};
-  for (const char* k : kOutput)
+  for (const char* k : kOutputKeys)
     if (key == k) return true;
   return false;
 }

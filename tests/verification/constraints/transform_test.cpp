@@ -119,6 +119,22 @@ TEST(Transform, CylindricalSymmetryEdgeMatchesTheRotatedSector) {
   }
 }
 
+// A bar along the axis of a cylindrical system: its nodes have an arbitrary radial direction,
+// which nothing depends on when local 1 and 2 are held together; the axial load P along local 3
+// gives u3 = P L / (E A) (L = 2, E A = 1000 x 0.5).
+TEST(Transform, NodesOnTheCylinderAxisHeldInBothDirections) {
+  const std::string d =
+      "*NODE\n1, 0., 0., 0.\n2, 0., 0., 2.\n*NSET, NSET=ALLN\n1, 2\n*TRANSFORM, NSET=ALLN, TYPE=C\n"
+      "0., 0., -1., 0., 0., 1.\n*ELEMENT, TYPE=T3D2, ELSET=B\n1, 1, 2\n*MATERIAL, NAME=M\n"
+      "*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=B, MATERIAL=M\n0.5\n*STEP\n*STATIC\n"
+      "*BOUNDARY\n1, 1, 3\n2, 1, 2\n*CLOAD\n2, 3, 7.\n*END STEP\n";
+  const JobResult r = run_deck(d);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  EXPECT_NEAR(U(r, f, 2)[2], 7.0 * 2.0 / 500.0, 1e-14);
+  EXPECT_NEAR(RF(r, f, 1)[2], -7.0, 1e-12);
+}
+
 TEST(Transform, BadTransformsAreInputErrors) {
   const std::string head = "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=T3D2, ELSET=B\n"
                            "1, 1, 2\n*MATERIAL, NAME=M\n*ELASTIC\n1., 0.3\n*SOLID SECTION, "
@@ -131,8 +147,17 @@ TEST(Transform, BadTransformsAreInputErrors) {
   };
   EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN, TYPE=S\n0,0,0,0,0,1\n").find("TYPE=S: spherical"),
             std::string::npos);
-  EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN, TYPE=C\n0,0,0,1,0,0\n")
-                .find("node 1: the node lies on the axis of the cylindrical system"),
+  // both nodes lie on the axis (x) of the system: local 1 and 2 are arbitrary there, so a boundary
+  // condition on local 1 alone is ambiguous
+  const std::string on_axis = "*TRANSFORM, NSET=ALLN, TYPE=C\n0,0,0,1,0,0\n";
+  const JobResult r = run_deck(head + on_axis + "*STEP\n*STATIC\n*BOUNDARY\n1, 1, 1\n*END STEP\n");
+  EXPECT_EQ(r.exit_code, kExitInputError);
+  EXPECT_NE(r.error.find("node 1: the node lies on the axis of its cylindrical *TRANSFORM"),
+            std::string::npos)
+      << r.error;
+  EXPECT_NE(r.error.find("hold local DOFs 1 and 2 together at zero"), std::string::npos);
+  EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN, TYPE=C\n0,0,0,0,0,0\n")
+                .find("the points a and b of the cylindrical system coincide"),
             std::string::npos);
   EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN\n1,0,0,2,0,0\n")
                 .find("the points a and b do not define a system"),
