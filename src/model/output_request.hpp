@@ -31,6 +31,7 @@ struct NodePrintRequest {
   int frequency = 1; ///< every n-th increment (0: never except the last increment of the step)
   std::vector<NodeVar> vars;
   bool totals = false;
+  bool totals_only = false; ///< TOTALS=ONLY: the column totals without the rows and summary
   bool summary = true;
   SourceLocation loc;
 };
@@ -44,6 +45,7 @@ struct ElPrintRequest {
   int frequency = 1;
   std::vector<ElemVar> vars;
   bool totals = false;
+  bool totals_only = false; ///< TOTALS=ONLY: the column totals without the rows and summary
   bool summary = true;
   ElPosition position = ElPosition::IntegrationPoints;
   SourceLocation loc;

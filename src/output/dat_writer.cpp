@@ -322,6 +322,7 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
   for (NodeId n : nodes) {
     if (static_cast<std::size_t>(n) >= n_avail || !carries(r, n, cols.carrier)) continue;
     const EntityLabel label = model.node_label(n);
+    const std::size_t mark = buf.size();
     fmt::format_to(out, "{:>11}    ", label);
     for (int c = 0; c < cols.n; ++c) {
       const double v = cols.vec ? (*cols.vec)[n][cols.comp[c]] : (*cols.scalar)[n];
@@ -330,6 +331,7 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
     }
     buf.push_back('\n');
     ++rows;
+    if (request.totals_only) buf.resize(mark);
     _out.maybe_flush();
   }
   if (rows == 0) {
@@ -412,6 +414,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     const EntityLabel label = model.element_label(e);
     const std::size_t ncols = std::min(nc, block->names.size());
     if (ncols == 0) continue;
+    const std::size_t mark = buf.size();
     if (at_points) {
       const std::size_t bn = block->names.size();
       const std::size_t np = std::min<std::size_t>(block->n_points, block->values.size() / bn);
@@ -433,6 +436,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
       }
       buf.push_back('\n');
     }
+    if (request.totals_only) buf.resize(mark);
     _out.maybe_flush();
   }
   if (request.summary) {

@@ -9,6 +9,15 @@
 namespace gapfem::inp {
 namespace {
 
+/// TOTALS=YES|NO|ONLY.
+template <class Request>
+void totals_param(const Keyword& kw, Request& req) {
+  const int t = enum_param(kw, "TOTALS", {"NO", "YES", "ONLY"}, 0);
+  req.totals = t != 0;
+  req.totals_only = t == 2;
+  if (req.totals_only) req.summary = false;
+}
+
 /// "U" or a component such as "U1", "NT11", "S12": the parent variable name, or "" when the name
 /// does not have that form.
 template <typename V, typename Lookup>
@@ -71,8 +80,8 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
   NodePrintRequest req;
   req.loc = kw.loc;
   req.frequency = frequency_param(kw);
-  req.totals = yes_no_param(kw, "TOTALS", false);
   req.summary = yes_no_param(kw, "SUMMARY", true);
+  totals_param(kw, req);
   yes_no_param(kw, "GLOBAL",
                false); // accepted: all output is in global directions
   req.nset = set_param(s, kw, "NSET", false);
@@ -102,8 +111,8 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
   req.loc = kw.loc;
   req.frequency = frequency_param(kw);
   yes_no_param(kw, "GLOBAL", true); // accepted: gapfem's elements report global components
-  req.totals = yes_no_param(kw, "TOTALS", false);
   req.summary = yes_no_param(kw, "SUMMARY", true);
+  totals_param(kw, req);
   const int pos =
       enum_param(kw, "POSITION", {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES"}, 0);
   if (pos == 2)

@@ -200,6 +200,7 @@ bool procedure_keyword(const std::string& key) {
                                             "CRACKPROPAGATION",
                                             "HEATTRANSFERCFD",
                                             "FEASIBILITY",
+                                            "FEASIBLEDIRECTION",
                                             "ACOUSTIC",
                                             "NOANALYSIS",
                                             "ROBUSTDESIGN"};

@@ -32,6 +32,10 @@ TEST(ReaderOutput, NodePrint) {
   EXPECT_TRUE(np[1].totals);
   EXPECT_FALSE(np[1].summary);
   EXPECT_EQ(np[1].vars, (std::vector<NodeVar>{NodeVar::CF}));
+  const Model only = read(step("*NODE PRINT, TOTALS=ONLY\nRF\n"));
+  EXPECT_TRUE(only.steps[0].node_prints[0].totals);
+  EXPECT_TRUE(only.steps[0].node_prints[0].totals_only);
+  EXPECT_FALSE(only.steps[0].node_prints[0].summary);
 }
 
 TEST(ReaderOutput, NodePrintErrors) {

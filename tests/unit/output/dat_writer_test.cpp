@@ -113,6 +113,21 @@ TEST(OutputDat, NodeTableColumnsAndSummaryRows) {
   EXPECT_EQ(lines[rf + 2].find("RF1"), 20u);
 }
 
+TEST(OutputDat, TotalsOnlyPrintsTheTotalRowAlone) {
+  Model m = make_model();
+  m.steps[0].node_prints[0].totals_only = true; // TOTALS=ONLY (reader: summary off)
+  m.steps[0].node_prints[0].summary = false;
+  const auto lines = run_dat(m, fresh_dir());
+  const int inc2 = find_line(lines, "INCREMENT     2 SUMMARY");
+  const int t = find_line(lines, "FOR NODES BELONGING TO NODE SET TOP", inc2);
+  ASSERT_GE(t, 0);
+  // header, then straight to the total (1e-3 * (50 + 60 + 70 + 80) = 0.26): no rows, no summary
+  const int tot = find_line(lines, " TOTAL", t);
+  ASSERT_GT(tot, t);
+  EXPECT_EQ(node_field(lines[tot], 0), e12(0.26));
+  for (int i = t + 4; i < tot; ++i) EXPECT_TRUE(lines[i].empty()) << lines[i];
+}
+
 TEST(OutputDat, AllNodesTableOnlyWhenDueAndInLabelOrder) {
   const auto lines = run_dat(make_model(), fresh_dir());
   // Request 1 (all nodes, FREQUENCY=0) is due only at the last increment.
