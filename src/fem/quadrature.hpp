@@ -3,7 +3,7 @@
 /// Integration rules on the reference cells of the supported continuum and heat-transfer elements.
 /// Points are listed in Abaqus integration-point order (first parametric coordinate fastest for the
 /// Gauss product rules). Weights sum to the measure of the reference cell: 2 (line), 4 (quad),
-/// 8 (hex), 1/2 (triangle), 1/6 (tetrahedron).
+/// 8 (hex), 1/2 (triangle), 1/6 (tetrahedron), 1 (wedge).
 #include "fem/shape_functions.hpp"
 
 #include <array>
@@ -47,6 +47,27 @@ inline constexpr std::array<QuadraturePoint, 4> kGaussQuad4{
      {{-quadrature_detail::kG2, quadrature_detail::kG2, 0}, 1.0},
      {{quadrature_detail::kG2, quadrature_detail::kG2, 0}, 1.0}}};
 
+/// Quadrilateral 3x3 Gauss (Abaqus order, xi fastest).
+inline constexpr std::array<QuadraturePoint, 9> kGaussQuad9 = [] {
+  using namespace quadrature_detail;
+  std::array<QuadraturePoint, 9> q{};
+  constexpr double x[3] = {-kG3, 0.0, kG3}, w[3] = {kW3a, kW3b, kW3a};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) q[3 * j + i] = {{x[i], x[j], 0}, w[i] * w[j]};
+  return q;
+}();
+
+/// Hexahedron 3x3x3 Gauss (Abaqus order, xi fastest, then eta, then zeta).
+inline constexpr std::array<QuadraturePoint, 27> kGaussHex27 = [] {
+  using namespace quadrature_detail;
+  std::array<QuadraturePoint, 27> q{};
+  constexpr double x[3] = {-kG3, 0.0, kG3}, w[3] = {kW3a, kW3b, kW3a};
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) q[9 * k + 3 * j + i] = {{x[i], x[j], x[k]}, w[i] * w[j] * w[k]};
+  return q;
+}();
+
 /// Hexahedron: centroid and 2x2x2 Gauss (Abaqus order, xi fastest, then eta, then zeta).
 inline constexpr std::array<QuadraturePoint, 1> kGaussHex1{{{{0.0, 0.0, 0.0}, 8.0}}};
 inline constexpr std::array<QuadraturePoint, 8> kGaussHex8 = [] {
@@ -83,10 +104,39 @@ inline constexpr std::array<QuadraturePoint, 4> kTet4{
      {{quadrature_detail::kTb, quadrature_detail::kTa, quadrature_detail::kTb}, 1.0 / 24.0},
      {{quadrature_detail::kTb, quadrature_detail::kTb, quadrature_detail::kTa}, 1.0 / 24.0}}};
 
+/// Wedge (triangle x line): the triangle centroid x 2 Gauss points (C3D6, Abaqus's 2 points) and
+/// the 3-point triangle rule x 3 Gauss points (C3D15, 9 points); the triangle points run fastest.
+inline constexpr std::array<QuadraturePoint, 2> kWedge2{
+    {{{1.0 / 3.0, 1.0 / 3.0, -quadrature_detail::kG2}, 0.5},
+     {{1.0 / 3.0, 1.0 / 3.0, quadrature_detail::kG2}, 0.5}}};
+inline constexpr std::array<QuadraturePoint, 9> kWedge9 = [] {
+  using namespace quadrature_detail;
+  std::array<QuadraturePoint, 9> q{};
+  constexpr double z[3] = {-kG3, 0.0, kG3}, w[3] = {kW3a, kW3b, kW3a};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 3; ++i)
+      q[3 * k + i] = {{kTri3[i].xi[0], kTri3[i].xi[1], z[k]}, kTri3[i].weight * w[k]};
+  return q;
+}();
+/// A 6-point wedge rule exact for N_a N_b of Wedge6 (3-point triangle x 2 Gauss points), for
+/// capacities and nodal volumes.
+inline constexpr std::array<QuadraturePoint, 6> kWedge6 = [] {
+  using namespace quadrature_detail;
+  std::array<QuadraturePoint, 6> q{};
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 3; ++i)
+      q[3 * k + i] = {{kTri3[i].xi[0], kTri3[i].xi[1], k ? kG2 : -kG2}, kTri3[i].weight};
+  return q;
+}();
+
 /// The standard ("full") stiffness rule of a shape: 2x2(x2) Gauss for quads and hexes, the centroid
 /// for linear simplices, 4 points for the quadratic tetrahedron, 3 points for the quadratic
 /// triangle, 2 (3) Gauss points for linear (quadratic) lines.
+/// Quad8 and Hex20 use 3x3(x3) Gauss, the wedges 2 (Wedge6) and 9 (Wedge15) points.
 std::span<const QuadraturePoint> full_integration_rule(Shape shape);
+/// The reduced rule of the R element types: the centroid for Quad4/Hex8, 2x2(x2) Gauss for
+/// Quad8/Hex20; the full rule for the other shapes.
+std::span<const QuadraturePoint> reduced_integration_rule(Shape shape);
 /// A rule that integrates the surface-load integrand of a face of this shape accurately enough
 /// for follower loads on distorted faces (2x2 Gauss on quads, 3 / 6 points on linear / quadratic
 /// triangles, 2 / 3 Gauss points on lines).

@@ -9,37 +9,9 @@
 namespace gapfem {
 
 std::optional<Shape> cell_shape(ElementType type) {
-  using T = ElementType;
-  switch (type) {
-  case T::C3D8:
-  case T::C3D8T:
-  case T::DC3D8:
-    return Shape::Hex8;
-  case T::C3D4:
-  case T::C3D4T:
-  case T::DC3D4:
-    return Shape::Tet4;
-  case T::C3D10:
-  case T::DC3D10:
-    return Shape::Tet10;
-  case T::CPS4:
-  case T::CPE4:
-  case T::CAX4:
-  case T::CPS4T:
-  case T::CPE4T:
-  case T::CAX4T:
-  case T::DC2D4:
-  case T::DCAX4:
-    return Shape::Quad4;
-  case T::CPS3:
-  case T::CPE3:
-  case T::CAX3:
-  case T::DC2D3:
-  case T::DCAX3:
-    return Shape::Tri3;
-  default:
-    return std::nullopt;
-  }
+  const auto cell = element_info(type).cell;
+  if (!cell || shape_dim(*cell) < 2) return std::nullopt;
+  return cell;
 }
 
 std::vector<SurfaceFacet> surface_facets(const Model& model, const Surface& surface) {

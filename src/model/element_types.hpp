@@ -2,6 +2,7 @@
 /// @file element_types.hpp
 /// The element types gapfem knows, with their static properties (nodes, family, model space).
 #include "common/types.hpp"
+#include "model/cell_shape.hpp"
 
 #include <optional>
 #include <span>
@@ -50,6 +51,36 @@ enum class ElementType : std::uint8_t {
   CAX4T,
   C3D4T,
   C3D8T,
+  // added with the quadratic and wedge elements (ids are stable: new types go last)
+  C3D20,
+  C3D20R,
+  C3D15,
+  C3D6,
+  CPS8,
+  CPS8R,
+  CPE8,
+  CPE8R,
+  CAX8,
+  CAX8R,
+  CPS6,
+  CPE6,
+  CAX6,
+  DC3D20,
+  DC3D15,
+  DC3D6,
+  DC2D8,
+  DC2D6,
+  DCAX8,
+  DCAX6,
+  C3D20T,
+  C3D20RT,
+  C3D6T,
+  CPS8T,
+  CPS8RT,
+  CPE8T,
+  CPE8RT,
+  CAX8T,
+  CAX8RT,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };
@@ -72,6 +103,9 @@ struct ElementTypeInfo {
   PlaneKind plane;
   bool displacement; ///< carries displacement DOFs
   bool temperature;  ///< carries DOF 11
+  /// The reference cell (continuum, heat-transfer and two-node line elements whose faces or ends
+  /// carry surfaces and loads); nullopt for springs and gaps.
+  std::optional<Shape> cell = std::nullopt;
 };
 
 const ElementTypeInfo& element_info(ElementType type);

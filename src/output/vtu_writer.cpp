@@ -51,25 +51,51 @@ Array make_array(std::string_view name, std::string_view type, int comps, const 
 
 int vtk_cell_type(ElementType type, int n_nodes) {
   const auto& info = element_info(type);
+  if (info.cell && n_nodes == shape_n_nodes(*info.cell)) {
+    switch (*info.cell) {
+    case Shape::Line2:
+      return 3; // VTK_LINE
+    case Shape::Line3:
+      return 21; // VTK_QUADRATIC_EDGE
+    case Shape::Tri3:
+      return 5; // VTK_TRIANGLE
+    case Shape::Tri6:
+      return 22; // VTK_QUADRATIC_TRIANGLE
+    case Shape::Quad4:
+      return 9; // VTK_QUAD
+    case Shape::Quad8:
+      return 23; // VTK_QUADRATIC_QUAD
+    case Shape::Tet4:
+      return 10; // VTK_TETRA
+    case Shape::Tet10:
+      return 24; // VTK_QUADRATIC_TETRA
+    case Shape::Wedge6:
+      return 13; // VTK_WEDGE
+    case Shape::Wedge15:
+      return 26; // VTK_QUADRATIC_WEDGE
+    case Shape::Hex8:
+      return 12; // VTK_HEXAHEDRON
+    case Shape::Hex20:
+      return 25; // VTK_QUADRATIC_HEXAHEDRON
+    }
+  }
   switch (n_nodes) {
   case 1:
     return 1; // VTK_VERTEX (SPRING1, grounded gap)
   case 2:
-    return 3; // VTK_LINE (trusses, beams, gaps, 2-node springs, DC1D2)
-  case 3:
-    return 5; // VTK_TRIANGLE
-  case 4:
-    return info.space == SpaceRequirement::ThreeD ? 10 : 9; // VTK_TETRA : VTK_QUAD
-  case 8:
-    return 12; // VTK_HEXAHEDRON
-  case 10:
-    return 24; // VTK_QUADRATIC_TETRA
+    return 3; // VTK_LINE (springs, gaps)
   default:
     return 0;
   }
 }
 
-int vtk_node_from_abaqus(ElementType, int vtk_index) {
+int vtk_node_from_abaqus(ElementType type, int vtk_index) {
+  // VTK's wedges have the opposite orientation of Abaqus's (the right-hand normal of the first
+  // triangle points out of the cell); every other cell shares the Abaqus node order
+  static constexpr int kWedge[15] = {0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13};
+  const auto cell = element_info(type).cell;
+  if (cell && (*cell == Shape::Wedge6 || *cell == Shape::Wedge15) && vtk_index < 15)
+    return kWedge[vtk_index];
   return vtk_index;
 }
 

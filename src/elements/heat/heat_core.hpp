@@ -15,8 +15,8 @@
 ///               First-order elements integrate it at the nodes (lumped: V_a (E(T_a) - E(T0_a))
 ///               / dt with V_a = integral N_a dV), as Abaqus does ("Integration in diffusive heat
 ///               transfer elements": the internal energy term of first-order elements is integrated
-///               at the nodes); the quadratic tetrahedron integrates it consistently with a rule
-///               exact for N_a N_b.
+///               at the nodes); the quadratic shapes integrate it consistently with a rule exact
+///               for N_a N_b.
 ///   loads       body flux BF: f_ext,a = r V_a; surface flux Sn: f_ext,a = q A_a; film Fn:
 ///               f_ext,a = h A_a (T_sink - T_a), tangent h A_a (nodal integration for first-order
 ///               elements, as Abaqus integrates distributed fluxes of first-order elements at the
@@ -82,8 +82,39 @@ inline constexpr std::array<QuadraturePoint, 36> kTetCapacity = [] {
   return q;
 }();
 
+/// 16-point collapsed Gauss rule on the unit triangle (4 x 4 Gauss points in u, v with
+/// xi = u (1 - v), eta = v and the weight factor (1 - v)): exact for polynomials of degree 6, i.e.
+/// for N_a N_b of the quadratic triangle times the radius of axisymmetric elements.
+inline constexpr std::array<QuadraturePoint, 16> kTriCapacity = [] {
+  constexpr double a = 0.33998104358485626480, b = 0.86113631159405257522;
+  constexpr double wa = 0.65214515486254614263, wb = 0.34785484513745385737;
+  constexpr double g4[4] = {0.5 - 0.5 * b, 0.5 - 0.5 * a, 0.5 + 0.5 * a, 0.5 + 0.5 * b};
+  constexpr double w4[4] = {0.5 * wb, 0.5 * wa, 0.5 * wa, 0.5 * wb};
+  std::array<QuadraturePoint, 16> q{};
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const double u = g4[i], v = g4[j];
+      q[4 * j + i].xi = {u * (1.0 - v), v, 0.0};
+      q[4 * j + i].weight = w4[i] * w4[j] * (1.0 - v);
+    }
+  return q;
+}();
+
+/// 18-point wedge rule (6-point degree-4 triangle rule x 3 Gauss points): exact for N_a N_b of
+/// the straight-sided quadratic wedge.
+inline constexpr std::array<QuadraturePoint, 18> kWedgeCapacity = [] {
+  constexpr double z[3] = {-0.77459666924148337704, 0.0, 0.77459666924148337704};
+  constexpr double w[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  std::array<QuadraturePoint, 18> q{};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 6; ++i)
+      q[6 * k + i] = {{kTri6[i].xi[0], kTri6[i].xi[1], z[k]}, kTri6[i].weight * w[k]};
+  return q;
+}();
+
 /// Rule for the capacity and the nodal volumes: exact for N_a times the volume weight (first-order
-/// shapes, including the 2 pi r of axisymmetric ones) and for N_a N_b (quadratic tetrahedron).
+/// shapes, including the 2 pi r of axisymmetric ones) and for N_a N_b (quadratic shapes, which
+/// integrate the capacity consistently).
 constexpr std::span<const QuadraturePoint> capacity_rule(Shape s) {
   switch (s) {
   case Shape::Line2:
@@ -96,18 +127,26 @@ constexpr std::span<const QuadraturePoint> capacity_rule(Shape s) {
     return kTet4;
   case Shape::Hex8:
     return kGaussHex8;
+  case Shape::Wedge6:
+    return kWedge6;
   case Shape::Tet10:
     return kTetCapacity;
+  case Shape::Tri6:
+    return kTriCapacity;
+  case Shape::Quad8:
+    return kGaussQuad9;
+  case Shape::Wedge15:
+    return kWedgeCapacity;
+  case Shape::Hex20:
+    return kGaussHex27;
   default:
     return {};
   }
 }
 constexpr int capacity_points(Shape s) {
-  return s == Shape::Tet10
-             ? 36
-             : (s == Shape::Hex8 ? 8 : (s == Shape::Tri3 ? 3 : (s == Shape::Line2 ? 2 : 4)));
+  return static_cast<int>(capacity_rule(s).size());
 }
-/// Points of the conduction (full) rule.
+/// Points of the conduction (full) rule (fem/quadrature.hpp, full_integration_rule).
 constexpr int conduction_points(Shape s) {
   switch (s) {
   case Shape::Line2:
@@ -115,8 +154,17 @@ constexpr int conduction_points(Shape s) {
   case Shape::Tri3:
   case Shape::Tet4:
     return 1;
+  case Shape::Wedge6:
+    return 2;
+  case Shape::Tri6:
+    return 3;
   case Shape::Hex8:
     return 8;
+  case Shape::Quad8:
+  case Shape::Wedge15:
+    return 9;
+  case Shape::Hex20:
+    return 27;
   default:
     return 4; // Quad4, Tet10
   }
@@ -134,8 +182,8 @@ class HeatCore {
   static constexpr int NQ = heat_detail::conduction_points(S);
   static constexpr int NC = heat_detail::capacity_points(S);
   /// First-order elements integrate capacity, fluxes and films at the nodes.
-  static constexpr bool kLumped = S != Shape::Tet10;
-  static constexpr int kMaxFaceNodes = 6;
+  static constexpr bool kLumped = !shape_quadratic(S);
+  static constexpr int kMaxFaceNodes = 8;
   using Temps = std::array<double, NN>;
   using MatG = Eigen::Matrix<double, NN, D>;
 

@@ -72,6 +72,20 @@ std::unique_ptr<ElementKernel> make_heat_kernel(const KernelContext& ctx) {
     return make<T::DC3D8, Shape::Hex8, HG::Solid>(std::move(m), 1.0);
   case T::DC3D10:
     return make<T::DC3D10, Shape::Tet10, HG::Solid>(std::move(m), 1.0);
+  case T::DC3D20:
+    return make<T::DC3D20, Shape::Hex20, HG::Solid>(std::move(m), 1.0);
+  case T::DC3D15:
+    return make<T::DC3D15, Shape::Wedge15, HG::Solid>(std::move(m), 1.0);
+  case T::DC3D6:
+    return make<T::DC3D6, Shape::Wedge6, HG::Solid>(std::move(m), 1.0);
+  case T::DC2D8:
+    return make<T::DC2D8, Shape::Quad8, HG::Planar>(std::move(m), sec.thickness);
+  case T::DC2D6:
+    return make<T::DC2D6, Shape::Tri6, HG::Planar>(std::move(m), sec.thickness);
+  case T::DCAX8:
+    return make<T::DCAX8, Shape::Quad8, HG::Axisymmetric>(std::move(m), 1.0);
+  case T::DCAX6:
+    return make<T::DCAX6, Shape::Tri6, HG::Axisymmetric>(std::move(m), 1.0);
   default:
     break;
   }

@@ -31,6 +31,42 @@ std::unique_ptr<ElementKernel> make_continuum_2d(ElementType type, ContinuumSetu
     return std::make_unique<
         ContinuumKernel<ContinuumTraits<T::CAX4, Shape::Quad4, K::Axisymmetric, true>>>(
         std::move(setup));
+  case T::CPS8:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPS8, Shape::Quad8, K::PlaneStress, false>>>(
+        std::move(setup));
+  case T::CPS8R:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPS8R, Shape::Quad8, K::PlaneStress, false, true>>>(
+        std::move(setup));
+  case T::CPE8:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPE8, Shape::Quad8, K::PlaneStrain, false>>>(
+        std::move(setup));
+  case T::CPE8R:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPE8R, Shape::Quad8, K::PlaneStrain, false, true>>>(
+        std::move(setup));
+  case T::CAX8:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CAX8, Shape::Quad8, K::Axisymmetric, false>>>(
+        std::move(setup));
+  case T::CAX8R:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CAX8R, Shape::Quad8, K::Axisymmetric, false, true>>>(
+        std::move(setup));
+  case T::CPS6:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPS6, Shape::Tri6, K::PlaneStress, false>>>(
+        std::move(setup));
+  case T::CPE6:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CPE6, Shape::Tri6, K::PlaneStrain, false>>>(
+        std::move(setup));
+  case T::CAX6:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<T::CAX6, Shape::Tri6, K::Axisymmetric, false>>>(
+        std::move(setup));
   default:
     return nullptr;
   }

@@ -1,4 +1,5 @@
-// Instantiations of the three-dimensional continuum kernels.
+// Instantiations of the three-dimensional continuum kernels: C3D8 (B-bar), C3D4, C3D10, C3D20,
+// C3D20R (2x2x2), C3D15 and C3D6 (plain full integration, as Abaqus's).
 #include "elements/solid/continuum_factory.hpp"
 
 namespace gapfem {
@@ -17,6 +18,22 @@ std::unique_ptr<ElementKernel> make_continuum_3d(ElementType type, ContinuumSetu
   case ElementType::C3D10:
     return std::make_unique<
         ContinuumKernel<ContinuumTraits<ElementType::C3D10, Shape::Tet10, K::ThreeD, false>>>(
+        std::move(setup));
+  case ElementType::C3D20:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<ElementType::C3D20, Shape::Hex20, K::ThreeD, false>>>(
+        std::move(setup));
+  case ElementType::C3D20R:
+    return std::make_unique<ContinuumKernel<
+        ContinuumTraits<ElementType::C3D20R, Shape::Hex20, K::ThreeD, false, true>>>(
+        std::move(setup));
+  case ElementType::C3D15:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<ElementType::C3D15, Shape::Wedge15, K::ThreeD, false>>>(
+        std::move(setup));
+  case ElementType::C3D6:
+    return std::make_unique<
+        ContinuumKernel<ContinuumTraits<ElementType::C3D6, Shape::Wedge6, K::ThreeD, false>>>(
         std::move(setup));
   default:
     return nullptr;

@@ -40,12 +40,17 @@ struct ContinuumSetup {
 };
 
 /// Compile-time description of one continuum element type.
-template <ElementType T, Shape S, Kinematics K, bool BBar>
+/// Reduced: the reduced rule of the R types (fem/quadrature.hpp; only for the quadratic shapes,
+/// which need no hourglass control).
+template <ElementType T, Shape S, Kinematics K, bool BBar, bool Reduced = false>
 struct ContinuumTraits {
   static constexpr ElementType type = T;
   static constexpr Shape shape = S;
   static constexpr Kinematics kin = K;
   static constexpr bool bbar = BBar;
+  static constexpr bool reduced = Reduced;
+  static_assert(!Reduced || shape_quadratic(S), "reduced integration of a linear shape needs "
+                                                "hourglass control");
 };
 
 namespace continuum_detail {
@@ -64,10 +69,21 @@ constexpr int n_strain(Kinematics k) {
 constexpr int n_normal(Kinematics k) {
   return k == Kinematics::PlaneStress ? 2 : 3;
 }
-constexpr int n_points(Shape s) {
+/// Points of the stiffness rule (full_integration_rule / reduced_integration_rule).
+constexpr int n_points(Shape s, bool reduced) {
   switch (s) {
   case Shape::Hex8:
     return 8;
+  case Shape::Hex20:
+    return reduced ? 8 : 27;
+  case Shape::Quad8:
+    return reduced ? 4 : 9;
+  case Shape::Wedge15:
+    return 9;
+  case Shape::Wedge6:
+    return 2;
+  case Shape::Tri6:
+    return 3;
   case Shape::Tet10:
     return 4;
   case Shape::Quad4:
@@ -87,7 +103,7 @@ class ContinuumKernel final : public ElementKernel {
   static constexpr int NS = continuum_detail::n_strain(kKin);
   static constexpr int NNRM = continuum_detail::n_normal(kKin);
   static constexpr int NDOF = NN * ND;
-  static constexpr int NIP = continuum_detail::n_points(Tr::shape);
+  static constexpr int NIP = continuum_detail::n_points(Tr::shape, Tr::reduced);
   static constexpr bool kAxi = kKin == Kinematics::Axisymmetric;
 
   using VecS = Eigen::Matrix<double, NS, 1>;
@@ -98,7 +114,8 @@ class ContinuumKernel final : public ElementKernel {
   using MatF = Eigen::Matrix<double, ND, ND>;
 
   explicit ContinuumKernel(ContinuumSetup setup) : _setup(std::move(setup)) {
-    const auto rule = full_integration_rule(Tr::shape);
+    const auto rule =
+        Tr::reduced ? reduced_integration_rule(Tr::shape) : full_integration_rule(Tr::shape);
     FE_CHECK(static_cast<int>(rule.size()) == NIP, "continuum rule size mismatch");
     for (int q = 0; q < NIP; ++q) {
       _w[q] = rule[q].weight;

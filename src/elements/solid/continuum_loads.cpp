@@ -11,7 +11,7 @@
 namespace gapfem {
 namespace {
 
-constexpr int kMaxNodes = 10;
+constexpr int kMaxNodes = 20;
 
 int displacement_dofs(Kinematics k) {
   return k == Kinematics::ThreeD ? 3 : 2;
@@ -34,6 +34,8 @@ std::span<const QuadraturePoint> body_rule(Shape cell) {
     return kTri3;
   case Shape::Tet4:
     return kTet4;
+  case Shape::Wedge6:
+    return kWedge6;
   default:
     return full_integration_rule(cell);
   }

@@ -21,10 +21,10 @@ InitialTemperatures block_initial_temperatures(const KernelContext& ctx) {
 
 namespace {
 
-template <ElementType Base, Shape S, Kinematics K, bool BBar, HeatGeometry G>
+template <ElementType Base, Shape S, Kinematics K, bool BBar, HeatGeometry G, bool Reduced = false>
 std::unique_ptr<ElementKernel> make(const KernelContext& ctx, ContinuumSetup setup,
                                     HeatMaterial heat, double thickness) {
-  return std::make_unique<CoupledContinuumKernel<ContinuumTraits<Base, S, K, BBar>, G>>(
+  return std::make_unique<CoupledContinuumKernel<ContinuumTraits<Base, S, K, BBar, Reduced>, G>>(
       ctx.type, std::move(setup), std::move(heat), thickness, block_initial_temperatures(ctx));
 }
 
@@ -56,6 +56,33 @@ make_coupled_continuum_kernel(const KernelContext& ctx, ContinuumSetup setup, do
   case T::C3D8T:
     return make<T::C3D8, Shape::Hex8, K::ThreeD, true, HG::Solid>(ctx, std::move(setup),
                                                                   std::move(heat), 1.0);
+  case T::C3D20T:
+    return make<T::C3D20, Shape::Hex20, K::ThreeD, false, HG::Solid>(ctx, std::move(setup),
+                                                                     std::move(heat), 1.0);
+  case T::C3D20RT:
+    return make<T::C3D20R, Shape::Hex20, K::ThreeD, false, HG::Solid, true>(ctx, std::move(setup),
+                                                                            std::move(heat), 1.0);
+  case T::C3D6T:
+    return make<T::C3D6, Shape::Wedge6, K::ThreeD, false, HG::Solid>(ctx, std::move(setup),
+                                                                     std::move(heat), 1.0);
+  case T::CPS8T:
+    return make<T::CPS8, Shape::Quad8, K::PlaneStress, false, HG::Planar>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CPS8RT:
+    return make<T::CPS8R, Shape::Quad8, K::PlaneStress, false, HG::Planar, true>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CPE8T:
+    return make<T::CPE8, Shape::Quad8, K::PlaneStrain, false, HG::Planar>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CPE8RT:
+    return make<T::CPE8R, Shape::Quad8, K::PlaneStrain, false, HG::Planar, true>(
+        ctx, std::move(setup), std::move(heat), thickness);
+  case T::CAX8T:
+    return make<T::CAX8, Shape::Quad8, K::Axisymmetric, false, HG::Axisymmetric>(
+        ctx, std::move(setup), std::move(heat), 1.0);
+  case T::CAX8RT:
+    return make<T::CAX8R, Shape::Quad8, K::Axisymmetric, false, HG::Axisymmetric, true>(
+        ctx, std::move(setup), std::move(heat), 1.0);
   default:
     return nullptr;
   }

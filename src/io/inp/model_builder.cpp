@@ -1,5 +1,7 @@
 #include "io/inp/model_builder.hpp"
 
+#include "fem/element_faces.hpp"
+
 #include <algorithm>
 #include <fmt/format.h>
 
@@ -280,40 +282,10 @@ void add_to_elset(BuildState& s, const std::string& name, const std::vector<Elem
 namespace {
 /// Faces of the element's cell (the ends of a link), whatever they are used for.
 int cell_faces(ElementType type) {
-  using T = ElementType;
-  switch (type) {
-  case T::C3D8:
-  case T::C3D8T:
-  case T::DC3D8:
-    return 6;
-  case T::C3D4:
-  case T::C3D10:
-  case T::C3D4T:
-  case T::DC3D4:
-  case T::DC3D10:
-    return 4;
-  case T::CPS4:
-  case T::CPE4:
-  case T::CAX4:
-  case T::CPS4T:
-  case T::CPE4T:
-  case T::CAX4T:
-  case T::DC2D4:
-  case T::DCAX4:
-    return 4;
-  case T::CPS3:
-  case T::CPE3:
-  case T::CAX3:
-  case T::DC2D3:
-  case T::DCAX3:
-    return 3;
-  case T::DC1D2:
-  case T::T2D2T:
-  case T::T3D2T:
-    return 2;
-  default:
-    return 0;
-  }
+  const ElementTypeInfo& info = element_info(type);
+  if (!info.cell || info.family == ElementFamily::Gap) return 0;
+  if (shape_dim(*info.cell) == 1) return info.temperature ? 2 : 0; // the ends of a link
+  return static_cast<int>(element_faces(*info.cell).size());
 }
 } // namespace
 

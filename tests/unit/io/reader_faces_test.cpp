@@ -2,6 +2,7 @@
 // the face counts of io/inp n_faces() are exactly the faces the kernel accepts for pressure and for
 // heat loads, and the ends of the heat-conducting links (DC1D2, T2D2T, T3D2T) take S1/S2, F1/F2.
 #include "elements/element_kernel.hpp"
+#include "fem/shape_functions.hpp"
 #include "io/inp/model_builder.hpp"
 #include "unit/io/reader_test_util.hpp"
 
@@ -20,30 +21,35 @@ std::string nodes_for(const ElementTypeInfo& info) {
   const bool solid3d = info.space == SpaceRequirement::ThreeD &&
                        info.family != ElementFamily::Truss && info.family != ElementFamily::Beam;
   std::vector<std::array<double, 3>> x;
-  switch (info.n_nodes) {
-  case 1:
-    x = {{1, 0, 0}};
-    break;
-  case 2:
-    x = {{1, 0, 0}, {2, 0, 0}};
-    break;
-  case 3:
-    x = {{1, 0, 0}, {2, 0, 0}, {1, 1, 0}};
-    break;
-  case 4:
-    x = solid3d ? std::vector<std::array<double, 3>>{{1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1}}
-                : std::vector<std::array<double, 3>>{{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}};
-    break;
-  case 8:
-    x = {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}};
-    break;
-  case 10: // corners, then the midpoints of edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4
-    x = {{1, 0, 0},     {2, 0, 0},   {1, 1, 0},   {1, 0, 1},     {1.5, 0, 0},
-         {1.5, 0.5, 0}, {1, 0.5, 0}, {1, 0, 0.5}, {1.5, 0, 0.5}, {1, 0.5, 0.5}};
-    break;
-  default:
-    ADD_FAILURE() << info.name << ": no coordinates for " << info.n_nodes << " nodes";
-  }
+  if (info.cell && shape_dim(*info.cell) >= 2) {
+    // the reference cell under x = (1.5, 0, 0) + xi / 2 (positive Jacobian, x >= 1)
+    for (const auto& xi : shape_node_coords(*info.cell))
+      x.push_back({1.5 + 0.5 * xi[0], 0.5 * xi[1], 0.5 * xi[2]});
+  } else
+    switch (info.n_nodes) {
+    case 1:
+      x = {{1, 0, 0}};
+      break;
+    case 2:
+      x = {{1, 0, 0}, {2, 0, 0}};
+      break;
+    case 3:
+      x = {{1, 0, 0}, {2, 0, 0}, {1, 1, 0}};
+      break;
+    case 4:
+      x = solid3d ? std::vector<std::array<double, 3>>{{1, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 1}}
+                  : std::vector<std::array<double, 3>>{{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}};
+      break;
+    case 8:
+      x = {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}};
+      break;
+    case 10: // corners, then the midpoints of edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4
+      x = {{1, 0, 0},     {2, 0, 0},   {1, 1, 0},   {1, 0, 1},     {1.5, 0, 0},
+           {1.5, 0.5, 0}, {1, 0.5, 0}, {1, 0, 0.5}, {1.5, 0, 0.5}, {1, 0.5, 0.5}};
+      break;
+    default:
+      ADD_FAILURE() << info.name << ": no coordinates for " << info.n_nodes << " nodes";
+    }
   std::string deck = "*NODE\n";
   std::string conn = "1";
   for (std::size_t i = 0; i < x.size(); ++i) {

@@ -5,6 +5,7 @@
 #include "elements/element_kernel.hpp"
 #include "fem/shape_functions.hpp"
 #include "model/model.hpp"
+#include "unit/elements/solid/continuum_fixture.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -27,28 +28,22 @@ struct Props {
 };
 
 inline Shape shape_of(ElementType t) {
-  using T = ElementType;
-  switch (t) {
-  case T::DC1D2:
-  case T::T2D2T:
-  case T::T3D2T:
-    return Shape::Line2;
-  case T::DC2D3:
-  case T::DCAX3:
-    return Shape::Tri3;
-  case T::DC3D4:
-  case T::C3D4T:
-    return Shape::Tet4;
-  case T::DC3D8:
-  case T::C3D8T:
-    return Shape::Hex8;
-  case T::DC3D10:
-    return Shape::Tet10;
-  default:
-    return Shape::Quad4;
-  }
+  return element_info(t).cell.value_or(Shape::Line2);
 }
-
+/// Every heat-transfer (DC*) type and every coupled temperature-displacement type.
+inline std::vector<ElementType> heat_types(bool coupled) {
+  std::vector<ElementType> out;
+  for (const ElementTypeInfo& info : all_element_types())
+    if (info.temperature && info.family != ElementFamily::Gap && info.displacement == coupled)
+      out.push_back(info.type);
+  return out;
+}
+inline std::vector<ElementType> all_heat_types() {
+  auto v = heat_types(false);
+  const auto c = heat_types(true);
+  v.insert(v.end(), c.begin(), c.end());
+  return v;
+}
 inline ModelSpace space_of(ElementType t) {
   switch (element_info(t).space) {
   case SpaceRequirement::Planar:
@@ -68,30 +63,7 @@ inline std::vector<Vec3> nodes_of(ElementType t, bool distorted = true) {
     if (t == ElementType::T2D2T) return {{0.1, 0.2, 0.0}, {0.9, 0.7, 0.0}};
     return {{0.1, 0.2, 0.3}, {0.9, 0.7, -0.2}};
   }
-  std::vector<Vec3> X;
-  const auto xi = shape_node_coords(s);
-  const double d = distorted ? 1.0 : 0.0;
-  for (std::size_t a = 0; a < xi.size(); ++a) {
-    Vec3 p{};
-    if (s == Shape::Hex8 || s == Shape::Quad4)
-      for (int i = 0; i < 3; ++i) p[i] = 0.5 * xi[a][i];
-    else
-      p = xi[a];
-    p[0] += d * 0.07 * std::sin(1.0 + 3.0 * a);
-    p[1] += d * 0.05 * std::cos(2.0 + 5.0 * a);
-    if (shape_dim(s) == 3)
-      p[2] += d * 0.06 * std::sin(3.0 + 7.0 * a);
-    else
-      p[2] = 0.0;
-    if (shape_dim(s) == 2) p[0] += 1.5;
-    X.push_back(p);
-  }
-  if (s == Shape::Tet10) // midside nodes on straight edges
-    for (int e = 0; e < 6; ++e) {
-      constexpr int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
-      for (int i = 0; i < 3; ++i) X[4 + e][i] = 0.5 * (X[edge[e][0]][i] + X[edge[e][1]][i]);
-    }
-  return X;
+  return gapfem::test::reference_nodes(t, distorted); // continuum_fixture.hpp
 }
 
 /// Single-valued table; with `varying` two rows at T = 0 and 200 (v and `factor` v).

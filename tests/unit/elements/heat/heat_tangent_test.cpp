@@ -8,12 +8,8 @@
 namespace gapfem::test::heat {
 namespace {
 
-constexpr ElementType kHeatTypes[] = {ElementType::DC1D2, ElementType::DC2D3, ElementType::DC2D4,
-                                      ElementType::DCAX3, ElementType::DCAX4, ElementType::DC3D4,
-                                      ElementType::DC3D8, ElementType::DC3D10};
-constexpr ElementType kCoupledTypes[] = {ElementType::T2D2T, ElementType::T3D2T, ElementType::CPS4T,
-                                         ElementType::CPE4T, ElementType::CAX4T, ElementType::C3D4T,
-                                         ElementType::C3D8T};
+const std::vector<ElementType> kHeatTypes = heat_types(false);
+const std::vector<ElementType> kCoupledTypes = heat_types(true);
 
 struct Case {
   ElementType type;

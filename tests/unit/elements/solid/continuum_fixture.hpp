@@ -24,20 +24,14 @@ struct TestMaterial {
 };
 
 inline Shape shape_of(ElementType t) {
-  switch (t) {
-  case ElementType::C3D8:
-    return Shape::Hex8;
-  case ElementType::C3D4:
-    return Shape::Tet4;
-  case ElementType::C3D10:
-    return Shape::Tet10;
-  case ElementType::CPS3:
-  case ElementType::CPE3:
-  case ElementType::CAX3:
-    return Shape::Tri3;
-  default:
-    return Shape::Quad4;
-  }
+  return element_info(t).cell.value_or(Shape::Quad4);
+}
+/// Every stress/displacement continuum type (the coupled ones have their own tests).
+inline std::vector<ElementType> continuum_types() {
+  std::vector<ElementType> out;
+  for (const ElementTypeInfo& info : all_element_types())
+    if (info.family == ElementFamily::Continuum && !info.temperature) out.push_back(info.type);
+  return out;
 }
 inline bool is_3d(ElementType t) {
   return shape_dim(shape_of(t)) == 3;
@@ -47,15 +41,18 @@ inline int dofs_per_node(ElementType t) {
 }
 
 /// A valid, mildly distorted element of each type with edge lengths about 1 (2-D elements sit at
-/// x in [1, 2.2] so that axisymmetric radii are positive).
+/// x in [1, 2.2] so that axisymmetric radii are positive). Midside nodes sit at the middle of the
+/// (distorted) corners; those of Quad8, Wedge15 and Hex20 are moved off the straight edge as well
+/// (curved edges), those of Tri6 and Tet10 are not.
 inline std::vector<Vec3> reference_nodes(ElementType t, bool distorted = true) {
   const Shape s = shape_of(t);
   std::vector<Vec3> X;
   const auto xi = shape_node_coords(s);
   const double d = distorted ? 1.0 : 0.0;
+  const bool box = s == Shape::Hex8 || s == Shape::Quad4 || s == Shape::Hex20 || s == Shape::Quad8;
   for (std::size_t a = 0; a < xi.size(); ++a) {
     Vec3 p{};
-    if (s == Shape::Hex8 || s == Shape::Quad4) {
+    if (box) {
       for (int i = 0; i < 3; ++i) p[i] = 0.5 * xi[a][i];
     } else {
       p = xi[a];
@@ -70,11 +67,23 @@ inline std::vector<Vec3> reference_nodes(ElementType t, bool distorted = true) {
     if (shape_dim(s) == 2) p[0] += 1.5;
     X.push_back(p);
   }
-  if (s == Shape::Tet10) // keep midside nodes on straight edges between the distorted corners
-    for (int e = 0; e < 6; ++e) {
-      constexpr int edge[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
-      for (int i = 0; i < 3; ++i) X[4 + e][i] = 0.5 * (X[edge[e][0]][i] + X[edge[e][1]][i]);
-    }
+  if (shape_quadratic(s)) {
+    const int corners = s == Shape::Tri6 ? 3 : s == Shape::Wedge15 ? 6 : s == Shape::Hex20 ? 8 : 4;
+    const bool curve = s == Shape::Quad8 || s == Shape::Wedge15 || s == Shape::Hex20;
+    for (std::size_t a = static_cast<std::size_t>(corners); a < xi.size(); ++a)
+      for (int i = 0; i < corners; ++i)
+        for (int j = i + 1; j < corners; ++j) {
+          bool mid = true;
+          for (int k = 0; k < 3; ++k) mid &= 0.5 * (xi[i][k] + xi[j][k]) == xi[a][k];
+          if (!mid) continue;
+          for (int k = 0; k < 3; ++k) X[a][k] = 0.5 * (X[i][k] + X[j][k]);
+          if (curve && distorted) {
+            X[a][0] += 0.03 * std::sin(4.0 + 2.0 * a);
+            X[a][1] += 0.03 * std::cos(1.0 + 3.0 * a);
+            if (shape_dim(s) == 3) X[a][2] += 0.03 * std::sin(2.0 + 5.0 * a);
+          }
+        }
+  }
   return X;
 }
 

@@ -10,9 +10,7 @@
 namespace gapfem::test {
 namespace {
 
-const std::vector<ElementType> kAllTypes{ElementType::C3D8, ElementType::C3D4, ElementType::C3D10,
-                                         ElementType::CPS3, ElementType::CPS4, ElementType::CPE3,
-                                         ElementType::CPE4, ElementType::CAX3, ElementType::CAX4};
+const std::vector<ElementType> kAllTypes = continuum_types();
 
 Eigen::Vector3d v3(const Vec3& a) {
   return {a[0], a[1], a[2]};
@@ -25,7 +23,9 @@ Eigen::Vector3d v3(const Vec3& a) {
 TEST(ContinuumLoads, PressureResultantEqualsPressureTimesArea) {
   const double p = 3.0, t = 2.5;
   for (ElementType type : kAllTypes) {
-    const bool distort = shape_of(type) != Shape::Hex8 && shape_of(type) != Shape::Quad4;
+    const Shape cs = shape_of(type); // simplices distorted (straight edges), boxes and wedges not
+    const bool distort =
+        cs == Shape::Tri3 || cs == Shape::Tri6 || cs == Shape::Tet4 || cs == Shape::Tet10;
     ElementHarness h(type, reference_nodes(type, distort), {}, t);
     const int nd = dofs_per_node(type);
     const auto faces = element_faces(shape_of(type));
@@ -49,7 +49,8 @@ TEST(ContinuumLoads, PressureResultantEqualsPressureTimesArea) {
         if (nd == 3) {
           const Eigen::Vector3d x2 = v3(h.X[fd.nodes[2]]);
           Eigen::Vector3d area = 0.5 * (x1 - x0).cross(x2 - x0);
-          if (fd.shape == Shape::Quad4) area *= 2.0; // planar parallelogram (unit square)
+          if (fd.shape == Shape::Quad4 || fd.shape == Shape::Quad8)
+            area *= 2.0; // planar parallelogram (rectangle)
           want = p * area;
         } else {
           const Eigen::Vector3d d = x1 - x0;
@@ -75,19 +76,27 @@ TEST(ContinuumLoads, GravityResultantEqualsWeight) {
   const double t = 2.5, g = 9810.0;
   TestMaterial m;
   for (ElementType type : kAllTypes) {
-    const bool distort = shape_of(type) != Shape::Hex8 && shape_of(type) != Shape::Quad4;
+    const Shape cs = shape_of(type); // simplices distorted (straight edges), boxes and wedges not
+    const bool distort =
+        cs == Shape::Tri3 || cs == Shape::Tri6 || cs == Shape::Tet4 || cs == Shape::Tet10;
     ElementHarness h(type, reference_nodes(type, distort), m, t);
     double V = 0.0;
     const Eigen::Vector3d x0 = v3(h.X[0]), x1 = v3(h.X[1]), x2 = v3(h.X[2]);
     switch (shape_of(type)) {
     case Shape::Hex8:
+    case Shape::Hex20:
+      V = 1.0;
+      break;
+    case Shape::Wedge6:
+    case Shape::Wedge15: // triangle of area 1/2, height 2
       V = 1.0;
       break;
     case Shape::Tet4:
     case Shape::Tet10:
       V = std::abs((x1 - x0).cross(x2 - x0).dot(v3(h.X[3]) - x0)) / 6.0;
       break;
-    case Shape::Tri3: {
+    case Shape::Tri3:
+    case Shape::Tri6: {
       const double A = 0.5 * std::abs((x1 - x0).cross(x2 - x0)(2));
       V = element_info(type).plane == PlaneKind::Axisymmetric
               ? 2.0 * std::numbers::pi * (x0(0) + x1(0) + x2(0)) / 3.0 * A
@@ -172,8 +181,9 @@ TEST(ContinuumFactory, MissingElasticIsAnInputError) {
 // Shape functions: partition of unity, N_a(x_b) = delta_ab, and parametric derivatives that match
 // central differences (quadratic functions: the central difference is exact up to round-off).
 TEST(ContinuumShape, PartitionOfUnityKroneckerAndDerivatives) {
-  for (Shape s : {Shape::Line2, Shape::Line3, Shape::Tri3, Shape::Tri6, Shape::Quad4, Shape::Tet4,
-                  Shape::Tet10, Shape::Hex8}) {
+  for (Shape s :
+       {Shape::Line2, Shape::Line3, Shape::Tri3, Shape::Tri6, Shape::Quad4, Shape::Quad8,
+        Shape::Tet4, Shape::Tet10, Shape::Wedge6, Shape::Wedge15, Shape::Hex8, Shape::Hex20}) {
     const int n = shape_n_nodes(s), dim = shape_dim(s);
     std::vector<double> N(n), dN(n * dim), Np(n), Nm(n), tmp(n * dim);
     const auto nodes = shape_node_coords(s);
@@ -227,6 +237,18 @@ TEST(ContinuumQuadrature, RulesIntegrateTheirDegreeExactly) {
   EXPECT_NEAR(integrate(kTet4, [](double x, double y, double) { return x * y; }), 1.0 / 120.0,
               1e-15);
   EXPECT_NEAR(integrate(kTet1, [](double, double, double) { return 1.0; }), 1.0 / 6.0, 1e-16);
+  // 3x3 Gauss: degree 5 per direction; wedges: triangle rule x Gauss (int_wedge = int_tri int_z)
+  EXPECT_NEAR(integrate(kGaussQuad9, [](double x, double y, double) { return std::pow(x * y, 4); }),
+              4.0 / 25.0, 1e-15);
+  EXPECT_NEAR(integrate(kGaussHex27,
+                        [](double x, double y, double z) { return std::pow(x * y * z, 4) + x; }),
+              8.0 / 125.0, 1e-15);
+  EXPECT_NEAR(integrate(kWedge2, [](double x, double, double z) { return 1.0 + x + z * z; }),
+              1.0 + 1.0 / 3.0 + 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(integrate(kWedge9, [](double x, double y, double z) { return x * y * std::pow(z, 4); }),
+              1.0 / 24.0 * 2.0 / 5.0, 1e-15);
+  EXPECT_NEAR(integrate(kWedge6, [](double x, double, double z) { return x * x * z * z; }),
+              2.0 / 24.0 * 2.0 / 3.0, 1e-15);
   EXPECT_NEAR(integrate(kTri1, [](double x, double, double) { return x; }), 1.0 / 6.0, 1e-16);
 }
 

@@ -22,9 +22,7 @@ std::string case_name(const ::testing::TestParamInfo<TangentCase>& info) {
 
 std::vector<TangentCase> all_cases() {
   std::vector<TangentCase> c;
-  for (ElementType t : {ElementType::C3D8, ElementType::C3D4, ElementType::C3D10, ElementType::CPS3,
-                        ElementType::CPS4, ElementType::CPE3, ElementType::CPE4, ElementType::CAX3,
-                        ElementType::CAX4})
+  for (ElementType t : continuum_types())
     for (bool nl : {false, true})
       for (bool th : {false, true}) c.push_back({t, nl, th});
   return c;
@@ -117,10 +115,7 @@ TEST_P(ContinuumPressureTangent, FollowerLoadStiffnessMatchesCentralDifferences)
 }
 
 INSTANTIATE_TEST_SUITE_P(Continuum, ContinuumPressureTangent,
-                         ::testing::Values(ElementType::C3D8, ElementType::C3D4, ElementType::C3D10,
-                                           ElementType::CPS3, ElementType::CPS4, ElementType::CPE3,
-                                           ElementType::CPE4, ElementType::CAX3, ElementType::CAX4),
-                         [](const auto& info) {
+                         ::testing::ValuesIn(continuum_types()), [](const auto& info) {
                            return std::string(element_info(info.param).name);
                          });
 
