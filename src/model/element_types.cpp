@@ -122,6 +122,12 @@ const ElementTypeInfo& element_info(ElementType type) {
   return kInfo[idx];
 }
 
+bool info_reduced(const ElementTypeInfo& info) {
+  if (info.family != ElementFamily::Continuum || !info.displacement) return false;
+  const std::string_view n = info.name;
+  return n.ends_with('R') || n.ends_with("RT");
+}
+
 std::optional<ElementType> element_type_from_name(std::string_view name) {
   std::string upper;
   for (char c : name)

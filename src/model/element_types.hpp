@@ -109,6 +109,8 @@ struct ElementTypeInfo {
 };
 
 const ElementTypeInfo& element_info(ElementType type);
+/// True for the reduced-integration continuum types (C3D20R, CPS8R, … and their T twins).
+bool info_reduced(const ElementTypeInfo& info);
 /// Case-insensitive lookup of an Abaqus element type name; nullopt if gapfem does not know it.
 std::optional<ElementType> element_type_from_name(std::string_view name);
 std::span<const ElementTypeInfo> all_element_types();

@@ -123,6 +123,25 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "displacement (*BOUNDARY) to follow the response past the limit, or refine the mesh "
         "where it is crushed",
         at, list_labels(model, body));
+  // reduced-integration elements at the singular DOFs: their zero-energy modes are the other
+  // candidate (C3D20R has spurious modes that propagate along a row one element wide)
+  std::string reduced;
+  for (NodeId n : nodes)
+    for (ElemId e : node_elems[n]) {
+      const ElementTypeInfo& info = element_info(mesh.elem_types[e]);
+      if (!info_reduced(info) || reduced.find(info.name) != std::string::npos) continue;
+      reduced += (reduced.empty() ? "" : ", ") + std::string(info.name);
+    }
+  if (!reduced.empty())
+    return fmt::format(
+        "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
+        "mechanism in that direction, or its reduced-integration elements ({}) deform in a "
+        "zero-energy mode (the 2x2x2 rule of C3D20R leaves modes that a row of elements one "
+        "element across in two directions does not hold). Add boundary conditions (*BOUNDARY) if "
+        "the part is free; "
+        "otherwise use the fully integrated type (C3D20, CPS8, ...) or at least two elements "
+        "across the section",
+        at, list_labels(model, body), reduced);
   return fmt::format(
       "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
       "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "
