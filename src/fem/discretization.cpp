@@ -99,9 +99,13 @@ Discretization::Discretization(const Model& model) : _model(model) {
       ElementInput& in = gather.gather(*this, b, i, fields, &ctx);
       const std::string msg = b.kernel->validate(in);
       if (!msg.empty()) {
+        std::string nodes;
+        for (NodeId n : model.mesh.element_nodes(b.elements[i]))
+          nodes += (nodes.empty() ? "" : ", ") + model.node_label(n).str();
         problems.push_back(
             InputError(model.element_location(b.elements[i]),
-                       fmt::format("element {} ({})", in.label, element_info(b.type).name), msg)
+                       fmt::format("element {} ({})", in.label, element_info(b.type).name),
+                       fmt::format("{} (nodes {})", msg, nodes))
                 .what());
         if (problems.size() >= 50) break;
         continue;
