@@ -85,7 +85,17 @@ def reference_displacements(path):
     return out
 
 
-def gapfem_displacements(path):
+def global_u(node, to_global):
+    """U of a JSON node entry; nodes with "axes" report their local system, turned to global
+    components when the deck prints with GLOBAL=YES."""
+    u = list(node["U"]) + [0.0] * (3 - len(node["U"]))
+    q = node.get("axes")
+    if not q or not to_global:
+        return tuple(u)
+    return tuple(q[j] * u[0] + q[3 + j] * u[1] + q[6 + j] * u[2] for j in range(3))
+
+
+def gapfem_displacements(path, to_global=False):
     """{step: {node: (u1, u2, u3)}} from job.results.json (the last frame of each step)."""
     import json
     with open(path) as f:
@@ -96,7 +106,7 @@ def gapfem_displacements(path):
         if not frames:
             continue
         nodes = frames[-1].get("nodes", {})
-        out[st["step"]] = {int(k): tuple(v["U"]) for k, v in nodes.items()
+        out[st["step"]] = {int(k): global_u(v, to_global) for k, v in nodes.items()
                            if k.isdigit() and "U" in v}
     return out
 
@@ -146,7 +156,11 @@ def main():
                 res = os.path.join(out, deck[:-4] + ".results.json")
                 if code == 0 and os.path.exists(ref) and os.path.exists(res):
                     r = reference_displacements(ref)
-                    compared[deck] = agreement(r, gapfem_displacements(res)) if r else None
+                    with open(os.path.join(args.suite, deck), errors="replace") as f:
+                        to_global = re.search(r"^\*NODE PRINT[^\n]*GLOBAL=YES", f.read(),
+                                              re.I | re.M) is not None
+                    compared[deck] = (agreement(r, gapfem_displacements(res, to_global))
+                                      if r else None)
             elif code == 1:
                 per_deck[deck] = blockers_of((p.stderr + p.stdout).splitlines())
                 outcome[deck] = "input"

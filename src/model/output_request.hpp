@@ -33,6 +33,8 @@ struct NodePrintRequest {
   bool totals = false;
   bool totals_only = false; ///< TOTALS=ONLY: the column totals without the rows and summary
   bool summary = true;
+  /// GLOBAL=YES: vectors in global components also at *TRANSFORM nodes (default: local system)
+  bool global = false;
   SourceLocation loc;
 };
 

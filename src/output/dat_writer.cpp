@@ -324,8 +324,12 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
     const EntityLabel label = model.node_label(n);
     const std::size_t mark = buf.size();
     fmt::format_to(out, "{:>11}    ", label);
+    // GLOBAL=YES: global components at *TRANSFORM nodes too (default: their local system)
+    const Vec3 vec = !cols.vec        ? Vec3{}
+                     : request.global ? r.global(n, (*cols.vec)[n])
+                                      : (*cols.vec)[n];
     for (int c = 0; c < cols.n; ++c) {
-      const double v = cols.vec ? (*cols.vec)[n][cols.comp[c]] : (*cols.scalar)[n];
+      const double v = cols.vec ? vec[cols.comp[c]] : (*cols.scalar)[n];
       append_e12(buf, v);
       track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
     }

@@ -225,6 +225,17 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
     if (idx < r.RM.size()) vec_field(b, sep, "RM", r.RM[idx], 3, planar);
     if (idx < r.CM.size() && nonzero(r.CM[idx])) vec_field(b, sep, "CM", r.CM[idx], 3, planar);
   }
+  if (const auto it = r.local_axes.find(n); it != r.local_axes.end()) {
+    // a *TRANSFORM node: the vectors above are in its local system, whose axes follow (rows)
+    sep(b);
+    key(b, "axes");
+    b.push_back('[');
+    for (int i = 0; i < 9; ++i) {
+      if (i) b.push_back(',');
+      append_json_number(b, it->second[i]);
+    }
+    b.push_back(']');
+  }
   if (f.temperature) {
     if (idx < r.NT.size()) scalar("NT", r.NT[idx]);
     if (idx < r.RFL.size()) scalar("RFL", r.RFL[idx]);

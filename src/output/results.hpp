@@ -28,6 +28,15 @@ struct NodeResults {
   bool any_rotation = false;
   bool any_temperature = false;
   bool any_displacement = false;
+  /// Global components of a vector `v` given at `n`: Q^T v at a *TRANSFORM node, v elsewhere.
+  Vec3 global(NodeId n, const Vec3& v) const {
+    const auto it = local_axes.find(n);
+    if (it == local_axes.end()) return v;
+    const auto& Q = it->second;
+    Vec3 g{};
+    for (int j = 0; j < 3; ++j) g[j] = Q[j] * v[0] + Q[3 + j] * v[1] + Q[6 + j] * v[2];
+    return g;
+  }
 };
 
 /// One element's output at a frame.

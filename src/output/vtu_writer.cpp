@@ -212,12 +212,10 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   // ParaView warps and colours by global components: vectors at *TRANSFORM nodes go back from
   // their local systems (v_global = Q^T v_local)
   std::vector<Vec3> U = r.U, RF = r.RF, UR = r.UR, RM = r.RM;
-  for (const auto& [n, Q] : r.local_axes)
-    for (auto* v : {&U, &RF, &UR, &RM}) {
-      if (static_cast<std::size_t>(n) >= v->size()) continue;
-      const Vec3 l = (*v)[n];
-      for (int j = 0; j < 3; ++j) (*v)[n][j] = Q[j] * l[0] + Q[3 + j] * l[1] + Q[6 + j] * l[2];
-    }
+  for (const auto& entry : r.local_axes)
+    for (auto* v : {&U, &RF, &UR, &RM})
+      if (static_cast<std::size_t>(entry.first) < v->size())
+        (*v)[entry.first] = r.global(entry.first, (*v)[entry.first]);
   vec_point("U", U);
   vec_point("RF", RF);
   if (r.any_rotation) {

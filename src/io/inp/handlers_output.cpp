@@ -82,8 +82,7 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
   req.frequency = frequency_param(kw);
   req.summary = yes_no_param(kw, "SUMMARY", true);
   totals_param(kw, req);
-  yes_no_param(kw, "GLOBAL",
-               false); // accepted: all output is in global directions
+  req.global = yes_no_param(kw, "GLOBAL", false);
   req.nset = set_param(s, kw, "NSET", false);
   if (req.nset.empty()) {
     req.nodes.resize(static_cast<std::size_t>(s.model.mesh.n_nodes()));

@@ -11,6 +11,7 @@
 #include "test_util.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -50,6 +51,28 @@ TEST(Transform, InclinedRollerClosedForm) {
     // the bar's support takes the axial force N = k s cos(theta)
     EXPECT_NEAR(RF(r, f, 1)[0], -k * s * std::cos(t), 1e-10);
     EXPECT_EQ(r.increments.front().iterations, 1);
+  }
+}
+
+// *NODE PRINT prints U at a *TRANSFORM node in its local system by default and in global
+// components with GLOBAL=YES: (s, 0) and s (cos theta, sin theta).
+TEST(Transform, NodePrintGlobalYesPrintsGlobalComponents) {
+  const double theta = 25.0, t = theta * kPi / 180.0, P = 3.0, k = 1000.0 * 0.5 / 2.0;
+  const double s = P / (k * std::cos(t) * std::cos(t));
+  for (bool global : {false, true}) {
+    std::string d = roller(theta, false);
+    d.insert(d.find("*END STEP"), global ? "*NODE PRINT, NSET=END, GLOBAL=YES\nU\n"
+                                         : "*NODE PRINT, NSET=END\nU\n");
+    const JobResult r = run_deck(d, true, global ? "global" : "local");
+    ASSERT_EQ(r.exit_code, 0) << r.error;
+    std::ifstream in(test_dir() / (global ? "global.dat" : "local.dat"));
+    std::string line, row;
+    while (std::getline(in, line))
+      if (line.rfind("          2    ", 0) == 0) row = line;
+    ASSERT_FALSE(row.empty());
+    const double u1 = std::stod(row.substr(15, 12)), u2 = std::stod(row.substr(27, 12));
+    EXPECT_NEAR(u1, global ? s * std::cos(t) : s, 1e-4 * s) << row;
+    EXPECT_NEAR(u2, global ? s * std::sin(t) : 0.0, 1e-4 * s) << row;
   }
 }
 
