@@ -83,10 +83,17 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     _prescribed[s] = 1;
   }
   if (ignored > 0) {
+    // a temperature on a node of stress/displacement elements only: CalculiX gives every element
+    // temperatures in thermal steps, Abaqus only the heat-transfer and coupled types
+    const bool thermal =
+        _step.procedure != Procedure::Static && example.find(" DOF 11 ") != std::string::npos;
     const std::string msg = fmt::format(
         "step {}: {} boundary condition(s) refer to DOFs that no element at the node has, e.g. {}; "
-        "they have no effect",
-        _step.number, ignored, example);
+        "they have no effect{}",
+        _step.number, ignored, example,
+        thermal ? " (stress/displacement elements such as C3D20R carry no temperature DOF: use the "
+                  "coupled types, e.g. C3D20RT, for heat conduction in the body, as in Abaqus)"
+                : "");
     log::warning("{}", msg);
   }
   _eqmap = EquationMap::build(_prescribed);

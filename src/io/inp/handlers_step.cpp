@@ -112,7 +112,16 @@ void handle_step(BuildState& s, const Keyword& kw) {
     st.interference = carried(prev->interference);
   }
   reject_param(kw, "PERTURBATION", "gapfem runs general (nonlinear) steps only");
-  st.nlgeom = yes_no_param(kw, "NLGEOM", false);
+  // once on, nonlinear geometry stays on in every later step (Abaqus); NLGEOM=NO cannot undo it
+  const bool was_on = std::any_of(s.model.steps.begin(), s.model.steps.end(),
+                                  [](const Step& p) { return p.nlgeom; });
+  st.nlgeom = yes_no_param(kw, "NLGEOM", was_on);
+  if (was_on && !st.nlgeom) {
+    s.warn(kw.loc, "NLGEOM=NO: nonlinear geometry, once on in an earlier step, stays on in all "
+                   "later steps (as in "
+                   "Abaqus); NLGEOM=NO has no effect");
+    st.nlgeom = true;
+  }
   if (kw.has("UNSYMM")) {
     st.unsymmetric = yes_no_param(kw, "UNSYMM", false);
     st.symmetric_only = !st.unsymmetric;
