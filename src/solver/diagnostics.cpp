@@ -51,6 +51,27 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
   std::vector<std::vector<ElemId>> node_elems(static_cast<std::size_t>(mesh.n_nodes()));
   for (ElemId e = 0; e < mesh.n_elements(); ++e)
     for (NodeId n : mesh.element_nodes(e)) node_elems[n].push_back(e);
+  // rotations that only a constraint gives a node (MPC BEAM, couplings at solid nodes) and that
+  // nothing holds, such as the rotation about the line of a BEAM MPC
+  const bool orphan_rotations = std::all_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
+    if (eq < 0 || eq >= eqm.n_eq()) return true;
+    const LocalIndex s = eqm.eq_slot[eq];
+    const int d = abaqus_number(dofs.slot_dof(s));
+    if (d < 4 || d > 6) return false;
+    for (ElemId e : node_elems[dofs.slot_node(s)]) {
+      const ElementFamily f = element_info(mesh.elem_types[e]).family;
+      if (f == ElementFamily::Beam || f == ElementFamily::Spring) return false;
+    }
+    return true;
+  });
+  if (orphan_rotations)
+    return fmt::format(
+        "the system is singular at {}: no element gives these nodes rotations; they have them "
+        "only through a constraint (*MPC BEAM, *KINEMATIC COUPLING, *COUPLING), which leaves "
+        "some rotation free (e.g. the rotation about the line of a BEAM MPC between solid "
+        "nodes). Hold it with *BOUNDARY (node, DOF) or use an MPC that needs no rotations (PIN, "
+        "TIE, LINK)",
+        at);
   const ConstraintSet& cs = disc.constraints();
   std::vector<std::vector<int>> node_rows(static_cast<std::size_t>(mesh.n_nodes()));
   for (int r = 0; r < cs.n_rows(); ++r)

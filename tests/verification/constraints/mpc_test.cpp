@@ -146,3 +146,18 @@ TEST(Mpc, BadMpcsAreInputErrors) {
   e = error_of(with("*MPC\nBEAM, 100, 5\n", "*MPC\nBEAM, 100, 5\nPIN, 100, 4\n"));
   EXPECT_TRUE(has(e, "already the dependent DOF of the constraint at")) << e;
 }
+
+// A BEAM MPC between truss nodes gives the independent node rotations that nothing holds about
+// the link's line: the singular system names the constraint as the cause, not rigid-body motion.
+TEST(Mpc, BeamBetweenNodesWithoutRotationsNamesTheFreeRotation) {
+  const std::string d =
+      "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n3, 2., 0., 0.\n4, 3., 0., 0.\n*ELEMENT, TYPE=T3D2, "
+      "ELSET=B\n1, 1, 2\n2, 3, 4\n*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, "
+      "ELSET=B, MATERIAL=M\n1.\n*MPC\nBEAM, 3, 2\n*STEP\n*STATIC\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n2, "
+      "5, 6\n"
+      "4, 2, 3\n*CLOAD\n4, 1, 1.\n*END STEP\n";
+  const JobResult r = gapfem::test::run_deck(d);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.error.find("DOF 4: no element gives these nodes rotations"), std::string::npos)
+      << r.error;
+}
