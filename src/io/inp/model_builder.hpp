@@ -31,7 +31,10 @@ enum class Parent : std::uint8_t {
   FieldOutput,
   HistoryOutput,
   ChangeFriction,
-  Coupling
+  Coupling,
+  /// after an unsupported block keyword (*SURFACE INTERACTION): its sub-options are skipped
+  /// quietly (the block was reported), never attached to an earlier block
+  Unsupported
 };
 
 /// What a step has seen so far (for defaults and "exactly one" rules).

@@ -165,7 +165,7 @@ bool skippable_keyword(const std::string& key) {
 /// Keywords whose unknown parameters --ignore-unknown may skip: output requests only.
 bool output_keyword(const std::string& key) {
   static const char* const kOutputKeys[] = {"NODEPRINT",     "ELPRINT",  "OUTPUT", "NODEOUTPUT",
-                                        "ELEMENTOUTPUT", "NODEFILE", "ELFILE", "PREPRINT"};
+                                            "ELEMENTOUTPUT", "NODEFILE", "ELFILE", "PREPRINT"};
   for (const char* k : kOutputKeys)
     if (key == k) return true;
   return false;
@@ -207,6 +207,13 @@ bool procedure_keyword(const std::string& key) {
   for (const char* k : kProcedures)
     if (key == k) return true;
   return false;
+}
+
+/// Unsupported Abaqus keywords that open a block of sub-options gapfem also knows (*FRICTION,
+/// *SURFACE BEHAVIOR, *GAP CONDUCTANCE, …): those sub-options belong to the unsupported block.
+bool unsupported_block(const std::string& key) {
+  return key == "SURFACEINTERACTION" || key == "CONTACTPROPERTYASSIGNMENT" ||
+         key == "CONTACTPAIR" || key == "CONTACTINTERFERENCE";
 }
 
 /// An unknown keyword (`keyword` empty) or an unknown parameter of `keyword`.
@@ -278,6 +285,7 @@ void dispatch(BuildState& s, Keyword& kw) {
       return;
     }
     unknown(s, kw.loc, fmt::format("the keyword {}", kw.name), kw.key, false);
+    if (unsupported_block(kw.key)) s.parent = Parent::Unsupported;
     return;
   }
   kw.name = std::string(spec->name);
@@ -293,7 +301,8 @@ void dispatch(BuildState& s, Keyword& kw) {
   const bool history_keyword = spec->where == Where::History;
   if (spec->parents != 0) {
     if (!(spec->parents & bit(s.parent))) {
-      s.error(kw.loc, "", fmt::format("{} must follow {}", kw.name, parent_names(spec->parents)));
+      if (s.parent != Parent::Unsupported) // else: a sub-option of a reported block
+        s.error(kw.loc, "", fmt::format("{} must follow {}", kw.name, parent_names(spec->parents)));
       return;
     }
   } else {

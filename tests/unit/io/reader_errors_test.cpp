@@ -52,6 +52,32 @@ TEST(ReaderErrors, AllProblemsAreListedOnePerLine) {
   EXPECT_EQ(e.location().keyword, "*NODE");
 }
 
+// The sub-options of an unsupported block keyword belong to it: one error for *SURFACE
+// INTERACTION, none for its *FRICTION and *SURFACE BEHAVIOR, which never attach to the *GAP
+// before it.
+TEST(ReaderErrors, SubOptionsOfAnUnsupportedBlockRaiseNoFollowOnErrors) {
+  const InputError e = read_error(R"(*NODE
+1, 0, 0, 0
+2, 1, 0, 0
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+1, 1, 2
+*GAP, ELSET=G
+0.1, 1., 0., 0.
+*SURFACE INTERACTION, NAME=SI
+*FRICTION
+0.3
+*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD
+*STEP
+*STATIC
+*END STEP
+)");
+  const std::string text = e.what();
+  EXPECT_CONTAINS(text, "deck.inp:8: *SURFACE INTERACTION: the keyword *SURFACE INTERACTION is not "
+                        "supported by gapfem");
+  EXPECT_EQ(text.find("must follow"), std::string::npos) << text;
+  EXPECT_EQ(text.find("*FRICTION"), std::string::npos) << text;
+}
+
 TEST(ReaderErrors, ErrorsInHistoryAreCollectedToo) {
   const InputError e =
       read_error(std::string(test::kTrussModel) +
@@ -81,18 +107,18 @@ TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {
   EXPECT_EQ(m.warnings.size(), 2u);
   EXPECT_EQ(m.mesh.n_nodes(), 3);
   // what would change the model stays an error with --ignore-unknown
-  EXPECT_CONTAINS(test::error_text(std::string(test::kTrussModel) + "*NODE, FOO=1\n3\n",
-                                   ReadOptions{true}),
-                  "the parameter FOO of *NODE is not supported by gapfem, and --ignore-unknown "
-                  "does not skip it: it would change the model");
+  EXPECT_CONTAINS(
+      test::error_text(std::string(test::kTrussModel) + "*NODE, FOO=1\n3\n", ReadOptions{true}),
+      "the parameter FOO of *NODE is not supported by gapfem, and --ignore-unknown "
+      "does not skip it: it would change the model");
   EXPECT_CONTAINS(test::error_text(std::string(test::kTrussModel) +
                                        "*SHELL SECTION, ELSET=TRUSS, MATERIAL=STEEL\n1.\n",
                                    ReadOptions{true}),
                   "the keyword *SHELL SECTION is not supported by gapfem, and --ignore-unknown "
                   "does not skip it");
   // real errors stay errors
-  const InputError e = read_error(std::string(test::kTrussModel) + "*NODE\n3\n*NODE\n3\n",
-                                  ReadOptions{true});
+  const InputError e =
+      read_error(std::string(test::kTrussModel) + "*NODE\n3\n*NODE\n3\n", ReadOptions{true});
   EXPECT_CONTAINS(e.what(), "*NODE: node 3: this node number is defined twice");
 }
 
