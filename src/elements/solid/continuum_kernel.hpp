@@ -224,32 +224,7 @@ class ContinuumKernel final : public ElementKernel {
   void load(const ElementInput& in, const DistributedLoad& ld, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {
     LoadGeometry g{kKin, Tr::shape, in.X, in.u, ND, _setup.thickness};
-    const bool nlgeom = in.ctx && in.ctx->nlgeom;
-    switch (ld.kind) {
-    case DistLoadKind::Pressure:
-      continuum_face_pressure(g, ld.face, magnitude, nlgeom, f_ext, tangent);
-      return;
-    case DistLoadKind::Gravity: {
-      if (_setup.material.density.empty())
-        throw InputError(ld.loc, fmt::format("element {}", in.label),
-                         fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label,
-                                     _setup.material.name));
-      const double rho = _setup.material.density.value(mean_temperature(in));
-      continuum_body_force(g,
-                           {rho * magnitude * ld.direction[0], rho * magnitude * ld.direction[1],
-                            rho * magnitude * ld.direction[2]},
-                           f_ext);
-      return;
-    }
-    case DistLoadKind::BodyForce:
-      continuum_body_force(
-          g,
-          {magnitude * ld.direction[0], magnitude * ld.direction[1], magnitude * ld.direction[2]},
-          f_ext);
-      return;
-    default:
-      return;
-    }
+    continuum_distributed_load(g, in, ld, magnitude, _setup.material, f_ext, tangent);
   }
 
   bool supports_output(ElemVar var) const override {
@@ -348,14 +323,6 @@ class ContinuumKernel final : public ElementKernel {
     } else {
       dlambda = dl3;
     }
-  }
-
-  double mean_temperature(const ElementInput& in) const {
-    const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
-    if (T.empty()) return 0.0;
-    double s = 0.0;
-    for (double t : T) s += t;
-    return s / static_cast<double>(T.size());
   }
 
   ElasticPoint point_law(const ElementInput& in, int q) const {

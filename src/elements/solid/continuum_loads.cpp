@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <fmt/format.h>
 #include <numbers>
 
 namespace gapfem {
@@ -167,6 +168,39 @@ double continuum_reference_volume(const LoadGeometry& g) {
   double v = 0.0;
   for (int a = 0; a < n; ++a) v += f[3 * a];
   return v;
+}
+
+void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
+                                const DistributedLoad& ld, double magnitude, const Material& mat,
+                                std::span<double> f, std::span<double> tangent) {
+  const bool nlgeom = in.ctx && in.ctx->nlgeom;
+  switch (ld.kind) {
+  case DistLoadKind::Pressure:
+    continuum_face_pressure(g, ld.face, magnitude, nlgeom, f, tangent);
+    return;
+  case DistLoadKind::Gravity: {
+    if (mat.density.empty())
+      throw InputError(ld.loc, fmt::format("element {}", in.label),
+                       fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label,
+                                   mat.name));
+    const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
+    double mean = 0.0;
+    for (double t : T) mean += t / static_cast<double>(T.size());
+    const double rho = mat.density.value(mean);
+    continuum_body_force(g,
+                         {rho * magnitude * ld.direction[0], rho * magnitude * ld.direction[1],
+                          rho * magnitude * ld.direction[2]},
+                         f);
+    return;
+  }
+  case DistLoadKind::BodyForce:
+    continuum_body_force(
+        g, {magnitude * ld.direction[0], magnitude * ld.direction[1], magnitude * ld.direction[2]},
+        f);
+    return;
+  default:
+    return;
+  }
 }
 
 } // namespace gapfem

@@ -4,6 +4,8 @@
 /// shared by the stress/displacement and (later) the coupled temperature-displacement elements.
 /// Not on the hot path: sizes are dynamic, scratch is small and on the stack.
 #include "common/types.hpp"
+#include "elements/element_kernel.hpp"
+#include "model/material.hpp"
 #include "elements/solid/continuum_law.hpp"
 #include "fem/shape_functions.hpp"
 
@@ -31,6 +33,13 @@ void continuum_face_pressure(const LoadGeometry& g, int face, double p, bool fol
 /// Body force b (per unit reference volume, `density_at(T)` already applied by the caller when the
 /// load is GRAV) integrated with the shape functions over the reference volume.
 void continuum_body_force(const LoadGeometry& g, const Vec3& b, std::span<double> f);
+
+/// The distributed loads of a stress/displacement continuum element: face pressure (a follower
+/// load under NLGEOM), GRAV (needs the material's density, at the element's mean temperature) and
+/// BX/BY/BZ body forces; other kinds add nothing.
+void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
+                                const DistributedLoad& ld, double magnitude, const Material& mat,
+                                std::span<double> f, std::span<double> tangent);
 
 /// Volume (3-D), area x thickness (plane) or 2*pi*r-weighted area (axisymmetric) of the reference
 /// element; used by the tests and for density-weighted loads.
