@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 64> kInfo = {{
+constexpr std::array<ElementTypeInfo, 68> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -113,6 +113,13 @@ constexpr std::array<ElementTypeInfo, 64> kInfo = {{
      Shape::Quad8},
     {ElementType::CAX8RT, "CAX8RT", 8, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, true,
      Shape::Quad8},
+    {ElementType::C3D8I, "C3D8I", 8, F::Continuum, S::ThreeD, P::None, true, false, Shape::Hex8},
+    {ElementType::CPS4I, "CPS4I", 4, F::Continuum, S::Planar, P::PlaneStress, true, false,
+     Shape::Quad4},
+    {ElementType::CPE4I, "CPE4I", 4, F::Continuum, S::Planar, P::PlaneStrain, true, false,
+     Shape::Quad4},
+    {ElementType::CAX4I, "CAX4I", 4, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, false,
+     Shape::Quad4},
 }};
 } // namespace
 

@@ -81,6 +81,10 @@ enum class ElementType : std::uint8_t {
   CPE8RT,
   CAX8T,
   CAX8RT,
+  C3D8I,
+  CPS4I,
+  CPE4I,
+  CAX4I,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };

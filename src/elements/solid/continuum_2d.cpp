@@ -1,5 +1,6 @@
 // Instantiations of the plane and axisymmetric continuum kernels.
 #include "elements/solid/continuum_factory.hpp"
+#include "elements/solid/incompatible_kernel.hpp"
 
 namespace gapfem {
 
@@ -66,6 +67,15 @@ std::unique_ptr<ElementKernel> make_continuum_2d(ElementType type, ContinuumSetu
   case T::CAX6:
     return std::make_unique<
         ContinuumKernel<ContinuumTraits<T::CAX6, Shape::Tri6, K::Axisymmetric, false>>>(
+        std::move(setup));
+  case T::CPS4I:
+    return std::make_unique<IncompatibleKernel<T::CPS4I, Shape::Quad4, K::PlaneStress>>(
+        std::move(setup));
+  case T::CPE4I:
+    return std::make_unique<IncompatibleKernel<T::CPE4I, Shape::Quad4, K::PlaneStrain>>(
+        std::move(setup));
+  case T::CAX4I:
+    return std::make_unique<IncompatibleKernel<T::CAX4I, Shape::Quad4, K::Axisymmetric>>(
         std::move(setup));
   default:
     return nullptr;

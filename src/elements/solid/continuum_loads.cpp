@@ -180,9 +180,9 @@ void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
     return;
   case DistLoadKind::Gravity: {
     if (mat.density.empty())
-      throw InputError(ld.loc, fmt::format("element {}", in.label),
-                       fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label,
-                                   mat.name));
+      throw InputError(
+          ld.loc, fmt::format("element {}", in.label),
+          fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label, mat.name));
     const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
     double mean = 0.0;
     for (double t : T) mean += t / static_cast<double>(T.size());

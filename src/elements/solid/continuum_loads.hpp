@@ -5,9 +5,9 @@
 /// Not on the hot path: sizes are dynamic, scratch is small and on the stack.
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
-#include "model/material.hpp"
 #include "elements/solid/continuum_law.hpp"
 #include "fem/shape_functions.hpp"
+#include "model/material.hpp"
 
 #include <span>
 
