@@ -5,6 +5,7 @@
 //   force 1 along the right edge (uniform traction: consistent Line3 forces 1/6, 4/6, 1/6 per
 //   edge). CPS8, CPS8R and CPS6 (each quadrilateral split in two) on n x n meshes converge from
 //   below to the same tip deflection v(48, 60) = 25.1 (CalculiX on the same deck: 25.06).
+// - NAFEMS LE10, thick elliptic plate, sigma_yy at D with C3D20R (within 5%).
 // - NAFEMS LE1, elliptic membrane: quarter of the region between the ellipses (x/2)^2 + y^2 = 1 and
 //   (x/3.25)^2 + (y/2.75)^2 = 1, plane stress, E = 210 GPa, nu = 0.3, thickness 0.1, normal outward
 //   pressure 10 MPa on the outer edge, symmetry on x = 0 and y = 0. Target sigma_yy at D = (2, 0):
@@ -196,4 +197,61 @@ TEST(QuadraticBenchmarks, NafemsLe1EllipticMembrane) {
   // first-order, 48 x 16, bilinear extrapolation from the 2 x 2 points: CPS4I 92.91, CPS4 94.26
   const double i4 = le1("CPS4I", 48, 16);
   EXPECT_LT(std::abs(i4 / 92.7 - 1.0), 1e-2) << i4;
+}
+
+namespace {
+
+/// sigma_yy at D = (2, 0, 0.3) of NAFEMS LE10 (thick elliptic plate under 1 MPa on its top face)
+/// with C3D20R on nr x nt x nz elements (radius x angle x thickness), extrapolated trilinearly from
+/// the 2 x 2 x 2 points of the element at D.
+double le10(int nr, int nt, int nz) {
+  const HexMesh20 m{nr, nt, nz};
+  auto map = [](double s, double t, double w) {
+    const double th = 0.5 * kPi * t;
+    const double xi = 2.0 * std::cos(th), yi = std::sin(th);
+    const double xo = 3.25 * std::cos(th), yo = 2.75 * std::sin(th);
+    return Point3{xi + s * (xo - xi), yi + s * (yo - yi), -0.3 + 0.6 * w};
+  };
+  std::string d = "*HEADING\nNAFEMS LE10\n" + m.nodes(map) + m.elements("C3D20R", "ALL");
+  d += "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n*SOLID SECTION, ELSET=ALL, "
+       "MATERIAL=STEEL\n\n";
+  const std::vector<int> mid = m.plane(0, 2 * m.nx); // the outer curved face
+  // the outer face's mid-plane line: i = 2 nx, k = nz
+  std::vector<int> line;
+  for (int j = 0; j <= 2 * m.ny; ++j)
+    if (HexMesh20::present(2 * m.nx, j, m.nz)) line.push_back(m.label(2 * m.nx, j, m.nz));
+  d += nset("YSYM", m.plane(1, 0)) + nset("XSYM", m.plane(1, 2 * m.ny)) + nset("OUTER", mid) +
+       nset("MIDLINE", line);
+  d += "*STEP\n*STATIC\n*BOUNDARY\nYSYM, 2, 2\nXSYM, 1, 1\nOUTER, 1, 2\nMIDLINE, 3, 3\n*DLOAD\n";
+  for (int j = 0; j < m.ny; ++j)
+    for (int i = 0; i < m.nx; ++i) d += fmt::format("{}, P2, 1.\n", m.element(i, j, m.nz - 1));
+  d += "*EL PRINT, ELSET=ALL\nS\n*END STEP\n";
+  const JobResult r = run_deck(d, false, fmt::format("le10_{}", nt));
+  EXPECT_EQ(r.exit_code, 0) << r.error;
+  if (r.exit_code != 0) return 0.0;
+  const Frame& f = last_frame(r);
+  // D is node 5 of element (0, 0, nz - 1): (xi, eta, zeta) = (-1, -1, +1)
+  const ElementResult* er = f.element(r.model->mesh.find_element(m.element(0, 0, m.nz - 1)));
+  const OutputBlock* b = er ? er->data.find(ElemVar::S) : nullptr;
+  if (!b || b->n_points != 8) return 0.0;
+  const double a = 0.5 * (1 + std::sqrt(3.0)), c = 0.5 * (1 - std::sqrt(3.0));
+  double v = 0.0;
+  for (int q = 0; q < 8; ++q) { // points: xi fastest, then eta, then zeta (- then +)
+    const double wx = q % 2 ? c : a, wy = (q / 2) % 2 ? c : a, wz = q / 4 ? a : c;
+    v += wx * wy * wz * b->values[q * b->names.size() + 1];
+  }
+  return v;
+}
+
+} // namespace
+
+// NAFEMS LE10: target sigma_yy(D) = -5.38 MPa. Measured with C3D20R (radius x angle x thickness,
+// trilinear extrapolation from the element at D): -5.346 (3 x 6 x 2), -5.284 (6 x 12 x 4), -5.443
+// (12 x 24 x 4), -5.150 (6 x 12 x 8): within 5% but not monotone (the point value extrapolated
+// from the reduced points of one element; see docs/verification.md).
+TEST(QuadraticBenchmarks, NafemsLe10ThickPlate) {
+  for (auto [nr, nt, nz] : {std::array{3, 6, 2}, std::array{6, 12, 4}}) {
+    const double v = le10(nr, nt, nz);
+    EXPECT_LT(std::abs(v / -5.38 - 1.0), 5e-2) << nr << " x " << nt << " x " << nz << ": " << v;
+  }
 }
