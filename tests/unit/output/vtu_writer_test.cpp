@@ -1,5 +1,6 @@
 // VtuWriter: well-formed VTK XML UnstructuredGrid with raw appended data
 // (UInt64 headers), values as handed over, and the .pvd collection.
+#include "fem/shape_functions.hpp"
 #include "output/vtu_writer.hpp"
 #include "writer_fixture.hpp"
 
@@ -219,6 +220,61 @@ TEST(OutputVtu, CellTypes) {
   EXPECT_EQ(vtk_cell_type(ElementType::GAPUNI, 2), 3);
   EXPECT_EQ(vtk_cell_type(ElementType::SPRING2, 2), 3);
   EXPECT_EQ(vtk_cell_type(ElementType::SPRING1, 1), 1);
+}
+
+// Quadratic and wedge cells: VTK's cell types, and the node order written for them puts every
+// midside node at the middle of the VTK edge it belongs to (vtkQuadraticHexahedron, -Wedge, -Quad:
+// corners, then the edges listed below). VTK's wedges are oriented the other way round from
+// Abaqus's (vtkWedge: the right-hand normal of (0, 1, 2) points away from (3, 4, 5)).
+TEST(OutputVtu, QuadraticAndWedgeNodeOrders) {
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D20R, 20), 25);
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D15, 15), 26);
+  EXPECT_EQ(vtk_cell_type(ElementType::C3D6, 6), 13);
+  EXPECT_EQ(vtk_cell_type(ElementType::CAX8R, 8), 23);
+  EXPECT_EQ(vtk_cell_type(ElementType::CPS6, 6), 22);
+  struct Case {
+    ElementType type;
+    std::vector<std::array<int, 2>> edges;
+  };
+  const std::vector<Case> cases = {
+      {ElementType::C3D20,
+       {{0, 1},
+        {1, 2},
+        {2, 3},
+        {3, 0},
+        {4, 5},
+        {5, 6},
+        {6, 7},
+        {7, 4},
+        {0, 4},
+        {1, 5},
+        {2, 6},
+        {3, 7}}},
+      {ElementType::C3D15,
+       {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {0, 3}, {1, 4}, {2, 5}}},
+      {ElementType::CPS8, {{0, 1}, {1, 2}, {2, 3}, {3, 0}}},
+      {ElementType::CAX6, {{0, 1}, {1, 2}, {2, 0}}}};
+  for (const Case& c : cases) {
+    const auto xi = shape_node_coords(*element_info(c.type).cell);
+    auto at = [&](int vtk) {
+      return xi[static_cast<std::size_t>(vtk_node_from_abaqus(c.type, vtk))];
+    };
+    const int corners = static_cast<int>(xi.size() - c.edges.size());
+    for (std::size_t e = 0; e < c.edges.size(); ++e)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_DOUBLE_EQ(at(corners + static_cast<int>(e))[k],
+                         0.5 * (at(c.edges[e][0])[k] + at(c.edges[e][1])[k]))
+            << element_info(c.type).name << " edge " << e;
+  }
+  for (ElementType t : {ElementType::C3D6, ElementType::C3D15}) {
+    const auto xi = shape_node_coords(*element_info(t).cell);
+    auto at = [&](int vtk) { return xi[static_cast<std::size_t>(vtk_node_from_abaqus(t, vtk))]; };
+    const auto a = at(0), b = at(1), c = at(2), top = at(3);
+    const double n[3] = {(b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+                         (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+                         (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])};
+    EXPECT_LT(n[0] * (top[0] - a[0]) + n[1] * (top[1] - a[1]) + n[2] * (top[2] - a[2]), 0.0);
+  }
 }
 
 // C3D10 nodes in Abaqus order: corners 1-4, then mid-edge nodes of edges 1-2,
