@@ -44,6 +44,7 @@ void handle_material(BuildState& s, const Keyword& kw) {
 
 void handle_elastic(BuildState& s, const Keyword& kw) {
   if (s.current_material < 0) return; // *MATERIAL line was in error
+  s.bad_material_options.insert({s.current_material, 0}); // until it is read
   // ISO is the abbreviation CalculiX decks use (CalculiX User's Manual, *ELASTIC)
   enum_param(kw, "TYPE", {"ISOTROPIC", "ISO"}, 0);
   reject_param(kw, "MODULI", "give the instantaneous isotropic moduli E and nu");
@@ -56,6 +57,7 @@ void handle_elastic(BuildState& s, const Keyword& kw) {
                              v[1]);
         return std::string();
       });
+  s.bad_material_options.erase({s.current_material, 0});
 }
 
 void handle_density(BuildState& s, const Keyword& kw) {
@@ -75,10 +77,12 @@ void handle_expansion(BuildState& s, const Keyword& kw) {
 
 void handle_conductivity(BuildState& s, const Keyword& kw) {
   if (s.current_material < 0) return;
+  s.bad_material_options.insert({s.current_material, 1}); // until it is read
   enum_param(kw, "TYPE", {"ISO", "ISOTROPIC"}, 0);
   once(s, kw, current_material(s).conductivity);
   current_material(s).conductivity =
       read_property_table(s, kw, kw.data, {"conductivity"}, positive_first);
+  s.bad_material_options.erase({s.current_material, 1});
 }
 
 void handle_specific_heat(BuildState& s, const Keyword& kw) {

@@ -16,6 +16,7 @@
 #include <map>
 #include <optional>
 #include <span>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_set>
@@ -58,6 +59,9 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
+  /// materials whose *ELASTIC (0) or *CONDUCTIVITY (1) was in error (reported): no follow-on
+  /// "the material has none"
+  std::set<std::pair<int, int>> bad_material_options;
   /// Surfaces with a data line whose elements or nodes failed to be defined (reported there):
   /// constraints on them stay quiet when nothing is left.
   std::unordered_set<std::string> incomplete_surfaces;

@@ -236,7 +236,7 @@ void check_materials(BuildState& s) {
     const Material& mat = s.model.materials[m];
     const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
     auto need = [&](int what, bool has, const char* option) {
-      if (has || reported[{m, what}]) return;
+      if (has || reported[{m, what}] || s.bad_material_options.count({m, what})) return;
       reported[{m, what}] = true;
       s.error(
           mat.loc, fmt::format("material {}", mat.name),

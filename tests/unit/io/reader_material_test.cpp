@@ -60,6 +60,27 @@ TEST(ReaderMaterial, OtherMaterialOptions) {
   EXPECT_EQ(m.solid_sections.at(0).thickness, 1.0);
 }
 
+// A rejected *ELASTIC raises no follow-on "the material has no *ELASTIC" for its elements.
+TEST(ReaderMaterial, RejectedElasticRaisesNoFollowOnError) {
+  const std::string deck = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+*ELEMENT, TYPE=T3D2, ELSET=TRUSS
+1, 1, 2
+*MATERIAL, NAME=M
+*ELASTIC, TYPE=ORTHO
+1., 2., 3., 4., 5., 6., 7., 8.
+*SOLID SECTION, ELSET=TRUSS, MATERIAL=M
+1.
+*STEP
+*STATIC
+*END STEP
+)";
+  const std::string text = error_text(deck);
+  EXPECT_CONTAINS(text, "TYPE=ORTHO: this value is not supported");
+  EXPECT_EQ(text.find("has none"), std::string::npos) << text;
+}
+
 TEST(ReaderMaterial, MaterialErrors) {
   const std::string b(kTrussMesh);
   EXPECT_CONTAINS(error_text(b + "*MATERIAL, NAME=M\n*ELASTIC, TYPE=ORTHOTROPIC\n1,2,3\n"),
