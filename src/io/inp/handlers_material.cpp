@@ -43,7 +43,7 @@ void handle_material(BuildState& s, const Keyword& kw) {
 }
 
 void handle_elastic(BuildState& s, const Keyword& kw) {
-  if (s.current_material < 0) return; // *MATERIAL line was in error
+  if (s.current_material < 0) return;                     // *MATERIAL line was in error
   s.bad_material_options.insert({s.current_material, 0}); // until it is read
   // ISO is the abbreviation CalculiX decks use (CalculiX User's Manual, *ELASTIC)
   enum_param(kw, "TYPE", {"ISOTROPIC", "ISO"}, 0);
