@@ -88,7 +88,7 @@ void clamp_domain(Shape s, std::array<double, 2>& xi) {
 void add_tributary_areas(const Model& model, const SurfaceFacet& f,
                          std::map<NodeId, double>& area) {
   const int dim = shape_dim(f.shape);
-  const bool quadratic = f.shape == Shape::Tri6 || f.shape == Shape::Line3;
+  const bool quadratic = shape_quadratic(f.shape);
   std::array<double, 8> share{};
   double total = 0.0;
   for (const QuadraturePoint& q : face_load_rule(f.shape)) {
@@ -148,7 +148,10 @@ FacetPoint closest_point(const Model& model, const SurfaceFacet& f, const Vec3& 
 }
 
 double facet_size(const Model& model, const SurfaceFacet& f) {
-  const int corners = f.shape == Shape::Tri6 ? 3 : (f.shape == Shape::Line3 ? 2 : f.n_nodes);
+  const int corners = f.shape == Shape::Tri6    ? 3
+                      : f.shape == Shape::Line3 ? 2
+                      : f.shape == Shape::Quad8 ? 4
+                                                : f.n_nodes;
   double size = 0.0;
   for (int a = 0; a < corners; ++a)
     for (int b = a + 1; b < corners; ++b) {

@@ -284,3 +284,43 @@ TEST(QuadraticElements, BadConnectivityIsAnInputError) {
       << r2.error;
   EXPECT_NE(r2.error.find("(nodes 1, 3, 9, 7, 19, 21, 27, 25,"), std::string::npos) << r2.error;
 }
+
+// *TIE between the quadratic faces of two C3D20 blocks (1 x 1 x 1 each, 2 x 2 x 1 elements, the
+// upper block's bottom face tied to the lower block's top face, matching meshes): uniaxial
+// compression by a pressure p on the top passes exactly, u_z(top) = -2 p / E.
+TEST(QuadraticElements, TieOfQuadraticFacesPassesUniaxialStress) {
+  HexMesh20 m{2, 2, 1};
+  const int off = 1000;
+  const double p = 3.0;
+  std::string d = "*HEADING\ntied C3D20 blocks\n";
+  d += m.nodes([](double s, double t, double w) { return Point3{s, t, w}; });
+  std::string upper = m.nodes([](double s, double t, double w) { return Point3{s, t, 1.0 + w}; });
+  for (std::size_t pos = upper.find('\n') + 1; pos < upper.size();) {
+    const auto nl = upper.find('\n', pos);
+    const auto comma = upper.find(',', pos);
+    d += fmt::format("{}{}\n", std::stoi(upper.substr(pos, comma - pos)) + off,
+                     upper.substr(comma, nl - comma));
+    pos = nl + 1;
+  }
+  d += m.elements("C3D20", "LOWER") + "*ELEMENT, TYPE=C3D20, ELSET=UPPER\n";
+  for (int j = 0; j < m.ny; ++j)
+    for (int i = 0; i < m.nx; ++i) {
+      std::vector<int> c = m.connectivity(i, j, 0);
+      for (int& n : c) n += off;
+      d += HexMesh20::element_line(100 + m.element(i, j, 0), c);
+    }
+  d += "*ELSET, ELSET=ALL\nLOWER, UPPER\n" + kMaterial + "\n";
+  d += "*SURFACE, NAME=SLAVE\nUPPER, S1\n*SURFACE, NAME=MASTER\nLOWER, S2\n*TIE, NAME=T\nSLAVE, "
+       "MASTER\n";
+  std::vector<int> top;
+  for (int lbl : m.plane(2, 2)) top.push_back(off + lbl);
+  d += nset("BOTTOM", m.plane(2, 0)) + nset("TOP", top);
+  d +=
+      fmt::format("*STEP\n*STATIC\n*BOUNDARY\nBOTTOM, 3, 3\n{}, 1, 2\n{}, 2, 2\n*DLOAD\nUPPER, P2, "
+                  "{}\n*END STEP\n",
+                  m.label(0, 0, 0), m.label(2 * m.nx, 0, 0), p);
+  const JobResult r = run_deck(d);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  for (int lbl : top) EXPECT_NEAR(U(r, f, lbl)[2], -2.0 * p / kE, 1e-10) << lbl;
+}
