@@ -131,8 +131,8 @@ std::string flat_deck() {
 } // namespace
 
 TEST(Assembly, InstancedPartsGiveTheFlatDecksAnswer) {
-  const JobResult a = run_deck(assembly_deck(), true, "assembly");
-  const JobResult f = run_deck(flat_deck(), false, "flat");
+  const JobResult a = run_deck_exact(assembly_deck(), "assembly", true);
+  const JobResult f = run_deck_exact(flat_deck(), "flat");
   ASSERT_EQ(a.exit_code, 0) << a.error;
   ASSERT_EQ(f.exit_code, 0) << f.error;
   const Model& ma = *a.model;

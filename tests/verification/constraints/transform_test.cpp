@@ -11,8 +11,8 @@
 #include "test_util.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <fmt/format.h>
+#include <fstream>
 #include <gtest/gtest.h>
 
 using namespace gapfem;
@@ -61,8 +61,8 @@ TEST(Transform, NodePrintGlobalYesPrintsGlobalComponents) {
   const double s = P / (k * std::cos(t) * std::cos(t));
   for (bool global : {false, true}) {
     std::string d = roller(theta, false);
-    d.insert(d.find("*END STEP"), global ? "*NODE PRINT, NSET=END, GLOBAL=YES\nU\n"
-                                         : "*NODE PRINT, NSET=END\nU\n");
+    d.insert(d.find("*END STEP"),
+             global ? "*NODE PRINT, NSET=END, GLOBAL=YES\nU\n" : "*NODE PRINT, NSET=END\nU\n");
     const JobResult r = run_deck(d, true, global ? "global" : "local");
     ASSERT_EQ(r.exit_code, 0) << r.error;
     std::ifstream in(test_dir() / (global ? "global.dat" : "local.dat"));

@@ -237,8 +237,8 @@ TEST(QuadraticElements, BlockOnGapsAtMidsideNodes) {
     d += "TOP, 3, 3, -0.03\n*END STEP\n";
     return d;
   };
-  const JobResult g = run_deck(deck(true), false, "gaps");
-  const JobResult b = run_deck(deck(false), false, "bcs");
+  const JobResult g = run_deck_exact(deck(true), "gaps");
+  const JobResult b = run_deck_exact(deck(false), "bcs");
   ASSERT_EQ(g.exit_code, 0) << g.error;
   ASSERT_EQ(b.exit_code, 0) << b.error;
   const Frame& fg = last_frame(g);

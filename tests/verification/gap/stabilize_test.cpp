@@ -1,10 +1,10 @@
 // *STATIC, STABILIZE (issue 12): Abaqus's automatic stabilization holds a body that rests on open
 // gaps until they close. A C3D8 block (1 x 1 x 1) on four GAPUNI supports with a clearance of
-// 0.01 under a pressure of 10 (held laterally at three base nodes): without stabilization the step stops (the block floats, with a
-// remedy naming STABILIZE); with it the gaps close and each carries a quarter of the load, 2.5,
-// up to the stabilization's residual viscous force (ALLSD / ALLIE far below ALLSDTOL). A stable
-// model is barely changed; FACTOR sets the damping factor; CONTINUE=YES carries it to the next
-// step; bad parameters are input errors.
+// 0.01 under a pressure of 10 (held laterally at three base nodes): without stabilization the step
+// stops (the block floats, with a remedy naming STABILIZE); with it the gaps close and each carries
+// a quarter of the load, 2.5, up to the stabilization's residual viscous force (ALLSD / ALLIE far
+// below ALLSDTOL). A stable model is barely changed; FACTOR sets the damping factor; CONTINUE=YES
+// carries it to the next step; bad parameters are input errors.
 #include "test_util.hpp"
 
 #include <fmt/format.h>
