@@ -92,6 +92,59 @@ constexpr int n_points(Shape s, bool reduced) {
     return 1;
   }
 }
+
+/// Tensor index pairs (I, J) of the Voigt components in the output order of a kinematic class.
+template <Kinematics K>
+constexpr std::array<std::array<int, 2>, n_strain(K)> voigt_pairs() {
+  if constexpr (K == Kinematics::ThreeD)
+    return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
+  else if constexpr (K == Kinematics::PlaneStress)
+    return {{{0, 0}, {1, 1}, {0, 1}}};
+  else
+    return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}}};
+}
+
+/// S and E output blocks with their component names, sized for n_points points.
+template <Kinematics K>
+void stress_strain_blocks(int n_points, OutputBlock& sb, OutputBlock& eb) {
+  sb.var = ElemVar::S;
+  eb.var = ElemVar::E;
+  if constexpr (K == Kinematics::ThreeD) {
+    sb.names = kS3;
+    eb.names = kE3;
+  } else if constexpr (K == Kinematics::PlaneStress) {
+    sb.names = kSps;
+    eb.names = kEps;
+  } else {
+    sb.names = kS4;
+    eb.names = kE4;
+  }
+  sb.n_points = eb.n_points = n_points;
+  sb.values.resize(static_cast<std::size_t>(n_points * n_strain(K)));
+  eb.values.resize(static_cast<std::size_t>(n_points * n_strain(K)));
+}
+
+/// Cauchy stress F S F^T / det F in the output order, from the second Piola-Kirchhoff stress S,
+/// the strain E (plane stress: for F33), the in-plane (or 3-D) F and F33 (CPE, CAX).
+template <Kinematics K, class VecS, class MatF>
+VecS cauchy_stress(const VecS& S, const VecS& E, const MatF& Fin, double F33,
+                   const ElasticPoint& law) {
+  constexpr int ND = K == Kinematics::ThreeD ? 3 : 2;
+  constexpr auto C = voigt_pairs<K>();
+  Eigen::Matrix3d Sg = Eigen::Matrix3d::Zero(), F = Eigen::Matrix3d::Identity();
+  for (int c = 0; c < n_strain(K); ++c) Sg(C[c][0], C[c][1]) = Sg(C[c][1], C[c][0]) = S(c);
+  F.topLeftCorner<ND, ND>() = Fin;
+  if constexpr (K == Kinematics::PlaneStress) {
+    const double e33 = law.plane_stress_e33(E(0) + E(1));
+    F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * e33, 0.0));
+  } else if constexpr (ND == 2) {
+    F(2, 2) = F33;
+  }
+  const Eigen::Matrix3d sig = F * Sg * F.transpose() / F.determinant();
+  VecS out;
+  for (int c = 0; c < n_strain(K); ++c) out(c) = sig(C[c][0], C[c][1]);
+  return out;
+}
 } // namespace continuum_detail
 
 template <class Tr>
@@ -236,25 +289,11 @@ class ContinuumKernel final : public ElementKernel {
     compute(in, w);
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     OutputBlock sb, eb;
-    sb.var = ElemVar::S;
-    eb.var = ElemVar::E;
-    if constexpr (kKin == Kinematics::ThreeD) {
-      sb.names = continuum_detail::kS3;
-      eb.names = continuum_detail::kE3;
-    } else if constexpr (kKin == Kinematics::PlaneStress) {
-      sb.names = continuum_detail::kSps;
-      eb.names = continuum_detail::kEps;
-    } else {
-      sb.names = continuum_detail::kS4;
-      eb.names = continuum_detail::kE4;
-    }
-    sb.n_points = eb.n_points = NIP;
-    sb.values.resize(NIP * NS);
-    eb.values.resize(NIP * NS);
+    continuum_detail::stress_strain_blocks<kKin>(NIP, sb, eb);
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
       VecS sig = p.S;
-      if (nlgeom) sig = cauchy(p);
+      if (nlgeom) sig = continuum_detail::cauchy_stress<kKin>(p.S, p.E, p.F, p.F33, p.law);
       for (int c = 0; c < NS; ++c) {
         sb.values[q * NS + c] = sig(c);
         eb.values[q * NS + c] = p.E(c);
@@ -282,14 +321,7 @@ class ContinuumKernel final : public ElementKernel {
     double p_bar = 0.0; ///< element mean of the mean normal stress (B-bar)
   };
 
-  static constexpr std::array<std::array<int, 2>, NS> comps() {
-    if constexpr (kKin == Kinematics::ThreeD)
-      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
-    else if constexpr (kKin == Kinematics::PlaneStress)
-      return {{{0, 0}, {1, 1}, {0, 1}}};
-    else
-      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}}};
-  }
+  static constexpr auto comps() { return continuum_detail::voigt_pairs<kKin>(); }
 
   void reference_gradients(const ElementInput& in, int q, MatG& g, double& detJ) const {
     MatF J = MatF::Zero();
@@ -457,27 +489,6 @@ class ContinuumKernel final : public ElementKernel {
         for (int i = 0; i < ND; ++i) K(a * ND + i, b * ND + i) += G(a, b);
         if constexpr (kAxi) K(a * ND, b * ND) += p.dV * S33 * _N[q](a) * _N[q](b) / (p.R * p.R);
       }
-  }
-
-  /// Cauchy stress sigma = F S F^T / det F in the output component order.
-  VecS cauchy(const Ip& p) const {
-    constexpr auto C = comps();
-    Eigen::Matrix3d S = Eigen::Matrix3d::Zero(), F = Eigen::Matrix3d::Identity();
-    for (int c = 0; c < NS; ++c) {
-      const int I = C[c][0], J = C[c][1];
-      S(I, J) = S(J, I) = p.S(c);
-    }
-    F.topLeftCorner<ND, ND>() = p.F;
-    if constexpr (kKin == Kinematics::PlaneStress) {
-      const double e33 = p.law.plane_stress_e33(p.E(0) + p.E(1));
-      F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * e33, 0.0));
-    } else if constexpr (ND == 2) {
-      F(2, 2) = p.F33;
-    }
-    const Eigen::Matrix3d sig = F * S * F.transpose() / F.determinant();
-    VecS out;
-    for (int c = 0; c < NS; ++c) out(c) = sig(C[c][0], C[c][1]);
-    return out;
   }
 
   ContinuumSetup _setup;

@@ -91,11 +91,9 @@ class IncompatibleKernel final : public ElementKernel {
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
-    VecX x = VecX::Zero();
-    for (int i = 0; i < NU; ++i) x(i) = in.u[i];
-    VecX r;
-    MatX Kx;
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    VecX x, r;
+    MatX Kx;
     condense(in, nlgeom, x, r, Kx);
     for (int i = 0; i < NU; ++i) out.residual[i] += r(i);
     if (!out.want_tangent || out.tangent.size() != static_cast<std::size_t>(NU * NU)) return;
@@ -122,32 +120,17 @@ class IncompatibleKernel final : public ElementKernel {
     return var == ElemVar::S || var == ElemVar::E;
   }
   void recover(const ElementInput& in, ElementRecovery& out) const override {
-    VecX x = VecX::Zero();
-    for (int i = 0; i < NU; ++i) x(i) = in.u[i];
-    VecX r;
-    MatX Kx;
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    VecX x, r;
+    MatX Kx;
     condense(in, nlgeom, x, r, Kx);
     OutputBlock sb, eb;
-    sb.var = ElemVar::S;
-    eb.var = ElemVar::E;
-    if constexpr (K == Kinematics::ThreeD) {
-      sb.names = continuum_detail::kS3;
-      eb.names = continuum_detail::kE3;
-    } else if constexpr (K == Kinematics::PlaneStress) {
-      sb.names = continuum_detail::kSps;
-      eb.names = continuum_detail::kEps;
-    } else {
-      sb.names = continuum_detail::kS4;
-      eb.names = continuum_detail::kE4;
-    }
-    sb.n_points = eb.n_points = NIP;
-    sb.values.resize(NIP * NS);
-    eb.values.resize(NIP * NS);
+    continuum_detail::stress_strain_blocks<K>(NIP, sb, eb);
     for (int q = 0; q < NIP; ++q) {
       Point p;
       point(in, q, nlgeom, x, p);
-      const VecS sig = nlgeom ? cauchy(p) : p.S;
+      const VecS sig =
+          nlgeom ? continuum_detail::cauchy_stress<K>(p.S, p.E, p.F, p.F33, p.law) : p.S;
       for (int c = 0; c < NS; ++c) {
         sb.values[q * NS + c] = sig(c);
         eb.values[q * NS + c] = p.E(c);
@@ -172,14 +155,7 @@ class IncompatibleKernel final : public ElementKernel {
     ElasticPoint law;
   };
 
-  static constexpr std::array<std::array<int, 2>, NS> comps() {
-    if constexpr (K == Kinematics::ThreeD)
-      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
-    else if constexpr (K == Kinematics::PlaneStress)
-      return {{{0, 0}, {1, 1}, {0, 1}}};
-    else
-      return {{{0, 0}, {1, 1}, {2, 2}, {0, 1}}};
-  }
+  static constexpr auto comps() { return continuum_detail::voigt_pairs<K>(); }
 
   /// Gradients of nodes and modes at point q; false for a non-positive Jacobian.
   bool geometry(const ElementInput& in, int q, Geometry& g) const {
@@ -309,8 +285,11 @@ class IncompatibleKernel final : public ElementKernel {
     }
   }
 
-  /// Solves r_alpha = 0 for the modes (x's tail) at the given nodal displacements (x's head).
+  /// x = (u, alpha) with alpha solving r_alpha = 0 at the element's nodal displacements u, and
+  /// the residual and tangent there.
   void condense(const ElementInput& in, bool nlgeom, VecX& x, VecX& r, MatX& Kx) const {
+    x.setZero();
+    for (int i = 0; i < NU; ++i) x(i) = in.u[i];
     double size = 0.0;
     for (int a = 1; a < NN; ++a)
       for (int i = 0; i < 3; ++i) size = std::max(size, std::abs(in.X[a][i] - in.X[0][i]));
@@ -336,24 +315,6 @@ class IncompatibleKernel final : public ElementKernel {
     throw ConvergenceFailure(fmt::format(
         "element {}: the incompatible modes do not converge (local Newton); cutting back",
         in.label));
-  }
-
-  /// Cauchy stress F S F^T / det F in the output order.
-  VecS cauchy(const Point& p) const {
-    constexpr auto C = comps();
-    Eigen::Matrix3d Sg = Eigen::Matrix3d::Zero(), F = Eigen::Matrix3d::Identity();
-    for (int c = 0; c < NS; ++c) Sg(C[c][0], C[c][1]) = Sg(C[c][1], C[c][0]) = p.S(c);
-    F.topLeftCorner<ND, ND>() = p.F;
-    if constexpr (K == Kinematics::PlaneStress) {
-      const double e33 = p.law.plane_stress_e33(p.E(0) + p.E(1));
-      F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * e33, 0.0));
-    } else if constexpr (ND == 2) {
-      F(2, 2) = p.F33;
-    }
-    const Eigen::Matrix3d sig = F * Sg * F.transpose() / F.determinant();
-    VecS out;
-    for (int c = 0; c < NS; ++c) out(c) = sig(C[c][0], C[c][1]);
-    return out;
   }
 
   ContinuumSetup _setup;
