@@ -151,6 +151,7 @@ template <class Tr>
 class ContinuumKernel final : public ElementKernel {
  public:
   static constexpr Kinematics kKin = Tr::kin;
+  static constexpr Shape kShape = Tr::shape;
   static constexpr int NN = shape_n_nodes(Tr::shape);
   static constexpr int ND = kKin == Kinematics::ThreeD ? 3 : 2;
   static constexpr int NS = continuum_detail::n_strain(kKin);

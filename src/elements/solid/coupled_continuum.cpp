@@ -24,7 +24,8 @@ namespace {
 template <ElementType Base, Shape S, Kinematics K, bool BBar, HeatGeometry G, bool Reduced = false>
 std::unique_ptr<ElementKernel> make(const KernelContext& ctx, ContinuumSetup setup,
                                     HeatMaterial heat, double thickness) {
-  return std::make_unique<CoupledContinuumKernel<ContinuumTraits<Base, S, K, BBar, Reduced>, G>>(
+  return std::make_unique<
+      CoupledContinuumKernel<ContinuumKernel<ContinuumTraits<Base, S, K, BBar, Reduced>>, G>>(
       ctx.type, std::move(setup), std::move(heat), thickness, block_initial_temperatures(ctx));
 }
 

@@ -38,13 +38,14 @@ struct InitialTemperatures {
   }
 };
 
-template <class MechTraits, HeatGeometry G>
+/// Mech: the stress/displacement kernel of the shape (ContinuumKernel, ReducedKernel), with
+/// kShape, kKin, a constructor from ContinuumSetup and temperature_tangent().
+template <class Mech, HeatGeometry G>
 class CoupledContinuumKernel final : public ElementKernel {
  public:
-  using Mech = ContinuumKernel<MechTraits>;
-  using Heat = HeatCore<MechTraits::shape, G>;
+  using Heat = HeatCore<Mech::kShape, G>;
   static constexpr int NN = Heat::NN;
-  static constexpr int ND = MechTraits::kin == Kinematics::ThreeD ? 3 : 2;
+  static constexpr int ND = Mech::kKin == Kinematics::ThreeD ? 3 : 2;
   static constexpr int NPN = ND + 1; ///< DOFs per node
   static constexpr int NDOF = NN * NPN;
   static constexpr int NDM = NN * ND; ///< mechanical DOFs
