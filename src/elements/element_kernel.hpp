@@ -141,9 +141,12 @@ struct OutputBlock {
 struct ElementRecovery {
   std::vector<OutputBlock> blocks;
   std::optional<GapRecord> gap;
+  /// hourglass-controlled elements: the energy of their hourglass forces (ALLAE)
+  std::optional<double> artificial_energy;
   void clear() {
     blocks.clear();
     gap.reset();
+    artificial_energy.reset();
   }
   const OutputBlock* find(ElemVar v) const {
     for (const auto& b : blocks)
@@ -168,6 +171,8 @@ class ElementKernel {
   }
   virtual int n_state() const { return 0; }
   virtual int n_multipliers() const { return 0; }
+  /// Does recover() report an artificial (hourglass) energy (ALLAE)?
+  virtual bool has_artificial_energy() const { return false; }
   /// Does the element read the predefined temperature field (thermal strain in stress elements)?
   virtual bool uses_temperature_field() const { return false; }
 

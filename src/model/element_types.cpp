@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 68> kInfo = {{
+constexpr std::array<ElementTypeInfo, 76> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -120,6 +120,20 @@ constexpr std::array<ElementTypeInfo, 68> kInfo = {{
      Shape::Quad4},
     {ElementType::CAX4I, "CAX4I", 4, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, false,
      Shape::Quad4},
+    {ElementType::C3D8R, "C3D8R", 8, F::Continuum, S::ThreeD, P::None, true, false, Shape::Hex8},
+    {ElementType::CPS4R, "CPS4R", 4, F::Continuum, S::Planar, P::PlaneStress, true, false,
+     Shape::Quad4},
+    {ElementType::CPE4R, "CPE4R", 4, F::Continuum, S::Planar, P::PlaneStrain, true, false,
+     Shape::Quad4},
+    {ElementType::CAX4R, "CAX4R", 4, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, false,
+     Shape::Quad4},
+    {ElementType::C3D8RT, "C3D8RT", 8, F::Continuum, S::ThreeD, P::None, true, true, Shape::Hex8},
+    {ElementType::CPS4RT, "CPS4RT", 4, F::Continuum, S::Planar, P::PlaneStress, true, true,
+     Shape::Quad4},
+    {ElementType::CPE4RT, "CPE4RT", 4, F::Continuum, S::Planar, P::PlaneStrain, true, true,
+     Shape::Quad4},
+    {ElementType::CAX4RT, "CAX4RT", 4, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, true,
+     Shape::Quad4},
 }};
 } // namespace
 
@@ -130,7 +144,9 @@ const ElementTypeInfo& element_info(ElementType type) {
 }
 
 bool info_reduced(const ElementTypeInfo& info) {
-  if (info.family != ElementFamily::Continuum || !info.displacement) return false;
+  if (info.family != ElementFamily::Continuum || !info.displacement || !info.cell ||
+      !shape_quadratic(*info.cell))
+    return false;
   const std::string_view n = info.name;
   return n.ends_with('R') || n.ends_with("RT");
 }

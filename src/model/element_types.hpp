@@ -85,6 +85,14 @@ enum class ElementType : std::uint8_t {
   CPS4I,
   CPE4I,
   CAX4I,
+  C3D8R,
+  CPS4R,
+  CPE4R,
+  CAX4R,
+  C3D8RT,
+  CPS4RT,
+  CPE4RT,
+  CAX4RT,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };
@@ -113,7 +121,8 @@ struct ElementTypeInfo {
 };
 
 const ElementTypeInfo& element_info(ElementType type);
-/// True for the reduced-integration continuum types (C3D20R, CPS8R, … and their T twins).
+/// True for the quadratic reduced-integration continuum types (C3D20R, CPS8R, … and their T twins),
+/// which keep zero-energy modes; the first-order ones (C3D8R, …) have hourglass control.
 bool info_reduced(const ElementTypeInfo& info);
 /// Case-insensitive lookup of an Abaqus element type name; nullopt if gapfem does not know it.
 std::optional<ElementType> element_type_from_name(std::string_view name);

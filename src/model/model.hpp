@@ -57,6 +57,7 @@ struct Model {
 
   std::vector<Material> materials;
   std::vector<SolidSection> solid_sections;
+  std::vector<SectionControls> section_controls;
   std::vector<BeamSection> beam_sections;
   std::vector<SpringSection> spring_sections;
   std::vector<GapSection> gap_sections;

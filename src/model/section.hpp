@@ -13,10 +13,26 @@
 
 namespace gapfem {
 
+/// Hourglass control of the first-order reduced-integration solids (C3D8R, CPS4R, CPE4R, CAX4R
+/// and their T twins); docs/theory/continuum.md, "Hourglass control".
+enum class HourglassControl : std::uint8_t {
+  Enhanced, ///< the incompatible-mode stiffness projected onto the hourglass modes (default)
+  Stiffness ///< total stiffness: r_F G V (b:b) per hourglass mode, r_F = 0.005 (scaled)
+};
+
+/// *SECTION CONTROLS, NAME=, HOURGLASS=.
+struct SectionControls {
+  std::string name;
+  HourglassControl hourglass = HourglassControl::Enhanced;
+  double scale = 1.0; ///< displacement hourglass scaling factor (data line field 1)
+  SourceLocation loc;
+};
+
 /// *SOLID SECTION: continuum, truss and heat-transfer elements.
 struct SolidSection {
   std::string elset;
   int material = -1;
+  int controls = -1;      ///< CONTROLS=: index into Model::section_controls, -1 for the defaults
   double thickness = 1.0; ///< plane thickness (CPS/CPE), truss cross-section area; 1 if not given
   bool thickness_given = false;
   SourceLocation loc;

@@ -543,6 +543,18 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     append_e12(buf, c.max_damping_force);
     fmt::format_to(out, "\n\n");
   }
+  if (c.hourglass) {
+    fmt::format_to(out, " HOURGLASS CONTROL\n   ALLAE (ARTIFICIAL STRAIN ENERGY)  ");
+    append_e12(buf, c.allae);
+    fmt::format_to(out, "\n   ALLIE (INTERNAL ENERGY)           ");
+    append_e12(buf, c.allie);
+    fmt::format_to(out, "\n   ALLAE / ALLIE                     ");
+    if (c.allie > 0)
+      append_e12(buf, c.allae / c.allie);
+    else
+      fmt::format_to(out, "{:>12}", "N/A");
+    fmt::format_to(out, "\n\n");
+  }
   if (c.stabilized) {
     fmt::format_to(out, " AUTOMATIC STABILIZATION\n   DAMPING FACTOR AT STEP END        ");
     append_e12(buf, c.stabilization_factor);

@@ -364,6 +364,12 @@ void JsonWriter::close_step(const StepSummary* s) {
     b.append(std::string_view("null"));
   }
   number_field(b, "max_damping_force", c.max_damping_force);
+  if (c.hourglass) {
+    b.append(std::string_view(",\"energy\":{\"ALLAE\":"));
+    append_json_number(b, c.allae);
+    number_field(b, "ALLIE", c.allie);
+    b.push_back('}');
+  }
   if (c.stabilized) {
     b.append(std::string_view(",\"stabilization\":{\"damping_factor\":"));
     append_json_number(b, c.stabilization_factor);

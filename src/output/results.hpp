@@ -68,6 +68,10 @@ struct StepChecks {
   /// stabilization, ALLIE the internal energy)
   bool stabilized = false;
   double stabilization_factor = 0.0, allsd = 0.0, allie = 0.0;
+  /// Hourglass-controlled elements (C3D8R, CPS4R, ...): ALLAE, the energy of their hourglass
+  /// forces at the step end, reported next to ALLIE
+  bool hourglass = false;
+  double allae = 0.0;
 };
 
 /// The committed state at one output point, with what is due at this point.

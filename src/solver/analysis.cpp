@@ -403,6 +403,7 @@ StepSummary Analysis::Impl::run_step(int index) {
   sum.checks = checks(prob);
   heat.finish(disc, prob.context(), st.u_start, prob.reactions(), st.f_ext, sum.checks);
   sum.checks.max_damping_force = std::max(sum.checks.max_damping_force, step_damping_peak);
+  sum.checks.allie = st.allie;
   if (stab) {
     sum.checks.stabilized = true;
     sum.checks.stabilization_factor = prob.stabilization_factor();
@@ -537,6 +538,14 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
   StepChecks c;
   const FieldView fields = prob.fields();
   ElementRecovery rec;
+  for (auto& b : disc.blocks()) {
+    if (!b.kernel->has_artificial_energy()) continue;
+    c.hourglass = true;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      c.allae += rec.artificial_energy.value_or(0.0);
+    }
+  }
   for (auto& b : disc.blocks()) {
     if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement)
       continue;

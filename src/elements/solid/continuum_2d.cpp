@@ -1,6 +1,7 @@
 // Instantiations of the plane and axisymmetric continuum kernels.
 #include "elements/solid/continuum_factory.hpp"
 #include "elements/solid/incompatible_kernel.hpp"
+#include "elements/solid/reduced_kernel.hpp"
 
 namespace gapfem {
 
@@ -68,6 +69,12 @@ std::unique_ptr<ElementKernel> make_continuum_2d(ElementType type, ContinuumSetu
     return std::make_unique<
         ContinuumKernel<ContinuumTraits<T::CAX6, Shape::Tri6, K::Axisymmetric, false>>>(
         std::move(setup));
+  case T::CPS4R:
+    return std::make_unique<ReducedKernel<T::CPS4R, K::PlaneStress>>(std::move(setup));
+  case T::CPE4R:
+    return std::make_unique<ReducedKernel<T::CPE4R, K::PlaneStrain>>(std::move(setup));
+  case T::CAX4R:
+    return std::make_unique<ReducedKernel<T::CAX4R, K::Axisymmetric>>(std::move(setup));
   case T::CPS4I:
     return std::make_unique<IncompatibleKernel<T::CPS4I, Shape::Quad4, K::PlaneStress>>(
         std::move(setup));

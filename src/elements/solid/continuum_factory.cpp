@@ -73,6 +73,11 @@ std::unique_ptr<ElementKernel> make_continuum_kernel(const KernelContext& ctx) {
   setup.thickness = info.plane == PlaneKind::PlaneStress || info.plane == PlaneKind::PlaneStrain
                         ? sec.thickness
                         : 1.0;
+  if (sec.controls >= 0) {
+    const SectionControls& c = ctx.model.section_controls[sec.controls];
+    setup.hourglass = c.hourglass;
+    setup.hourglass_scale = c.scale;
+  }
   setup.needs_temperature =
       !mat.expansion.empty() || mat.elastic.keys.size() > 1 || mat.density.keys.size() > 1;
 

@@ -22,6 +22,7 @@
 #include "fem/quadrature.hpp"
 #include "fem/shape_functions.hpp"
 #include "model/material.hpp"
+#include "model/section.hpp"
 
 #include <Eigen/Dense>
 #include <array>
@@ -37,6 +38,9 @@ struct ContinuumSetup {
   Material material;      ///< copy of the section's material
   double thickness = 1.0; ///< plane elements
   bool needs_temperature = false;
+  /// first-order reduced-integration elements (reduced_kernel.hpp): *SECTION CONTROLS
+  HourglassControl hourglass = HourglassControl::Enhanced;
+  double hourglass_scale = 1.0;
 };
 
 /// Compile-time description of one continuum element type.
@@ -144,6 +148,27 @@ VecS cauchy_stress(const VecS& S, const VecS& E, const MatF& Fin, double F33,
   VecS out;
   for (int c = 0; c < n_strain(K); ++c) out(c) = sig(C[c][0], C[c][1]);
   return out;
+}
+
+/// d lambda / dT (the effective lambda of the kinematics: lambda* for plane stress) and d mu / dT
+/// from the material's *ELASTIC table at temperature T.
+inline void elastic_derivatives(Kinematics kin, const Material& mat, double T, double& dlambda,
+                                double& dmu) {
+  std::array<double, 2> v{}, dv{};
+  mat.elastic.evaluate(T, v, dv);
+  const double E = v[0], nu = v[1], dE = dv[0], dnu = dv[1];
+  dmu = dE / (2.0 * (1.0 + nu)) - E * dnu / (2.0 * (1.0 + nu) * (1.0 + nu));
+  const double D = (1.0 + nu) * (1.0 - 2.0 * nu);
+  const double dD = dnu * (1.0 - 2.0 * nu) - 2.0 * dnu * (1.0 + nu);
+  const double l3 = E * nu / D;
+  const double dl3 = (dE * nu + E * dnu) / D - E * nu * dD / (D * D);
+  if (kin == Kinematics::PlaneStress) {
+    const double mu = E / (2.0 * (1.0 + nu));
+    const double s = l3 + 2.0 * mu;
+    dlambda = (2.0 * (dl3 * mu + l3 * dmu) * s - 2.0 * l3 * mu * (dl3 + 2.0 * dmu)) / (s * s);
+  } else {
+    dlambda = dl3;
+  }
 }
 } // namespace continuum_detail
 
@@ -254,7 +279,8 @@ class ContinuumKernel final : public ElementKernel {
       for (int a = 0; a < NN; ++a) T += _N[q](a) * in.temperature[a];
       const double deth = _setup.material.thermal_strain_derivative(T);
       double dlambda = 0.0, dmu = 0.0;
-      if (!_const_elastic) elastic_derivatives(T, dlambda, dmu);
+      if (!_const_elastic)
+        continuum_detail::elastic_derivatives(kKin, _setup.material, T, dlambda, dmu);
       const ElasticPoint& law = p.law;
       double tr = 0.0;
       for (int c = 0; c < NNRM; ++c) tr += p.E(c) - law.eps_th;
@@ -337,25 +363,6 @@ class ContinuumKernel final : public ElementKernel {
     double R = 0.0;
     for (int a = 0; a < NN; ++a) R += _N[q](a) * in.X[a][0];
     return R;
-  }
-
-  /// d lambda / dT (the effective lambda of the kinematics) and d mu / dT from the *ELASTIC table.
-  void elastic_derivatives(double T, double& dlambda, double& dmu) const {
-    std::array<double, 2> v{}, dv{};
-    _setup.material.elastic.evaluate(T, v, dv);
-    const double E = v[0], nu = v[1], dE = dv[0], dnu = dv[1];
-    dmu = dE / (2.0 * (1.0 + nu)) - E * dnu / (2.0 * (1.0 + nu) * (1.0 + nu));
-    const double D = (1.0 + nu) * (1.0 - 2.0 * nu);
-    const double dD = dnu * (1.0 - 2.0 * nu) - 2.0 * dnu * (1.0 + nu);
-    const double l3 = E * nu / D;
-    const double dl3 = (dE * nu + E * dnu) / D - E * nu * dD / (D * D);
-    if constexpr (kKin == Kinematics::PlaneStress) {
-      const double mu = E / (2.0 * (1.0 + nu));
-      const double s = l3 + 2.0 * mu;
-      dlambda = (2.0 * (dl3 * mu + l3 * dmu) * s - 2.0 * l3 * mu * (dl3 + 2.0 * dmu)) / (s * s);
-    } else {
-      dlambda = dl3;
-    }
   }
 
   ElasticPoint point_law(const ElementInput& in, int q) const {

@@ -2,6 +2,7 @@
 #include "elements/solid/coupled_continuum.hpp"
 
 #include "elements/heat/heat_kernel.hpp"
+#include "elements/solid/reduced_kernel.hpp"
 #include "model/model.hpp"
 
 namespace gapfem {
@@ -26,6 +27,13 @@ std::unique_ptr<ElementKernel> make(const KernelContext& ctx, ContinuumSetup set
                                     HeatMaterial heat, double thickness) {
   return std::make_unique<
       CoupledContinuumKernel<ContinuumKernel<ContinuumTraits<Base, S, K, BBar, Reduced>>, G>>(
+      ctx.type, std::move(setup), std::move(heat), thickness, block_initial_temperatures(ctx));
+}
+
+template <ElementType Base, Kinematics K, HeatGeometry G>
+std::unique_ptr<ElementKernel> make_reduced(const KernelContext& ctx, ContinuumSetup setup,
+                                            HeatMaterial heat, double thickness) {
+  return std::make_unique<CoupledContinuumKernel<ReducedKernel<Base, K>, G>>(
       ctx.type, std::move(setup), std::move(heat), thickness, block_initial_temperatures(ctx));
 }
 
@@ -57,6 +65,18 @@ make_coupled_continuum_kernel(const KernelContext& ctx, ContinuumSetup setup, do
   case T::C3D8T:
     return make<T::C3D8, Shape::Hex8, K::ThreeD, true, HG::Solid>(ctx, std::move(setup),
                                                                   std::move(heat), 1.0);
+  case T::C3D8RT:
+    return make_reduced<T::C3D8R, K::ThreeD, HG::Solid>(ctx, std::move(setup), std::move(heat),
+                                                        1.0);
+  case T::CPS4RT:
+    return make_reduced<T::CPS4R, K::PlaneStress, HG::Planar>(ctx, std::move(setup),
+                                                              std::move(heat), thickness);
+  case T::CPE4RT:
+    return make_reduced<T::CPE4R, K::PlaneStrain, HG::Planar>(ctx, std::move(setup),
+                                                              std::move(heat), thickness);
+  case T::CAX4RT:
+    return make_reduced<T::CAX4R, K::Axisymmetric, HG::Axisymmetric>(ctx, std::move(setup),
+                                                                     std::move(heat), 1.0);
   case T::C3D20T:
     return make<T::C3D20, Shape::Hex20, K::ThreeD, false, HG::Solid>(ctx, std::move(setup),
                                                                      std::move(heat), 1.0);

@@ -63,6 +63,8 @@ class CoupledContinuumKernel final : public ElementKernel {
       return coupled_detail::kDofs2T;
   }
 
+  bool has_artificial_energy() const override { return _mech.has_artificial_energy(); }
+
   std::string validate(const ElementInput& in) const override {
     Local l;
     split(in, l);

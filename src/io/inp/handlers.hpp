@@ -46,6 +46,7 @@ void handle_physical_constants(BuildState& s, const Keyword& kw);
 /// @name *SOLID SECTION, *BEAM SECTION, *SPRING (handlers_section.cpp)
 ///@{
 void handle_solid_section(BuildState& s, const Keyword& kw);
+void handle_section_controls(BuildState& s, const Keyword& kw);
 void handle_beam_section(BuildState& s, const Keyword& kw);
 void handle_spring(BuildState& s, const Keyword& kw);
 ///@}

@@ -32,6 +32,7 @@ void handle_solid_section(BuildState& s, const Keyword& kw) {
   SolidSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   const std::string material = name_param(kw, "MATERIAL", true);
+  s.solid_controls.push_back(name_param(kw, "CONTROLS", false));
   sec.loc = kw.loc;
   const auto lines = lines_of(kw);
   if (!lines.empty()) {
@@ -47,6 +48,61 @@ void handle_solid_section(BuildState& s, const Keyword& kw) {
   }
   s.model.solid_sections.push_back(std::move(sec));
   s.solid_material.push_back(material);
+}
+
+void handle_section_controls(BuildState& s, const Keyword& kw) {
+  SectionControls c;
+  c.name = name_param(kw, "NAME", true);
+  c.loc = kw.loc;
+  if (const auto it = s.controls_index.find(c.name); it != s.controls_index.end()) {
+    const SourceLocation& first = s.model.section_controls[it->second].loc;
+    if (first.file == kw.loc.file && first.line == kw.loc.line) return; // a part read again
+    throw InputError(kw.loc, fmt::format("NAME={}", c.name),
+                     fmt::format("section controls {} are defined twice; give each *SECTION "
+                                 "CONTROLS its own NAME",
+                                 c.name));
+  }
+  const int hg = enum_param(kw, "HOURGLASS",
+                            {"ENHANCED", "STIFFNESS", "RELAX STIFFNESS", "VISCOUS", "COMBINED"}, 0);
+  if (hg >= 2)
+    throw InputError(kw.loc, fmt::format("NAME={}", c.name),
+                     fmt::format("HOURGLASS={} is an Abaqus/Explicit hourglass control; "
+                                 "Abaqus/Standard and gapfem offer HOURGLASS=ENHANCED (the "
+                                 "default) and HOURGLASS=STIFFNESS",
+                                 param_value(kw, "HOURGLASS", true)));
+  c.hourglass = hg == 1 ? HourglassControl::Stiffness : HourglassControl::Enhanced;
+  for (const char* p :
+       {"DISTORTION CONTROL", "LENGTH RATIO", "KINEMATIC SPLIT", "SECOND ORDER ACCURACY"})
+    if (kw.has(p))
+      s.warn(kw.loc, fmt::format("*SECTION CONTROLS, {} is an Abaqus/Explicit control and has no "
+                                 "effect in Abaqus/Standard or gapfem",
+                                 p));
+  for (const char* p : {"ELEMENT DELETION", "MAX DEGRADATION", "VISCOSITY"})
+    if (kw.has(p))
+      s.warn(kw.loc, fmt::format("*SECTION CONTROLS, {} applies to damaged or cohesive elements, "
+                                 "which gapfem does not have; it has no effect",
+                                 p));
+  const auto lines = lines_of(kw);
+  if (!lines.empty()) {
+    const FieldReader r = s.reader(kw, *lines[0]);
+    r.at_most(3, "displacement hourglass scaling factor, rotational and out-of-plane (shell) "
+                 "factors");
+    if (auto f = r.opt_real(0, "displacement hourglass scaling factor")) {
+      if (!(*f > 0))
+        r.fail("field 1 (displacement hourglass scaling factor)",
+               fmt::format("must be positive, not {}", *f));
+      c.scale = *f;
+    }
+    for (std::size_t i = 1; i < 3; ++i)
+      if (auto f = r.opt_real(i, "shell hourglass scaling factor"); f && *f != 1.0)
+        s.warn(s.loc(kw, *lines[0]),
+               fmt::format("field {} of *SECTION CONTROLS scales the hourglass control of shell "
+                           "elements; gapfem's solid elements do not use it",
+                           i + 1));
+    extra_lines_warning(s, kw, 1);
+  }
+  s.controls_index[c.name] = static_cast<int>(s.model.section_controls.size());
+  s.model.section_controls.push_back(std::move(c));
 }
 
 void handle_beam_section(BuildState& s, const Keyword& kw) {

@@ -76,6 +76,8 @@ struct BuildState {
   std::map<std::string, int> material_index;  ///< upper-case name → Model::materials
   std::map<std::string, int> amplitude_index; ///< upper-case name → Model::amplitudes
   std::vector<std::string> solid_material;    ///< per solid section: material name
+  std::vector<std::string> solid_controls;    ///< per solid section: CONTROLS= name or empty
+  std::map<std::string, int> controls_index;  ///< upper-case name → Model::section_controls
   std::vector<std::string> beam_material;     ///< per beam section: material name
   /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
   /// of the ELSET are known.

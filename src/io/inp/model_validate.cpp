@@ -276,6 +276,17 @@ void finish_model_data(BuildState& s) {
     for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
       m.solid_sections[i].material =
           resolve_material(s, s.solid_material[i], m.solid_sections[i].loc);
+    for (std::size_t i = 0; i < m.solid_sections.size(); ++i)
+      if (const std::string& c = s.solid_controls[i]; !c.empty()) {
+        const auto it = s.controls_index.find(c);
+        if (it != s.controls_index.end())
+          m.solid_sections[i].controls = it->second;
+        else
+          s.error(m.solid_sections[i].loc, fmt::format("CONTROLS={}", c),
+                  fmt::format("section controls {} are not defined; define them with *SECTION "
+                              "CONTROLS, NAME={}",
+                              c, c));
+      }
     for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
       m.beam_sections[i].material = resolve_material(s, s.beam_material[i], m.beam_sections[i].loc);
 

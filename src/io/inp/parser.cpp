@@ -21,7 +21,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 100> kTable = {{
+constexpr std::array<KeywordSpec, 101> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -43,7 +43,10 @@ constexpr std::array<KeywordSpec, 100> kTable = {{
   {"*EXPANSION", handle_expansion, W::Model, "TYPE|ZERO|DEPENDENCIES", kMaterial},
   {"*CONDUCTIVITY", handle_conductivity, W::Model, "TYPE|DEPENDENCIES", kMaterial},
   {"*SPECIFIC HEAT", handle_specific_heat, W::Model, "DEPENDENCIES", kMaterial},
-  {"*SOLID SECTION", handle_solid_section, W::Model, "ELSET|MATERIAL|ORIENTATION"},
+  {"*SOLID SECTION", handle_solid_section, W::Model, "ELSET|MATERIAL|ORIENTATION|CONTROLS"},
+  {"*SECTION CONTROLS", handle_section_controls, W::Model,
+   "NAME|HOURGLASS|DISTORTION CONTROL|LENGTH RATIO|KINEMATIC SPLIT|SECOND ORDER ACCURACY|"
+   "ELEMENT DELETION|MAX DEGRADATION|VISCOSITY"},
   {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION"},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
   {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
