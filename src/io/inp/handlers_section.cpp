@@ -64,12 +64,16 @@ void handle_section_controls(BuildState& s, const Keyword& kw) {
   }
   const int hg = enum_param(kw, "HOURGLASS",
                             {"ENHANCED", "STIFFNESS", "RELAX STIFFNESS", "VISCOUS", "COMBINED"}, 0);
-  if (hg >= 2)
+  if (hg >= 2) {
+    // registered all the same, so the sections naming it report nothing more
+    s.controls_index[c.name] = static_cast<int>(s.model.section_controls.size());
+    s.model.section_controls.push_back(c);
     throw InputError(kw.loc, fmt::format("NAME={}", c.name),
                      fmt::format("HOURGLASS={} is an Abaqus/Explicit hourglass control; "
                                  "Abaqus/Standard and gapfem offer HOURGLASS=ENHANCED (the "
                                  "default) and HOURGLASS=STIFFNESS",
                                  param_value(kw, "HOURGLASS", true)));
+  }
   c.hourglass = hg == 1 ? HourglassControl::Stiffness : HourglassControl::Enhanced;
   for (const char* p :
        {"DISTORTION CONTROL", "LENGTH RATIO", "KINEMATIC SPLIT", "SECOND ORDER ACCURACY"})
