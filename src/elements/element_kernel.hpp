@@ -143,10 +143,14 @@ struct ElementRecovery {
   std::optional<GapRecord> gap;
   /// hourglass-controlled elements: the energy of their hourglass forces (ALLAE)
   std::optional<double> artificial_energy;
+  /// continuum elements: the elastic strain energy 1/2 (E - eps_th) : C : (E - eps_th) over the
+  /// element (ALLSE; St. Venant-Kirchhoff under NLGEOM), hourglass energy excluded
+  std::optional<double> strain_energy;
   void clear() {
     blocks.clear();
     gap.reset();
     artificial_energy.reset();
+    strain_energy.reset();
   }
   const OutputBlock* find(ElemVar v) const {
     for (const auto& b : blocks)

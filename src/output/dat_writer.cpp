@@ -546,11 +546,11 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
   if (c.hourglass) {
     fmt::format_to(out, " HOURGLASS CONTROL\n   ALLAE (ARTIFICIAL STRAIN ENERGY)  ");
     append_e12(buf, c.allae);
-    fmt::format_to(out, "\n   ALLIE (INTERNAL ENERGY)           ");
-    append_e12(buf, c.allie);
-    fmt::format_to(out, "\n   ALLAE / ALLIE                     ");
-    if (c.allie > 0)
-      append_e12(buf, c.allae / c.allie);
+    fmt::format_to(out, "\n   ALLSE (STRAIN ENERGY)             ");
+    append_e12(buf, c.allse);
+    fmt::format_to(out, "\n   ALLAE / (ALLSE + ALLAE)           ");
+    if (c.allse + c.allae > 0)
+      append_e12(buf, c.allae / (c.allse + c.allae));
     else
       fmt::format_to(out, "{:>12}", "N/A");
     fmt::format_to(out, "\n\n");

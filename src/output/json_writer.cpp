@@ -367,7 +367,7 @@ void JsonWriter::close_step(const StepSummary* s) {
   if (c.hourglass) {
     b.append(std::string_view(",\"energy\":{\"ALLAE\":"));
     append_json_number(b, c.allae);
-    number_field(b, "ALLIE", c.allie);
+    number_field(b, "ALLSE", c.allse);
     b.push_back('}');
   }
   if (c.stabilized) {

@@ -68,10 +68,10 @@ struct StepChecks {
   /// stabilization, ALLIE the internal energy)
   bool stabilized = false;
   double stabilization_factor = 0.0, allsd = 0.0, allie = 0.0;
-  /// Hourglass-controlled elements (C3D8R, CPS4R, ...): ALLAE, the energy of their hourglass
-  /// forces at the step end, reported next to ALLIE
+  /// Hourglass-controlled elements (C3D8R, CPS4R, ...): at the step end ALLAE, the energy of their
+  /// hourglass forces, and ALLSE, the elastic strain energy of all continuum elements
   bool hourglass = false;
-  double allae = 0.0;
+  double allae = 0.0, allse = 0.0;
 };
 
 /// The committed state at one output point, with what is due at this point.

@@ -67,9 +67,10 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
   }
   if (c.max_damping_force != 0.0) log::info("  max damping force {:.4g}", c.max_damping_force);
   if (c.hourglass)
-    log::info("  hourglass control: ALLAE {:.4g}, ALLIE {:.4g}{}", c.allae, c.allie,
-              c.allie > 0 ? fmt::format(" (ALLAE/ALLIE {:.3g})", c.allae / c.allie)
-                          : std::string());
+    log::info("  hourglass control: ALLAE {:.4g}, ALLSE {:.4g}{}", c.allae, c.allse,
+              c.allse + c.allae > 0
+                  ? fmt::format(" (ALLAE/(ALLSE+ALLAE) {:.3g})", c.allae / (c.allse + c.allae))
+                  : std::string());
   if (c.stabilized)
     log::info("  stabilization: damping factor {:.4g}, ALLSD {:.4g}, ALLIE {:.4g}{}",
               c.stabilization_factor, c.allsd, c.allie,

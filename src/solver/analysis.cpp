@@ -538,14 +538,17 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
   StepChecks c;
   const FieldView fields = prob.fields();
   ElementRecovery rec;
-  for (auto& b : disc.blocks()) {
-    if (!b.kernel->has_artificial_energy()) continue;
-    c.hourglass = true;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      assembler.recover(b.elements[i], fields, prob.context(), rec);
-      c.allae += rec.artificial_energy.value_or(0.0);
+  for (auto& b : disc.blocks()) c.hourglass |= b.kernel->has_artificial_energy();
+  if (c.hourglass) // ALLAE and, to judge it, ALLSE of every continuum element
+    for (auto& b : disc.blocks()) {
+      const ElementTypeInfo& info = element_info(b.type);
+      if (info.family != ElementFamily::Continuum || !info.displacement) continue;
+      for (std::size_t i = 0; i < b.size(); ++i) {
+        assembler.recover(b.elements[i], fields, prob.context(), rec);
+        c.allae += rec.artificial_energy.value_or(0.0);
+        c.allse += rec.strain_energy.value_or(0.0);
+      }
     }
-  }
   for (auto& b : disc.blocks()) {
     if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement)
       continue;

@@ -150,6 +150,15 @@ VecS cauchy_stress(const VecS& S, const VecS& E, const MatF& Fin, double F33,
   return out;
 }
 
+/// Elastic strain energy density 1/2 S : (E - eps_th I) (S = C : (E - eps_th I), engineering
+/// shears; the thermal strain on the n_normal normal components).
+template <class VecS>
+double energy_density(int n_normal, const VecS& S, const VecS& E, double eps_th) {
+  double w = 0.0;
+  for (int c = 0; c < E.size(); ++c) w += S(c) * (E(c) - (c < n_normal ? eps_th : 0.0));
+  return 0.5 * w;
+}
+
 /// d lambda / dT (the effective lambda of the kinematics: lambda* for plane stress) and d mu / dT
 /// from the material's *ELASTIC table at temperature T.
 inline void elastic_derivatives(Kinematics kin, const Material& mat, double T, double& dlambda,
@@ -317,8 +326,10 @@ class ContinuumKernel final : public ElementKernel {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<kKin>(NIP, sb, eb);
+    double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
+      energy += p.dV * continuum_detail::energy_density(NNRM, p.S, p.E, p.law.eps_th);
       VecS sig = p.S;
       if (nlgeom) sig = continuum_detail::cauchy_stress<kKin>(p.S, p.E, p.F, p.F33, p.law);
       for (int c = 0; c < NS; ++c) {
@@ -328,6 +339,7 @@ class ContinuumKernel final : public ElementKernel {
     }
     out.blocks.push_back(std::move(sb));
     out.blocks.push_back(std::move(eb));
+    out.strain_energy = energy;
   }
 
  private:

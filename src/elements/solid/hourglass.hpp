@@ -46,11 +46,16 @@ struct HourglassGeometry {
   static constexpr int NDOF = NN * ND;
   static constexpr bool kAxi = K == Kinematics::Axisymmetric;
   static constexpr double kStiffnessFactor = 0.005; ///< r_F of HOURGLASS=STIFFNESS
+  /// penalised (non-constant-strain) fields: 4 per component in 3-D, 1 plane; CAX u_r 3, u_z 1
+  static constexpr int NSF = kAxi ? 4 : ND * (NN - ND - 1);
 
   using MatG = Eigen::Matrix<double, NN, ND>;
   using VecN = Eigen::Matrix<double, NN, 1>;
   using MatK = Eigen::Matrix<double, NDOF, NDOF>;
   using MatB = Eigen::Matrix<double, NS, NDOF>;
+  using MatSF = Eigen::Matrix<double, NSF, NSF>;
+  using MatS = Eigen::Matrix<double, NDOF, NSF>;
+  using MatGam = Eigen::Matrix<double, NSF, NDOF>;
 
   /// Parametric node coordinates of the cell (Abaqus order).
   static constexpr double node_xi(int a, int k) {
@@ -117,43 +122,27 @@ struct HourglassGeometry {
   }
 
   /// K_hg for the elastic constants (lambda the effective one of the kinematics, mu) and, when
-  /// dK is given, its derivative for (dlambda, dmu). After build().
+  /// dK is given, its derivative for (dlambda, dmu). After build(). K_hg is zero on the
+  /// constant-strain fields, so it is formed on the penalised fields S and mapped back with their
+  /// dual coordinates Gam (u = constant-strain part + S Gam u): K_hg = Gam^T (S^T K_hg S) Gam.
   void stiffness(HourglassControl mode, double scale, double lambda, double mu, MatK& Khg,
                  double dlambda = 0.0, double dmu = 0.0, MatK* dK = nullptr) const {
+    MatS S;
+    MatGam Gam;
+    basis(S, Gam);
+    MatSF Kh, dKh;
     if (mode == HourglassControl::Stiffness) {
-      const MatK PtP = projector_gram();
+      const MatSF StS = S.transpose() * S;
       const double k = scale * kStiffnessFactor * V * bb;
-      Khg = k * mu * PtP;
-      if (dK) *dK = k * dmu * PtP;
-      return;
+      Kh = k * mu * StS;
+      dKh = k * dmu * StS;
+    } else {
+      enhanced(S, lambda, mu, dlambda, dmu, dK != nullptr, Kh, dKh);
+      Kh *= scale;
+      dKh *= scale;
     }
-    // the incompatible-mode element's blocks for (lambda, mu) and for (dlambda, dmu)
-    const bool d = dK != nullptr;
-    MatK Kuu = MatK::Zero(), dKuu = MatK::Zero();
-    Eigen::Matrix<double, NDOF, NMA> Kum = Eigen::Matrix<double, NDOF, NMA>::Zero(), dKum = Kum;
-    Eigen::Matrix<double, NMA, NMA> Kmm = Eigen::Matrix<double, NMA, NMA>::Zero(), dKmm = Kmm;
-    const auto rule = full_integration_rule(kShape);
-    const ElasticPoint law = elastic(lambda, mu), dlaw = elastic(dlambda, dmu);
-    for (int q = 0; q < NQ; ++q) {
-      Point p;
-      point(q, rule[q].xi.data(), p);
-      MatB Bu;
-      Eigen::Matrix<double, NS, NMA> Bm;
-      strains(rule[q].xi.data(), p, Bu, Bm);
-      add_blocks(law, p.dV, Bu, Bm, Kuu, Kum, Kmm);
-      if (d) add_blocks(dlaw, p.dV, Bu, Bm, dKuu, dKum, dKmm);
-    }
-    const MatB B1 = mean_B();
-    const Eigen::Matrix<double, NMA, NDOF> Xm = Kmm.ldlt().solve(Kum.transpose());
-    MatB DB;
-    law.apply(NNRM, B1, DB);
-    Khg = scale * (Kuu - Kum * Xm - V * (B1.transpose() * DB));
-    Khg = 0.5 * (Khg + Khg.transpose()).eval();
-    if (!d) return;
-    dlaw.apply(NNRM, B1, DB);
-    const MatK cross = dKum * Xm;
-    *dK = scale * (dKuu - cross - cross.transpose() + Xm.transpose() * dKmm * Xm -
-                   V * (B1.transpose() * DB));
+    Khg.noalias() = Gam.transpose() * Kh * Gam;
+    if (dK) dK->noalias() = Gam.transpose() * dKh * Gam;
   }
 
  private:
@@ -247,32 +236,65 @@ struct HourglassGeometry {
     }
   }
 
-  static void add_blocks(const ElasticPoint& law, double dV, const MatB& Bu,
-                         const Eigen::Matrix<double, NS, NMA>& Bm, MatK& Kuu,
-                         Eigen::Matrix<double, NDOF, NMA>& Kum,
+  template <class MatBs, class MatKss, class MatKsm>
+  static void add_blocks(const ElasticPoint& law, double dV, const MatBs& Bs,
+                         const Eigen::Matrix<double, NS, NMA>& Bm, MatKss& Kss, MatKsm& Ksm,
                          Eigen::Matrix<double, NMA, NMA>& Kmm) {
-    MatB DBu;
+    MatBs DBs;
     Eigen::Matrix<double, NS, NMA> DBm;
-    law.apply(NNRM, Bu, DBu);
+    law.apply(NNRM, Bs, DBs);
     law.apply(NNRM, Bm, DBm);
-    Kuu.noalias() += dV * (Bu.transpose() * DBu);
-    Kum.noalias() += dV * (Bu.transpose() * DBm);
+    Kss.noalias() += dV * (Bs.transpose() * DBs);
+    Ksm.noalias() += dV * (Bs.transpose() * DBm);
     Kmm.noalias() += dV * (Bm.transpose() * DBm);
   }
 
-  /// P^T P of HOURGLASS=STIFFNESS, P the oblique projector onto the penalised fields along the
-  /// constant-strain ones, component by component.
-  MatK projector_gram() const {
-    MatK G = MatK::Zero();
+  /// S^T (K_I - K_1) S and, with `d`, its derivative for (dlambda, dmu): the incompatible-mode
+  /// element's blocks on the fields S, condensed over the modes, less the uniform strain's part.
+  void enhanced(const MatS& S, double lambda, double mu, double dlambda, double dmu, bool d,
+                MatSF& Kh, MatSF& dKh) const {
+    MatSF Kss = MatSF::Zero(), dKss = MatSF::Zero();
+    Eigen::Matrix<double, NSF, NMA> Ksm = Eigen::Matrix<double, NSF, NMA>::Zero(), dKsm = Ksm;
+    Eigen::Matrix<double, NMA, NMA> Kmm = Eigen::Matrix<double, NMA, NMA>::Zero(), dKmm = Kmm;
+    const auto rule = full_integration_rule(kShape);
+    const ElasticPoint law = elastic(lambda, mu), dlaw = elastic(dlambda, dmu);
+    for (int q = 0; q < NQ; ++q) {
+      Point p;
+      point(q, rule[q].xi.data(), p);
+      MatB Bu;
+      Eigen::Matrix<double, NS, NMA> Bm;
+      strains(rule[q].xi.data(), p, Bu, Bm);
+      const Eigen::Matrix<double, NS, NSF> Bs = Bu * S;
+      add_blocks(law, p.dV, Bs, Bm, Kss, Ksm, Kmm);
+      if (d) add_blocks(dlaw, p.dV, Bs, Bm, dKss, dKsm, dKmm);
+    }
+    const Eigen::Matrix<double, NS, NSF> B1 = mean_B() * S;
+    const Eigen::Matrix<double, NMA, NSF> Xm = Kmm.ldlt().solve(Ksm.transpose());
+    Eigen::Matrix<double, NS, NSF> DB;
+    law.apply(NNRM, B1, DB);
+    Kh = Kss - Ksm * Xm - V * (B1.transpose() * DB);
+    Kh = 0.5 * (Kh + Kh.transpose()).eval();
+    if (!d) return;
+    dlaw.apply(NNRM, B1, DB);
+    const MatSF cross = dKsm * Xm;
+    dKh = dKss - cross - cross.transpose() + Xm.transpose() * dKmm * Xm - V * (B1.transpose() * DB);
+  }
+
+  /// The penalised fields S (columns: nodal values in one component) and their dual coordinates
+  /// Gam, component by component from the basis {constant-strain fields, penalised fields}:
+  /// 1, x_j then the hourglass vectors; CAX4R's u_r: r then 1, z and the hourglass vector.
+  void basis(MatS& S, MatGam& Gam) const {
+    S.setZero();
+    Gam.setZero();
+    int first = 0; // first column of the component's fields in S
     for (int i = 0; i < ND; ++i) {
-      // basis columns: constant-strain fields first, then the penalised ones
       Eigen::Matrix<double, NN, NN> M;
       int col = 0, n_exact = 0;
       auto add = [&](auto f) {
         for (int a = 0; a < NN; ++a) M(a, col) = f(a);
         ++col;
       };
-      const auto x = [&](int jx) { return [this, jx](int a) { return _X[a][jx]; }; };
+      const auto x = [this](int jx) { return [this, jx](int a) { return _X[a][jx]; }; };
       const auto one = [](int) { return 1.0; };
       if (kAxi && i == 0) {
         add(x(0)); // u_r = r
@@ -287,13 +309,14 @@ struct HourglassGeometry {
       for (int alpha = 0; alpha < (ND == 3 ? 4 : 1); ++alpha)
         add([alpha](int a) { return h(alpha, a); });
       const Eigen::Matrix<double, NN, NN> Minv = M.inverse();
-      const Eigen::Matrix<double, NN, NN> P =
-          M.rightCols(NN - n_exact) * Minv.bottomRows(NN - n_exact);
-      const Eigen::Matrix<double, NN, NN> PtP = P.transpose() * P;
-      for (int a = 0; a < NN; ++a)
-        for (int bn = 0; bn < NN; ++bn) G(a * ND + i, bn * ND + i) = PtP(a, bn);
+      const int n = NN - n_exact;
+      for (int k = 0; k < n; ++k)
+        for (int a = 0; a < NN; ++a) {
+          S(a * ND + i, first + k) = M(a, n_exact + k);
+          Gam(first + k, a * ND + i) = Minv(n_exact + k, a);
+        }
+      first += n;
     }
-    return G;
   }
 };
 

@@ -126,9 +126,11 @@ class IncompatibleKernel final : public ElementKernel {
     condense(in, nlgeom, x, r, Kx);
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<K>(NIP, sb, eb);
+    double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       Point p;
       point(in, q, nlgeom, x, p);
+      energy += p.g.dV * continuum_detail::energy_density(NNRM, p.S, p.E, p.law.eps_th);
       const VecS sig =
           nlgeom ? continuum_detail::cauchy_stress<K>(p.S, p.E, p.F, p.F33, p.law) : p.S;
       for (int c = 0; c < NS; ++c) {
@@ -138,6 +140,7 @@ class IncompatibleKernel final : public ElementKernel {
     }
     out.blocks.push_back(std::move(sb));
     out.blocks.push_back(std::move(eb));
+    out.strain_energy = energy;
   }
 
  private:

@@ -147,6 +147,7 @@ class ReducedKernel final : public ElementKernel {
     out.blocks.push_back(std::move(eb));
     const Eigen::Map<const VecD> u(in.u.data());
     out.artificial_energy = 0.5 * u.dot(w.Khg * u);
+    out.strain_energy = w.g.V * continuum_detail::energy_density(NNRM, w.S, w.E, w.law.eps_th);
   }
 
  private:
