@@ -83,6 +83,7 @@ void bind_property(BuildState& s, Kind kind, int index, const std::string& elset
                                   elset, info.name, keyword_of(kind_for(info.family)),
                                   keyword_of(kind)));
       family_reported = true;
+      owner_loc[e] = loc; // reported: no "has no section" for it later
       continue;
     }
     PropertyRef& ref = s.model.element_property[e];
@@ -310,7 +311,7 @@ void finish_model_data(BuildState& s) {
     // elements without a property: one error per element type (naming the first element)
     std::map<ElementType, std::pair<ElemId, int>> missing;
     for (ElemId e = 0; e < m.mesh.n_elements(); ++e)
-      if (m.element_property[e].kind == Kind::None) {
+      if (m.element_property[e].kind == Kind::None && owner[e].empty()) {
         auto& [first, count] = missing.try_emplace(m.mesh.elem_types[e], e, 0).first->second;
         (void)first;
         ++count;

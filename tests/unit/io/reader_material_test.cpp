@@ -321,3 +321,15 @@ TEST(ReaderMaterial, ModelSpaceFromElementTypes) {
 
 } // namespace
 } // namespace gapfem
+
+// An element in a section of the wrong kind is one error, without a follow-on "has no section".
+TEST(ReaderMaterial, WrongSectionKindIsOneError) {
+  const std::string deck = "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n"
+                           "8,0,1,1\n*ELEMENT, TYPE=C3D8R, ELSET=A\n1, 1,2,3,4,5,6,7,8\n"
+                           "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.3\n"
+                           "*BEAM SECTION, ELSET=A, MATERIAL=M, SECTION=RECT\n1., 1.\n";
+  const std::string e = gapfem::test::error_text(deck);
+  EXPECT_CONTAINS(e, "deck.inp:15: *BEAM SECTION: element 1 (C3D8R)");
+  EXPECT_CONTAINS(e, "a C3D8R element needs a *SOLID SECTION, not a *BEAM SECTION");
+  EXPECT_EQ(e.find("has no section"), std::string::npos) << e;
+}
