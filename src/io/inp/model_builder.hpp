@@ -15,8 +15,8 @@
 #include <initializer_list>
 #include <map>
 #include <optional>
-#include <span>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_set>
