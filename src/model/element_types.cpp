@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 76> kInfo = {{
+constexpr std::array<ElementTypeInfo, 81> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -134,6 +134,12 @@ constexpr std::array<ElementTypeInfo, 76> kInfo = {{
      Shape::Quad4},
     {ElementType::CAX4RT, "CAX4RT", 4, F::Continuum, S::Axisymmetric, P::Axisymmetric, true, true,
      Shape::Quad4},
+    // three-node beams number their nodes end, middle, end (no reference cell: see vtu_writer)
+    {ElementType::B32, "B32", 3, F::Beam, S::ThreeD, P::None, true, false},
+    {ElementType::B21, "B21", 2, F::Beam, S::Planar, P::None, true, false, Shape::Line2},
+    {ElementType::B22, "B22", 3, F::Beam, S::Planar, P::None, true, false},
+    {ElementType::PIPE31, "PIPE31", 2, F::Beam, S::ThreeD, P::None, true, false, Shape::Line2},
+    {ElementType::PIPE32, "PIPE32", 3, F::Beam, S::ThreeD, P::None, true, false},
 }};
 } // namespace
 

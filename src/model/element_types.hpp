@@ -93,6 +93,11 @@ enum class ElementType : std::uint8_t {
   CPS4RT,
   CPE4RT,
   CAX4RT,
+  B32,
+  B21,
+  B22,
+  PIPE31,
+  PIPE32,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };

@@ -37,6 +37,9 @@ enum class DistLoadKind : std::uint8_t {
   BodyFlux,    ///< BF: heat per unit volume per time
   SurfaceFlux, ///< Sn / DSFLUX S: heat flux into face n per area
   Film,        ///< Fn / SFILM F: film coefficient h (magnitude), sink temperature
+  /// beams: force per unit reference length; face 1/2: P1/P2 along the section's n1/n2, face 0:
+  /// PX/PY/PZ along the global axis in `direction`
+  LineLoad,
 };
 
 /// *DLOAD / *DSLOAD / *DFLUX / *DSFLUX / *FILM / *SFILM entry, per element (and face).

@@ -38,15 +38,27 @@ struct SolidSection {
   SourceLocation loc;
 };
 
-/// *BEAM SECTION (B31).
+/// *BEAM SECTION and *BEAM GENERAL SECTION (B21, B22, B31, B32, PIPE31, PIPE32).
 struct BeamSection {
-  enum class Shape { Rect, Circ, Pipe };
+  /// library shapes (docs/theory/structural.md §3.1); General: SECTION=GENERAL of *BEAM GENERAL
+  /// SECTION (A, I11, I12, I22, J given directly)
+  enum class Shape { Rect, Circ, Pipe, Box, I, General };
   std::string elset;
-  int material = -1;
+  int material = -1; ///< *BEAM SECTION; -1 for *BEAM GENERAL SECTION (constants below)
   Shape shape = Shape::Rect;
-  std::vector<double> dims; ///< RECT: a (local 1), b (local 2); CIRC: r; PIPE: r (outer), t
-  Vec3 n1{0.0, 0.0, -1.0};  ///< approximate local 1-direction (Abaqus default (0,0,-1))
+  /// RECT: a (local 1), b (local 2); CIRC: r; PIPE: r (outer), t; BOX: a, b, t1, t2, t3, t4;
+  /// I: l, h, b1, b2, t1, t2, t3; GENERAL: A, I11, I12, I22, J
+  std::vector<double> dims;
+  Vec3 n1{0.0, 0.0, -1.0}; ///< approximate local 1-direction (Abaqus default (0,0,-1))
   bool n1_given = false;
+  /// *BEAM GENERAL SECTION: linear elastic section, E, G and alpha from data line 3
+  bool general = false;
+  double E = 0.0, G = 0.0, alpha = 0.0;
+  double density = 0.0; ///< DENSITY= of *BEAM GENERAL SECTION (0: none)
+  /// *TRANSVERSE SHEAR STIFFNESS: K23 (shear along local 2), K13 (along local 1); 0 = default
+  double k23 = 0.0, k13 = 0.0;
+  double slenderness = -1.0; ///< slenderness compensation factor given there (-1: default)
+  bool invalid = false;      ///< its keyword had an error (reported): nothing more is checked
   SourceLocation loc;
 };
 

@@ -79,6 +79,7 @@ int vtk_cell_type(ElementType type, int n_nodes) {
       return 25; // VTK_QUADRATIC_HEXAHEDRON
     }
   }
+  if (info.family == ElementFamily::Beam && n_nodes == 3) return 21; // VTK_QUADRATIC_EDGE
   switch (n_nodes) {
   case 1:
     return 1; // VTK_VERTEX (SPRING1, grounded gap)
@@ -93,9 +94,13 @@ int vtk_node_from_abaqus(ElementType type, int vtk_index) {
   // VTK's wedges have the opposite orientation of Abaqus's (the right-hand normal of the first
   // triangle points out of the cell); every other cell shares the Abaqus node order
   static constexpr int kWedge[15] = {0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13};
-  const auto cell = element_info(type).cell;
+  const auto& info = element_info(type);
+  const auto cell = info.cell;
   if (cell && (*cell == Shape::Wedge6 || *cell == Shape::Wedge15) && vtk_index < 15)
     return kWedge[vtk_index];
+  // three-node beams are end, middle, end; VTK's quadratic edge is end, end, middle
+  if (info.family == ElementFamily::Beam && info.n_nodes == 3 && vtk_index < 3)
+    return std::array<int, 3>{0, 2, 1}[vtk_index];
   return vtk_index;
 }
 

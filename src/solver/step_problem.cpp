@@ -81,7 +81,9 @@ Evaluation StepProblem::evaluate() {
   if (!_active.empty()) {
     _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_K, !_unsymmetric_loads);
     for (const auto& a : _active)
-      follower |= _unsymmetric_loads && _ctx.nlgeom && a.load->kind == DistLoadKind::Pressure;
+      follower |= _unsymmetric_loads && _ctx.nlgeom &&
+                  (a.load->kind == DistLoadKind::Pressure ||
+                   (a.load->kind == DistLoadKind::LineLoad && a.load->face > 0));
   }
   Evaluation ev;
   ev.status_changes = ar.status_changes;

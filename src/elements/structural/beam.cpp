@@ -1,10 +1,12 @@
 #include "elements/structural/beam.hpp"
 
+#include "common/jet.hpp"
+#include "elements/structural/beam_kinematics.hpp"
+#include "elements/structural/beam_loads.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "elements/structural/structural_factory.hpp"
 #include "model/model.hpp"
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -12,222 +14,260 @@ namespace gapfem {
 
 using namespace structural;
 
+namespace beam {
+
 namespace {
 
-constexpr std::array<DofType, 6> kBeamDofs{DofType::U1,  DofType::U2,  DofType::U3,
-                                           DofType::UR1, DofType::UR2, DofType::UR3};
+constexpr std::array<DofType, 6> kSpaceDofs{DofType::U1,  DofType::U2,  DofType::U3,
+                                            DofType::UR1, DofType::UR2, DofType::UR3};
+constexpr std::array<DofType, 3> kPlaneDofs{DofType::U1, DofType::U2, DofType::UR3};
 
-/// The message the B31 + NLGEOM restriction must carry (issue requirement).
-constexpr const char* kNlgeomMessage =
-    "B31 with NLGEOM is not available yet; run the step without NLGEOM";
-
-using Mat6x12 = Eigen::Matrix<double, 6, 12>;
-using Mat12 = Eigen::Matrix<double, 12, 12>;
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-
-/// Everything the integration point needs, in local coordinates.
-struct Local {
-  double L = 0.0;
-  BeamKernel::Frame R{};
-  Mat6x12 B = Mat6x12::Zero(); ///< generalised strains = B * local DOFs
-  Vec6 D = Vec6::Zero();       ///< diagonal section stiffness
-  double E = 0.0, G = 0.0, thermal_strain = 0.0;
+/// Section stiffness (6 x 6, strain order of beam_kinematics.hpp) and initial (thermal) strains
+/// of an element at its temperature.
+struct SectionLaw {
+  std::array<double, 36> D{};
+  std::array<double, 6> initial{};
+  double E = 0.0, G = 0.0;
 };
 
-/// Local DOF values (t, n1, n2 components of displacement and rotation) of the global ones.
-Vec12 to_local(const BeamKernel::Frame& R, std::span<const double> u) {
-  Vec12 ul;
-  for (int blk = 0; blk < 4; ++blk)
-    for (int i = 0; i < 3; ++i)
-      ul(3 * blk + i) = R[i][0] * u[3 * blk] + R[i][1] * u[3 * blk + 1] + R[i][2] * u[3 * blk + 2];
-  return ul;
-}
-
-/// Global components of a local 12-vector.
-void add_global(const BeamKernel::Frame& R, const Vec12& fl, std::span<double> f) {
-  for (int blk = 0; blk < 4; ++blk)
-    for (int j = 0; j < 3; ++j)
-      f[3 * blk + j] +=
-          R[0][j] * fl(3 * blk) + R[1][j] * fl(3 * blk + 1) + R[2][j] * fl(3 * blk + 2);
-}
-
-} // namespace
-
-BeamKernel::BeamKernel(Material material, BeamSectionProperties section, Vec3 n1_approx)
-    : _material(std::move(material)), _section(section), _n1a(n1_approx) {}
-
-std::span<const DofType> BeamKernel::node_dofs(int) const {
-  return kBeamDofs;
-}
-
-bool BeamKernel::uses_temperature_field() const {
-  return material_uses_temperature(_material);
-}
-
-BeamKernel::Frame BeamKernel::frame(std::span<const Vec3> X) const {
-  const Vec3 d = sub(X[1], X[0]);
-  const Vec3 t = scale(1.0 / norm(d), d);
-  const Vec3 c = cross(t, _n1a);
-  const Vec3 n2 = scale(1.0 / norm(c), c);
-  return {t, cross(n2, t), n2};
-}
-
-std::string BeamKernel::validate(const ElementInput& in) const {
-  const Vec3 d = sub(in.X[1], in.X[0]);
-  const double L = norm(d);
-  if (!(L > 1e-12 * (in.ctx ? in.ctx->model_size : 1.0)))
-    return "the two nodes of this beam coincide, so it has no length; check the node coordinates";
-  const double n1_len = norm(_n1a);
-  // sin(angle between axis and n1) below 1e-6: n2 = t x n1 is undefined.
-  if (!(norm(cross(d, _n1a)) > 1e-6 * L * n1_len))
-    return fmt::format("the approximate n1 direction ({}, {}, {}) of the *BEAM SECTION is parallel "
-                       "to the beam axis, so the cross-section orientation is undefined; give a "
-                       "different n1 direction on the second data line of *BEAM SECTION",
-                       _n1a[0], _n1a[1], _n1a[2]);
-  return {};
-}
-
-namespace {
-
-Local make_local(const BeamKernel& k, const Material& material, const BeamSectionProperties& s,
-                 const ElementInput& in) {
-  Local loc;
-  loc.L = norm(sub(in.X[1], in.X[0]));
-  loc.R = k.frame(in.X);
+SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int n_nodes) {
+  SectionLaw s;
   double nu = 0.0;
-  elastic_at(material, average(in.temperature), loc.E, nu);
-  loc.G = loc.E / (2.0 * (1.0 + nu));
-  loc.thermal_strain = element_thermal_strain(material, in);
-  const double L = loc.L, E = loc.E, G = loc.G;
-  // Shear stiffness with the residual-bending-flexibility correction (see beam.hpp):
-  // 1/K_s = 1/(kGA) + L^2/(12 E I), I the moment of the bending plane the shear acts in.
-  const double kGA = s.k * G * s.A;
-  const double Ks2 =
-      kGA / (1.0 + kGA * L * L / (12.0 * E * s.I11)); // shear along n2: bends about n1
-  const double Ks1 =
-      kGA / (1.0 + kGA * L * L / (12.0 * E * s.I22)); // shear along n1: bends about n2
-  loc.D << E * s.A, Ks2, Ks1, E * s.I11, E * s.I22, G * s.J;
-  // Local DOFs per node: 0 u_t, 1 v1, 2 v2, 3 theta_t, 4 theta_1, 5 theta_2 (node B: +6).
-  // A rigid rotation theta_1 about n1 moves the axis by v2' = -theta_1, one about n2 by
-  // v1' = +theta_2 (n1 x t = -n2, n2 x t = n1); the shear strains vanish for both.
-  auto& B = loc.B;
-  const double il = 1.0 / L;
-  B(0, 0) = -il, B(0, 6) = il;                                  // eps   = u_t'
-  B(1, 2) = -il, B(1, 8) = il, B(1, 4) = 0.5, B(1, 10) = 0.5;   // gam2  = v2' + theta_1
-  B(2, 1) = -il, B(2, 7) = il, B(2, 5) = -0.5, B(2, 11) = -0.5; // gam1  = v1' - theta_2
-  B(3, 4) = -il, B(3, 10) = il;                                 // kap1  = theta_1'
-  B(4, 5) = -il, B(4, 11) = il;                                 // kap2  = theta_2'
-  B(5, 3) = -il, B(5, 9) = il;                                  // twist = theta_t'
-  return loc;
+  elastic_at(b.material, average(in.temperature), s.E, nu);
+  s.G = s.E / (2.0 * (1.0 + nu));
+  const BeamSectionProperties& p = b.section;
+  const double E = s.E, G = s.G;
+  auto D = [&](int i, int j, double v) { s.D[6 * i + j] = s.D[6 * j + i] = v; };
+  // axial and bending about the section origin: fibre strain eps + kappa1 x2 - kappa2 x1
+  D(0, 0, E * p.A);
+  D(0, 3, E * p.Q2);
+  D(0, 4, -E * p.Q1);
+  D(3, 3, E * p.I11);
+  D(3, 4, -E * p.I12);
+  D(4, 4, E * p.I22);
+  D(5, 5, G * p.J);
+  // transverse shear, with the slenderness compensation of two-node elements (beam.hpp)
+  const double K2i = p.k23 > 0.0 ? p.k23 : p.k * G * p.A;
+  const double K1i = p.k13 > 0.0 ? p.k13 : p.k * G * p.A;
+  // (a planar beam has no out-of-plane bending: I22 = 0 leaves K1, which no strain uses)
+  auto compensate = [&](double K, double I) {
+    if (!(I > 0.0)) return K;
+    if (b.slenderness >= 0.0) // Abaqus's f_p = 1 / (1 + xi SCF L^2 A / (12 I)), xi = 1 or 1e-4
+      return K / (1.0 + (n_nodes == 2 ? 1.0 : 1e-4) * b.slenderness * L * L * p.A / (12.0 * I));
+    return n_nodes == 2 ? K / (1.0 + K * L * L / (12.0 * E * I)) : K;
+  };
+  const double K2 = compensate(K2i, p.I11_centroid());
+  const double K1 = compensate(K1i, p.I22_centroid());
+  D(1, 1, K2);
+  D(2, 2, K1);
+  s.initial[0] = element_thermal_strain(b.material, in);
+  return s;
 }
+
+template <class T> T unknown(double v, int i) {
+  if constexpr (std::is_same_v<T, double>)
+    return v;
+  else
+    return T::variable(v, i);
+}
+
+/// Energy density 1/2 (e - e0)^T D (e - e0) of one point.
+template <class T> T point_energy(Strains<T> e, const SectionLaw& s) {
+  for (int i = 0; i < 6; ++i) e[i] -= s.initial[i];
+  T w(0.0);
+  for (int i = 0; i < 6; ++i) {
+    T si(0.0);
+    bool any = false;
+    for (int j = 0; j < 6; ++j)
+      if (const double d = s.D[6 * i + j]; d != 0.0) {
+        si += d * e[j];
+        any = true;
+      }
+    if (any) w += e[i] * si;
+  }
+  return 0.5 * w;
+}
+
+/// B21/B22/B31/B32/PIPE31/PIPE32 with NN nodes, planar (DOFs 1, 2, 6) or in space (1-6).
+template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
+  static constexpr int kDpn = Planar ? 3 : 6;
+  static constexpr int kN = NN * kDpn;
+  using J = Jet<kN>;
+
+ public:
+  explicit BeamKernel(BeamData data) : _b(std::move(data)) {}
+
+  ElementType type() const override { return _b.type; }
+  std::span<const DofType> node_dofs(int) const override {
+    if constexpr (Planar)
+      return kPlaneDofs;
+    else
+      return kSpaceDofs;
+  }
+  int n_state() const override { return 4 * NN; }
+  bool uses_temperature_field() const override { return material_uses_temperature(_b.material); }
+
+  std::string validate(const ElementInput& in) const override {
+    std::string why;
+    beam_geometry<NN>(in.X, _b.n1a, in.ctx ? in.ctx->model_size : 1.0, &why);
+    return why;
+  }
+
+  void initialize(const ElementInput& in) const override {
+    for (int a = 0; a < NN; ++a) {
+      in.state[4 * a] = 1.0;
+      for (int i = 1; i < 4; ++i) in.state[4 * a + i] = 0.0;
+    }
+  }
+
+  void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    const SectionLaw law = section_law(_b, in, g.length, NN);
+    const auto nv = gather<J>(in, nl);
+    const J W = energy(g, law, in.X, nv, nl);
+    for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
+    if (out.want_tangent)
+      for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
+    write_rotations(in, nl);
+  }
+
+  bool supports_load(DistLoadKind kind, int face) const override {
+    return beam_supports_load(kind, face, Planar);
+  }
+  void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
+            std::span<double> f_ext, std::span<double> tangent) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    BeamLoadInput li{_b, g, load, magnitude, in, nl, Planar};
+    if (nl && load.kind == DistLoadKind::LineLoad && load.face > 0) {
+      // a follower load: its direction turns with the section
+      const auto nv = gather<J>(in, true);
+      const auto lr = local_rotations(nv);
+      std::array<V3<J>, 2> dirs;
+      for (int p = 0; p < g.n_points; ++p) {
+        V3<J> phi{};
+        for (int a = 0; a < NN; ++a)
+          for (int i = 0; i < 3; ++i) phi[i] += g.pts[p].N[a] * lr.phi[a][i];
+        const auto q = rotation::quat_mul(lr.r, rotation::quat_exp(phi));
+        dirs[p] = rotation::rotate(q, g.pts[p].L0[load.face]);
+      }
+      follower_line_load<NN, kDpn>(li, dirs, f_ext, tangent);
+      return;
+    }
+    dead_line_load<NN, kDpn>(li, f_ext);
+  }
+
+  bool supports_output(ElemVar var) const override {
+    if (var == ElemVar::SF) return true;
+    return (var == ElemVar::S || var == ElemVar::E) && _b.section.n_points > 0;
+  }
+
+  void recover(const ElementInput& in, ElementRecovery& out) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    const SectionLaw law = section_law(_b, in, g.length, NN);
+    const auto nv = gather<double>(in, nl);
+    std::array<Strains<double>, 2> e{};
+    for (int p = 0; p < g.n_points; ++p) e[p] = strains(g.pts[p], in.X, nv, nl);
+    BeamOutput o{law.D, law.initial, law.E, law.G, _b.section, Planar};
+    recover_beam_output(o, std::span(e.data(), static_cast<std::size_t>(g.n_points)), out);
+  }
+
+ private:
+  template <class T> BeamNodal<T, NN> gather(const ElementInput& in, bool nl) const {
+    BeamNodal<T, NN> nv;
+    for (int a = 0; a < NN; ++a) {
+      const int b = a * kDpn;
+      if constexpr (Planar) {
+        nv.u[a] = {unknown<T>(in.u[b], b), unknown<T>(in.u[b + 1], b + 1), T(0.0)};
+        nv.psi[a] = {T(0.0), T(0.0), unknown<T>(in.u[b + 2], b + 2)};
+      } else {
+        for (int i = 0; i < 3; ++i) {
+          nv.u[a][i] = unknown<T>(in.u[b + i], b + i);
+          nv.psi[a][i] = unknown<T>(in.u[b + 3 + i], b + 3 + i);
+        }
+      }
+      if (!nl) continue;
+      V3<T> inc = nv.psi[a];
+      const int r0 = b + (Planar ? 2 : 3);
+      if (!in.u_start.empty()) {
+        if constexpr (Planar)
+          inc[2] -= in.u_start[r0];
+        else
+          for (int i = 0; i < 3; ++i) inc[i] -= in.u_start[r0 + i];
+      }
+      nv.q[a] = rotation::quat_mul(rotation::quat_exp(inc), committed(in, a));
+    }
+    return nv;
+  }
+
+  static Quat<double> committed(const ElementInput& in, int a) {
+    if (in.state_start.size() < static_cast<std::size_t>(4 * NN)) return {};
+    const double* s = in.state_start.data() + 4 * a;
+    return {s[0], s[1], s[2], s[3]};
+  }
+
+  template <class T>
+  static Strains<T> strains(const BeamPoint& p, std::span<const Vec3> X, const BeamNodal<T, NN>& nv,
+                            bool nl) {
+    if (!nl) return linear_strains(p, nv);
+    return nonlinear_strains(p, X, nv, local_rotations(nv));
+  }
+
+  template <class T>
+  static T energy(const BeamGeometry& g, const SectionLaw& law, std::span<const Vec3> X,
+                  const BeamNodal<T, NN>& nv, bool nl) {
+    T W(0.0);
+    if (!nl) {
+      for (int p = 0; p < g.n_points; ++p)
+        W += g.pts[p].weight * point_energy(linear_strains(g.pts[p], nv), law);
+      return W;
+    }
+    const auto lr = local_rotations(nv);
+    for (int p = 0; p < g.n_points; ++p)
+      W += g.pts[p].weight * point_energy(nonlinear_strains(g.pts[p], X, nv, lr), law);
+    return W;
+  }
+
+  /// Trial nodal rotations: exp(psi - psi_start) R_start under NLGEOM, exp(psi) otherwise (so an
+  /// NLGEOM step after a linear one starts from the rotations reached).
+  void write_rotations(const ElementInput& in, bool nl) const {
+    if (in.state.size() < static_cast<std::size_t>(4 * NN)) return;
+    const auto nv = gather<double>(in, nl);
+    for (int a = 0; a < NN; ++a) {
+      Quat<double> q = nl ? nv.q[a] : rotation::quat_exp(nv.psi[a]);
+      const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+      const double v[4] = {q.w / n, q.x / n, q.y / n, q.z / n};
+      for (int i = 0; i < 4; ++i) in.state[4 * a + i] = v[i];
+    }
+  }
+
+  BeamData _b;
+};
 
 } // namespace
 
-BeamKernel::SectionState BeamKernel::section_state(const ElementInput& in) const {
-  const Local loc = make_local(*this, _material, _section, in);
-  const Vec6 e = loc.B * to_local(loc.R, in.u);
-  SectionState st;
-  st.thermal_strain = loc.thermal_strain;
-  st.E = loc.E;
-  st.G = loc.G;
-  for (int i = 0; i < 6; ++i) {
-    st.strain[i] = e(i);
-    st.force[i] = loc.D(i) * (e(i) - (i == 0 ? loc.thermal_strain : 0.0));
-  }
-  return st;
-}
-
-void BeamKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
-  if (in.ctx != nullptr && in.ctx->nlgeom)
-    throw InputError({}, fmt::format("element {} (B31)", in.label), kNlgeomMessage);
-  const Local loc = make_local(*this, _material, _section, in);
-  const Vec12 ul = to_local(loc.R, in.u);
-  Vec6 s = loc.B * ul;
-  s(0) -= loc.thermal_strain;
-  s = loc.D.cwiseProduct(s);
-  // One-point rule over the length: f_loc = L B^T s, K_loc = L B^T D B.
-  const Vec12 fl = loc.L * (loc.B.transpose() * s);
-  add_global(loc.R, fl, out.residual);
-  if (!out.want_tangent) return;
-  const Mat12 Kl = loc.L * (loc.B.transpose() * loc.D.asDiagonal() * loc.B);
-  // K = T^T Kl T with T = blockdiag(R, R, R, R), R rows = (t, n1, n2).
-  Mat12 T = Mat12::Zero();
-  for (int blk = 0; blk < 4; ++blk)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) T(3 * blk + i, 3 * blk + j) = loc.R[i][j];
-  const Mat12 K = T.transpose() * Kl * T;
-  for (int i = 0; i < 12; ++i)
-    for (int j = 0; j < 12; ++j) out.tangent[i * 12 + j] += K(i, j);
-}
-
-bool BeamKernel::supports_load(DistLoadKind kind, int face) const {
-  return face == 0 && (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce);
-}
-
-void BeamKernel::load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
-                      std::span<double> f_ext, std::span<double>) const {
-  // Uniform line load q (force per length, global) on a straight member: the consistent nodal
-  // loads of the exact prismatic element are the fixed-end forces q L/2 and moments of magnitude
-  // q_perp L^2/12 (independent of the shear flexibility).
-  const double L = norm(sub(in.X[1], in.X[0]));
-  const Frame R = frame(in.X);
-  const double w = line_load_intensity(_material, _section.A, load, magnitude,
-                                       average(in.temperature), in.label);
-  const Vec3 q = scale(w, load.direction);
-  const double q1 = dot(q, R[1]), q2 = dot(q, R[2]);
-  // Node A: m1 = -q2 L^2/12, m2 = +q1 L^2/12; node B the opposite (see make_local for the signs).
-  const double c = L * L / 12.0;
-  const double m1 = -q2 * c, m2 = q1 * c;
-  for (int j = 0; j < 3; ++j) {
-    f_ext[j] += 0.5 * L * q[j];
-    f_ext[6 + j] += 0.5 * L * q[j];
-    const double mj = m1 * R[1][j] + m2 * R[2][j];
-    f_ext[3 + j] += mj;
-    f_ext[9 + j] -= mj;
-  }
-}
-
-bool BeamKernel::supports_output(ElemVar var) const {
-  return var == ElemVar::S || var == ElemVar::E || var == ElemVar::SF;
-}
-
-void BeamKernel::recover(const ElementInput& in, ElementRecovery& out) const {
-  const SectionState st = section_state(in);
-  OutputBlock& sf = add_block(out, ElemVar::SF, kBeamSF, 1);
-  for (int i = 0; i < 6; ++i) sf.values[i] = st.force[i];
-  // add both blocks before taking references: a second add_block may reallocate the first
-  add_block(out, ElemVar::S, kBeamS, 4);
-  add_block(out, ElemVar::E, kBeamE, 4);
-  OutputBlock& s = out.blocks[out.blocks.size() - 2];
-  OutputBlock& e = out.blocks.back();
-  for (int p = 0; p < 4; ++p) {
-    const double x1 = _section.points[p][0], x2 = _section.points[p][1];
-    // Axial strain of a fibre: eps + kappa_1 x2 - kappa_2 x1 (docs/theory/structural.md §3.4).
-    const double e11 = st.strain[0] + st.strain[3] * x2 - st.strain[4] * x1;
-    const double e12 = st.strain[5] * _section.torsion_radius[p]; // engineering shear strain
-    e.values[2 * p] = e11;
-    e.values[2 * p + 1] = e12;
-    s.values[2 * p] = st.E * (e11 - st.thermal_strain);
-    s.values[2 * p + 1] = st.G * e12;
-  }
-}
+} // namespace beam
 
 std::unique_ptr<ElementKernel> make_beam_kernel(const KernelContext& ctx) {
-  const Model& model = ctx.model;
-  for (const Step& step : model.steps)
-    if (step.nlgeom)
-      throw InputError(step.loc,
-                       ctx.elements.empty()
-                           ? std::string("B31")
-                           : fmt::format("element {} (B31)", model.element_label(ctx.elements[0])),
-                       kNlgeomMessage);
-  const BeamSection& sec = beam_section_of(ctx);
-  const BeamSectionProperties props = beam_section_properties(sec);
-  const Material& mat = section_material(model, sec.material, sec.loc,
-                                         fmt::format("*BEAM SECTION, ELSET={}", sec.elset));
-  check_density_for_gravity(ctx, mat);
-  return std::make_unique<BeamKernel>(mat, props, sec.n1);
+  beam::BeamData data = beam::beam_data(ctx);
+  switch (ctx.type) {
+  case ElementType::B31:
+  case ElementType::PIPE31:
+    return std::make_unique<beam::BeamKernel<2, false>>(std::move(data));
+  case ElementType::B32:
+  case ElementType::PIPE32:
+    return std::make_unique<beam::BeamKernel<3, false>>(std::move(data));
+  case ElementType::B21:
+    return std::make_unique<beam::BeamKernel<2, true>>(std::move(data));
+  case ElementType::B22:
+    return std::make_unique<beam::BeamKernel<3, true>>(std::move(data));
+  default:
+    break;
+  }
+  throw InternalError("make_beam_kernel: not a beam type");
 }
 
 } // namespace gapfem

@@ -9,14 +9,15 @@ namespace gapfem {
 
 namespace {
 
-// Transverse shear correction factors k (K = k G A) that Abaqus uses for its library sections
-// ("Beam section behavior: transverse shear stiffness", Abaqus Analysis User's Guide; Abaqus adopts
-// Cowper (1966), J. Appl. Mech. 33:335, evaluated at nu = 0.3: rectangle 10(1+nu)/(12+11nu) = 0.85,
-// solid circle 6(1+nu)/(7+6nu) = 0.89, thin-walled tube 2(1+nu)/(4+3nu) = 0.53). Values as listed
-// for RECT/CIRC/PIPE in the Abaqus documentation and in public Abaqus-preprocessing code tables.
+// Transverse shear correction factors k (K = k G A) of Abaqus's library sections ("Transverse
+// shear stiffness in beams", Abaqus Analysis User's Guide; Cowper (1966), J. Appl. Mech. 33:335,
+// at nu = 0.3: rectangle 10(1+nu)/(12+11nu) = 0.85, solid circle 6(1+nu)/(7+6nu) = 0.89,
+// thin-walled tube 2(1+nu)/(4+3nu) = 0.53; box and I 0.44; general sections 1.0).
 constexpr double kShearRect = 0.85;
 constexpr double kShearCirc = 0.89;
 constexpr double kShearPipe = 0.53;
+constexpr double kShearThinWall = 0.44;
+constexpr double kShearGeneral = 1.0;
 
 const char* shape_name(BeamSection::Shape s) {
   switch (s) {
@@ -26,8 +27,145 @@ const char* shape_name(BeamSection::Shape s) {
     return "CIRC";
   case BeamSection::Shape::Pipe:
     return "PIPE";
+  case BeamSection::Shape::Box:
+    return "BOX";
+  case BeamSection::Shape::I:
+    return "I";
+  case BeamSection::Shape::General:
+    return "GENERAL";
   }
   return "?";
+}
+
+using P2 = std::array<double, 2>;
+
+/// Adds a straight thin wall from a to b of thickness t, integrated along its mid-line (its own
+/// bending about the mid-line, t^3/12 per length, is neglected: Abaqus's thin-walled rule).
+void add_wall(BeamSectionProperties& p, P2 a, P2 b, double t) {
+  const double d1 = b[0] - a[0], d2 = b[1] - a[1];
+  const double m = t * std::hypot(d1, d2); // mass of the wall per unit of x
+  p.A += m;
+  p.Q1 += m * (a[0] + 0.5 * d1);
+  p.Q2 += m * (a[1] + 0.5 * d2);
+  p.I22 += m * (a[0] * a[0] + a[0] * d1 + d1 * d1 / 3.0);
+  p.I11 += m * (a[1] * a[1] + a[1] * d2 + d2 * d2 / 3.0);
+  p.I12 += m * (a[0] * a[1] + 0.5 * (a[0] * d2 + a[1] * d1) + d1 * d2 / 3.0);
+}
+
+class Checker {
+ public:
+  explicit Checker(const BeamSection& s)
+      : _s(s), _entity(fmt::format("*BEAM SECTION, ELSET={}", s.elset)) {}
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(_s.loc, _entity, fmt::format("SECTION={}: {}", shape_name(_s.shape), what));
+  }
+  /// Needs n dimensions; the ones from `first_positive` on must be positive.
+  void need(std::size_t n, const char* names, std::size_t first_positive = 0) const {
+    bool ok = _s.dims.size() >= n;
+    for (std::size_t i = 0; ok && i < n; ++i)
+      ok = std::isfinite(_s.dims[i]) && (i < first_positive || _s.dims[i] > 0.0);
+    if (!ok) fail(fmt::format("give {} on the first data line (all positive)", names));
+  }
+
+ private:
+  const BeamSection& _s;
+  std::string _entity;
+};
+
+void solid_rect(BeamSectionProperties& p, double a, double b) {
+  p.A = a * b;
+  p.I11 = a * b * b * b / 12.0; // bending about axis 1: x2 spans b
+  p.I22 = b * a * a * a / 12.0;
+  p.J = rectangle_torsion_constant(a, b);
+  p.k = kShearRect;
+  const double c1 = 0.5 * a, c2 = 0.5 * b;
+  p.n_points = 4;
+  p.points = {{{c1, c2}, {-c1, c2}, {-c1, -c2}, {c1, -c2}}};
+  p.torsion_radius = {0.0, 0.0, 0.0, 0.0};
+}
+
+void round(BeamSectionProperties& p, double r, double ri, double k) {
+  const double pi = std::numbers::pi;
+  const double r4 = std::pow(r, 4) - std::pow(ri, 4);
+  p.A = pi * (r * r - ri * ri);
+  p.I11 = p.I22 = pi * r4 / 4.0;
+  p.J = pi * r4 / 2.0; // exact for the disc and the annulus, thin or thick
+  p.k = k;
+  p.n_points = 4;
+  p.points = {{{r, 0.0}, {0.0, r}, {-r, 0.0}, {0.0, -r}}};
+  p.torsion_radius = {r, r, r, r};
+}
+
+/// BOX a, b (outer), t1..t4 the walls at +x1, +x2, -x1, -x2 (Abaqus's numbering: right, top,
+/// left, bottom), single closed cell: Bredt's J = 4 A_m^2 / sum(L_i / t_i).
+void box(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
+  c.need(6, "a, b, t1, t2, t3, t4");
+  const double a = d[0], b = d[1], t1 = d[2], t2 = d[3], t3 = d[4], t4 = d[5];
+  if (!(t1 + t3 < a) || !(t2 + t4 < b))
+    c.fail(fmt::format("the walls are thicker than the box (t1 + t3 = {} must be below a = {}, "
+                       "t2 + t4 = {} below b = {})",
+                       t1 + t3, a, t2 + t4, b));
+  const double xr = 0.5 * a - 0.5 * t1, xl = -0.5 * a + 0.5 * t3;
+  const double yt = 0.5 * b - 0.5 * t2, yb = -0.5 * b + 0.5 * t4;
+  add_wall(p, {xr, yb}, {xr, yt}, t1);
+  add_wall(p, {xr, yt}, {xl, yt}, t2);
+  add_wall(p, {xl, yt}, {xl, yb}, t3);
+  add_wall(p, {xl, yb}, {xr, yb}, t4);
+  const double w = xr - xl, h = yt - yb, Am = w * h;
+  p.J = 4.0 * Am * Am / (h / t1 + w / t2 + h / t3 + w / t4);
+  p.k = kShearThinWall;
+  p.n_points = 4;
+  p.points = {{{xr, yt}, {xl, yt}, {xl, yb}, {xr, yb}}};
+  // closed thin wall: tau = T / (2 A_m t) = G J twist / (2 A_m t), at the thinner wall of a corner
+  const double tc[4] = {std::min(t1, t2), std::min(t2, t3), std::min(t3, t4), std::min(t4, t1)};
+  for (int i = 0; i < 4; ++i) p.torsion_radius[i] = p.J / (2.0 * Am * tc[i]);
+}
+
+/// I: l (origin above the bottom flange's lower surface), h (overall height), b1, b2 (bottom and
+/// top flange widths), t1, t2 (their thicknesses), t3 (web); open: J = sum(L t^3) / 3.
+void i_section(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
+  c.need(7, "l, h, b1, b2, t1, t2, t3", 1);
+  const double l = d[0], h = d[1], b1 = d[2], b2 = d[3], t1 = d[4], t2 = d[5], t3 = d[6];
+  if (!(t1 + t2 < h))
+    c.fail(fmt::format("the flanges (t1 + t2 = {}) must be thinner than the height h = {}", t1 + t2,
+                       h));
+  if (!(t3 <= b1 && t3 <= b2))
+    c.fail(fmt::format("the web thickness t3 = {} exceeds a flange width (b1 = {}, b2 = {})", t3,
+                       b1, b2));
+  const double yb = -l + 0.5 * t1, yt = h - l - 0.5 * t2;
+  add_wall(p, {-0.5 * b1, yb}, {0.5 * b1, yb}, t1);
+  add_wall(p, {-0.5 * b2, yt}, {0.5 * b2, yt}, t2);
+  add_wall(p, {0.0, yb}, {0.0, yt}, t3);
+  p.J = (b1 * t1 * t1 * t1 + b2 * t2 * t2 * t2 + (yt - yb) * t3 * t3 * t3) / 3.0;
+  p.k = kShearThinWall;
+  p.n_points = 4;
+  p.points = {{{0.5 * b2, yt}, {-0.5 * b2, yt}, {-0.5 * b1, yb}, {0.5 * b1, yb}}};
+  // open thin wall: tau = G t twist at the wall surface
+  p.torsion_radius = {t2, t2, t1, t1};
+}
+
+void general(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d,
+             bool planar) {
+  c.need(2, "A, I11, I12, I22, J (A and I11 at least)");
+  p.A = d[0];
+  p.I11 = d[1];
+  p.I12 = d.size() > 2 ? d[2] : 0.0;
+  p.I22 = d.size() > 3 ? d[3] : 0.0;
+  p.J = d.size() > 4 ? d[4] : 0.0;
+  p.k = kShearGeneral;
+  p.n_points = 0;
+  if (planar) {
+    if (!(p.A > 0.0) || !(p.I11 > 0.0)) c.fail("A and I11 must be positive");
+    p.I12 = 0.0; // out-of-plane properties play no part in a planar beam
+    return;
+  }
+  if (!(p.I22 > 0.0) || !(p.J > 0.0) || !std::isfinite(p.I12))
+    c.fail(fmt::format("a beam in space needs I22 > 0 and J > 0 (fields 4 and 5), not I22 = {} "
+                       "and J = {}",
+                       p.I22, p.J));
+  if (!(p.I11 * p.I22 - p.I12 * p.I12 > 0.0))
+    c.fail(fmt::format("I11 I22 - I12^2 = {} must be positive (the bending stiffness would not be)",
+                       p.I11 * p.I22 - p.I12 * p.I12));
 }
 
 } // namespace
@@ -44,64 +182,39 @@ double rectangle_torsion_constant(double a, double b) {
   return a * b * b * b / 3.0 * (1.0 - 192.0 / std::pow(pi, 5) * (b / a) * sum);
 }
 
-BeamSectionProperties beam_section_properties(const BeamSection& section) {
-  const std::string entity = fmt::format("*BEAM SECTION, ELSET={}", section.elset);
-  const char* shape = shape_name(section.shape);
+BeamSectionProperties beam_section_properties(const BeamSection& section, bool planar) {
+  const Checker c(section);
   const auto& d = section.dims;
-  auto need = [&](std::size_t n, const char* what) {
-    bool ok = d.size() >= n;
-    for (std::size_t i = 0; ok && i < n; ++i) ok = d[i] > 0.0 && std::isfinite(d[i]);
-    if (!ok)
-      throw InputError(
-          section.loc, entity,
-          fmt::format("SECTION={} needs {} (all positive) on the first data line", shape, what));
-  };
-  const double pi = std::numbers::pi;
   BeamSectionProperties p;
   switch (section.shape) {
-  case BeamSection::Shape::Rect: {
-    need(2, "the width a (local 1-direction) and the height b (local 2-direction)");
-    const double a = d[0], b = d[1];
-    p.A = a * b;
-    p.I11 = a * b * b * b / 12.0; // bending about axis 1: x2 spans b
-    p.I22 = b * a * a * a / 12.0;
-    p.J = rectangle_torsion_constant(a, b);
-    p.k = kShearRect;
-    const double c1 = 0.5 * a, c2 = 0.5 * b;
-    p.points = {{{c1, c2}, {-c1, c2}, {-c1, -c2}, {c1, -c2}}};
-    p.torsion_radius = {0.0, 0.0, 0.0, 0.0};
+  case BeamSection::Shape::Rect:
+    c.need(2, "the width a (local 1-direction) and the height b (local 2-direction)");
+    solid_rect(p, d[0], d[1]);
+    break;
+  case BeamSection::Shape::Circ:
+    c.need(1, "the radius r");
+    round(p, d[0], 0.0, kShearCirc);
+    break;
+  case BeamSection::Shape::Pipe:
+    c.need(2, "the outer radius r and the wall thickness t");
+    if (!(d[1] < d[0]))
+      c.fail(fmt::format("the wall thickness t = {} must be smaller than the outer radius r = {} "
+                         "(use SECTION=CIRC for a solid circle)",
+                         d[1], d[0]));
+    round(p, d[0], d[0] - d[1], kShearPipe);
+    break;
+  case BeamSection::Shape::Box:
+    box(p, c, d);
+    break;
+  case BeamSection::Shape::I:
+    i_section(p, c, d);
+    break;
+  case BeamSection::Shape::General:
+    general(p, c, d, planar);
     break;
   }
-  case BeamSection::Shape::Circ: {
-    need(1, "the radius r");
-    const double r = d[0];
-    p.A = pi * r * r;
-    p.I11 = p.I22 = pi * std::pow(r, 4) / 4.0;
-    p.J = pi * std::pow(r, 4) / 2.0;
-    p.k = kShearCirc;
-    p.points = {{{r, 0.0}, {0.0, r}, {-r, 0.0}, {0.0, -r}}};
-    p.torsion_radius = {r, r, r, r};
-    break;
-  }
-  case BeamSection::Shape::Pipe: {
-    need(2, "the outer radius r and the wall thickness t");
-    const double r = d[0], t = d[1];
-    if (t > r)
-      throw InputError(section.loc, entity,
-                       fmt::format("the PIPE wall thickness {} exceeds the outer radius {}; give "
-                                   "t <= r",
-                                   t, r));
-    const double ri = r - t;
-    const double r4 = std::pow(r, 4) - std::pow(ri, 4);
-    p.A = pi * (r * r - ri * ri);
-    p.I11 = p.I22 = pi * r4 / 4.0;
-    p.J = pi * r4 / 2.0; // exact for the annulus, thin or thick
-    p.k = kShearPipe;
-    p.points = {{{r, 0.0}, {0.0, r}, {-r, 0.0}, {0.0, -r}}};
-    p.torsion_radius = {r, r, r, r};
-    break;
-  }
-  }
+  p.k23 = section.k23;
+  p.k13 = section.k13;
   return p;
 }
 

@@ -88,6 +88,11 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   case ElementType::T3D2:
     return make_truss_kernel(ctx);
   case ElementType::B31:
+  case ElementType::B32:
+  case ElementType::B21:
+  case ElementType::B22:
+  case ElementType::PIPE31:
+  case ElementType::PIPE32:
     return make_beam_kernel(ctx);
   case ElementType::T2D2T:
   case ElementType::T3D2T:

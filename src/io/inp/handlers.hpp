@@ -48,6 +48,8 @@ void handle_physical_constants(BuildState& s, const Keyword& kw);
 void handle_solid_section(BuildState& s, const Keyword& kw);
 void handle_section_controls(BuildState& s, const Keyword& kw);
 void handle_beam_section(BuildState& s, const Keyword& kw);
+void handle_beam_general_section(BuildState& s, const Keyword& kw);
+void handle_transverse_shear(BuildState& s, const Keyword& kw);
 void handle_spring(BuildState& s, const Keyword& kw);
 ///@}
 

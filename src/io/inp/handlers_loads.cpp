@@ -129,7 +129,7 @@ void merge_dloads(BuildState& s, const Keyword& kw, std::vector<DistributedLoad>
       [&](const DistributedLoad& d) { return d.loc.keyword == family; },
       [](const DistributedLoad& d) {
         int axis = -1;
-        if (d.kind == DistLoadKind::BodyForce)
+        if (d.kind == DistLoadKind::BodyForce || d.kind == DistLoadKind::LineLoad)
           for (int i = 0; i < 3; ++i)
             if (d.direction[i] != 0.0) axis = i;
         return std::tuple(d.elem, static_cast<int>(d.kind), d.face, axis);
@@ -145,6 +145,24 @@ void require_displacement(const BuildState& s, const FieldReader& r, ElemId e) {
   if (!element_info(s.model.mesh.elem_types[e]).displacement)
     r.fail(elem_entity(s, e),
            "this element has no displacement DOFs, so it cannot take a mechanical load");
+}
+
+/// A distributed load on a beam: P1/P2 (local n1/n2), PX/PY/PZ (global), GRAV, BX/BY/BZ.
+DistributedLoad beam_dload(const BuildState& s, const FieldReader& r, ElemId e, DistributedLoad d,
+                           const std::string& label) {
+  d.elem = e;
+  const bool planar = element_info(s.model.mesh.elem_types[e]).space == SpaceRequirement::Planar;
+  if (d.kind == DistLoadKind::Pressure) {
+    if (d.face > 2 || (planar && d.face == 1))
+      r.fail(elem_entity(s, e),
+             fmt::format("{} is not a beam load; beams in space take P1 and P2 (force per length "
+                         "along the section's n1 and n2), planar beams P2",
+                         label));
+    d.kind = DistLoadKind::LineLoad;
+  } else if (d.kind == DistLoadKind::LineLoad && planar && d.direction[2] != 0.0) {
+    r.fail(elem_entity(s, e), "PZ acts out of the plane of a planar beam; use PX or PY");
+  }
+  return d;
 }
 
 } // namespace
@@ -286,6 +304,10 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
       d.kind = DistLoadKind::BodyForce;
       d.direction[label[1] - 'X'] = 1.0;
+    } else if (label == "PX" || label == "PY" || label == "PZ") {
+      r.at_most(3, "element or element set, PX/PY/PZ, magnitude");
+      d.kind = DistLoadKind::LineLoad;
+      d.direction[label[1] - 'X'] = 1.0;
     } else if (const int face = face_of(label, "P"); face > 0) {
       r.at_most(3, "element or element set, Pn, magnitude");
       d.kind = DistLoadKind::Pressure;
@@ -296,10 +318,21 @@ void handle_dload(BuildState& s, const Keyword& kw) {
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
-             "BY or BZ");
+             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV)");
     }
     for (ElemId e : elems) {
       const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+      if (info.family == ElementFamily::Beam) {
+        loads.push_back(beam_dload(s, r, e, d, label));
+        continue;
+      }
+      if (d.kind == DistLoadKind::LineLoad) {
+        if (single)
+          r.fail(elem_entity(s, e), fmt::format("{} is a load per unit length on beams; use P "
+                                                "(pressure on a face), GRAV or BX/BY/BZ here",
+                                                label));
+        continue;
+      }
       if (d.kind != DistLoadKind::Pressure) {
         // body loads act on elements with volume; springs, gaps and heat-only elements in a set are
         // skipped, named alone they are an error

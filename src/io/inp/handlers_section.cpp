@@ -109,41 +109,87 @@ void handle_section_controls(BuildState& s, const Keyword& kw) {
   s.model.section_controls.push_back(std::move(c));
 }
 
-void handle_beam_section(BuildState& s, const Keyword& kw) {
-  BeamSection sec;
-  sec.elset = set_param(s, kw, "ELSET", true);
-  const std::string material = name_param(kw, "MATERIAL", true);
-  const int shape = enum_param(kw, "SECTION", {"RECT", "CIRC", "PIPE"}, -1);
-  if (shape < 0) param_value(kw, "SECTION", true); // throws "SECTION= is required"
-  sec.shape = shape == 0   ? BeamSection::Shape::Rect
-              : shape == 1 ? BeamSection::Shape::Circ
-                           : BeamSection::Shape::Pipe;
+namespace {
+
+/// Data lines by position (a blank line keeps its place: "blank line for the default"), without
+/// the blank lines that trail the keyword's data.
+std::vector<const DataLine*> positional_lines(const Keyword& kw) {
+  std::vector<const DataLine*> out;
+  for (const auto& d : kw.data) out.push_back(&d);
+  while (!out.empty() && out.back()->empty()) out.pop_back();
+  return out;
+}
+
+struct ShapeSpec {
+  const char* name;
+  BeamSection::Shape shape;
+  std::initializer_list<const char*> dims;
+  std::size_t first_positive; ///< dimensions before this one may be zero or negative (I: l)
+};
+
+const ShapeSpec kShapes[] = {
+    {"RECT", BeamSection::Shape::Rect, {"width a", "height b"}, 0},
+    {"CIRC", BeamSection::Shape::Circ, {"radius r"}, 0},
+    {"PIPE", BeamSection::Shape::Pipe, {"outer radius r", "wall thickness t"}, 0},
+    {"BOX", BeamSection::Shape::Box, {"width a", "height b", "t1", "t2", "t3", "t4"}, 0},
+    {"I", BeamSection::Shape::I, {"offset l", "height h", "b1", "b2", "t1", "t2", "t3"}, 1},
+    {"GENERAL", BeamSection::Shape::General, {"A", "I11", "I12", "I22", "J"}, 5},
+};
+
+std::string dim_list(const ShapeSpec& sp) {
+  std::string out;
+  for (const char* d : sp.dims) out += (out.empty() ? "" : ", ") + std::string(d);
+  return out;
+}
+
+/// SECTION=, the dimensions and the n1 line shared by *BEAM SECTION and *BEAM GENERAL SECTION.
+void read_beam_geometry(BuildState& s, const Keyword& kw, BeamSection& sec, bool general) {
+  std::vector<std::string_view> names;
+  for (const auto& sp : kShapes)
+    if (general || sp.shape != BeamSection::Shape::General) names.push_back(sp.name);
+  std::string choices;
+  for (auto n : names) choices += (choices.empty() ? "" : ", ") + std::string(n);
+  const std::string given = param_value(kw, "SECTION", !general);
+  const ShapeSpec* spec = general && given.empty() ? &kShapes[5] : nullptr;
+  for (const auto& sp : kShapes)
+    if (!given.empty() && canonical(given) == sp.name &&
+        (general || sp.shape != BeamSection::Shape::General))
+      spec = &sp;
+  if (spec == nullptr) {
+    const std::string c = canonical(given);
+    const bool known = c == "L" || c == "HEX" || c == "TRAPEZOID" || c == "ARBITRARY" ||
+                       c == "THICKPIPE" || c == "ELBOW" || c == "MESHED" || c == "NONLINEARGENERAL";
+    throw InputError(kw.loc, fmt::format("SECTION={}", given),
+                     fmt::format("{}gapfem's beam sections are {}", known ? "this section is not "
+                                                                        "available in gapfem; "
+                                                                      : "unknown section; ",
+                                 choices));
+  }
+  sec.shape = spec->shape;
   sec.loc = kw.loc;
-  const auto lines = lines_of(kw);
-  if (lines.empty())
-    throw InputError(
-        kw.loc, fmt::format("ELSET={}", sec.elset),
-        "the section dimensions are missing; add a data line (RECT: a, b; CIRC: r; PIPE: r, t)");
+  const auto lines = positional_lines(kw);
+  if (lines.empty() || lines[0]->empty())
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     fmt::format("the section dimensions are missing; add a data line with {}",
+                                 dim_list(*spec)));
   const FieldReader r = s.reader(kw, *lines[0]);
-  const char* names[3][2] = {
-      {"width a", "height b"}, {"radius r", ""}, {"outer radius r", "wall thickness t"}};
-  const int n_dims = sec.shape == BeamSection::Shape::Circ ? 1 : 2;
-  r.at_most(static_cast<std::size_t>(n_dims), shape == 0   ? "a, b"
-                                              : shape == 1 ? "r"
-                                                           : "outer radius r, wall thickness t");
-  for (int i = 0; i < n_dims; ++i) {
-    const double v = r.real(static_cast<std::size_t>(i), names[shape][i]);
-    if (v <= 0)
-      r.fail(fmt::format("field {} ({})", i + 1, names[shape][i]),
+  r.at_most(spec->dims.size(), dim_list(*spec));
+  std::size_t i = 0;
+  for (const char* name : spec->dims) {
+    const bool optional = spec->shape == BeamSection::Shape::General && i >= 2;
+    const double v = optional ? r.real_or(i, 0.0, name) : r.real(i, name);
+    if (i >= spec->first_positive && v <= 0)
+      r.fail(fmt::format("field {} ({})", i + 1, name),
              fmt::format("section dimensions must be positive, not {}", v));
     sec.dims.push_back(v);
+    ++i;
   }
   if (sec.shape == BeamSection::Shape::Pipe && sec.dims[1] >= sec.dims[0])
     r.fail("field 2 (wall thickness t)",
            fmt::format("the wall thickness {} must be smaller than the outer radius {} (use "
                        "SECTION=CIRC for a solid circle)",
                        sec.dims[1], sec.dims[0]));
-  if (lines.size() > 1) {
+  if (lines.size() > 1 && !lines[1]->empty()) {
     const FieldReader r2 = s.reader(kw, *lines[1]);
     r2.at_most(3, "n1 direction x, y, z");
     const Vec3 n{r2.real_or(0, 0.0, "n1 x"), r2.real_or(1, 0.0, "n1 y"),
@@ -153,9 +199,108 @@ void handle_beam_section(BuildState& s, const Keyword& kw) {
     sec.n1 = n;
     sec.n1_given = true;
   }
-  extra_lines_warning(s, kw, 2);
+}
+
+/// Runs `read`; when it throws, the section is still registered (marked invalid) so that its
+/// elements report nothing more (no false "has no section"), then the error goes on.
+template <class F>
+void guarded(BuildState& s, BeamSection& sec, const std::string& material, F&& read) {
+  try {
+    read();
+  } catch (const InputError&) {
+    sec.invalid = true;
+    s.model.beam_sections.push_back(sec);
+    s.beam_material.push_back(material);
+    throw;
+  }
+}
+
+void check_temperature_param(const Keyword& kw) {
+  if (enum_param(kw, "TEMPERATURE", {"GRADIENTS", "VALUES"}, 0) == 1)
+    throw InputError(kw.loc, "TEMPERATURE=VALUES",
+                     "gapfem takes beam temperatures as the value at the section origin "
+                     "(TEMPERATURE=GRADIENTS, the default); remove the parameter");
+}
+
+} // namespace
+
+void handle_beam_section(BuildState& s, const Keyword& kw) {
+  s.beam_section_ok = false;
+  BeamSection sec;
+  sec.loc = kw.loc;
+  sec.elset = set_param(s, kw, "ELSET", true);
+  const std::string material = name_param(kw, "MATERIAL", true);
+  check_temperature_param(kw);
+  guarded(s, sec, material, [&] { read_beam_geometry(s, kw, sec, false); });
+  const auto lines = positional_lines(kw);
+  if (lines.size() > 2)
+    s.warn(s.loc(kw, *lines[2]),
+           "the number of section integration points has no effect in gapfem: elastic sections "
+           "are integrated exactly and stresses are reported at the section's corner points");
+  if (lines.size() > 3)
+    s.warn(s.loc(kw, *lines[3]),
+           "*BEAM SECTION uses at most 3 data lines here; the data from this line on was ignored");
   s.model.beam_sections.push_back(std::move(sec));
   s.beam_material.push_back(material);
+  s.beam_section_ok = true;
+}
+
+void handle_beam_general_section(BuildState& s, const Keyword& kw) {
+  s.beam_section_ok = false;
+  reject_param(kw, "DEPENDENCIES", "give constant section properties");
+  BeamSection sec;
+  sec.loc = kw.loc;
+  sec.elset = set_param(s, kw, "ELSET", true);
+  sec.general = true;
+  if (const auto rho = real_param(kw, "DENSITY")) {
+    if (!(*rho > 0.0))
+      throw InputError(kw.loc, "DENSITY", fmt::format("must be positive, not {}", *rho));
+    sec.density = *rho;
+  }
+  guarded(s, sec, "", [&] { read_beam_geometry(s, kw, sec, true); });
+  const auto lines = positional_lines(kw);
+  if (lines.size() < 3 || lines[2]->empty())
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "the elastic constants are missing; give Young's modulus E, the torsional "
+                     "shear modulus G and (optionally) the thermal expansion coefficient on the "
+                     "third data line (leave the second blank for the default n1 direction)");
+  const FieldReader r = s.reader(kw, *lines[2]);
+  r.at_most(3, "E, G, alpha");
+  sec.E = r.real(0, "Young's modulus E");
+  sec.G = r.real(1, "shear modulus G");
+  sec.alpha = r.real_or(2, 0.0, "thermal expansion coefficient");
+  if (!(sec.E > 0.0)) r.fail("field 1 (E)", fmt::format("must be positive, not {}", sec.E));
+  if (!(sec.G > 0.0)) r.fail("field 2 (G)", fmt::format("must be positive, not {}", sec.G));
+  if (lines.size() > 3)
+    s.warn(s.loc(kw, *lines[3]), "*BEAM GENERAL SECTION uses at most 3 data lines here; the data "
+                                 "from this line on was ignored");
+  check_temperature_param(kw);
+  s.model.beam_sections.push_back(std::move(sec));
+  s.beam_material.emplace_back();
+  s.beam_section_ok = true;
+}
+
+void handle_transverse_shear(BuildState& s, const Keyword& kw) {
+  if (s.model.beam_sections.empty() || !s.beam_section_ok) return; // its section was reported
+  BeamSection& sec = s.model.beam_sections.back();
+  const auto lines = lines_of(kw);
+  if (lines.empty())
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "give K23, K13 and optionally the slenderness compensation factor");
+  const FieldReader r = s.reader(kw, *lines[0]);
+  r.at_most(3, "K23, K13, slenderness compensation factor");
+  const double k23 = r.real_or(0, 0.0, "K23"), k13 = r.real_or(1, 0.0, "K13");
+  if (k23 < 0 || k13 < 0)
+    r.fail("K23, K13", fmt::format("shear stiffnesses must be positive, not {}, {}", k23, k13));
+  sec.k23 = k23;
+  sec.k13 = k13;
+  if (!r.blank(2)) {
+    const double scf = r.real(2, "slenderness compensation factor");
+    if (scf < 0) r.fail("field 3 (slenderness compensation factor)",
+                        fmt::format("must not be negative, not {}", scf));
+    sec.slenderness = scf;
+  }
+  extra_lines_warning(s, kw, 1);
 }
 
 void handle_spring(BuildState& s, const Keyword& kw) {

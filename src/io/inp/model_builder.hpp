@@ -33,6 +33,7 @@ enum class Parent : std::uint8_t {
   HistoryOutput,
   ChangeFriction,
   Coupling,
+  BeamSection,
   /// after an unsupported block keyword (*SURFACE INTERACTION): its sub-options are skipped
   /// quietly (the block was reported), never attached to an earlier block
   Unsupported
@@ -79,6 +80,8 @@ struct BuildState {
   std::vector<std::string> solid_controls;    ///< per solid section: CONTROLS= name or empty
   std::map<std::string, int> controls_index;  ///< upper-case name → Model::section_controls
   std::vector<std::string> beam_material;     ///< per beam section: material name
+  /// the last *BEAM (GENERAL) SECTION was read without error (its sub-options may attach to it)
+  bool beam_section_ok = false;
   /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
   /// of the ELSET are known.
   std::vector<DataLine> spring_dof_line;

@@ -289,7 +289,9 @@ void finish_model_data(BuildState& s) {
                               c, c));
       }
     for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
-      m.beam_sections[i].material = resolve_material(s, s.beam_material[i], m.beam_sections[i].loc);
+      if (!m.beam_sections[i].general && !m.beam_sections[i].invalid) // GENERAL: own constants
+        m.beam_sections[i].material =
+            resolve_material(s, s.beam_material[i], m.beam_sections[i].loc);
 
     m.element_property.assign(static_cast<std::size_t>(m.mesh.n_elements()), PropertyRef{});
     std::vector<SourceLocation> owner(static_cast<std::size_t>(m.mesh.n_elements()));

@@ -16,12 +16,13 @@ constexpr unsigned kGap = bit(Parent::Gap);
 constexpr unsigned kOutput = bit(Parent::FieldOutput) | bit(Parent::HistoryOutput);
 constexpr unsigned kFriction = bit(Parent::Gap) | bit(Parent::ChangeFriction);
 constexpr unsigned kCoupling = bit(Parent::Coupling);
+constexpr unsigned kBeam = bit(Parent::BeamSection);
 
 using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 101> kTable = {{
+constexpr std::array<KeywordSpec, 103> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -47,7 +48,9 @@ constexpr std::array<KeywordSpec, 101> kTable = {{
   {"*SECTION CONTROLS", handle_section_controls, W::Model,
    "NAME|HOURGLASS|DISTORTION CONTROL|LENGTH RATIO|KINEMATIC SPLIT|SECOND ORDER ACCURACY|"
    "ELEMENT DELETION|MAX DEGRADATION|VISCOSITY"},
-  {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION"},
+  {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION|TEMPERATURE", 0, P::BeamSection},
+  {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE", 0, P::BeamSection},
+  {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kBeam},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
   {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
   {"*INITIAL CONDITIONS", handle_initial_conditions, W::Model, "TYPE"},
@@ -149,6 +152,8 @@ std::string parent_names(unsigned parents) {
   if (parents == kGap) return "*GAP (it defines a property of the gap elements above it)";
   if (parents == kOutput) return "*OUTPUT inside a step";
   if (parents == kCoupling) return "*COUPLING (it defines the coupling above it)";
+  if (parents == kBeam)
+    return "*BEAM SECTION or *BEAM GENERAL SECTION (it defines a property of the section above it)";
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 

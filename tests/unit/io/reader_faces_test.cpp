@@ -72,6 +72,8 @@ std::string property_for(const ElementTypeInfo& info) {
     return "*SPRING, ELSET=E\n" + dofs + "\n100.\n";
   }
   case ElementFamily::Beam:
+    if (info.type == ElementType::PIPE31 || info.type == ElementType::PIPE32)
+      return material + "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=PIPE\n1., 0.1\n";
     return material + "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=RECT\n1., 2.\n0., 0., -1.\n";
   case ElementFamily::Gap:
     // GAPCYL needs an axis (z), GAPSPHER a non-zero diameter; the others a direction (x).

@@ -192,10 +192,15 @@ TEST(ReaderMaterial, BeamSections) {
   const Model c = read(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.1\n");
   EXPECT_EQ(c.beam_sections[0].shape, BeamSection::Shape::Circ);
 
+  // an error in the section is the only error (no "element has no section" after it)
+  const std::string bad_i =
+      error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=I\n1,2,3,4,5\n");
+  EXPECT_CONTAINS(bad_i, "deck.inp:10: *BEAM SECTION: field 6 (t2): this value is required");
+  EXPECT_EQ(bad_i.find("has no section"), std::string::npos) << bad_i;
   EXPECT_CONTAINS(
-      error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=I\n1,2,3,4,5\n"),
-      "deck.inp:9: *BEAM SECTION: SECTION=I: this value is not supported by gapfem; use "
-      "one of: RECT, CIRC, PIPE");
+      error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=HEX\n1,0.1\n"),
+      "deck.inp:9: *BEAM SECTION: SECTION=HEX: this section is not available in gapfem; "
+      "gapfem's beam sections are RECT, CIRC, PIPE, BOX, I");
   EXPECT_CONTAINS(error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M\n1,2\n"),
                   "SECTION= is required");
   EXPECT_CONTAINS(

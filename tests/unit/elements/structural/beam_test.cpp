@@ -332,23 +332,6 @@ TEST(StructuralBeam, N1ParallelToTheAxisFailsValidation) {
   EXPECT_EQ(ok.k->validate(ok.local().input()), "");
 }
 
-TEST(StructuralBeam, NlgeomIsAnInputErrorWithTheRequiredMessage) {
-  TestModel tm;
-  const NodeId a = tm.add_node({0, 0, 0}), b = tm.add_node({1, 0, 0});
-  const ElemId e = tm.add_element(
-      ElementType::B31, {a, b}, tm.add_beam_section(tm.add_material(kE, kNu), Shape::Circ, {0.1}));
-  Step step;
-  step.nlgeom = true;
-  step.loc = {"test.inp", 30, "*STEP"};
-  tm.model.steps.push_back(step);
-  try {
-    tm.kernel(e);
-    ADD_FAILURE() << "B31 with NLGEOM accepted";
-  } catch (const InputError& err) {
-    EXPECT_EQ(err.message(), "B31 with NLGEOM is not available yet; run the step without NLGEOM");
-    EXPECT_EQ(err.location().line, 30);
-  }
-}
 
 } // namespace
 } // namespace gapfem::structural_test

@@ -1,0 +1,148 @@
+#include "elements/structural/beam_element.hpp"
+
+#include "elements/structural/beam_loads.hpp"
+#include "elements/structural/structural_common.hpp"
+#include "elements/structural/structural_factory.hpp"
+#include "model/model.hpp"
+
+#include <fmt/format.h>
+
+namespace gapfem::beam {
+
+using namespace structural;
+
+namespace {
+
+bool is_pipe(ElementType t) {
+  return t == ElementType::PIPE31 || t == ElementType::PIPE32;
+}
+
+/// The material of a *BEAM GENERAL SECTION: its E, G, alpha and DENSITY as constant tables.
+Material general_material(const BeamSection& sec) {
+  Material m;
+  m.name = fmt::format("of *BEAM GENERAL SECTION, ELSET={}", sec.elset);
+  m.loc = sec.loc;
+  m.elastic.n_values = 2;
+  m.elastic.values = {sec.E, sec.E / (2.0 * sec.G) - 1.0};
+  if (sec.alpha != 0.0) {
+    m.expansion.n_values = 1;
+    m.expansion.values = {sec.alpha};
+  }
+  if (sec.density > 0.0) {
+    m.density.n_values = 1;
+    m.density.values = {sec.density};
+  }
+  return m;
+}
+
+void check_general_density(const KernelContext& ctx, const BeamSection& sec) {
+  if (sec.density > 0.0) return;
+  for (const Step& step : ctx.model.steps)
+    for (const DistributedLoad& load : step.dloads)
+      if (load.kind == DistLoadKind::Gravity && load.elem >= 0 &&
+          ctx.model.element_property[load.elem].kind == ctx.property.kind &&
+          ctx.model.element_property[load.elem].index == ctx.property.index)
+        throw InputError(load.loc, fmt::format("element {}", ctx.model.element_label(load.elem)),
+                         fmt::format("GRAV needs the mass density of the beam section; add "
+                                     "DENSITY=<rho> to *BEAM GENERAL SECTION, ELSET={}",
+                                     sec.elset));
+}
+
+} // namespace
+
+BeamData beam_data(const KernelContext& ctx) {
+  const Model& model = ctx.model;
+  const BeamSection& sec = beam_section_of(ctx);
+  const std::string entity = fmt::format("*BEAM SECTION, ELSET={}", sec.elset);
+  const std::string_view name = element_info(ctx.type).name;
+  const bool planar = element_info(ctx.type).space == SpaceRequirement::Planar;
+  BeamData d;
+  d.type = ctx.type;
+  d.pipe = is_pipe(ctx.type);
+  d.section = beam_section_properties(sec, planar);
+  d.slenderness = sec.slenderness;
+  if (d.pipe && sec.shape != BeamSection::Shape::Pipe)
+    throw InputError(sec.loc, entity,
+                     fmt::format("{} elements are pipes and need SECTION=PIPE; use B31/B32 for "
+                                 "other sections",
+                                 name));
+  if (planar) {
+    const Vec3& n = sec.n1;
+    if (sec.n1_given && !(n[0] == 0.0 && n[1] == 0.0 && n[2] < 0.0))
+      throw InputError(sec.loc, entity,
+                       fmt::format("{} is a planar beam, whose n1 direction is always (0, 0, -1); "
+                                   "remove the second data line or give 0, 0, -1",
+                                   name));
+    d.n1a = {0.0, 0.0, -1.0};
+  } else {
+    d.n1a = sec.n1;
+  }
+  if (sec.general) {
+    d.material = general_material(sec);
+    check_general_density(ctx, sec);
+  } else {
+    d.material = section_material(model, sec.material, sec.loc, entity);
+    check_density_for_gravity(ctx, d.material);
+  }
+  return d;
+}
+
+bool beam_supports_load(DistLoadKind kind, int face, bool planar) {
+  switch (kind) {
+  case DistLoadKind::Gravity:
+  case DistLoadKind::BodyForce:
+    return face == 0;
+  case DistLoadKind::LineLoad:
+    return face == 0 || face == 2 || (face == 1 && !planar);
+  default:
+    return false;
+  }
+}
+
+Vec3 dead_intensity(const BeamLoadInput& li, int p) {
+  const DistributedLoad& load = li.load;
+  if (load.kind == DistLoadKind::LineLoad) {
+    if (load.face == 0) return scale(li.magnitude, load.direction);
+    return scale(li.magnitude, li.g.pts[p].L0[load.face]);
+  }
+  const double w = line_load_intensity(li.b.material, li.b.section.A, load, li.magnitude,
+                                       average(li.in.temperature), li.in.label);
+  return scale(w, load.direction);
+}
+
+void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e,
+                         ElementRecovery& out) {
+  const int np = static_cast<int>(e.size());
+  static constexpr int kPlanarSF[3] = {0, 1, 3};
+  OutputBlock& sf = o.planar ? add_block(out, ElemVar::SF, kBeamSF2D, np)
+                             : add_block(out, ElemVar::SF, kBeamSF, np);
+  const int nsf = o.planar ? 3 : 6;
+  for (int p = 0; p < np; ++p) {
+    std::array<double, 6> s{};
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) s[i] += o.D[6 * i + j] * (e[p][j] - o.initial[j]);
+    for (int c = 0; c < nsf; ++c) sf.values[p * nsf + c] = s[o.planar ? kPlanarSF[c] : c];
+  }
+  const BeamSectionProperties& sec = o.section;
+  if (sec.n_points == 0) return;
+  // add both blocks before taking references: a second add_block may reallocate the first
+  add_block(out, ElemVar::S, kBeamS, np * sec.n_points);
+  add_block(out, ElemVar::E, kBeamE, np * sec.n_points);
+  OutputBlock& S = out.blocks[out.blocks.size() - 2];
+  OutputBlock& E = out.blocks.back();
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < sec.n_points; ++k) {
+      const double x1 = sec.points[k][0], x2 = sec.points[k][1];
+      // fibre strain eps + kappa_1 x2 - kappa_2 x1 (docs/theory/structural.md §3.5)
+      const double e11 = e[p][0] + e[p][3] * x2 - e[p][4] * x1;
+      const double e0 = o.initial[0] + o.initial[3] * x2 - o.initial[4] * x1;
+      const double e12 = e[p][5] * sec.torsion_radius[k]; // engineering shear strain
+      const int row = p * sec.n_points + k;
+      E.values[2 * row] = e11;
+      E.values[2 * row + 1] = e12;
+      S.values[2 * row] = o.E * (e11 - e0);
+      S.values[2 * row + 1] = o.G * e12;
+    }
+}
+
+} // namespace gapfem::beam

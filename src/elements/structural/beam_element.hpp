@@ -1,0 +1,123 @@
+#pragma once
+/// @file beam_element.hpp
+/// What the beam kernels share outside their templated energy: the block's data (material,
+/// section, orientation), the reference geometry of the integration points, and the output of
+/// section forces and section-point stresses.
+#include "elements/element_kernel.hpp"
+#include "elements/structural/beam_kinematics.hpp"
+#include "elements/structural/beam_section.hpp"
+#include "model/material.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <span>
+#include <string>
+
+namespace gapfem::beam {
+
+/// Everything a beam block's kernel evaluates with.
+struct BeamData {
+  ElementType type = ElementType::B31;
+  Material material; ///< of *BEAM SECTION, or made from the constants of *BEAM GENERAL SECTION
+  BeamSectionProperties section;
+  Vec3 n1a{0.0, 0.0, -1.0};  ///< approximate n1 direction
+  double slenderness = -1.0; ///< SCF of *TRANSVERSE SHEAR STIFFNESS (-1: gapfem's default)
+  bool pipe = false;         ///< PIPE31/PIPE32
+};
+
+/// The block's data from its section; InputError for wrong combinations.
+BeamData beam_data(const KernelContext& ctx);
+
+/// Reference geometry of the element's integration points.
+struct BeamGeometry {
+  int n_points = 1;
+  std::array<BeamPoint, 2> pts{};
+  double length = 0.0; ///< reference arc length
+};
+
+/// Shape functions (Abaqus node order: end, [middle,] end) and d/dxi at xi.
+template <int NN> void line_shape(double xi, std::array<double, 3>& N, std::array<double, 3>& dN) {
+  if constexpr (NN == 2) {
+    N = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi), 0.0};
+    dN = {-0.5, 0.5, 0.0};
+  } else {
+    N = {0.5 * xi * (xi - 1.0), 1.0 - xi * xi, 0.5 * xi * (xi + 1.0)};
+    dN = {xi - 0.5, -2.0 * xi, xi + 0.5};
+  }
+}
+
+/// Geometry with one point (two nodes) or two Gauss points (three nodes). When `why` is given,
+/// a degenerate element (zero length, folded, n1 along the axis) sets the sentence to report.
+template <int NN>
+BeamGeometry beam_geometry(std::span<const Vec3> X, const Vec3& n1a, double size,
+                           std::string* why) {
+  using rotation::cross3;
+  using rotation::dot3;
+  BeamGeometry g;
+  g.n_points = NN == 2 ? 1 : 2;
+  const double xg = 1.0 / std::sqrt(3.0);
+  const double xis[2] = {NN == 2 ? 0.0 : -xg, xg};
+  const double w = NN == 2 ? 2.0 : 1.0;
+  auto tangent = [&](double xi, std::array<double, 3>& N, std::array<double, 3>& dN) {
+    line_shape<NN>(xi, N, dN);
+    Vec3 d{};
+    for (int a = 0; a < NN; ++a)
+      for (int i = 0; i < 3; ++i) d[i] += dN[a] * X[a][i];
+    return d;
+  };
+  const Vec3 chord{X[NN - 1][0] - X[0][0], X[NN - 1][1] - X[0][1], X[NN - 1][2] - X[0][2]};
+  if (why != nullptr) {
+    std::array<double, 3> N{}, dN{};
+    for (double xi : {-1.0, 0.0, 1.0})
+      if (!(dot3(tangent(xi, N, dN), chord) > 1e-12 * size * std::sqrt(dot3(chord, chord)) &&
+            std::sqrt(dot3(chord, chord)) > 1e-12 * size)) {
+        *why = NN == 2 ? "the two nodes of this beam coincide, so it has no length; check the node "
+                         "coordinates"
+                       : "this beam has no length or folds back on itself (its middle node is not "
+                         "between its end nodes); check the node coordinates and the node order "
+                         "(end, middle, end)";
+        return g;
+      }
+  }
+  for (int p = 0; p < g.n_points; ++p) {
+    BeamPoint& bp = g.pts[p];
+    std::array<double, 3> dNxi{};
+    const Vec3 d = tangent(xis[p], bp.N, dNxi);
+    const double J = std::sqrt(dot3(d, d));
+    bp.weight = w * J;
+    g.length += bp.weight;
+    for (int a = 0; a < NN; ++a) bp.dN[a] = dNxi[a] / J;
+    const Vec3 t{d[0] / J, d[1] / J, d[2] / J};
+    bp.dX = t;
+    const Vec3 c = cross3(t, n1a);
+    const double cn = std::sqrt(dot3(c, c)), n1n = std::sqrt(dot3(n1a, n1a));
+    if (!(cn > 1e-6 * n1n)) {
+      if (why != nullptr)
+        *why = fmt::format("the approximate n1 direction ({}, {}, {}) of the beam section is "
+                           "parallel to the beam axis, so the cross-section orientation is "
+                           "undefined; give a different n1 direction on the second data line of "
+                           "the beam section",
+                           n1a[0], n1a[1], n1a[2]);
+      return g;
+    }
+    const Vec3 n2{c[0] / cn, c[1] / cn, c[2] / cn};
+    bp.L0 = {t, cross3(n2, t), n2};
+  }
+  return g;
+}
+
+/// What the output of one element needs.
+struct BeamOutput {
+  const std::array<double, 36>& D;
+  const std::array<double, 6>& initial;
+  double E = 0.0, G = 0.0;
+  const BeamSectionProperties& section;
+  bool planar = false;
+};
+
+/// SF (per integration point) and S, E (per integration point and section point) from the strains
+/// at the integration points.
+void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e,
+                         ElementRecovery& out);
+
+} // namespace gapfem::beam

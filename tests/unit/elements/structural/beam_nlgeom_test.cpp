@@ -1,0 +1,292 @@
+// Beams B21, B22, B31, B32, PIPE31 under NLGEOM and the new element layouts: exact tangent
+// (central differences of the residual at large, committed rotations), zero strain under rigid
+// motions of any size, rigid-mode count of the linear stiffness, NLGEOM = linear at the reference
+// state, the follower load stiffness of P1/P2, and the section library (BOX, I, GENERAL).
+#include "elements/structural/beam_section.hpp"
+#include "elements/structural/rotation.hpp"
+#include "structural_test_support.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+
+namespace gapfem::structural_test {
+namespace {
+
+using Shape = BeamSection::Shape;
+using rotation::Quat;
+using rotation::V3;
+constexpr double kE = 210e3, kNu = 0.3;
+
+/// One beam element of a type with its own start-of-increment values and committed rotations.
+struct OneElement {
+  TestModel tm;
+  ElemId e = -1;
+  std::unique_ptr<ElementKernel> k;
+  std::vector<Vec3> X;
+  std::vector<double> u, u0, q0; // trial, start of increment, committed quaternions (4 per node)
+  StepContext ctx;
+  int dpn = 6;
+
+  OneElement(ElementType type, std::vector<Vec3> nodes, Shape shape, std::vector<double> dims,
+             bool nlgeom) {
+    std::vector<NodeId> ids;
+    for (const Vec3& x : nodes) ids.push_back(tm.add_node(x));
+    const Vec3 n1 = element_info(type).space == SpaceRequirement::Planar ? Vec3{0, 0, -1}
+                                                                         : Vec3{0.3, 1.0, 0.2};
+    e = tm.add_element(type, ids, tm.add_beam_section(tm.add_material(kE, kNu), shape, dims, n1));
+    k = tm.kernel(e);
+    X = nodes;
+    dpn = static_cast<int>(k->node_dofs(0).size());
+    u.assign(static_cast<std::size_t>(k->n_dofs()), 0.0);
+    u0 = u;
+    q0.assign(static_cast<std::size_t>(4 * nodes.size()), 0.0);
+    for (std::size_t a = 0; a < nodes.size(); ++a) q0[4 * a] = 1.0;
+    ctx.nlgeom = nlgeom;
+    ctx.model_size = 1.0;
+  }
+  int rot0() const { return dpn == 3 ? 2 : 3; }
+  Evaluation eval(const std::vector<double>& uu) const {
+    ElementInput in;
+    in.label = EntityLabel{1};
+    in.X = X;
+    in.u = uu;
+    in.u_start = u0;
+    in.state_start = q0;
+    in.ctx = &ctx;
+    return evaluate(*k, in);
+  }
+  /// Gives node a the committed rotation vector v (start of the increment) and DOF values v.
+  void commit_rotation(int a, const V3<double>& v) {
+    const Quat<double> q = rotation::quat_exp(v);
+    q0[4 * a] = q.w, q0[4 * a + 1] = q.x, q0[4 * a + 2] = q.y, q0[4 * a + 3] = q.z;
+    for (int i = 0; i < (dpn == 3 ? 1 : 3); ++i) {
+      const double c = dpn == 3 ? v[2] : v[i];
+      u0[a * dpn + rot0() + i] = c;
+      u[a * dpn + rot0() + i] = c;
+    }
+  }
+};
+
+struct Layout {
+  ElementType type;
+  int nodes;
+};
+const Layout kLayouts[] = {{ElementType::B31, 2},
+                           {ElementType::B32, 3},
+                           {ElementType::B21, 2},
+                           {ElementType::B22, 3},
+                           {ElementType::PIPE31, 2}};
+
+std::vector<Vec3> nodes_of(const Layout& l) {
+  const bool planar = element_info(l.type).space == SpaceRequirement::Planar;
+  const Vec3 a{0.1, 0.2, 0.0}, b = planar ? Vec3{1.1, 0.6, 0.0} : Vec3{1.0, 0.5, 0.3};
+  if (l.nodes == 2) return {a, b};
+  // a slightly curved three-node element (middle node off the chord)
+  return {a, {0.5 * (a[0] + b[0]) + 0.05, 0.5 * (a[1] + b[1]) - 0.04, 0.5 * (a[2] + b[2])}, b};
+}
+
+Shape shape_of(ElementType t) {
+  return t == ElementType::PIPE31 ? Shape::Pipe : Shape::Rect;
+}
+std::vector<double> dims_of(ElementType t) {
+  return t == ElementType::PIPE31 ? std::vector<double>{0.08, 0.01}
+                                  : std::vector<double>{0.06, 0.1};
+}
+
+/// Central differences of the residual against the tangent.
+void expect_exact_tangent(const OneElement& el, const std::vector<double>& u, double tol) {
+  const Evaluation ev = el.eval(u);
+  const std::size_t n = ev.r.size();
+  double kmax = 0.0;
+  for (double v : ev.K) kmax = std::max(kmax, std::abs(v));
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < n; ++j) {
+    auto up = u, um = u;
+    up[j] += h;
+    um[j] -= h;
+    const Evaluation p = el.eval(up), m = el.eval(um);
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_NEAR(ev.K[i * n + j], (p.r[i] - m.r[i]) / (2 * h), tol * kmax)
+          << element_info(el.k->type()).name << " K(" << i << "," << j << ")";
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_NEAR(ev.K[i * n + j], ev.K[j * n + i], 1e-12 * kmax) << "symmetry";
+}
+
+TEST(StructuralBeamNlgeom, TangentIsExactAtLargeCommittedRotations) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (const Layout& l : kLayouts) {
+    OneElement el(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), true);
+    // committed rotations of about a radian, then a trial state well away from them
+    for (int a = 0; a < l.nodes; ++a)
+      el.commit_rotation(a, el.dpn == 3 ? V3<double>{0, 0, 0.9 + 0.2 * a}
+                                        : V3<double>{0.5 * U(rng), 0.8 + 0.1 * a, 0.4 * U(rng)});
+    std::vector<double> u = el.u;
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] += 0.15 * U(rng);
+    expect_exact_tangent(el, u, 2e-6);
+  }
+}
+
+TEST(StructuralBeamNlgeom, TangentIsExactNearTheReferenceState) {
+  // the series branches of the rotation functions (rotations below 0.2 rad)
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (const Layout& l : kLayouts) {
+    OneElement el(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), true);
+    std::vector<double> u = el.u;
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] += 1e-3 * U(rng);
+    expect_exact_tangent(el, u, 2e-6);
+  }
+}
+
+TEST(StructuralBeamNlgeom, RigidMotionsOfAnySizeAreStrainFree) {
+  for (const Layout& l : kLayouts) {
+    const bool planar = element_info(l.type).space == SpaceRequirement::Planar;
+    for (double angle : {0.3, 2.0, 3.0}) {
+      OneElement el(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), true);
+      const V3<double> psi =
+          planar ? V3<double>{0, 0, angle} : V3<double>{0.6 * angle, -0.48 * angle, 0.64 * angle};
+      const Quat<double> q = rotation::quat_exp(psi);
+      const Vec3 c{0.3, -0.7, planar ? 0.0 : 0.2};
+      std::vector<double> u = el.u;
+      for (int a = 0; a < l.nodes; ++a) {
+        const V3<double> x = rotation::rotate(q, el.X[a]);
+        for (int i = 0; i < (planar ? 2 : 3); ++i) u[a * el.dpn + i] = x[i] + c[i] - el.X[a][i];
+        if (planar)
+          u[a * el.dpn + 2] = angle;
+        else
+          for (int i = 0; i < 3; ++i) u[a * el.dpn + 3 + i] = psi[i];
+      }
+      const Evaluation ev = el.eval(u);
+      const Evaluation lin = el.eval(std::vector<double>(u.size(), 0.0));
+      double kmax = 0.0;
+      for (double v : lin.K) kmax = std::max(kmax, std::abs(v));
+      for (double r : ev.r) EXPECT_NEAR(r, 0.0, 1e-10 * kmax) << element_info(l.type).name;
+    }
+  }
+}
+
+TEST(StructuralBeamNlgeom, LinearStiffnessHasOnlyTheRigidModesAndEqualsNlgeomAtRest) {
+  for (const Layout& l : kLayouts) {
+    OneElement lin(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), false);
+    OneElement nl(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), true);
+    const Evaluation a = lin.eval(lin.u), b = nl.eval(nl.u);
+    const auto n = static_cast<int>(a.n);
+    Eigen::MatrixXd K(n, n);
+    double kmax = 0.0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        K(i, j) = a.k(i, j);
+        kmax = std::max(kmax, std::abs(K(i, j)));
+        EXPECT_NEAR(a.k(i, j), b.k(i, j), 1e-10 * std::abs(a.k(i, j)) + 1e-12 * kmax);
+      }
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
+    const int rigid = lin.dpn == 3 ? 3 : 6;
+    for (int i = 0; i < n; ++i) {
+      if (i < rigid)
+        EXPECT_LT(std::abs(ev(i)), 1e-9 * kmax) << element_info(l.type).name << " mode " << i;
+      else
+        EXPECT_GT(ev(i), 1e-9 * kmax) << element_info(l.type).name << " mode " << i;
+    }
+  }
+}
+
+TEST(StructuralBeamNlgeom, FollowerLineLoadStiffnessMatchesCentralDifferences) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (const Layout& l : kLayouts) {
+    OneElement el(l.type, nodes_of(l), shape_of(l.type), dims_of(l.type), true);
+    const bool planar = el.dpn == 3;
+    for (int a = 0; a < l.nodes; ++a)
+      el.commit_rotation(a, planar ? V3<double>{0, 0, 0.7} : V3<double>{0.2, 0.7, -0.3});
+    std::vector<double> u = el.u;
+    for (double& v : u) v += 0.1 * U(rng);
+    for (int face : {1, 2}) {
+      if (planar && face == 1) continue;
+      ASSERT_TRUE(el.k->supports_load(DistLoadKind::LineLoad, face));
+      DistributedLoad load;
+      load.kind = DistLoadKind::LineLoad;
+      load.face = face;
+      const auto n = static_cast<std::size_t>(el.k->n_dofs());
+      auto f_of = [&](const std::vector<double>& uu, std::vector<double>* K) {
+        ElementInput in;
+        in.X = el.X;
+        in.u = uu;
+        in.u_start = el.u0;
+        in.state_start = el.q0;
+        in.ctx = &el.ctx;
+        std::vector<double> f(n, 0.0), k(n * n, 0.0);
+        el.k->load(in, load, 2.5, 0.0, f, k);
+        if (K) *K = k;
+        return f;
+      };
+      std::vector<double> K;
+      const auto f0 = f_of(u, &K);
+      double fmax = 0.0;
+      for (double v : f0) fmax = std::max(fmax, std::abs(v));
+      ASSERT_GT(fmax, 0.0);
+      const double h = 1e-6;
+      for (std::size_t j = 0; j < n; ++j) {
+        auto up = u, um = u;
+        up[j] += h;
+        um[j] -= h;
+        const auto fp = f_of(up, nullptr), fm = f_of(um, nullptr);
+        for (std::size_t i = 0; i < n; ++i)
+          EXPECT_NEAR(K[i * n + j], -(fp[i] - fm[i]) / (2 * h), 1e-6 * fmax)
+              << element_info(l.type).name << " face " << face;
+      }
+    }
+  }
+}
+
+TEST(StructuralBeamSections, BoxIAndGeneralProperties) {
+  BeamSection box;
+  box.shape = Shape::Box;
+  box.dims = {0.2, 0.3, 0.01, 0.02, 0.01, 0.02}; // thin walls: mid-line 0.19 x 0.28
+  const auto b = beam_section_properties(box);
+  const double w = 0.19, h = 0.28;
+  EXPECT_NEAR(b.A, 2 * h * 0.01 + 2 * w * 0.02, 1e-14);
+  // I11 = 2 (t h^3 / 12) [webs] + 2 (t_f w) (h/2)^2 [flanges]
+  EXPECT_NEAR(b.I11, 2 * 0.01 * h * h * h / 12 + 2 * 0.02 * w * h * h / 4, 1e-14);
+  EXPECT_NEAR(b.I22, 2 * 0.02 * w * w * w / 12 + 2 * 0.01 * h * w * w / 4, 1e-14);
+  EXPECT_NEAR(b.Q1, 0.0, 1e-15);
+  EXPECT_NEAR(b.Q2, 0.0, 1e-15);
+  // Bredt: J = 4 A_m^2 / sum(L/t)
+  EXPECT_NEAR(b.J, 4 * w * w * h * h / (2 * h / 0.01 + 2 * w / 0.02), 1e-14);
+  EXPECT_DOUBLE_EQ(b.k, 0.44);
+
+  BeamSection I;
+  I.shape = Shape::I;
+  // l = 0.1 from the bottom face, h = 0.3, flanges 0.2 and 0.1 wide, t 0.02, 0.01, web 0.008
+  I.dims = {0.1, 0.3, 0.2, 0.1, 0.02, 0.01, 0.008};
+  const auto p = beam_section_properties(I);
+  const double yb = -0.1 + 0.01, yt = 0.3 - 0.1 - 0.005, Lw = yt - yb;
+  const double Ab = 0.2 * 0.02, At = 0.1 * 0.01, Aw = Lw * 0.008;
+  EXPECT_NEAR(p.A, Ab + At + Aw, 1e-15);
+  EXPECT_NEAR(p.Q2, Ab * yb + At * yt + Aw * 0.5 * (yb + yt), 1e-15);
+  EXPECT_NEAR(p.I11, Ab * yb * yb + At * yt * yt + 0.008 * (yt * yt * yt - yb * yb * yb) / 3,
+              1e-15);
+  EXPECT_NEAR(p.I22, 0.02 * std::pow(0.2, 3) / 12 + 0.01 * std::pow(0.1, 3) / 12, 1e-15);
+  EXPECT_NEAR(p.J, (0.2 * 8e-6 + 0.1 * 1e-6 + Lw * std::pow(0.008, 3)) / 3, 1e-18);
+  I.dims = {0.1, 0.02, 0.2, 0.1, 0.02, 0.01, 0.008}; // flanges thicker than the height
+  EXPECT_THROW(beam_section_properties(I), InputError);
+
+  BeamSection g;
+  g.shape = Shape::General;
+  g.dims = {2.5e-2, 1e-4, 2e-5, 1.5e-4, 3e-5};
+  const auto q = beam_section_properties(g);
+  EXPECT_EQ(q.A, 2.5e-2);
+  EXPECT_EQ(q.I12, 2e-5);
+  EXPECT_EQ(q.n_points, 0);
+  g.dims = {2.5e-2, 1e-4, 2e-4, 1.5e-4, 3e-5}; // I12^2 > I11 I22
+  EXPECT_THROW(beam_section_properties(g), InputError);
+  g.dims = {2.5e-2, 1e-4};
+  EXPECT_NO_THROW(beam_section_properties(g, true)); // planar: A, I11 suffice
+  EXPECT_THROW(beam_section_properties(g, false), InputError);
+}
+
+} // namespace
+} // namespace gapfem::structural_test
