@@ -3,8 +3,7 @@
 // Linear decks solve exactly up to round-off, so the tolerances are relative 1e-8 of the checked
 // quantity; the NLGEOM deck's free DOF stays at zero by symmetry and every other DOF is prescribed,
 // so its forces are exact functions of the prescribed motion and the same tolerance applies.
-#include "app/job.hpp"
-#include "model/model.hpp"
+#include "structural_deck_support.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -15,54 +14,6 @@
 namespace gapfem {
 namespace {
 
-constexpr double kRel = 1e-8;
-
-JobResult run_deck(const std::string& name) {
-  JobOptions opt{.deck =
-                     std::filesystem::path(GAPFEM_TEST_DIR) / "verification" / "structural" / name,
-                 .write_files = false,
-                 .quiet = true};
-  return run_job(opt);
-}
-
-/// Runs a deck and checks it completed; the last frame of step 1 is then `end`.
-struct DeckRun {
-  JobResult res;
-  const Frame* end = nullptr;
-  explicit DeckRun(const std::string& deck) : res(run_deck(deck)) {
-    EXPECT_EQ(res.exit_code, kExitOk) << res.error;
-    if (res.exit_code == kExitOk && res.model) end = res.step_end(1);
-  }
-  bool ok() const { return end != nullptr; }
-  const Model& model() const { return *res.model; }
-  NodeId node(Label label) const { return JobResult::node(model(), label); }
-  const Vec3& U(Label n) const { return end->nodes.U[node(n)]; }
-  const Vec3& UR(Label n) const { return end->nodes.UR[node(n)]; }
-  const Vec3& RF(Label n) const { return end->nodes.RF[node(n)]; }
-  /// Component `comp` at point `point` of output `var` of element `label` in frame f.
-  double el(const Frame& f, Label label, ElemVar var, int comp, int point = 0) const {
-    const ElemId e = model().mesh.find_element(label);
-    const ElementResult* r = f.element(e);
-    if (r == nullptr) {
-      ADD_FAILURE() << "no output for element " << label;
-      return NAN;
-    }
-    const OutputBlock* b = r->data.find(var);
-    if (b == nullptr) {
-      ADD_FAILURE() << "element " << label << " has no " << elem_var_name(var);
-      return NAN;
-    }
-    return b->values[static_cast<std::size_t>(point) * b->names.size() + comp];
-  }
-  double el(Label label, ElemVar var, int comp, int point = 0) const {
-    return el(*end, label, var, comp, point);
-  }
-};
-
-#define EXPECT_REL(actual, expected)                                                               \
-  EXPECT_NEAR((actual), (expected), kRel* std::max(1.0, std::abs(expected)))
-/// For small quantities: relative to a given scale.
-#define EXPECT_SCALED(actual, expected, scale) EXPECT_NEAR((actual), (expected), kRel*(scale))
 
 TEST(VerificationStructuralTruss, PlanarDeterminateTriangleAndThreeBarTruss) {
   DeckRun run("truss_2d.inp");
