@@ -56,11 +56,8 @@ class CholmodSolver final : public LinearSolver {
       const auto k = static_cast<LocalIndex>(_L->minor);
       std::vector<LocalIndex> eqs;
       if (k < _n) eqs.push_back(perm ? perm[k] : k);
-      // a non-zero diagonal where the pivot failed: indefinite (a negative diagonal, e.g. from
-      // the geometric stiffness of a beam rotated far in one Newton step, certainly is), which
-      // LU solves; a zero diagonal is a DOF without stiffness
       throw SingularSystem("the matrix is not positive definite", std::move(eqs),
-                           /*indefinite=*/k < _n && M.diagonal(eqs[0]) != 0.0);
+                           /*indefinite=*/k < _n && M.diagonal(eqs[0]) > 0);
     }
     check_pivots(M);
   }

@@ -47,19 +47,36 @@ SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int 
   D(4, 4, E * p.I22);
   D(5, 5, G * p.J);
   // transverse shear, with the slenderness compensation of two-node elements (beam.hpp)
-  const double K2i = p.k23 > 0.0 ? p.k23 : p.k * G * p.A;
-  const double K1i = p.k13 > 0.0 ? p.k13 : p.k * G * p.A;
-  // (a planar beam has no out-of-plane bending: I22 = 0 leaves K1, which no strain uses)
-  auto compensate = [&](double K, double I) {
-    if (!(I > 0.0)) return K;
-    if (b.slenderness >= 0.0) // Abaqus's f_p = 1 / (1 + xi SCF L^2 A / (12 I)), xi = 1 or 1e-4
-      return K / (1.0 + (n_nodes == 2 ? 1.0 : 1e-4) * b.slenderness * L * L * p.A / (12.0 * I));
-    return n_nodes == 2 ? K / (1.0 + K * L * L / (12.0 * E * I)) : K;
-  };
-  const double K2 = compensate(K2i, p.I11_centroid());
-  const double K1 = compensate(K1i, p.I22_centroid());
-  D(1, 1, K2);
-  D(2, 2, K1);
+  const double K2 = p.k23 > 0.0 ? p.k23 : p.k * G * p.A;
+  const double K1 = p.k13 > 0.0 ? p.k13 : p.k * G * p.A;
+  if (b.slenderness >= 0.0 || n_nodes != 2) {
+    // Abaqus's f_p = 1 / (1 + xi SCF L^2 A / (12 I)), xi = 1 (two nodes) or 1e-4 (three); a
+    // planar beam has no out-of-plane bending (I22 = 0): K1 is then unused
+    auto fp = [&](double K, double I) {
+      if (b.slenderness < 0.0 || !(I > 0.0)) return K;
+      const double xi = n_nodes == 2 ? 1.0 : 1e-4;
+      return K / (1.0 + xi * b.slenderness * L * L * p.A / (12.0 * I));
+    };
+    D(1, 1, fp(K2, p.I11_centroid()));
+    D(2, 2, fp(K1, p.I22_centroid()));
+  } else {
+    // exact prismatic two-node element: shear compliance plus the residual bending compliance
+    // L^2/12 of the centroidal bending compliance, coupled through I12 (docs/theory §3.2):
+    // F = diag(1/K2, 1/K1) + L^2 / (12 E det) [[I22, -I12], [-I12, I11]]
+    const double I11 = p.I11_centroid(), I22 = p.I22_centroid(), I12 = p.I12_centroid();
+    const double det = I11 * I22 - I12 * I12;
+    double F22 = 1.0 / K2, F11 = 1.0 / K1, F21 = 0.0;
+    if (I22 > 0.0 && det > 0.0) {
+      const double c = L * L / (12.0 * E * det);
+      F22 += c * I22, F11 += c * I11, F21 = -c * I12;
+    } else if (I11 > 0.0) { // planar: bending about n1 only
+      F22 += L * L / (12.0 * E * I11);
+    }
+    const double dF = F22 * F11 - F21 * F21;
+    D(1, 1, F11 / dF);
+    D(2, 2, F22 / dF);
+    D(1, 2, -F21 / dF);
+  }
   s.initial[0] = element_thermal_strain(b.material, in);
   return s;
 }

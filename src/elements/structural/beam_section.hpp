@@ -36,6 +36,7 @@ struct BeamSectionProperties {
   /// Centroidal second moments (for the shear-flexibility correction of two-node beams).
   double I11_centroid() const { return I11 - Q2 * Q2 / A; }
   double I22_centroid() const { return I22 - Q1 * Q1 / A; }
+  double I12_centroid() const { return I12 - Q1 * Q2 / A; }
 };
 
 /// Properties of a section; throws InputError at the section's line for missing, non-positive or

@@ -1,0 +1,78 @@
+// Linear cantilevers with the beam section library and the new element layouts; every answer is
+// the closed-form Timoshenko cantilever, which these elements reproduce at the nodes for any mesh
+// (two-node: exact prismatic stiffness; three-node with two points: exact for the cubic
+// deflection of a linearly varying moment and the quartic one of a uniform load).
+// E = 210000, nu = 0.3 (G = E / 2.6), L = 1000 along x, n1 = -z (so n2 = +y).
+#include "structural_deck_support.hpp"
+
+namespace gapfem {
+namespace {
+
+constexpr double E = 210000.0, G = E / 2.6, L = 1000.0;
+
+TEST(VerificationStructuralBeamSections, BoxIGeneralAndB32Cantilevers) {
+  DeckRun run("beam_sections.inp");
+  if (!run.ok()) return;
+  {
+    // BOX 100 x 200 (outer), walls 5, 10, 5, 10: thin-walled mid-line 95 x 190; tip Fy = 1000.
+    // A = 2 (190)(5) + 2 (95)(10); I11 = 2 (5)(190^3)/12 + 2 (10)(95)(95^2); k = 0.44.
+    const double w = 95.0, h = 190.0, A = 2 * h * 5 + 2 * w * 10;
+    const double I11 = 2 * 5 * h * h * h / 12 + 2 * 10 * w * h * h / 4;
+    const double uy = 1000 * L * L * L / (3 * E * I11) + 1000 * L / (0.44 * G * A);
+    EXPECT_REL(run.U(5)[1], uy);
+  }
+  {
+    // I: l = 50, h = 300, b1 = 150, b2 = 100, t1 = 12, t2 = 10, t3 = 8. Mid-lines: bottom flange
+    // y_b = -50 + 6, top y_t = 300 - 50 - 5, web between them. The node (section origin) lies
+    // ybar = -Q2 / A from the centroid (Q2 > 0: below it), so an axial tip force P at the node bends the beam:
+    // constant moment -P ybar about the centroid, curvature P ybar / (E Ic), and the node's
+    // axial displacement P L (1/(E A) + ybar^2 / (E Ic)).
+    const double yb = -44.0, yt = 245.0, Lw = yt - yb;
+    const double Ab = 150 * 12, At = 100 * 10, Aw = Lw * 8, A = Ab + At + Aw;
+    const double Q2 = Ab * yb + At * yt + Aw * 0.5 * (yb + yt);
+    const double I11 = Ab * yb * yb + At * yt * yt + 8 * (yt * yt * yt - yb * yb * yb) / 3;
+    const double ybar = Q2 / A, Ic = I11 - Q2 * Q2 / A, P = 10000.0;
+    EXPECT_REL(run.U(10)[0], P * L * (1 / (E * A) + ybar * ybar / (E * Ic)));
+    EXPECT_REL(run.U(10)[1], P * ybar * L * L / (2 * E * Ic));
+    EXPECT_REL(run.UR(10)[2], P * ybar * L / (E * Ic));
+  }
+  {
+    // GENERAL A = 2500, I11 = 4e6, I12 = 1e6, I22 = 2e6, G given, shear factor 1: unsymmetric
+    // bending under Fy = 1000. M1 = -F (L - x) about n1; the curvatures are
+    // [k1, k2] = (E [[I11, -I12], [-I12, I22]])^-1 [M1, 0], so with v2'' = -k1 (along n2 = y) and
+    // v1'' = k2 (along n1 = -z): u_y = F I22 L^3 / (3 E det) + F L / (G A),
+    // u_z = F I12 L^3 / (3 E det), det = I11 I22 - I12^2.
+    const double A = 2500, I11 = 4e6, I12 = 1e6, I22 = 2e6, det = I11 * I22 - I12 * I12;
+    const double Gg = 80769.23076923077, F = 1000.0;
+    EXPECT_REL(run.U(21)[1], F * I22 * L * L * L / (3 * E * det) + F * L / (Gg * A));
+    EXPECT_REL(run.U(21)[2], F * I12 * L * L * L / (3 * E * det));
+  }
+  {
+    // B32 (two elements), RECT 20 x 40, Fy = 1000: w = F L^3 / (3 E I) + F L / (0.85 G A),
+    // slope F L^2 / (2 E I).
+    const double A = 800, I = 20.0 * 64000.0 / 12.0;
+    EXPECT_REL(run.U(26)[1], 1000 * L * L * L / (3 * E * I) + 1000 * L / (0.85 * G * A));
+    EXPECT_REL(run.UR(26)[2], 1000 * L * L / (2 * E * I));
+  }
+}
+
+TEST(VerificationStructuralBeamSections, PlanarB21AndB22UnderUniformLoad) {
+  DeckRun run("beam_planar_load.inp");
+  if (!run.ok()) return;
+  // q = 2 along n2 = +y: w = q L^4 / (8 E I) + q L^2 / (2 k G A), slope q L^3 / (6 E I);
+  // the root shear force q L and moment q L^2 / 2 (SM1 about n1 = -z: -q (L - x)^2 / 2).
+  const double q = 2.0, A = 800, I = 20.0 * 64000.0 / 12.0;
+  for (Label tip : {5, 10}) {
+    EXPECT_REL(run.U(tip)[1], q * L * L * L * L / (8 * E * I) + q * L * L / (2 * 0.85 * G * A));
+    EXPECT_REL(run.UR(tip)[2], q * L * L * L / (6 * E * I));
+  }
+  EXPECT_REL(run.RF(1)[1], -q * L);
+  EXPECT_REL(run.RF(6)[1], -q * L);
+  // B21 element 1 (x in [0, 250]): SF2 = q (L - 125) at its point; the one-point element's moment
+  // EI (theta_B - theta_A) / l_e is the element's mean moment, -q (1000^3 - 750^3) / (6 * 250)
+  EXPECT_REL(run.el(1, ElemVar::SF, 1), q * 875.0);
+  EXPECT_REL(run.el(1, ElemVar::SF, 2), -q * (1e9 - 750.0 * 750.0 * 750.0) / (6 * 250.0));
+}
+
+} // namespace
+} // namespace gapfem
