@@ -222,6 +222,26 @@ void check_temperature_param(const Keyword& kw) {
                      "(TEMPERATURE=GRADIENTS, the default); remove the parameter");
 }
 
+/// Line 3 of *BEAM GENERAL SECTION: E, G, alpha.
+void read_general_constants(BuildState& s, const Keyword& kw, BeamSection& sec) {
+  const auto lines = positional_lines(kw);
+  if (lines.size() < 3 || lines[2]->empty())
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "the elastic constants are missing; give Young's modulus E, the torsional "
+                     "shear modulus G and (optionally) the thermal expansion coefficient on the "
+                     "third data line (leave the second blank for the default n1 direction)");
+  const FieldReader r = s.reader(kw, *lines[2]);
+  r.at_most(3, "E, G, alpha");
+  sec.E = r.real(0, "Young's modulus E");
+  sec.G = r.real(1, "shear modulus G");
+  sec.alpha = r.real_or(2, 0.0, "thermal expansion coefficient");
+  if (!(sec.E > 0.0)) r.fail("field 1 (E)", fmt::format("must be positive, not {}", sec.E));
+  if (!(sec.G > 0.0)) r.fail("field 2 (G)", fmt::format("must be positive, not {}", sec.G));
+  if (lines.size() > 3)
+    s.warn(s.loc(kw, *lines[3]), "*BEAM GENERAL SECTION uses at most 3 data lines here; the data "
+                                 "from this line on was ignored");
+}
+
 } // namespace
 
 void handle_beam_section(BuildState& s, const Keyword& kw) {
@@ -230,8 +250,10 @@ void handle_beam_section(BuildState& s, const Keyword& kw) {
   sec.loc = kw.loc;
   sec.elset = set_param(s, kw, "ELSET", true);
   const std::string material = name_param(kw, "MATERIAL", true);
-  check_temperature_param(kw);
-  guarded(s, sec, material, [&] { read_beam_geometry(s, kw, sec, false); });
+  guarded(s, sec, material, [&] {
+    check_temperature_param(kw);
+    read_beam_geometry(s, kw, sec, false);
+  });
   const auto lines = positional_lines(kw);
   if (lines.size() > 2)
     s.warn(s.loc(kw, *lines[2]),
@@ -252,29 +274,16 @@ void handle_beam_general_section(BuildState& s, const Keyword& kw) {
   sec.loc = kw.loc;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.general = true;
-  if (const auto rho = real_param(kw, "DENSITY")) {
-    if (!(*rho > 0.0))
-      throw InputError(kw.loc, "DENSITY", fmt::format("must be positive, not {}", *rho));
-    sec.density = *rho;
-  }
-  guarded(s, sec, "", [&] { read_beam_geometry(s, kw, sec, true); });
-  const auto lines = positional_lines(kw);
-  if (lines.size() < 3 || lines[2]->empty())
-    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
-                     "the elastic constants are missing; give Young's modulus E, the torsional "
-                     "shear modulus G and (optionally) the thermal expansion coefficient on the "
-                     "third data line (leave the second blank for the default n1 direction)");
-  const FieldReader r = s.reader(kw, *lines[2]);
-  r.at_most(3, "E, G, alpha");
-  sec.E = r.real(0, "Young's modulus E");
-  sec.G = r.real(1, "shear modulus G");
-  sec.alpha = r.real_or(2, 0.0, "thermal expansion coefficient");
-  if (!(sec.E > 0.0)) r.fail("field 1 (E)", fmt::format("must be positive, not {}", sec.E));
-  if (!(sec.G > 0.0)) r.fail("field 2 (G)", fmt::format("must be positive, not {}", sec.G));
-  if (lines.size() > 3)
-    s.warn(s.loc(kw, *lines[3]), "*BEAM GENERAL SECTION uses at most 3 data lines here; the data "
-                                 "from this line on was ignored");
-  check_temperature_param(kw);
+  guarded(s, sec, "", [&] {
+    if (const auto rho = real_param(kw, "DENSITY")) {
+      if (!(*rho > 0.0))
+        throw InputError(kw.loc, "DENSITY", fmt::format("must be positive, not {}", *rho));
+      sec.density = *rho;
+    }
+    check_temperature_param(kw);
+    read_beam_geometry(s, kw, sec, true);
+    read_general_constants(s, kw, sec);
+  });
   s.model.beam_sections.push_back(std::move(sec));
   s.beam_material.emplace_back();
   s.beam_section_ok = true;

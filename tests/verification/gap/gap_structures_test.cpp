@@ -251,3 +251,70 @@ TEST(VerificationGapStructures, GapInputErrorsNameTheElementAndTheRemedy) {
   EXPECT_NE(r3.error.find("9"), std::string::npos) << r3.error;
   EXPECT_NE(r3.error.find("*GAP"), std::string::npos) << r3.error;
 }
+
+namespace {
+// M2 with every beam layout: nodes at x = 0, h, 2h, … 9 (h = 1 for two-node, 0.5 for three-node
+// elements, so x = 3 is an element end), planar decks without z. Loads and clearance scaled by
+// `s`. The ends are held axially, so under NLGEOM the membrane force stiffens the beam by
+// ~(w / r_g)^2 (r_g = a / sqrt(12) the radius of gyration): 0.3% at s = 0.01, 3e-5 at s = 0.001,
+// where the linear closed form applies to 1e-4.
+std::string m2_layout_deck(const std::string& type, double fy, double s, bool nlgeom) {
+  const bool planar = type == "B21" || type == "B22";
+  const bool three = type == "B22" || type == "B32";
+  const int per = three ? 2 : 1, n = 9 * per + 1;
+  const double a = std::pow(6e-4, 0.25);
+  const char* z = planar ? "" : ", 0.";
+  std::string d = "*NODE\n";
+  for (int i = 1; i <= n; ++i) d += fmt::format("{}, {:.17g}, 0.{}\n", i, (i - 1.0) / per, z);
+  d += fmt::format("100, 3., -1.{}\n*ELEMENT, TYPE={}, ELSET=BEAM\n", z, type);
+  for (int i = 1, e = 1; i < n; i += per, ++e)
+    d += three ? fmt::format("{}, {}, {}, {}\n", e, i, i + 1, i + 2)
+               : fmt::format("{}, {}, {}\n", e, i, i + 1);
+  const int gap_node = 3 * per + 1;
+  d += fmt::format(R"(*MATERIAL, NAME=M
+*ELASTIC
+1.E7, 0.3
+*BEAM SECTION, ELSET=BEAM, MATERIAL=M, SECTION=RECT
+{:.17g}, {:.17g}
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+101, {}, 100
+*GAP, ELSET=G
+{:.17g}, 0., -1.{}
+*BOUNDARY
+1, 1, 2
+1, 6
+{}, 1, 2
+100, 1, 2
+)",
+                   a, a, gap_node, 0.5 * s, planar ? "" : ", 0.", n);
+  if (!planar) d += fmt::format("1, 3, 5\n{}, 3\n{}, 4\n100, 3\n", n, n);
+  d += fmt::format("*STEP{}\n*STATIC\n0.25, 1.\n*CLOAD\n{}, 2, {:.17g}\n*END STEP\n",
+                   nlgeom ? ", NLGEOM" : "", gap_node, fy * s);
+  return d;
+}
+} // namespace
+
+TEST(VerificationGapStructures, M2WithEveryBeamLayoutLinearAndNlgeom) {
+  const double F = propped_flexibility();
+  for (const char* type : {"B31", "B32", "B21", "B22"})
+    for (bool nlgeom : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << type << (nlgeom ? " NLGEOM" : ""));
+      const double s = nlgeom ? 0.001 : 0.01, tol = nlgeom ? 1e-4 : 1e-9;
+      const int gap_node = (std::string(type) == "B32" || std::string(type) == "B22") ? 7 : 4;
+      {
+        const JobResult r = run_deck(m2_layout_deck(type, -50.0, s, nlgeom));
+        ASSERT_EQ(r.exit_code, 0) << r.error;
+        const Frame& f = last_frame(r);
+        EXPECT_NEAR(U(r, f, gap_node)[1], -50.0 * s * F, tol * 50.0 * s * F);
+        EXPECT_EQ(gap(r, f, 101).status, ContactStatus::Open);
+      }
+      {
+        const JobResult r = run_deck(m2_layout_deck(type, -100.0, s, nlgeom));
+        ASSERT_EQ(r.exit_code, 0) << r.error;
+        const Frame& f = last_frame(r);
+        EXPECT_NEAR(U(r, f, gap_node)[1], -0.5 * s, 1e-10);
+        const double force = (100.0 - 0.5 / F) * s;
+        EXPECT_NEAR(gap(r, f, 101).normal_force, force, tol * force);
+      }
+    }
+}

@@ -1,0 +1,117 @@
+// Beam input end to end: what is read (GENERAL section constants, blank lines keeping defaults,
+// *TRANSVERSE SHEAR STIFFNESS), and bad input: exit 1 with file:line, the entity and a remedy,
+// never a crash or a follow-on error.
+#include "test_util.hpp"
+
+#include <gtest/gtest.h>
+
+namespace gapfem {
+namespace {
+
+/// Two B31 (or `type`) elements along x on a clamped root with a tip load.
+std::string deck(const std::string& type, const std::string& section, const std::string& step = "",
+                 bool planar = false) {
+  const bool three = type == "B32" || type == "B22" || type == "PIPE32";
+  std::string s = "*NODE, NSET=ALL\n";
+  for (int i = 0; i <= (three ? 4 : 2); ++i)
+    s += std::to_string(i + 1) + ", " + std::to_string(i * (three ? 0.5 : 1.0)) +
+         (planar ? ", 0\n" : ", 0, 0\n");
+  s += "*ELEMENT, TYPE=" + type + ", ELSET=B\n" + (three ? "1, 1, 2, 3\n2, 3, 4, 5\n" : "1, 1, 2\n2, 2, 3\n");
+  s += "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n" + section;
+  s += planar ? "*BOUNDARY\n1, 1, 2\n1, 6\n" : "*BOUNDARY\n1, ENCASTRE\n";
+  s += "*STEP\n*STATIC\n" +
+       (step.empty() ? std::string("*CLOAD\n") + (three ? "5" : "3") + ", 2, 100.\n" : step) +
+       "*END STEP\n";
+  return s;
+}
+
+void expect_input_error(const std::string& text, const std::string& what) {
+  const JobResult r = test::run_deck(text);
+  EXPECT_EQ(r.exit_code, kExitInputError) << r.error;
+  EXPECT_NE(r.error.find(what), std::string::npos) << r.error;
+  // one error: nothing about a missing section or material after it
+  EXPECT_EQ(r.error.find("has no section"), std::string::npos) << r.error;
+  EXPECT_EQ(r.error.find("input errors"), std::string::npos) << r.error;
+}
+
+TEST(BeamInput, GeneralSectionAndTransverseShearAreRead) {
+  // line 2 blank: default n1; line 3: E, G, alpha. K23 given: the shear stiffness along n2.
+  const std::string gen = "*BEAM GENERAL SECTION, ELSET=B, DENSITY=7.8e-9\n"
+                          "100., 1000., 0., 500., 800.\n\n200000., 80000., 1.2e-5\n"
+                          "*TRANSVERSE SHEAR STIFFNESS\n5.e5, 4.e5\n";
+  const JobResult r = test::run_deck(deck("B31", gen));
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const BeamSection& s = r.model->beam_sections.at(0);
+  EXPECT_TRUE(s.general);
+  EXPECT_EQ(s.dims, (std::vector<double>{100., 1000., 0., 500., 800.}));
+  EXPECT_FALSE(s.n1_given);
+  EXPECT_EQ(s.E, 200000.);
+  EXPECT_EQ(s.G, 80000.);
+  EXPECT_EQ(s.alpha, 1.2e-5);
+  EXPECT_EQ(s.density, 7.8e-9);
+  EXPECT_EQ(s.k23, 5.e5);
+  EXPECT_EQ(s.k13, 4.e5);
+  // tip of a two-element cantilever, L = 2, F = 100 along n2: exact prismatic element with
+  // shear stiffness K23: F L^3 / (3 E I11) + F L / K23
+  const double w = 100.0 * 8.0 / (3 * 200000.0 * 1000.0) + 100.0 * 2.0 / 5.e5;
+  EXPECT_NEAR(test::U(r, test::last_frame(r), 3)[1], w, 1e-12 * w);
+}
+
+TEST(BeamInput, BadSectionsAreOneClearError) {
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=BOX\n"
+                                 "1., 1., 0.6, 0.1, 0.6, 0.1\n"),
+                     "SECTION=BOX: the walls are thicker than the box");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=I\n"
+                                 "0.5, 1., 1., 1., 0.6, 0.6, 0.1\n"),
+                     "SECTION=I: the flanges (t1 + t2 = 1.2) must be thinner than the height");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=PIPE\n0.1, 0.1\n"),
+                     "the wall thickness 0.1 must be smaller than the outer radius 0.1");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n-1., 1.\n"),
+                     "section dimensions must be positive, not -1");
+  expect_input_error(deck("PIPE31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n"),
+                     "PIPE31 elements are pipes and need SECTION=PIPE");
+  expect_input_error(deck("B21", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n0., 1., 0.\n",
+                          "", true),
+                     "B21 is a planar beam, whose n1 direction is always (0, 0, -1)");
+  expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 0., 1., 1.\n"),
+                     "the elastic constants are missing");
+  expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 2., 1., 1.\n\n1., 1.\n"),
+                     "I11 I22 - I12^2 = -3 must be positive");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,1,1\n"),
+                     "SECTION=TRAPEZOID: this section is not available in gapfem");
+}
+
+TEST(BeamInput, MisplacedShearStiffnessAndBadLoadsAreErrors) {
+  const std::string rect = "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n";
+  const JobResult r = test::run_deck(
+      deck("B31", "*TRANSVERSE SHEAR STIFFNESS\n1., 1.\n" + rect));
+  EXPECT_EQ(r.exit_code, kExitInputError);
+  EXPECT_NE(r.error.find("*TRANSVERSE SHEAR STIFFNESS must follow *BEAM SECTION or *BEAM GENERAL "
+                         "SECTION"),
+            std::string::npos)
+      << r.error;
+  expect_input_error(deck("B21", rect, "*DLOAD\nB, PZ, 1.\n", true),
+                     "PZ acts out of the plane of a planar beam");
+  expect_input_error(deck("B21", rect, "*DLOAD\nB, P1, 1.\n", true),
+                     "P1 is not a beam load; beams in space take P1 and P2");
+  expect_input_error(deck("B31", rect, "*DLOAD\nB, GRAV, 9.81, 0, -1, 0\n"),
+                     "GRAV needs the mass density of material M");
+  expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 0., 1., 1.\n\n1., 1.\n",
+                          "*DLOAD\nB, GRAV, 9.81, 0, -1, 0\n"),
+                     "add DENSITY=<rho> to *BEAM GENERAL SECTION, ELSET=B");
+}
+
+TEST(BeamInput, FoldedThreeNodeBeamAndN1AlongTheAxisAreNamed) {
+  const std::string rect = "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n";
+  std::string folded = deck("B32", rect);
+  const std::string mid = "\n2, " + std::to_string(0.5) + ", 0, 0";
+  ASSERT_NE(folded.find(mid), std::string::npos);
+  folded.replace(folded.find(mid), mid.size(), "\n2, 1.5, 0, 0"); // middle node beyond the end
+  expect_input_error(folded, "folds back on itself");
+  expect_input_error(deck("B32", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n"
+                                 "1., 0., 0.\n"),
+                     "is parallel to the beam axis");
+}
+
+} // namespace
+} // namespace gapfem
