@@ -40,6 +40,8 @@ enum class DistLoadKind : std::uint8_t {
   /// beams: force per unit reference length; face 1/2: P1/P2 along the section's n1/n2, face 0:
   /// PX/PY/PZ along the global axis in `direction`
   LineLoad,
+  /// PIPE31/PIPE32: PI (face 1, internal) or PE (face 2, external) pressure, closed-end condition
+  PipePressure,
 };
 
 /// *DLOAD / *DSLOAD / *DFLUX / *DSFLUX / *FILM / *SFILM entry, per element (and face).
@@ -50,6 +52,7 @@ struct DistributedLoad {
   double magnitude = 0.0; ///< pressure, g, body force, flux, film coefficient
   Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
   double sink_temperature = 0.0; ///< Film
+  double diameter = 0.0; ///< PipePressure: effective inner (PI) or outer (PE) diameter, 0: section
   int amplitude = -1;            ///< magnitude amplitude (film: sink temperature amplitude)
   int film_amplitude = -1;       ///< film coefficient amplitude
   bool propagated = false;

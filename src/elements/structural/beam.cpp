@@ -27,7 +27,7 @@ constexpr std::array<DofType, 3> kPlaneDofs{DofType::U1, DofType::U2, DofType::U
 struct SectionLaw {
   std::array<double, 36> D{};
   std::array<double, 6> initial{};
-  double E = 0.0, G = 0.0;
+  double E = 0.0, G = 0.0, nu = 0.0;
 };
 
 SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int n_nodes) {
@@ -35,6 +35,7 @@ SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int 
   double nu = 0.0;
   elastic_at(b.material, average(in.temperature), s.E, nu);
   s.G = s.E / (2.0 * (1.0 + nu));
+  s.nu = nu;
   const BeamSectionProperties& p = b.section;
   const double E = s.E, G = s.G;
   auto D = [&](int i, int j, double v) { s.D[6 * i + j] = s.D[6 * j + i] = v; };
@@ -109,6 +110,7 @@ template <class T> T point_energy(Strains<T> e, const SectionLaw& s) {
 template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
   static constexpr int kDpn = Planar ? 3 : 6;
   static constexpr int kN = NN * kDpn;
+  static constexpr int kPressureSlot = 4 * NN, kState = 4 * NN + 6;
   using J = Jet<kN>;
 
  public:
@@ -121,7 +123,9 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     else
       return kSpaceDofs;
   }
-  int n_state() const override { return 4 * NN; }
+  /// per node a unit quaternion; then the pipe pressures PI, PE with the step and time they were
+  /// applied at (load() records them for the output)
+  int n_state() const override { return kState; }
   bool uses_temperature_field() const override { return material_uses_temperature(_b.material); }
 
   std::string validate(const ElementInput& in) const override {
@@ -134,6 +138,11 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     for (int a = 0; a < NN; ++a) {
       in.state[4 * a] = 1.0;
       for (int i = 1; i < 4; ++i) in.state[4 * a + i] = 0.0;
+    }
+    for (int k = 0; k < 2; ++k) {
+      in.state[kPressureSlot + 3 * k] = 0.0;
+      in.state[kPressureSlot + 3 * k + 1] = 0.0;
+      in.state[kPressureSlot + 3 * k + 2] = -1.0; // never applied
     }
   }
 
@@ -151,11 +160,12 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
   }
 
   bool supports_load(DistLoadKind kind, int face) const override {
-    return beam_supports_load(kind, face, Planar);
+    return beam_supports_load(kind, face, Planar, _b.pipe);
   }
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    if (load.kind == DistLoadKind::PipePressure) return pipe_pressure(in, load, magnitude, f_ext, tangent, nl);
     const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
     BeamLoadInput li{_b, g, load, magnitude, in, nl, Planar};
     if (nl && load.kind == DistLoadKind::LineLoad && load.face > 0) {
@@ -188,11 +198,77 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     const auto nv = gather<double>(in, nl);
     std::array<Strains<double>, 2> e{};
     for (int p = 0; p < g.n_points; ++p) e[p] = strains(g.pts[p], in.X, nv, nl);
-    BeamOutput o{law.D, law.initial, law.E, law.G, _b.section, Planar};
+    BeamOutput o{law.D, law.initial, law.E, law.G, _b.section, Planar, _b.pipe, law.nu,
+                 _b.pipe ? pressures(in) : PipePressures{}};
     recover_beam_output(o, std::span(e.data(), static_cast<std::size_t>(g.n_points)), out);
   }
 
  private:
+  /// PI/PE, closed-end condition: the axial force F of pipe_axial_force acting through the
+  /// element's axis length l(x), f_ext = F dl/dx (the pressure's work F dl at constant area), with
+  /// the load stiffness -F d2l/dx2 under NLGEOM (symmetric: the load is conservative).
+  void pipe_pressure(const ElementInput& in, const DistributedLoad& load, double p,
+                     std::span<double> f, std::span<double> tangent, bool nl) const {
+    double E = 0.0, nu = 0.0;
+    elastic_at(_b.material, average(in.temperature), E, nu);
+    const double F = pipe_axial_force(_b.section, load, p, nu);
+    const J l = axis_length(in, nl);
+    for (int i = 0; i < kN; ++i) f[i] += F * l.g[i];
+    if (nl && !tangent.empty())
+      for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j) tangent[i * kN + j] -= F * l.hess(i, j);
+    const int slot = kPressureSlot + 3 * (load.face - 1);
+    if (in.state.size() >= static_cast<std::size_t>(kState) && in.ctx != nullptr) {
+      in.state[slot] = p;
+      in.state[slot + 1] = in.ctx->total_time;
+      in.state[slot + 2] = in.ctx->step_index;
+    }
+  }
+
+  /// The PI and PE that load() recorded at the current time (0 when none acts now).
+  PipePressures pressures(const ElementInput& in) const {
+    PipePressures pp;
+    if (in.state.size() < static_cast<std::size_t>(kState) || in.ctx == nullptr) return pp;
+    auto now = [&](int k) {
+      const double* s = in.state.data() + kPressureSlot + 3 * k;
+      return s[2] == in.ctx->step_index && s[1] == in.ctx->total_time ? s[0] : 0.0;
+    };
+    pp.inner = now(0);
+    pp.outer = now(1);
+    return pp;
+  }
+
+  /// Length of the element's axis, as a jet of the DOFs: at the reference position without
+  /// NLGEOM (its gradient is the reference direction), at the current one with it.
+  J axis_length(const ElementInput& in, bool current) const {
+    const int ndir = Planar ? 2 : 3;
+    std::array<V3<J>, NN> x;
+    for (int a = 0; a < NN; ++a)
+      for (int i = 0; i < 3; ++i)
+        x[a][i] = i < ndir ? J::variable(in.X[a][i] + (current ? in.u[a * kDpn + i] : 0.0),
+                                         a * kDpn + i)
+                           : J(in.X[a][i]);
+    using std::sqrt;
+    if constexpr (NN == 2) {
+      V3<J> d;
+      for (int i = 0; i < 3; ++i) d[i] = x[1][i] - x[0][i];
+      return sqrt(rotation::dot3(d, d));
+    } else {
+      // three-point Gauss rule of |dx/dxi| (exact for straight elements, 1e-6 for 90-degree arcs)
+      const double g = std::sqrt(0.6), xi[3] = {-g, 0.0, g}, w[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+      J l(0.0);
+      for (int q = 0; q < 3; ++q) {
+        std::array<double, 3> N{}, dN{};
+        line_shape<NN>(xi[q], N, dN);
+        V3<J> d{};
+        for (int a = 0; a < NN; ++a)
+          for (int i = 0; i < 3; ++i) d[i] += dN[a] * x[a][i];
+        l += w[q] * sqrt(rotation::dot3(d, d));
+      }
+      return l;
+    }
+  }
+
   template <class T> BeamNodal<T, NN> gather(const ElementInput& in, bool nl) const {
     BeamNodal<T, NN> nv;
     for (int a = 0; a < NN; ++a) {

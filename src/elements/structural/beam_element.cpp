@@ -6,6 +6,7 @@
 #include "model/model.hpp"
 
 #include <fmt/format.h>
+#include <numbers>
 
 namespace gapfem::beam {
 
@@ -88,8 +89,10 @@ BeamData beam_data(const KernelContext& ctx) {
   return d;
 }
 
-bool beam_supports_load(DistLoadKind kind, int face, bool planar) {
+bool beam_supports_load(DistLoadKind kind, int face, bool planar, bool pipe) {
   switch (kind) {
+  case DistLoadKind::PipePressure:
+    return pipe && (face == 1 || face == 2);
   case DistLoadKind::Gravity:
   case DistLoadKind::BodyForce:
     return face == 0;
@@ -98,6 +101,31 @@ bool beam_supports_load(DistLoadKind kind, int face, bool planar) {
   default:
     return false;
   }
+}
+
+double pipe_lame_sum(const BeamSectionProperties& s, const PipePressures& p) {
+  const double a2 = s.r_inner * s.r_inner, b2 = s.r_outer * s.r_outer;
+  return 2.0 * (p.inner * a2 - p.outer * b2) / (b2 - a2);
+}
+
+double pipe_radial_at(const BeamSectionProperties& s, const PipePressures& p, double r) {
+  const double a2 = s.r_inner * s.r_inner, b2 = s.r_outer * s.r_outer, d = b2 - a2;
+  return (p.inner * a2 - p.outer * b2) / d - (p.inner - p.outer) * a2 * b2 / (d * r * r);
+}
+
+double pipe_hoop_at(const BeamSectionProperties& s, const PipePressures& p, double r) {
+  // Lame: sigma_theta = (p_i a^2 - p_e b^2) / (b^2 - a^2) + (p_i - p_e) a^2 b^2 / ((b^2 - a^2) r^2)
+  const double a2 = s.r_inner * s.r_inner, b2 = s.r_outer * s.r_outer, d = b2 - a2;
+  return (p.inner * a2 - p.outer * b2) / d + (p.inner - p.outer) * a2 * b2 / (d * r * r);
+}
+
+double pipe_axial_force(const BeamSectionProperties& s, const DistributedLoad& load, double p,
+                        double nu) {
+  const bool inner = load.face == 1;
+  const double D = load.diameter > 0.0 ? load.diameter : 2.0 * (inner ? s.r_inner : s.r_outer);
+  const double cap = 0.25 * std::numbers::pi * D * D * (inner ? p : -p);
+  const PipePressures pp{inner ? p : 0.0, inner ? 0.0 : p};
+  return cap - nu * s.A * pipe_lame_sum(s, pp);
 }
 
 Vec3 dead_intensity(const BeamLoadInput& li, int p) {
@@ -110,6 +138,40 @@ Vec3 dead_intensity(const BeamLoadInput& li, int p) {
                                        average(li.in.temperature), li.in.label);
   return scale(w, load.direction);
 }
+
+namespace {
+
+/// Pipes: S11 axial E eps + nu (sigma_r + sigma_theta), S22 hoop (Lame, at the section point's
+/// radius), S12 torsional shear; E22 the hoop strain (S22 - nu (S11 + sigma_r)) / E + eps_th.
+void recover_pipe_points(const BeamOutput& o, std::span<const Strains<double>> e,
+                         ElementRecovery& out) {
+  const BeamSectionProperties& sec = o.section;
+  const int np = static_cast<int>(e.size());
+  add_block(out, ElemVar::S, kPipeS, np * sec.n_points);
+  add_block(out, ElemVar::E, kPipeE, np * sec.n_points);
+  OutputBlock& S = out.blocks[out.blocks.size() - 2];
+  OutputBlock& E = out.blocks.back();
+  for (int p = 0; p < np; ++p)
+    for (int k = 0; k < sec.n_points; ++k) {
+      const double x1 = sec.points[k][0], x2 = sec.points[k][1];
+      const double e11 = e[p][0] + e[p][3] * x2 - e[p][4] * x1;
+      const double e0 = o.initial[0] + o.initial[3] * x2 - o.initial[4] * x1;
+      const double r = std::hypot(x1, x2);
+      const double hoop = pipe_hoop_at(sec, o.pressure, r);
+      const double s11 = o.E * (e11 - e0) + o.nu * pipe_lame_sum(sec, o.pressure);
+      const double e12 = e[p][5] * sec.torsion_radius[k];
+      const int row = 3 * (p * sec.n_points + k);
+      S.values[row] = s11;
+      S.values[row + 1] = hoop;
+      S.values[row + 2] = o.G * e12;
+      E.values[row] = e11;
+      E.values[row + 1] =
+          (hoop - o.nu * (s11 + pipe_radial_at(sec, o.pressure, r))) / o.E + o.initial[0];
+      E.values[row + 2] = e12;
+    }
+}
+
+} // namespace
 
 void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e,
                          ElementRecovery& out) {
@@ -125,7 +187,10 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
     for (int c = 0; c < nsf; ++c) sf.values[p * nsf + c] = s[o.planar ? kPlanarSF[c] : c];
   }
   const BeamSectionProperties& sec = o.section;
+  if (o.pipe) // the wall's axial force includes its Poisson response to the hoop stress
+    for (int p = 0; p < np; ++p) sf.values[p * nsf] += o.nu * sec.A * pipe_lame_sum(sec, o.pressure);
   if (sec.n_points == 0) return;
+  if (o.pipe) return recover_pipe_points(o, e, out);
   // add both blocks before taking references: a second add_block may reallocate the first
   add_block(out, ElemVar::S, kBeamS, np * sec.n_points);
   add_block(out, ElemVar::E, kBeamE, np * sec.n_points);

@@ -106,6 +106,18 @@ BeamGeometry beam_geometry(std::span<const Vec3> X, const Vec3& n1a, double size
   return g;
 }
 
+/// Internal and external pressure on a pipe at one moment.
+struct PipePressures {
+  double inner = 0.0, outer = 0.0;
+};
+
+/// Lame's thick cylinder: sigma_r + sigma_theta = 2 (p_i a^2 - p_e b^2) / (b^2 - a^2), the same
+/// at every radius (so the wall's Poisson response sigma_z = E eps_z + nu (sigma_r + sigma_theta)
+/// is uniform), and sigma_theta, sigma_r at radius r.
+double pipe_lame_sum(const BeamSectionProperties& s, const PipePressures& p);
+double pipe_hoop_at(const BeamSectionProperties& s, const PipePressures& p, double r);
+double pipe_radial_at(const BeamSectionProperties& s, const PipePressures& p, double r);
+
 /// What the output of one element needs.
 struct BeamOutput {
   const std::array<double, 36>& D;
@@ -113,6 +125,9 @@ struct BeamOutput {
   double E = 0.0, G = 0.0;
   const BeamSectionProperties& section;
   bool planar = false;
+  bool pipe = false;
+  double nu = 0.0;
+  PipePressures pressure; ///< pipes: the PI, PE acting now
 };
 
 /// SF (per integration point) and S, E (per integration point and section point) from the strains

@@ -11,8 +11,14 @@
 
 namespace gapfem::beam {
 
-/// Which distributed loads a beam takes (face: 0 body/global, 1 P1, 2 P2).
-bool beam_supports_load(DistLoadKind kind, int face, bool planar);
+/// Which distributed loads a beam takes (face: 0 body/global, 1 P1, 2 P2; pipes: PI, PE).
+bool beam_supports_load(DistLoadKind kind, int face, bool planar, bool pipe);
+
+/// The axial force a PI/PE load of magnitude p puts on the pipe's axis (closed-end condition):
+/// the end-cap thrust p pi D^2 / 4 (PI: +, D the effective inner diameter; PE: -, outer) less
+/// nu A (sigma_r + sigma_theta) (the wall's Poisson response to the pressure), docs §3.4.
+double pipe_axial_force(const BeamSectionProperties& s, const DistributedLoad& load, double p,
+                        double nu);
 
 struct BeamLoadInput {
   const BeamData& b;

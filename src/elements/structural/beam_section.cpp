@@ -203,6 +203,8 @@ BeamSectionProperties beam_section_properties(const BeamSection& section, bool p
                          "(use SECTION=CIRC for a solid circle)",
                          d[1], d[0]));
     round(p, d[0], d[0] - d[1], kShearPipe);
+    p.r_outer = d[0];
+    p.r_inner = d[0] - d[1];
     break;
   case BeamSection::Shape::Box:
     box(p, c, d);

@@ -33,6 +33,9 @@ struct BeamSectionProperties {
   /// the radius; RECT corners 0; thin walls: the wall thickness (open) or J / (2 A_m t) (closed)).
   std::array<double, 4> torsion_radius{};
 
+  /// PIPE: outer and inner radius (0 for other sections)
+  double r_outer = 0.0, r_inner = 0.0;
+
   /// Centroidal second moments (for the shear-flexibility correction of two-node beams).
   double I11_centroid() const { return I11 - Q2 * Q2 / A; }
   double I22_centroid() const { return I22 - Q1 * Q1 / A; }

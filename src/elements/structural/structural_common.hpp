@@ -103,6 +103,9 @@ inline constexpr std::array<std::string_view, 2> kBeamS{"S11", "S12"};
 inline constexpr std::array<std::string_view, 2> kBeamE{"E11", "E12"};
 /// Beam section forces and moments (Abaqus names).
 inline constexpr std::array<std::string_view, 6> kBeamSF{"SF1", "SF2", "SF3", "SM1", "SM2", "SM3"};
+/// Pipe section points: axial, hoop and torsional shear stress/strain.
+inline constexpr std::array<std::string_view, 3> kPipeS{"S11", "S22", "S12"};
+inline constexpr std::array<std::string_view, 3> kPipeE{"E11", "E22", "E12"};
 /// Planar beams: axial force, shear force along n2, in-plane bending moment.
 inline constexpr std::array<std::string_view, 3> kBeamSF2D{"SF1", "SF2", "SM1"};
 

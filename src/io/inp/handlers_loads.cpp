@@ -152,6 +152,7 @@ DistributedLoad beam_dload(const BuildState& s, const FieldReader& r, ElemId e, 
                            const std::string& label) {
   d.elem = e;
   const bool planar = element_info(s.model.mesh.elem_types[e]).space == SpaceRequirement::Planar;
+  if (d.kind == DistLoadKind::PipePressure) return d;
   if (d.kind == DistLoadKind::Pressure) {
     if (d.face > 2 || (planar && d.face == 1))
       r.fail(elem_entity(s, e),
@@ -284,6 +285,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(6, "element or element set, load label, magnitude, direction x, y, z");
+    const bool pipe_label = canonical(r.text(1)) == "PI" || canonical(r.text(1)) == "PE";
     const std::string label = canonical(r.text(1));
     const double mag = r.real(2, "magnitude");
     const bool single = is_label(r, 0);
@@ -304,6 +306,14 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
       d.kind = DistLoadKind::BodyForce;
       d.direction[label[1] - 'X'] = 1.0;
+    } else if (label == "PI" || label == "PE") {
+      r.at_most(4, "element or element set, PI/PE, magnitude, effective diameter");
+      d.kind = DistLoadKind::PipePressure;
+      d.face = label == "PI" ? 1 : 2;
+      d.diameter = r.real_or(3, 0.0, "effective diameter");
+      if (d.diameter < 0.0)
+        r.fail("field 4 (effective diameter)",
+               fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
     } else if (label == "PX" || label == "PY" || label == "PZ") {
       r.at_most(3, "element or element set, PX/PY/PZ, magnitude");
       d.kind = DistLoadKind::LineLoad;
@@ -318,10 +328,19 @@ void handle_dload(BuildState& s, const Keyword& kw) {
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
-             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV)");
+             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV; pipes also PI, PE)");
     }
     for (ElemId e : elems) {
       const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+      const bool pipe = s.model.mesh.elem_types[e] == ElementType::PIPE31 ||
+                        s.model.mesh.elem_types[e] == ElementType::PIPE32;
+      if (pipe_label && !pipe) {
+        if (single || info.family == ElementFamily::Beam)
+          r.fail(elem_entity(s, e), fmt::format("{} is a pressure on pipe elements (PIPE31, "
+                                                "PIPE32); use P for a face pressure",
+                                                label));
+        continue;
+      }
       if (info.family == ElementFamily::Beam) {
         loads.push_back(beam_dload(s, r, e, d, label));
         continue;

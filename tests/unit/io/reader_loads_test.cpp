@@ -263,7 +263,9 @@ TEST(ReaderLoads, DistributedLoadErrors) {
                   "deck.inp:30: *DLOAD: element 1 (C3D8): face 7 does not exist");
   EXPECT_CONTAINS(err("*DLOAD\n1, PX, 1."),
                   "element 1 (C3D8): PX is a load per unit length on beams");
-  EXPECT_CONTAINS(err("*DLOAD\n1, PE, 1."), "field 2 (PE): this load label is not supported");
+  EXPECT_CONTAINS(err("*DLOAD\n1, PE, 1."),
+                  "element 1 (C3D8): PE is a pressure on pipe elements (PIPE31, PIPE32)");
+  EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1."), "field 2 (HPI): this load label is not supported");
   EXPECT_CONTAINS(err("*DLOAD\n1, GRAV, 9.81"), "GRAV needs a non-zero direction");
   EXPECT_CONTAINS(err("*DLOAD\n2, GRAV, 9.81, 0, 0, -1"),
                   "element 2 (SPRINGA): body loads need an element");

@@ -220,6 +220,15 @@ TEST(OutputVtu, CellTypes) {
   EXPECT_EQ(vtk_cell_type(ElementType::GAPUNI, 2), 3);
   EXPECT_EQ(vtk_cell_type(ElementType::SPRING2, 2), 3);
   EXPECT_EQ(vtk_cell_type(ElementType::SPRING1, 1), 1);
+  EXPECT_EQ(vtk_cell_type(ElementType::B21, 2), 3);
+  EXPECT_EQ(vtk_cell_type(ElementType::PIPE31, 2), 3);
+  // three-node beams (end, middle, end) are VTK quadratic edges (end, end, middle)
+  for (ElementType t : {ElementType::B32, ElementType::B22, ElementType::PIPE32}) {
+    EXPECT_EQ(vtk_cell_type(t, 3), 21);
+    EXPECT_EQ(vtk_node_from_abaqus(t, 0), 0);
+    EXPECT_EQ(vtk_node_from_abaqus(t, 1), 2);
+    EXPECT_EQ(vtk_node_from_abaqus(t, 2), 1);
+  }
 }
 
 // Quadratic and wedge cells: VTK's cell types, and the node order written for them puts every

@@ -76,3 +76,50 @@ TEST(VerificationStructuralBeamSections, PlanarB21AndB22UnderUniformLoad) {
 
 } // namespace
 } // namespace gapfem
+
+namespace gapfem {
+namespace {
+
+// pipe_pressure.inp: PIPE r = 50, t = 5 (a = 45, b = 50), E = 200000, nu = 0.3, legs of 1000.
+// Closed-end condition, Lame's thick cylinder with free axial extension (generalised plane
+// strain): sigma_z = (p_i a^2 - p_e b^2) / (b^2 - a^2), sigma_r + sigma_theta = 2 sigma_z at every
+// radius, so eps_z = (sigma_z - nu (sigma_r + sigma_theta)) / E = (1 - 2 nu) sigma_z / E, the
+// wall's axial force sigma_z A = pi (p_i a^2 - p_e b^2), and the hoop stress at the outer radius
+// sigma_theta(b) = (2 p_i a^2 - p_e (a^2 + b^2)) / (b^2 - a^2).
+TEST(VerificationStructuralBeamSections, PipesUnderInternalAndExternalPressure) {
+  DeckRun run("pipe_pressure.inp");
+  if (!run.ok()) return;
+  const double a = 45.0, b = 50.0, d = b * b - a * a, Ep = 200000.0, nu = 0.3, L = 1000.0;
+  const double pi_ = std::acos(-1.0);
+  {
+    // straight PIPE31 under PI = 10, clamped at node 1, closed free end at node 5
+    const double p = 10.0, sz = p * a * a / d;
+    EXPECT_REL(run.U(5)[0], (1 - 2 * nu) * sz / Ep * L);
+    EXPECT_SCALED(run.U(5)[1], 0.0, 1e-3);
+    EXPECT_REL(run.el(2, ElemVar::SF, 0), p * pi_ * a * a);
+    EXPECT_REL(run.el(2, ElemVar::S, 0, 0), sz);                   // S11 at section point 1
+    EXPECT_REL(run.el(2, ElemVar::S, 1, 0), 2 * p * a * a / d);    // S22: hoop at r = b
+    EXPECT_SCALED(run.RF(1)[0], 0.0, p * pi_ * a * a); // a closed vessel: no reaction
+  }
+  {
+    // PIPE32 (two elements) under PE = 2: sigma_z = -p b^2 / d
+    const double p = 2.0, sz = -p * b * b / d;
+    EXPECT_REL(run.U(10)[0], (1 - 2 * nu) * sz / Ep * L);
+    EXPECT_REL(run.el(5, ElemVar::SF, 0), -p * pi_ * b * b);
+    EXPECT_REL(run.el(5, ElemVar::S, 1, 0), -p * (a * a + b * b) / d);
+  }
+  {
+    // an L of two straight legs held at the corner (node 21) only: each leg is a closed pipe
+    // extending freely, and the whole is a closed vessel, so the corner carries no force (the
+    // end-cap forces at the kink are the bend's pressure thrust, which the legs' walls take)
+    const double p = 10.0, e = (1 - 2 * nu) * p * a * a / d / Ep;
+    EXPECT_REL(run.U(23)[0], -e * L);
+    EXPECT_REL(run.U(25)[1], e * L);
+    for (int i = 0; i < 3; ++i) EXPECT_SCALED(run.RF(21)[i], 0.0, p * pi_ * a * a);
+    EXPECT_REL(run.el(7, ElemVar::SF, 0), p * pi_ * a * a);
+    EXPECT_REL(run.el(10, ElemVar::SF, 0), p * pi_ * a * a);
+  }
+}
+
+} // namespace
+} // namespace gapfem

@@ -194,6 +194,41 @@ TEST(StructuralBeamNlgeom, LinearStiffnessHasOnlyTheRigidModesAndEqualsNlgeomAtR
   }
 }
 
+/// The load stiffness (-d f_ext / du, added to the tangent by load()) against central differences.
+void expect_load_stiffness(const OneElement& el, const std::vector<double>& u,
+                           const DistributedLoad& load, double magnitude) {
+  ASSERT_TRUE(el.k->supports_load(load.kind, load.face));
+  const auto n = static_cast<std::size_t>(el.k->n_dofs());
+  auto f_of = [&](const std::vector<double>& uu, std::vector<double>* K) {
+    ElementInput in;
+    in.X = el.X;
+    in.u = uu;
+    in.u_start = el.u0;
+    in.state_start = el.q0;
+    in.ctx = &el.ctx;
+    std::vector<double> f(n, 0.0), k(n * n, 0.0);
+    el.k->load(in, load, magnitude, 0.0, f, k);
+    if (K) *K = k;
+    return f;
+  };
+  std::vector<double> K;
+  const auto f0 = f_of(u, &K);
+  double fmax = 0.0;
+  for (double v : f0) fmax = std::max(fmax, std::abs(v));
+  ASSERT_GT(fmax, 0.0);
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < n; ++j) {
+    auto up = u, um = u;
+    up[j] += h;
+    um[j] -= h;
+    const auto fp = f_of(up, nullptr), fm = f_of(um, nullptr);
+    for (std::size_t i = 0; i < n; ++i)
+      EXPECT_NEAR(K[i * n + j], -(fp[i] - fm[i]) / (2 * h), 1e-6 * fmax)
+          << element_info(el.k->type()).name << " load kind " << static_cast<int>(load.kind)
+          << " face " << load.face;
+  }
+}
+
 TEST(StructuralBeamNlgeom, FollowerLineLoadStiffnessMatchesCentralDifferences) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
@@ -206,38 +241,27 @@ TEST(StructuralBeamNlgeom, FollowerLineLoadStiffnessMatchesCentralDifferences) {
     for (double& v : u) v += 0.1 * U(rng);
     for (int face : {1, 2}) {
       if (planar && face == 1) continue;
-      ASSERT_TRUE(el.k->supports_load(DistLoadKind::LineLoad, face));
       DistributedLoad load;
       load.kind = DistLoadKind::LineLoad;
       load.face = face;
-      const auto n = static_cast<std::size_t>(el.k->n_dofs());
-      auto f_of = [&](const std::vector<double>& uu, std::vector<double>* K) {
-        ElementInput in;
-        in.X = el.X;
-        in.u = uu;
-        in.u_start = el.u0;
-        in.state_start = el.q0;
-        in.ctx = &el.ctx;
-        std::vector<double> f(n, 0.0), k(n * n, 0.0);
-        el.k->load(in, load, 2.5, 0.0, f, k);
-        if (K) *K = k;
-        return f;
-      };
-      std::vector<double> K;
-      const auto f0 = f_of(u, &K);
-      double fmax = 0.0;
-      for (double v : f0) fmax = std::max(fmax, std::abs(v));
-      ASSERT_GT(fmax, 0.0);
-      const double h = 1e-6;
-      for (std::size_t j = 0; j < n; ++j) {
-        auto up = u, um = u;
-        up[j] += h;
-        um[j] -= h;
-        const auto fp = f_of(up, nullptr), fm = f_of(um, nullptr);
-        for (std::size_t i = 0; i < n; ++i)
-          EXPECT_NEAR(K[i * n + j], -(fp[i] - fm[i]) / (2 * h), 1e-6 * fmax)
-              << element_info(l.type).name << " face " << face;
-      }
+      expect_load_stiffness(el, u, load, 2.5);
+    }
+  }
+}
+
+TEST(StructuralBeamNlgeom, PipePressureStiffnessMatchesCentralDifferences) {
+  // PI/PE: f = F dl/dx, conservative, stiffness -F d2l/dx2; PIPE32 curved (nodes_of)
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (const Layout& l : {Layout{ElementType::PIPE31, 2}, Layout{ElementType::PIPE32, 3}}) {
+    OneElement el(l.type, nodes_of(l), Shape::Pipe, {0.08, 0.01}, true);
+    std::vector<double> u = el.u;
+    for (double& v : u) v += 0.1 * U(rng);
+    for (int face : {1, 2}) {
+      DistributedLoad load;
+      load.kind = DistLoadKind::PipePressure;
+      load.face = face;
+      expect_load_stiffness(el, u, load, 3.0);
     }
   }
 }
