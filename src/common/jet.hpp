@@ -15,7 +15,8 @@
 
 namespace gapfem {
 
-template <int N> struct Jet {
+template <int N>
+struct Jet {
   static constexpr int kPacked = N * (N + 1) / 2;
   double v = 0.0;
   std::array<double, N> g{};
@@ -136,7 +137,8 @@ inline double chain(double, double f0, double, double) {
 }
 
 /// atan2 for any scalar: the branch is chosen by value, the derivatives are those of atan2.
-template <class T> T atan2_any(const T& y, const T& x) {
+template <class T>
+T atan2_any(const T& y, const T& x) {
   using std::atan;
   const double yv = value(y), xv = value(x);
   constexpr double pi = 3.14159265358979323846;

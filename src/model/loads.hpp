@@ -52,7 +52,7 @@ struct DistributedLoad {
   double magnitude = 0.0; ///< pressure, g, body force, flux, film coefficient
   Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
   double sink_temperature = 0.0; ///< Film
-  double diameter = 0.0; ///< PipePressure: effective inner (PI) or outer (PE) diameter, 0: section
+  double diameter = 0.0;         ///< PI/PE: effective diameter (0: the section's)
   int amplitude = -1;            ///< magnitude amplitude (film: sink temperature amplitude)
   int film_amplitude = -1;       ///< film coefficient amplitude
   bool propagated = false;

@@ -82,7 +82,8 @@ SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int 
   return s;
 }
 
-template <class T> T unknown(double v, int i) {
+template <class T>
+T unknown(double v, int i) {
   if constexpr (std::is_same_v<T, double>)
     return v;
   else
@@ -90,7 +91,8 @@ template <class T> T unknown(double v, int i) {
 }
 
 /// Energy density 1/2 (e - e0)^T D (e - e0) of one point.
-template <class T> T point_energy(Strains<T> e, const SectionLaw& s) {
+template <class T>
+T point_energy(Strains<T> e, const SectionLaw& s) {
   for (int i = 0; i < 6; ++i) e[i] -= s.initial[i];
   T w(0.0);
   for (int i = 0; i < 6; ++i) {
@@ -107,7 +109,8 @@ template <class T> T point_energy(Strains<T> e, const SectionLaw& s) {
 }
 
 /// B21/B22/B31/B32/PIPE31/PIPE32 with NN nodes, planar (DOFs 1, 2, 6) or in space (1-6).
-template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
+template <int NN, bool Planar>
+class BeamKernel final : public ElementKernel {
   static constexpr int kDpn = Planar ? 3 : 6;
   static constexpr int kN = NN * kDpn;
   static constexpr int kPressureSlot = 4 * NN, kState = 4 * NN + 6;
@@ -165,7 +168,8 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
-    if (load.kind == DistLoadKind::PipePressure) return pipe_pressure(in, load, magnitude, f_ext, tangent, nl);
+    if (load.kind == DistLoadKind::PipePressure)
+      return pipe_pressure(in, load, magnitude, f_ext, tangent, nl);
     const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
     BeamLoadInput li{_b, g, load, magnitude, in, nl, Planar};
     if (nl && load.kind == DistLoadKind::LineLoad && load.face > 0) {
@@ -198,8 +202,9 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     const auto nv = gather<double>(in, nl);
     std::array<Strains<double>, 2> e{};
     for (int p = 0; p < g.n_points; ++p) e[p] = strains(g.pts[p], in.X, nv, nl);
-    BeamOutput o{law.D, law.initial, law.E, law.G, _b.section, Planar, _b.pipe, law.nu,
-                 _b.pipe ? pressures(in) : PipePressures{}};
+    BeamOutput o{law.D,   law.initial, law.E,
+                 law.G,   _b.section,  Planar,
+                 _b.pipe, law.nu,      _b.pipe ? pressures(in) : PipePressures{}};
     recover_beam_output(o, std::span(e.data(), static_cast<std::size_t>(g.n_points)), out);
   }
 
@@ -245,9 +250,9 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     std::array<V3<J>, NN> x;
     for (int a = 0; a < NN; ++a)
       for (int i = 0; i < 3; ++i)
-        x[a][i] = i < ndir ? J::variable(in.X[a][i] + (current ? in.u[a * kDpn + i] : 0.0),
-                                         a * kDpn + i)
-                           : J(in.X[a][i]);
+        x[a][i] = i < ndir
+                      ? J::variable(in.X[a][i] + (current ? in.u[a * kDpn + i] : 0.0), a * kDpn + i)
+                      : J(in.X[a][i]);
     using std::sqrt;
     if constexpr (NN == 2) {
       V3<J> d;
@@ -269,7 +274,8 @@ template <int NN, bool Planar> class BeamKernel final : public ElementKernel {
     }
   }
 
-  template <class T> BeamNodal<T, NN> gather(const ElementInput& in, bool nl) const {
+  template <class T>
+  BeamNodal<T, NN> gather(const ElementInput& in, bool nl) const {
     BeamNodal<T, NN> nv;
     for (int a = 0; a < NN; ++a) {
       const int b = a * kDpn;

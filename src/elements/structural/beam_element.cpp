@@ -188,7 +188,8 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
   }
   const BeamSectionProperties& sec = o.section;
   if (o.pipe) // the wall's axial force includes its Poisson response to the hoop stress
-    for (int p = 0; p < np; ++p) sf.values[p * nsf] += o.nu * sec.A * pipe_lame_sum(sec, o.pressure);
+    for (int p = 0; p < np; ++p)
+      sf.values[p * nsf] += o.nu * sec.A * pipe_lame_sum(sec, o.pressure);
   if (sec.n_points == 0) return;
   if (o.pipe) return recover_pipe_points(o, e, out);
   // add both blocks before taking references: a second add_block may reallocate the first

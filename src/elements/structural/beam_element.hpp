@@ -36,7 +36,8 @@ struct BeamGeometry {
 };
 
 /// Shape functions (Abaqus node order: end, [middle,] end) and d/dxi at xi.
-template <int NN> void line_shape(double xi, std::array<double, 3>& N, std::array<double, 3>& dN) {
+template <int NN>
+void line_shape(double xi, std::array<double, 3>& N, std::array<double, 3>& dN) {
   if constexpr (NN == 2) {
     N = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi), 0.0};
     dN = {-0.5, 0.5, 0.0};

@@ -27,27 +27,29 @@ using rotation::V3;
 
 /// Reference geometry of one integration point (plain doubles).
 struct BeamPoint {
-  double weight = 0.0;          ///< quadrature weight times dS/dxi
-  std::array<double, 3> N{};    ///< shape functions
-  std::array<double, 3> dN{};   ///< their derivatives by reference arc length
-  V3<double> dX{};              ///< dX/dS: the unit reference tangent
+  double weight = 0.0;            ///< quadrature weight times dS/dxi
+  std::array<double, 3> N{};      ///< shape functions
+  std::array<double, 3> dN{};     ///< their derivatives by reference arc length
+  V3<double> dX{};                ///< dX/dS: the unit reference tangent
   std::array<V3<double>, 3> L0{}; ///< reference triad t, n1, n2
 };
 
 /// Nodal unknowns of an element in three-dimensional form (planar beams fill u3, psi1, psi2 with
 /// constant zeros).
-template <class T, int NN> struct BeamNodal {
+template <class T, int NN>
+struct BeamNodal {
   std::array<V3<T>, NN> u{};   ///< displacements
   std::array<V3<T>, NN> psi{}; ///< rotation DOF values (small-displacement kinematics)
   std::array<Quat<T>, NN> q{}; ///< nodal rotations (NLGEOM)
 };
 
-template <class T> using Strains = std::array<T, 6>;
+template <class T>
+using Strains = std::array<T, 6>;
 
 /// Project a vector a onto the triad in the strain order: (t, n2, n1) for the forces, (n1, n2, t)
 /// for the moments.
-template <class T> void project(const std::array<V3<double>, 3>& L0, const V3<T>& g, const V3<T>& k,
-                               Strains<T>& e) {
+template <class T>
+void project(const std::array<V3<double>, 3>& L0, const V3<T>& g, const V3<T>& k, Strains<T>& e) {
   e[0] = rotation::dot3(L0[0], g);
   e[1] = rotation::dot3(L0[2], g);
   e[2] = rotation::dot3(L0[1], g);
@@ -74,12 +76,14 @@ Strains<T> linear_strains(const BeamPoint& p, const BeamNodal<T, NN>& nv) {
 }
 
 /// The reference rotation and the local rotation vectors of the nodes (shared by all points).
-template <class T, int NN> struct LocalRotations {
+template <class T, int NN>
+struct LocalRotations {
   Quat<T> r;
   std::array<V3<T>, NN> phi;
 };
 
-template <class T, int NN> LocalRotations<T, NN> local_rotations(const BeamNodal<T, NN>& nv) {
+template <class T, int NN>
+LocalRotations<T, NN> local_rotations(const BeamNodal<T, NN>& nv) {
   LocalRotations<T, NN> lr;
   lr.r = rotation::quat_mid(nv.q[0], nv.q[NN - 1]);
   const Quat<T> rc = rotation::conj(lr.r);

@@ -34,7 +34,8 @@ struct BeamLoadInput {
 Vec3 dead_intensity(const BeamLoadInput& li, int p);
 
 /// Fixed-direction loads (and P1/P2 without NLGEOM).
-template <int NN, int Dpn> void dead_line_load(const BeamLoadInput& li, std::span<double> f) {
+template <int NN, int Dpn>
+void dead_line_load(const BeamLoadInput& li, std::span<double> f) {
   const int ndir = li.planar ? 2 : 3;
   Vec3 q0{};
   for (int p = 0; p < li.g.n_points; ++p) {

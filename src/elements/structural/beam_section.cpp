@@ -55,8 +55,9 @@ void add_wall(BeamSectionProperties& p, P2 a, P2 b, double t) {
 class Checker {
  public:
   explicit Checker(const BeamSection& s)
-      : _s(s), _entity(fmt::format("{}, ELSET={}",
-                                   s.general ? "*BEAM GENERAL SECTION" : "*BEAM SECTION", s.elset)) {}
+      : _s(s),
+        _entity(fmt::format("{}, ELSET={}", s.general ? "*BEAM GENERAL SECTION" : "*BEAM SECTION",
+                            s.elset)) {}
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(_s.loc, _entity, fmt::format("SECTION={}: {}", shape_name(_s.shape), what));
   }

@@ -160,9 +160,10 @@ void read_beam_geometry(BuildState& s, const Keyword& kw, BeamSection& sec, bool
     const bool known = c == "L" || c == "HEX" || c == "TRAPEZOID" || c == "ARBITRARY" ||
                        c == "THICKPIPE" || c == "ELBOW" || c == "MESHED" || c == "NONLINEARGENERAL";
     throw InputError(kw.loc, fmt::format("SECTION={}", given),
-                     fmt::format("{}gapfem's beam sections are {}", known ? "this section is not "
-                                                                        "available in gapfem; "
-                                                                      : "unknown section; ",
+                     fmt::format("{}gapfem's beam sections are {}",
+                                 known ? "this section is not "
+                                         "available in gapfem; "
+                                       : "unknown section; ",
                                  choices));
   }
   sec.shape = spec->shape;
@@ -305,8 +306,9 @@ void handle_transverse_shear(BuildState& s, const Keyword& kw) {
   sec.k13 = k13;
   if (!r.blank(2)) {
     const double scf = r.real(2, "slenderness compensation factor");
-    if (scf < 0) r.fail("field 3 (slenderness compensation factor)",
-                        fmt::format("must not be negative, not {}", scf));
+    if (scf < 0)
+      r.fail("field 3 (slenderness compensation factor)",
+             fmt::format("must not be negative, not {}", scf));
     sec.slenderness = scf;
   }
   extra_lines_warning(s, kw, 1);

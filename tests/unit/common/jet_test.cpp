@@ -15,7 +15,8 @@ namespace {
 using namespace rotation;
 
 /// f(x) for N inputs, evaluated with any scalar.
-template <int N> using Fn = std::function<Jet<N>(const std::array<Jet<N>, N>&)>;
+template <int N>
+using Fn = std::function<Jet<N>(const std::array<Jet<N>, N>&)>;
 
 /// Checks the gradient and Hessian of a Jet function against central differences of its value.
 template <int N>
@@ -48,10 +49,10 @@ TEST(Jet, ArithmeticAndFunctionsMatchCentralDifferences) {
                3.0 * x[2] * x[2] * x[0] + asin(0.3 * x[1]);
       },
       {0.7, -0.4, 1.3}, 1e-7);
-  expect_matches_fd<2>(
-      [](const std::array<Jet<2>, 2>& x) { return atan2_any(x[0], x[1]); }, {-0.3, -0.8}, 1e-7);
-  expect_matches_fd<2>(
-      [](const std::array<Jet<2>, 2>& x) { return atan2_any(x[0], x[1]); }, {0.9, 0.2}, 1e-7);
+  expect_matches_fd<2>([](const std::array<Jet<2>, 2>& x) { return atan2_any(x[0], x[1]); },
+                       {-0.3, -0.8}, 1e-7);
+  expect_matches_fd<2>([](const std::array<Jet<2>, 2>& x) { return atan2_any(x[0], x[1]); },
+                       {0.9, 0.2}, 1e-7);
 }
 
 TEST(Jet, SeriesBranchesAgreeWithTheClosedFormsAtTheSwitch) {
@@ -95,10 +96,9 @@ TEST(Rotation, ExpLogRoundTripAndRotationMatchRodrigues) {
     const V3<double> na = cross3(n, a);
     const V3<double> r = rotate(quat_exp(v), a);
     for (int i = 0; i < 3; ++i)
-      EXPECT_NEAR(r[i],
-                  a[i] * std::cos(th) + na[i] * std::sin(th) +
-                      n[i] * dot3(n, a) * (1 - std::cos(th)),
-                  1e-12);
+      EXPECT_NEAR(
+          r[i], a[i] * std::cos(th) + na[i] * std::sin(th) + n[i] * dot3(n, a) * (1 - std::cos(th)),
+          1e-12);
   }
 }
 

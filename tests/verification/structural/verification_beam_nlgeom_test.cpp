@@ -25,7 +25,7 @@ constexpr double kL = 10.0, kEI = 1000.0, kM = 2.0 * std::numbers::pi * kEI / kL
 
 struct RollupCase {
   Label tip;
-  int n; ///< elements (0: compare with the continuous circle)
+  int n;      ///< elements (0: compare with the continuous circle)
   double tol; ///< on the tip displacement, relative to L
 };
 
@@ -39,8 +39,7 @@ void check_rollup(const std::string& deck, const RollupCase (&cases)[2], int spa
     const double kappa = f.step_time * kM / kEI, phi = kappa * kL;
     for (const RollupCase& c : cases) {
       SCOPED_TRACE(::testing::Message() << deck << " tip " << c.tip << " time " << f.step_time);
-      const double scale =
-          c.n > 0 ? kL / (2.0 * c.n * std::sin(0.5 * phi / c.n)) : 1.0 / kappa;
+      const double scale = c.n > 0 ? kL / (2.0 * c.n * std::sin(0.5 * phi / c.n)) : 1.0 / kappa;
       const NodeId tip = run.node(c.tip);
       EXPECT_NEAR(f.nodes.U[tip][0], scale * std::sin(phi) - kL, c.tol * kL);
       EXPECT_NEAR(f.nodes.U[tip][1], scale * (1.0 - std::cos(phi)), c.tol * kL);
@@ -52,7 +51,7 @@ void check_rollup(const std::string& deck, const RollupCase (&cases)[2], int spa
       }
     }
   }
-  EXPECT_GE(frames, 10); // at most 0.05 of the moment per increment
+  EXPECT_GE(frames, 10);              // at most 0.05 of the moment per increment
   for (const RollupCase& c : cases) { // the circle closes: the tip is back at the root
     EXPECT_NEAR(run.U(c.tip)[0], -kL, c.tol * kL);
     EXPECT_NEAR(run.U(c.tip)[1], 0.0, c.tol * kL);

@@ -24,9 +24,9 @@ TEST(VerificationStructuralBeamSections, BoxIGeneralAndB32Cantilevers) {
   {
     // I: l = 50, h = 300, b1 = 150, b2 = 100, t1 = 12, t2 = 10, t3 = 8. Mid-lines: bottom flange
     // y_b = -50 + 6, top y_t = 300 - 50 - 5, web between them. The node (section origin) lies
-    // ybar = -Q2 / A from the centroid (Q2 > 0: below it), so an axial tip force P at the node bends the beam:
-    // constant moment -P ybar about the centroid, curvature P ybar / (E Ic), and the node's
-    // axial displacement P L (1/(E A) + ybar^2 / (E Ic)).
+    // ybar = -Q2 / A from the centroid (Q2 > 0: below it), so an axial tip force P at the node
+    // bends the beam: constant moment -P ybar about the centroid, curvature P ybar / (E Ic), and
+    // the node's axial displacement P L (1/(E A) + ybar^2 / (E Ic)).
     const double yb = -44.0, yt = 245.0, Lw = yt - yb;
     const double Ab = 150 * 12, At = 100 * 10, Aw = Lw * 8, A = Ab + At + Aw;
     const double Q2 = Ab * yb + At * yt + Aw * 0.5 * (yb + yt);
@@ -97,9 +97,9 @@ TEST(VerificationStructuralBeamSections, PipesUnderInternalAndExternalPressure) 
     EXPECT_REL(run.U(5)[0], (1 - 2 * nu) * sz / Ep * L);
     EXPECT_SCALED(run.U(5)[1], 0.0, 1e-3);
     EXPECT_REL(run.el(2, ElemVar::SF, 0), p * pi_ * a * a);
-    EXPECT_REL(run.el(2, ElemVar::S, 0, 0), sz);                   // S11 at section point 1
-    EXPECT_REL(run.el(2, ElemVar::S, 1, 0), 2 * p * a * a / d);    // S22: hoop at r = b
-    EXPECT_SCALED(run.RF(1)[0], 0.0, p * pi_ * a * a); // a closed vessel: no reaction
+    EXPECT_REL(run.el(2, ElemVar::S, 0, 0), sz);                // S11 at section point 1
+    EXPECT_REL(run.el(2, ElemVar::S, 1, 0), 2 * p * a * a / d); // S22: hoop at r = b
+    EXPECT_SCALED(run.RF(1)[0], 0.0, p * pi_ * a * a);          // a closed vessel: no reaction
   }
   {
     // PIPE32 (two elements) under PE = 2: sigma_z = -p b^2 / d

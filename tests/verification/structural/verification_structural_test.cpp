@@ -14,7 +14,6 @@
 namespace gapfem {
 namespace {
 
-
 TEST(VerificationStructuralTruss, PlanarDeterminateTriangleAndThreeBarTruss) {
   DeckRun run("truss_2d.inp");
   if (!run.ok()) return;

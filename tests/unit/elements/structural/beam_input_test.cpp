@@ -16,7 +16,8 @@ std::string deck(const std::string& type, const std::string& section, const std:
   for (int i = 0; i <= (three ? 4 : 2); ++i)
     s += std::to_string(i + 1) + ", " + std::to_string(i * (three ? 0.5 : 1.0)) +
          (planar ? ", 0\n" : ", 0, 0\n");
-  s += "*ELEMENT, TYPE=" + type + ", ELSET=B\n" + (three ? "1, 1, 2, 3\n2, 3, 4, 5\n" : "1, 1, 2\n2, 2, 3\n");
+  s += "*ELEMENT, TYPE=" + type + ", ELSET=B\n" +
+       (three ? "1, 1, 2, 3\n2, 3, 4, 5\n" : "1, 1, 2\n2, 2, 3\n");
   s += "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n" + section;
   s += planar ? "*BOUNDARY\n1, 1, 2\n1, 6\n" : "*BOUNDARY\n1, ENCASTRE\n";
   s += "*STEP\n*STATIC\n" +
@@ -70,21 +71,22 @@ TEST(BeamInput, BadSectionsAreOneClearError) {
                      "section dimensions must be positive, not -1");
   expect_input_error(deck("PIPE31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n"),
                      "PIPE31 elements are pipes and need SECTION=PIPE");
-  expect_input_error(deck("B21", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n0., 1., 0.\n",
+  expect_input_error(deck("B21",
+                          "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n0., 1., 0.\n",
                           "", true),
                      "B21 is a planar beam, whose n1 direction is always (0, 0, -1)");
   expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 0., 1., 1.\n"),
                      "the elastic constants are missing");
   expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 2., 1., 1.\n\n1., 1.\n"),
                      "I11 I22 - I12^2 = -3 must be positive");
-  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,1,1\n"),
-                     "SECTION=TRAPEZOID: this section is not available in gapfem");
+  expect_input_error(
+      deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,1,1\n"),
+      "SECTION=TRAPEZOID: this section is not available in gapfem");
 }
 
 TEST(BeamInput, MisplacedShearStiffnessAndBadLoadsAreErrors) {
   const std::string rect = "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n";
-  const JobResult r = test::run_deck(
-      deck("B31", "*TRANSVERSE SHEAR STIFFNESS\n1., 1.\n" + rect));
+  const JobResult r = test::run_deck(deck("B31", "*TRANSVERSE SHEAR STIFFNESS\n1., 1.\n" + rect));
   EXPECT_EQ(r.exit_code, kExitInputError);
   EXPECT_NE(r.error.find("*TRANSVERSE SHEAR STIFFNESS must follow *BEAM SECTION or *BEAM GENERAL "
                          "SECTION"),

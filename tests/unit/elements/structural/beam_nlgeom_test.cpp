@@ -32,8 +32,8 @@ struct OneElement {
              bool nlgeom) {
     std::vector<NodeId> ids;
     for (const Vec3& x : nodes) ids.push_back(tm.add_node(x));
-    const Vec3 n1 = element_info(type).space == SpaceRequirement::Planar ? Vec3{0, 0, -1}
-                                                                         : Vec3{0.3, 1.0, 0.2};
+    const Vec3 n1 =
+        element_info(type).space == SpaceRequirement::Planar ? Vec3{0, 0, -1} : Vec3{0.3, 1.0, 0.2};
     e = tm.add_element(type, ids, tm.add_beam_section(tm.add_material(kE, kNu), shape, dims, n1));
     k = tm.kernel(e);
     X = nodes;

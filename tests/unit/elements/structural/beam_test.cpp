@@ -332,6 +332,5 @@ TEST(StructuralBeam, N1ParallelToTheAxisFailsValidation) {
   EXPECT_EQ(ok.k->validate(ok.local().input()), "");
 }
 
-
 } // namespace
 } // namespace gapfem::structural_test
