@@ -141,6 +141,17 @@ Vec3 dead_intensity(const BeamLoadInput& li, int p) {
 
 namespace {
 
+/// Strains of the fibre at section point k: axial eps + kappa_1 x2 - kappa_2 x1 (total e11 and
+/// initial e0; docs/theory/structural.md §3.5) and the engineering shear strain of the twist.
+struct Fibre {
+  double e11 = 0.0, e0 = 0.0, e12 = 0.0, r = 0.0;
+};
+Fibre fibre(const BeamOutput& o, const Strains<double>& e, int k) {
+  const double x1 = o.section.points[k][0], x2 = o.section.points[k][1];
+  return {e[0] + e[3] * x2 - e[4] * x1, o.initial[0] + o.initial[3] * x2 - o.initial[4] * x1,
+          e[5] * o.section.torsion_radius[k], std::hypot(x1, x2)};
+}
+
 /// Pipes: S11 axial E eps + nu (sigma_r + sigma_theta), S22 hoop (Lame, at the section point's
 /// radius), S12 torsional shear; E22 the hoop strain (S22 - nu (S11 + sigma_r)) / E + eps_th.
 void recover_pipe_points(const BeamOutput& o, std::span<const Strains<double>> e,
@@ -153,13 +164,9 @@ void recover_pipe_points(const BeamOutput& o, std::span<const Strains<double>> e
   OutputBlock& E = out.blocks.back();
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < sec.n_points; ++k) {
-      const double x1 = sec.points[k][0], x2 = sec.points[k][1];
-      const double e11 = e[p][0] + e[p][3] * x2 - e[p][4] * x1;
-      const double e0 = o.initial[0] + o.initial[3] * x2 - o.initial[4] * x1;
-      const double r = std::hypot(x1, x2);
+      const auto [e11, e0, e12, r] = fibre(o, e[p], k);
       const double hoop = pipe_hoop_at(sec, o.pressure, r);
       const double s11 = o.E * (e11 - e0) + o.nu * pipe_lame_sum(sec, o.pressure);
-      const double e12 = e[p][5] * sec.torsion_radius[k];
       const int row = 3 * (p * sec.n_points + k);
       S.values[row] = s11;
       S.values[row + 1] = hoop;
@@ -199,11 +206,7 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
   OutputBlock& E = out.blocks.back();
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < sec.n_points; ++k) {
-      const double x1 = sec.points[k][0], x2 = sec.points[k][1];
-      // fibre strain eps + kappa_1 x2 - kappa_2 x1 (docs/theory/structural.md §3.5)
-      const double e11 = e[p][0] + e[p][3] * x2 - e[p][4] * x1;
-      const double e0 = o.initial[0] + o.initial[3] * x2 - o.initial[4] * x1;
-      const double e12 = e[p][5] * sec.torsion_radius[k]; // engineering shear strain
+      const auto [e11, e0, e12, r] = fibre(o, e[p], k);
       const int row = p * sec.n_points + k;
       E.values[2 * row] = e11;
       E.values[2 * row + 1] = e12;
