@@ -19,7 +19,8 @@ std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
   switch (element_info(ctx.type).family) {
   case ElementFamily::Spring:
   case ElementFamily::Truss:
-  case ElementFamily::Beam: return make_structural_kernel(ctx);
+  case ElementFamily::Beam:
+  case ElementFamily::Shell: return make_structural_kernel(ctx);
   case ElementFamily::Continuum: return make_continuum_kernel(ctx);
   case ElementFamily::Gap: return make_gap_kernel(ctx);
   case ElementFamily::HeatTransfer: return make_heat_kernel(ctx);

@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 81> kInfo = {{
+constexpr std::array<ElementTypeInfo, 86> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -140,6 +140,11 @@ constexpr std::array<ElementTypeInfo, 81> kInfo = {{
     {ElementType::B22, "B22", 3, F::Beam, S::Planar, P::None, true, false},
     {ElementType::PIPE31, "PIPE31", 2, F::Beam, S::ThreeD, P::None, true, false, Shape::Line2},
     {ElementType::PIPE32, "PIPE32", 3, F::Beam, S::ThreeD, P::None, true, false},
+    {ElementType::S4, "S4", 4, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad4},
+    {ElementType::S4R, "S4R", 4, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad4},
+    {ElementType::S3, "S3", 3, F::Shell, S::ThreeD, P::None, true, false, Shape::Tri3},
+    {ElementType::S3R, "S3R", 3, F::Shell, S::ThreeD, P::None, true, false, Shape::Tri3},
+    {ElementType::S8R, "S8R", 8, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad8},
 }};
 } // namespace
 

@@ -98,9 +98,15 @@ enum class ElementType : std::uint8_t {
   B22,
   PIPE31,
   PIPE32,
+  // shells (DOFs 1-6 per node)
+  S4,
+  S4R,
+  S3,
+  S3R,
+  S8R,
 };
 
-enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer };
+enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer, Shell };
 
 /// Which model space an element type requires.
 enum class SpaceRequirement : std::uint8_t { Any, Planar, Axisymmetric, ThreeD };

@@ -59,6 +59,9 @@ struct Model {
   std::vector<SolidSection> solid_sections;
   std::vector<SectionControls> section_controls;
   std::vector<BeamSection> beam_sections;
+  std::vector<ShellSection> shell_sections;
+  /// *NODAL THICKNESS: per node (0 where not given; empty when the deck has none)
+  std::vector<double> nodal_thickness;
   std::vector<SpringSection> spring_sections;
   std::vector<GapSection> gap_sections;
   std::vector<PropertyRef> element_property; ///< per element

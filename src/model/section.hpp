@@ -62,6 +62,22 @@ struct BeamSection {
   SourceLocation loc;
 };
 
+/// *SHELL SECTION (S3, S3R, S4, S4R, S8R): a homogeneous elastic shell.
+struct ShellSection {
+  std::string elset;
+  int material = -1;
+  double thickness = 0.0; ///< data line field 1; with NODAL THICKNESS the nodal values
+  int n_points = 5;       ///< Simpson points through the thickness (odd, >= 3)
+  /// OFFSET=: position of the reference surface as a fraction of the thickness from the mid-surface
+  /// (SPOS = 0.5: the top surface, SNEG = -0.5: the bottom)
+  double offset = 0.0;
+  bool nodal_thickness = false; ///< NODAL THICKNESS: thicknesses from *NODAL THICKNESS
+  /// *TRANSVERSE SHEAR STIFFNESS after the section: K11, K22 (0 = default 5/6 G t)
+  double k11 = 0.0, k22 = 0.0;
+  bool invalid = false; ///< its keyword had an error (reported): nothing more is checked
+  SourceLocation loc;
+};
+
 /// *SPRING (SPRING1, SPRING2, SPRINGA): linear stiffness, optionally temperature dependent.
 struct SpringSection {
   std::string elset;
@@ -171,7 +187,7 @@ struct GapSection {
 
 /// Which property record an element uses.
 struct PropertyRef {
-  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap };
+  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap, Shell };
   Kind kind = Kind::None;
   std::int32_t index = -1;
   friend bool operator==(const PropertyRef&, const PropertyRef&) = default;

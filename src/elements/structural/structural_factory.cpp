@@ -1,8 +1,9 @@
-// make_structural_kernel: SPRING1/SPRING2/SPRINGA, T2D2/T3D2 and B31 blocks.
+// make_structural_kernel: springs, trusses, beams and shells.
 #include "elements/structural/structural_factory.hpp"
 
 #include "elements/structural/beam.hpp"
 #include "elements/structural/coupled_truss.hpp"
+#include "elements/structural/shell.hpp"
 #include "elements/structural/spring.hpp"
 #include "elements/structural/truss.hpp"
 #include "model/model.hpp"
@@ -94,6 +95,12 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   case ElementType::PIPE31:
   case ElementType::PIPE32:
     return make_beam_kernel(ctx);
+  case ElementType::S3:
+  case ElementType::S3R:
+  case ElementType::S4:
+  case ElementType::S4R:
+  case ElementType::S8R:
+    return make_shell_kernel(ctx);
   case ElementType::T2D2T:
   case ElementType::T3D2T:
     return make_coupled_truss_kernel(ctx);
@@ -103,7 +110,7 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
   const std::string_view name = element_info(ctx.type).name;
   throw InputError(ctx.model.element_location(e),
-                   fmt::format("{} is not a spring, truss or beam element type", name));
+                   fmt::format("{} is not a spring, truss, beam or shell element type", name));
 }
 
 } // namespace gapfem

@@ -323,8 +323,9 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       d.kind = DistLoadKind::Pressure;
       d.face = face;
     } else if (face == 0) {
-      r.fail("field 2 (P)", "give the face of the pressure: P1, P2, … (face numbers of the element "
-                            "type), or use *DSLOAD on a surface");
+      r.at_most(3, "element or element set, P, magnitude");
+      d.kind = DistLoadKind::Pressure; // on shells; other elements need a face (checked below)
+      d.face = 0;
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
@@ -343,6 +344,22 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       }
       if (info.family == ElementFamily::Beam) {
         loads.push_back(beam_dload(s, r, e, d, label));
+        continue;
+      }
+      if (d.kind == DistLoadKind::Pressure && (d.face == 0) != (info.family == ElementFamily::Shell)) {
+        if (d.face == 0)
+          r.fail("field 2 (P)", fmt::format("element {} is not a shell: give the face of the "
+                                            "pressure, P1, P2, … (face numbers of {}), or use "
+                                            "*DSLOAD on a surface",
+                                            s.model.element_label(e), info.name));
+        r.fail(fmt::format("field 2 ({})", label),
+               fmt::format("element {} is a shell ({}), loaded on its reference surface by P "
+                           "(positive against the shell normal); use P",
+                           s.model.element_label(e), info.name));
+      }
+      if (info.family == ElementFamily::Shell) {
+        d.elem = e;
+        loads.push_back(d);
         continue;
       }
       if (d.kind == DistLoadKind::LineLoad) {

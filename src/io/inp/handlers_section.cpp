@@ -1,4 +1,4 @@
-// Section keywords: *SOLID SECTION, *BEAM SECTION, *SPRING. The ELSET and MATERIAL references are
+// Section keywords: *SOLID SECTION, *BEAM SECTION, *SHELL SECTION, *NODAL THICKNESS, *SPRING. The ELSET and MATERIAL references are
 // resolved when the model data is complete (model_validate.cpp).
 #include "io/inp/handlers.hpp"
 
@@ -290,7 +290,7 @@ void handle_beam_general_section(BuildState& s, const Keyword& kw) {
   s.beam_section_ok = true;
 }
 
-void handle_transverse_shear(BuildState& s, const Keyword& kw) {
+void handle_beam_transverse_shear(BuildState& s, const Keyword& kw) {
   if (s.model.beam_sections.empty() || !s.beam_section_ok) return; // its section was reported
   BeamSection& sec = s.model.beam_sections.back();
   const auto lines = lines_of(kw);
@@ -335,6 +335,103 @@ void handle_spring(BuildState& s, const Keyword& kw) {
   sec.stiffness = read_property_table(s, kw, rows, {"stiffness"}, nullptr);
   s.model.spring_sections.push_back(std::move(sec));
   s.spring_dof_line.push_back(kw.data[0]);
+}
+
+} // namespace gapfem::inp
+
+namespace gapfem::inp {
+
+void handle_shell_section(BuildState& s, const Keyword& kw) {
+  s.shell_section_ok = false;
+  ShellSection sec;
+  sec.loc = kw.loc;
+  sec.elset = set_param(s, kw, "ELSET", true);
+  const std::string material = name_param(kw, "MATERIAL", true);
+  try {
+    reject_param(kw, "ORIENTATION",
+                 "gapfem shell materials are isotropic, so no orientation is needed; remove the "
+                 "parameter");
+    reject_param(kw, "COMPOSITE", "give one homogeneous layer (thickness, points, material)");
+    reject_param(kw, "POISSON", "the thickness change of gapfem shells is not computed");
+    enum_param(kw, "SECTION INTEGRATION", {"SIMPSON"}, 0);
+    enum_param(kw, "TEMPERATURE", {"GRADIENT"}, 0);
+    if (kw.has("OFFSET")) {
+      const std::string o = canonical(param_value(kw, "OFFSET", true));
+      if (o == "SPOS")
+        sec.offset = 0.5;
+      else if (o == "SNEG")
+        sec.offset = -0.5;
+      else if (o == "SMID")
+        sec.offset = 0.0;
+      else if (const auto v = real_param(kw, "OFFSET"))
+        sec.offset = *v;
+      else
+        throw InputError(kw.loc, fmt::format("OFFSET={}", param_value(kw, "OFFSET", true)),
+                         "give SPOS, SNEG, SMID or the offset as a fraction of the thickness");
+    }
+    sec.nodal_thickness = kw.has("NODAL THICKNESS");
+    const auto lines = lines_of(kw);
+    if (lines.empty())
+      throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                       "the data line is missing; give the shell thickness and the number of "
+                       "integration points through it (e.g. 0.01, 5)");
+    const FieldReader r = s.reader(kw, *lines[0]);
+    r.at_most(2, "thickness, number of integration points");
+    sec.thickness = sec.nodal_thickness ? r.real_or(0, 0.0, "thickness") : r.real(0, "thickness");
+    if (!(sec.thickness > 0.0) && !(sec.nodal_thickness && sec.thickness == 0.0))
+      r.fail("field 1 (thickness)",
+             fmt::format("the shell thickness must be positive, not {}", sec.thickness));
+    const long long n = r.integer_or(1, 5, "number of integration points");
+    if (n < 3 || n % 2 == 0 || n > 15)
+      r.fail("field 2 (integration points)",
+             fmt::format("Simpson's rule needs an odd number of points from 3 to 15, not {}", n));
+    sec.n_points = static_cast<int>(n);
+    extra_lines_warning(s, kw, 1);
+  } catch (const InputError&) {
+    sec.invalid = true;
+    s.model.shell_sections.push_back(sec);
+    s.shell_material.push_back(material);
+    throw;
+  }
+  s.model.shell_sections.push_back(std::move(sec));
+  s.shell_material.push_back(material);
+  s.shell_section_ok = true;
+}
+
+void handle_nodal_thickness(BuildState& s, const Keyword& kw) {
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(2, "node or node set, thickness");
+    const double t = r.real(1, "thickness");
+    if (!(t > 0.0)) r.fail("field 2 (thickness)", fmt::format("must be positive, not {}", t));
+    auto& nt = s.model.nodal_thickness;
+    for (NodeId n : resolve_nodes(s, r, 0)) {
+      if (nt.size() <= static_cast<std::size_t>(n)) nt.resize(static_cast<std::size_t>(n) + 1, 0.0);
+      nt[n] = t;
+    }
+  });
+}
+
+void handle_transverse_shear(BuildState& s, const Keyword& kw) {
+  if (s.parent == Parent::ShellSection) {
+    if (s.model.shell_sections.empty() || !s.shell_section_ok) return; // reported
+    ShellSection& sec = s.model.shell_sections.back();
+    const auto lines = lines_of(kw);
+    if (lines.empty())
+      throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset), "give K11, K22 and K12");
+    const FieldReader r = s.reader(kw, *lines[0]);
+    r.at_most(3, "K11, K22, K12");
+    sec.k11 = r.real(0, "K11");
+    sec.k22 = r.real_or(1, sec.k11, "K22");
+    if (!(sec.k11 > 0.0) || !(sec.k22 > 0.0))
+      r.fail("K11, K22",
+             fmt::format("shear stiffnesses must be positive, not {}, {}", sec.k11, sec.k22));
+    if (r.real_or(2, 0.0, "K12") != 0.0)
+      r.fail("field 3 (K12)", "gapfem shells are isotropic: K12 must be 0 or blank");
+    extra_lines_warning(s, kw, 1);
+    return;
+  }
+  handle_beam_transverse_shear(s, kw);
 }
 
 } // namespace gapfem::inp

@@ -34,6 +34,7 @@ enum class Parent : std::uint8_t {
   ChangeFriction,
   Coupling,
   BeamSection,
+  ShellSection,
   /// after an unsupported block keyword (*SURFACE INTERACTION): its sub-options are skipped
   /// quietly (the block was reported), never attached to an earlier block
   Unsupported
@@ -82,6 +83,8 @@ struct BuildState {
   std::vector<std::string> beam_material;     ///< per beam section: material name
   /// the last *BEAM (GENERAL) SECTION was read without error (its sub-options may attach to it)
   bool beam_section_ok = false;
+  std::vector<std::string> shell_material; ///< per shell section: material name
+  bool shell_section_ok = false;             ///< as beam_section_ok, for *SHELL SECTION
   /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
   /// of the ELSET are known.
   std::vector<DataLine> spring_dof_line;

@@ -18,6 +18,8 @@ const char* keyword_of(Kind k) {
     return "*SOLID SECTION";
   case Kind::Beam:
     return "*BEAM SECTION";
+  case Kind::Shell:
+    return "*SHELL SECTION";
   case Kind::Spring:
     return "*SPRING";
   case Kind::Gap:
@@ -36,6 +38,8 @@ Kind kind_for(ElementFamily f) {
     return Kind::Solid;
   case ElementFamily::Beam:
     return Kind::Beam;
+  case ElementFamily::Shell:
+    return Kind::Shell;
   case ElementFamily::Spring:
     return Kind::Spring;
   case ElementFamily::Gap:
@@ -232,6 +236,9 @@ void check_materials(BuildState& s) {
     } else if (ref.kind == Kind::Beam) {
       m = s.model.beam_sections[ref.index].material;
       set = s.model.beam_sections[ref.index].elset;
+    } else if (ref.kind == Kind::Shell) {
+      m = s.model.shell_sections[ref.index].material;
+      set = s.model.shell_sections[ref.index].elset;
     }
     if (m < 0) continue;
     const Material& mat = s.model.materials[m];
@@ -292,6 +299,10 @@ void finish_model_data(BuildState& s) {
       if (!m.beam_sections[i].general && !m.beam_sections[i].invalid) // GENERAL: own constants
         m.beam_sections[i].material =
             resolve_material(s, s.beam_material[i], m.beam_sections[i].loc);
+    for (std::size_t i = 0; i < m.shell_sections.size(); ++i)
+      if (!m.shell_sections[i].invalid)
+        m.shell_sections[i].material =
+            resolve_material(s, s.shell_material[i], m.shell_sections[i].loc);
 
     m.element_property.assign(static_cast<std::size_t>(m.mesh.n_elements()), PropertyRef{});
     std::vector<SourceLocation> owner(static_cast<std::size_t>(m.mesh.n_elements()));
@@ -301,6 +312,9 @@ void finish_model_data(BuildState& s) {
     for (std::size_t i = 0; i < m.beam_sections.size(); ++i)
       bind_property(s, Kind::Beam, static_cast<int>(i), m.beam_sections[i].elset,
                     m.beam_sections[i].loc, owner);
+    for (std::size_t i = 0; i < m.shell_sections.size(); ++i)
+      bind_property(s, Kind::Shell, static_cast<int>(i), m.shell_sections[i].elset,
+                    m.shell_sections[i].loc, owner);
     for (std::size_t i = 0; i < m.spring_sections.size(); ++i) {
       bind_property(s, Kind::Spring, static_cast<int>(i), m.spring_sections[i].elset,
                     m.spring_sections[i].loc, owner);

@@ -17,12 +17,13 @@ constexpr unsigned kOutput = bit(Parent::FieldOutput) | bit(Parent::HistoryOutpu
 constexpr unsigned kFriction = bit(Parent::Gap) | bit(Parent::ChangeFriction);
 constexpr unsigned kCoupling = bit(Parent::Coupling);
 constexpr unsigned kBeam = bit(Parent::BeamSection);
+constexpr unsigned kSection = kBeam | bit(Parent::ShellSection);
 
 using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 103> kTable = {{
+constexpr std::array<KeywordSpec, 105> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -50,7 +51,9 @@ constexpr std::array<KeywordSpec, 103> kTable = {{
    "ELEMENT DELETION|MAX DEGRADATION|VISCOSITY"},
   {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION|TEMPERATURE", 0, P::BeamSection},
   {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE", 0, P::BeamSection},
-  {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kBeam},
+  {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kSection},
+  {"*SHELL SECTION", handle_shell_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|SECTION INTEGRATION|TEMPERATURE", 0, P::ShellSection},
+  {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
   {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
   {"*INITIAL CONDITIONS", handle_initial_conditions, W::Model, "TYPE"},
@@ -154,6 +157,9 @@ std::string parent_names(unsigned parents) {
   if (parents == kCoupling) return "*COUPLING (it defines the coupling above it)";
   if (parents == kBeam)
     return "*BEAM SECTION or *BEAM GENERAL SECTION (it defines a property of the section above it)";
+  if (parents == kSection)
+    return "*BEAM SECTION, *BEAM GENERAL SECTION or *SHELL SECTION (it defines a property of the "
+           "section above it)";
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 

@@ -112,9 +112,9 @@ TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {
       "the parameter FOO of *NODE is not supported by gapfem, and --ignore-unknown "
       "does not skip it: it would change the model");
   EXPECT_CONTAINS(test::error_text(std::string(test::kTrussModel) +
-                                       "*SHELL SECTION, ELSET=TRUSS, MATERIAL=STEEL\n1.\n",
+                                       "*MEMBRANE SECTION, ELSET=TRUSS, MATERIAL=STEEL\n1.\n",
                                    ReadOptions{true}),
-                  "the keyword *SHELL SECTION is not supported by gapfem, and --ignore-unknown "
+                  "the keyword *MEMBRANE SECTION is not supported by gapfem, and --ignore-unknown "
                   "does not skip it");
   // real errors stay errors
   const InputError e =

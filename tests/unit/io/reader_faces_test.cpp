@@ -75,6 +75,8 @@ std::string property_for(const ElementTypeInfo& info) {
     if (info.type == ElementType::PIPE31 || info.type == ElementType::PIPE32)
       return material + "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=PIPE\n1., 0.1\n";
     return material + "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=RECT\n1., 2.\n0., 0., -1.\n";
+  case ElementFamily::Shell:
+    return material + "*SHELL SECTION, ELSET=E, MATERIAL=M\n0.1\n";
   case ElementFamily::Gap:
     // GAPCYL needs an axis (z), GAPSPHER a non-zero diameter; the others a direction (x).
     return info.type == ElementType::GAPCYL ? "*GAP, ELSET=E\n0.1, 0., 0., 1., 1.\n"

@@ -88,8 +88,8 @@ TEST(BeamInput, MisplacedShearStiffnessAndBadLoadsAreErrors) {
   const std::string rect = "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n";
   const JobResult r = test::run_deck(deck("B31", "*TRANSVERSE SHEAR STIFFNESS\n1., 1.\n" + rect));
   EXPECT_EQ(r.exit_code, kExitInputError);
-  EXPECT_NE(r.error.find("*TRANSVERSE SHEAR STIFFNESS must follow *BEAM SECTION or *BEAM GENERAL "
-                         "SECTION"),
+  EXPECT_NE(r.error.find("*TRANSVERSE SHEAR STIFFNESS must follow *BEAM SECTION, *BEAM GENERAL "
+                         "SECTION or *SHELL SECTION"),
             std::string::npos)
       << r.error;
   expect_input_error(deck("B21", rect, "*DLOAD\nB, PZ, 1.\n", true),

@@ -79,6 +79,16 @@ struct TestModel {
     model.beam_sections.push_back(s);
     return {PropertyRef::Kind::Beam, static_cast<std::int32_t>(model.beam_sections.size() - 1)};
   }
+  PropertyRef add_shell_section(int material, double thickness, double offset = 0.0) {
+    ShellSection s;
+    s.elset = "SHELL";
+    s.material = material;
+    s.thickness = thickness;
+    s.offset = offset;
+    s.loc = {"test.inp", 8, "*SHELL SECTION"};
+    model.shell_sections.push_back(s);
+    return {PropertyRef::Kind::Shell, static_cast<std::int32_t>(model.shell_sections.size() - 1)};
+  }
   /// Linear spring; `k_rows` = (k, temperature) pairs (one pair: constant).
   PropertyRef add_spring(int dof1, int dof2, std::vector<std::pair<double, double>> k_rows) {
     SpringSection s;

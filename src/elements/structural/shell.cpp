@@ -1,0 +1,351 @@
+#include "elements/structural/shell.hpp"
+
+#include "common/jet.hpp"
+#include "elements/structural/shell_section.hpp"
+#include "elements/structural/shell_strains.hpp"
+#include "elements/structural/structural_common.hpp"
+
+#include <cmath>
+
+namespace gapfem {
+
+using namespace structural;
+
+namespace shell {
+
+namespace {
+
+constexpr std::array<DofType, 6> kDofs{DofType::U1,  DofType::U2,  DofType::U3,
+                                       DofType::UR1, DofType::UR2, DofType::UR3};
+constexpr double kDrillFactor = 1e-3; ///< drilling penalty per area, times G t
+
+template <class T>
+T unknown(double v, int i) {
+  if constexpr (std::is_same_v<T, double>)
+    return v;
+  else
+    return T::variable(v, i);
+}
+
+/// Three-point rule of the triangle (interior points), weights summing to 1/2.
+constexpr std::array<std::array<double, 3>, 3> kTri3{
+    {{1.0 / 6, 1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6, 1.0 / 6}, {1.0 / 6, 2.0 / 3, 1.0 / 6}}};
+
+template <int NN>
+class ShellKernel final : public ElementKernel {
+  static constexpr int kN = 6 * NN;
+  using J = Jet<kN>;
+
+ public:
+  explicit ShellKernel(ShellData data) : _d(std::move(data)) {}
+
+  ElementType type() const override { return _d.type; }
+  std::span<const DofType> node_dofs(int) const override { return kDofs; }
+  int n_state() const override { return 4 * NN; } ///< a unit quaternion per node
+  bool uses_temperature_field() const override { return material_uses_temperature(_d.material); }
+
+  std::string validate(const ElementInput& in) const override {
+    return check_geometry(in.X, directors(in), thickness(in), in.ctx ? in.ctx->model_size : 1.0);
+  }
+
+  void initialize(const ElementInput& in) const override {
+    for (int a = 0; a < NN; ++a) {
+      in.state[4 * a] = 1.0;
+      for (int i = 1; i < 4; ++i) in.state[4 * a + i] = 0.0;
+    }
+  }
+
+  void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    const SectionLaw law = section_law(_d, in);
+    const auto nv = gather<J>(in, nl);
+    const J W = energy(in, law, nv, nl);
+    for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
+    if (out.want_tangent)
+      for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
+    write_rotations(in, nl);
+  }
+
+  bool supports_load(DistLoadKind kind, int face) const override {
+    return face == 0 && (kind == DistLoadKind::Pressure || kind == DistLoadKind::Gravity ||
+                         kind == DistLoadKind::BodyForce);
+  }
+
+  void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
+            std::span<double> f_ext, std::span<double> tangent) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    if (load.kind == DistLoadKind::Pressure)
+      return pressure(in, magnitude, nl, f_ext, tangent);
+    // body loads per unit reference area: rho g t or b t
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    const auto T = average(in.temperature);
+    for (const auto& q : load_rule()) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, q[0], q[1], q[2], p)) continue;
+      const double w = line_load_intensity(_d.material, p.thickness, load, magnitude, T, in.label);
+      for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < 3; ++i) f_ext[6 * a + i] += p.dA * w * p.sh.N[a] * load.direction[i];
+    }
+  }
+
+  bool supports_output(ElemVar var) const override {
+    return var == ElemVar::S || var == ElemVar::E || var == ElemVar::SF;
+  }
+
+  void recover(const ElementInput& in, ElementRecovery& out) const override {
+    const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
+    const SectionLaw law = section_law(_d, in);
+    const auto nv = gather<double>(in, nl);
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    std::array<SectionStrains<double>, 4> e{};
+    std::array<double, 4> thick{};
+    const Rule q = output_rule();
+    for (int k = 0; k < q.n; ++k) {
+      SurfacePoint p;
+      surface_point(in.X, D, t, q.pts[k][0], q.pts[k][1], q.pts[k][2], p);
+      e[k] = strains_at(in, p, nv, nl);
+      thick[k] = p.thickness;
+    }
+    recover_shell_output(law, std::span(e.data(), q.n), std::span(thick.data(), q.n), out);
+    out.strain_energy = energy(in, law, nv, nl);
+  }
+
+ private:
+  std::span<const Vec3> directors(const ElementInput& in) const {
+    return std::span(_d.directors).subspan(static_cast<std::size_t>(in.block_index) * NN, NN);
+  }
+  std::span<const double> thickness(const ElementInput& in) const {
+    return std::span(_d.thickness).subspan(static_cast<std::size_t>(in.block_index) * NN, NN);
+  }
+
+  /// Output points: Abaqus's integration points (S4R and S3/S3R one, S4 and S8R four).
+  Rule output_rule() const {
+    if (NN == 3 || _d.type == ElementType::S4R) {
+      Rule r;
+      r.n = 1;
+      r.pts[0] = centre_point(NN);
+      return r;
+    }
+    return full_rule(NN);
+  }
+
+  /// Points for distributed loads: 3 on triangles, 2x2 on S4, 3x3 on S8R.
+  std::vector<std::array<double, 3>> load_rule() const {
+    std::vector<std::array<double, 3>> r;
+    if (NN == 3) {
+      for (const auto& p : kTri3) r.push_back(p);
+    } else if (NN == 4) {
+      for (int k = 0; k < 4; ++k) r.push_back(full_rule(4).pts[k]);
+    } else {
+      const double g = std::sqrt(0.6), x[3] = {-g, 0.0, g}, w[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.push_back({x[i], x[j], w[i] * w[j]});
+    }
+    return r;
+  }
+
+  /// Pressure on the reference surface, positive against the positive normal; a follower load
+  /// under NLGEOM (its load stiffness added to the tangent).
+  void pressure(const ElementInput& in, double pr, bool nl, std::span<double> f,
+                std::span<double> tangent) const {
+    for (const auto& q : load_rule()) {
+      const Shape sh = shape_at(NN, q[0], q[1]);
+      Vec3 xr{}, xs{};
+      for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < 3; ++i) {
+          const double x = in.X[a][i] + (nl ? in.u[6 * a + i] : 0.0);
+          xr[i] += sh.dr[a] * x;
+          xs[i] += sh.ds[a] * x;
+        }
+      const Vec3 n = cross(xr, xs);
+      for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < 3; ++i) f[6 * a + i] -= pr * q[2] * sh.N[a] * n[i];
+      if (!nl || tangent.empty()) continue;
+      // d(xr x xs)/du_bk = dr_b (e_k x xs) + ds_b (xr x e_k); tangent -= d f / du
+      for (int b = 0; b < NN; ++b)
+        for (int k = 0; k < 3; ++k) {
+          Vec3 ek{};
+          ek[k] = 1.0;
+          const Vec3 c1 = cross(ek, xs), c2 = cross(xr, ek);
+          for (int a = 0; a < NN; ++a)
+            for (int i = 0; i < 3; ++i)
+              tangent[(6 * a + i) * kN + 6 * b + k] +=
+                  pr * q[2] * sh.N[a] * (sh.dr[b] * c1[i] + sh.ds[b] * c2[i]);
+        }
+    }
+  }
+
+  template <class T>
+  ShellNodal<T, NN> gather(const ElementInput& in, bool nl) const {
+    ShellNodal<T, NN> nv;
+    const auto D = directors(in);
+    for (int a = 0; a < NN; ++a) {
+      const int b = 6 * a;
+      V3<T> th;
+      for (int i = 0; i < 3; ++i) {
+        nv.u[a][i] = unknown<T>(in.u[b + i], b + i);
+        th[i] = unknown<T>(in.u[b + 3 + i], b + 3 + i);
+      }
+      const V3<double> Da{D[a][0], D[a][1], D[a][2]};
+      if (!nl) {
+        nv.dd[a] = rotation::cross3(th, Da);
+        continue;
+      }
+      const V3<T> d = rotation::rotate(rotation_of(in, th, a), Da);
+      for (int i = 0; i < 3; ++i) nv.dd[a][i] = d[i] - Da[i];
+    }
+    return nv;
+  }
+
+  /// R_a = exp(theta - theta_start) R_start.
+  template <class T>
+  rotation::Quat<T> rotation_of(const ElementInput& in, V3<T> th, int a) const {
+    if (!in.u_start.empty())
+      for (int i = 0; i < 3; ++i) th[i] -= in.u_start[6 * a + 3 + i];
+    rotation::Quat<double> q0{};
+    if (in.state_start.size() >= static_cast<std::size_t>(4 * NN)) {
+      const double* s = in.state_start.data() + 4 * a;
+      q0 = {s[0], s[1], s[2], s[3]};
+    }
+    return rotation::quat_mul(rotation::quat_exp(th), q0);
+  }
+
+  /// Local section strains at a point, with the assumed transverse shear of MITC3/MITC4 and, for
+  /// the quadrilaterals, the in-plane shear strains replaced by their centre values.
+  template <class T>
+  SectionStrains<T> strains_at(const ElementInput& in, const SurfacePoint& p,
+                               const ShellNodal<T, NN>& nv, bool nl) const {
+    const Covariant<T> c = covariant(p, nv, nl);
+    SectionStrains<T> s;
+    s.eps = to_local(p, c.m);
+    s.kap = to_local(p, c.k);
+    T gr = c.g[0], gs = c.g[1];
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    auto tied = [&](double r, double ss) {
+      SurfacePoint q;
+      surface_point(in.X, D, t, r, ss, 1.0, q);
+      return covariant(q, nv, nl);
+    };
+    if constexpr (NN == 4) {
+      const auto A = tied(0.0, -1.0), C = tied(0.0, 1.0), B = tied(-1.0, 0.0), E = tied(1.0, 0.0);
+      gr = 0.5 * (1.0 - p.s) * A.g[0] + 0.5 * (1.0 + p.s) * C.g[0];
+      gs = 0.5 * (1.0 - p.r) * B.g[1] + 0.5 * (1.0 + p.r) * E.g[1];
+      // selective integration: in-plane shear strains at the centre, in the centre's frame
+      SurfacePoint m;
+      surface_point(in.X, D, t, 0.0, 0.0, 1.0, m);
+      const Covariant<T> cm = covariant(m, nv, nl);
+      s.eps[2] = to_local(m, cm.m)[2];
+      s.kap[2] = to_local(m, cm.k)[2];
+    } else if constexpr (NN == 3) {
+      const auto P1 = tied(0.5, 0.0), P2 = tied(0.0, 0.5), P3 = tied(0.5, 0.5);
+      const T cc = (P2.g[1] - P1.g[0]) - (P3.g[1] - P3.g[0]);
+      gr = P1.g[0] + cc * p.s;
+      gs = P2.g[1] - cc * p.r;
+    }
+    s.gam = shear_to_local(p, gr, gs);
+    return s;
+  }
+
+  template <class T>
+  T energy(const ElementInput& in, const SectionLaw& law, const ShellNodal<T, NN>& nv,
+           bool nl) const {
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    T W(0.0);
+    double area = 0.0;
+    auto add = [&](double r, double s, double w) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, r, s, w, p)) return;
+      W += p.dA * section_energy(law, p.thickness, strains_at(in, p, nv, nl));
+      area += p.dA;
+    };
+    if constexpr (NN == 3) {
+      for (const auto& q : kTri3) add(q[0], q[1], q[2]);
+    } else {
+      const Rule q = full_rule(NN);
+      for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
+    }
+    W += drilling(in, law, nv, nl, area);
+    return W;
+  }
+
+  /// 1/2 k A/NN sum_a (theta_n - omega)_a^2: the rotation about the normal at each node against the
+  /// in-plane rotation of the surface there, objective under NLGEOM:
+  ///   drill = 1/2 [(R e1) . g2 - (R e2) . g1],  g_i = F e_i (the deformed local directions).
+  template <class T>
+  T drilling(const ElementInput& in, const SectionLaw& law, const ShellNodal<T, NN>& nv, bool nl,
+             double area) const {
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    T W(0.0);
+    for (int a = 0; a < NN; ++a) {
+      const auto rs = node_coordinates(NN, a);
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, rs[0], rs[1], 1.0, p)) continue;
+      V3<T> ur, us;
+      surface_derivatives(p, nv, ur, us);
+      V3<T> dg1, dg2, de1, de2;
+      for (int i = 0; i < 3; ++i) {
+        dg1[i] = ur[i] * p.T[0][0] + us[i] * p.T[1][0];
+        dg2[i] = ur[i] * p.T[0][1] + us[i] * p.T[1][1];
+      }
+      const V3<double> e1{p.e1[0], p.e1[1], p.e1[2]}, e2{p.e2[0], p.e2[1], p.e2[2]};
+      V3<T> th;
+      for (int i = 0; i < 3; ++i) th[i] = unknown<T>(in.u[6 * a + 3 + i], 6 * a + 3 + i);
+      if (nl) {
+        const auto q = rotation_of(in, th, a);
+        const V3<T> r1 = rotation::rotate(q, e1), r2 = rotation::rotate(q, e2);
+        for (int i = 0; i < 3; ++i) {
+          de1[i] = r1[i] - e1[i];
+          de2[i] = r2[i] - e2[i];
+        }
+      } else {
+        de1 = rotation::cross3(th, e1);
+        de2 = rotation::cross3(th, e2);
+      }
+      const T drill = 0.5 * (change(p.e1, de1, p.e2, dg2, nl) - change(p.e2, de2, p.e1, dg1, nl));
+      const double k = kDrillFactor * law.G * t[a] * area / NN;
+      W += 0.5 * k * (drill * drill);
+    }
+    return W;
+  }
+
+  /// Trial nodal rotations: exp(theta - theta_start) R_start under NLGEOM, exp(theta) otherwise.
+  void write_rotations(const ElementInput& in, bool nl) const {
+    if (in.state.size() < static_cast<std::size_t>(4 * NN)) return;
+    for (int a = 0; a < NN; ++a) {
+      V3<double> th{in.u[6 * a + 3], in.u[6 * a + 4], in.u[6 * a + 5]};
+      const auto q = nl ? rotation_of(in, th, a) : rotation::quat_exp(th);
+      const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+      const double v[4] = {q.w / n, q.x / n, q.y / n, q.z / n};
+      for (int i = 0; i < 4; ++i) in.state[4 * a + i] = v[i];
+    }
+  }
+
+  ShellData _d;
+};
+
+} // namespace
+
+} // namespace shell
+
+std::unique_ptr<ElementKernel> make_shell_kernel(const KernelContext& ctx) {
+  shell::ShellData data = shell::shell_data(ctx);
+  switch (element_info(ctx.type).n_nodes) {
+  case 3:
+    return std::make_unique<shell::ShellKernel<3>>(std::move(data));
+  case 4:
+    return std::make_unique<shell::ShellKernel<4>>(std::move(data));
+  case 8:
+    return std::make_unique<shell::ShellKernel<8>>(std::move(data));
+  default:
+    break;
+  }
+  throw InternalError("make_shell_kernel: not a shell type");
+}
+
+} // namespace gapfem

@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Writes the shell verification decks of this directory (our own meshes; run from here).
+
+shell_strip_moment.inp  cantilever strips of S4R, S4, S3, S8R under an end moment (exact)
+shell_plate_ss.inp      quarter of a simply supported square plate under pressure, S4R 8x8
+shell_scordelis_lo.inp  Scordelis-Lo roof, quarter, S8R 8x8 (and S4R 16x16 in the _s4r deck)
+"""
+import math
+
+
+def write(name, lines):
+    with open(name, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def grid(nx, ny, quad8, tri, X, base=0, ebase=0):
+    """Nodes X(i, j) of a structured grid and its elements (Abaqus numbering)."""
+    mx, my = (2 * nx, 2 * ny) if quad8 else (nx, ny)
+    nid = lambda i, j: base + i * (my + 1) + j + 1
+    els = []
+    for i in range(nx):
+        for j in range(ny):
+            if quad8:
+                I, J = 2 * i, 2 * j
+                els.append([nid(I, J), nid(I + 2, J), nid(I + 2, J + 2), nid(I, J + 2),
+                            nid(I + 1, J), nid(I + 2, J + 1), nid(I + 1, J + 2), nid(I, J + 1)])
+            elif tri:
+                els.append([nid(i, j), nid(i + 1, j), nid(i + 1, j + 1)])
+                els.append([nid(i, j), nid(i + 1, j + 1), nid(i, j + 1)])
+            else:
+                els.append([nid(i, j), nid(i + 1, j), nid(i + 1, j + 1), nid(i, j + 1)])
+    used = sorted(set(n for e in els for n in e))
+    nodes = []
+    for i in range(mx + 1):
+        for j in range(my + 1):
+            if nid(i, j) in used:
+                nodes.append((nid(i, j), X(i / mx, j / my)))
+    elems = [(ebase + k + 1, e) for k, e in enumerate(els)]
+    return nodes, elems, nid, mx, my
+
+
+def node_lines(nodes):
+    return [f"{k}, {x:.15g}, {y:.15g}, {z:.15g}" for k, (x, y, z) in nodes]
+
+
+def strip():
+    out = ["*HEADING", "Cantilever strips 10 x 1 x 0.1 under an end moment 1 (E = 1e6, nu = 0)"]
+    for s, et in enumerate(["S4R", "S4", "S3", "S8R"]):
+        q8, tri = et == "S8R", et == "S3"
+        nodes, elems, nid, mx, my = grid(4, 1, q8, tri, lambda u, v: (10 * u, v + 2 * s, 0.0),
+                                         base=100 * s, ebase=100 * s)
+        out += ["*NODE"] + node_lines(nodes)
+        out += [f"*ELEMENT, TYPE={et}, ELSET=S{s}"] + [f"{k}, " + ", ".join(map(str, e))
+                                                        for k, e in elems]
+        out += [f"*NSET, NSET=ROOT{s}", ", ".join(str(nid(0, j)) for j in range(my + 1)
+                                                 if any(n == nid(0, j) for n, _ in nodes))]
+        out += [f"*NSET, NSET=TIP{s}", ", ".join(str(nid(mx, j)) for j in range(my + 1)
+                                                if any(n == nid(mx, j) for n, _ in nodes))]
+        out += [f"*SHELL SECTION, ELSET=S{s}, MATERIAL=M", "0.1, 5"]
+    out += ["*MATERIAL, NAME=M", "*ELASTIC", "1e6, 0", "*BOUNDARY"]
+    out += [f"ROOT{s}, 1, 6" for s in range(4)]
+    out += ["*STEP", "*STATIC", "*CLOAD"]
+    for s in range(3):  # two tip nodes each, consistent end moment -1 about y
+        out += [f"{100 * s + 9}, 5, -0.5", f"{100 * s + 10}, 5, -0.5"]
+    out += ["325, 5, -0.16666666666666667", "326, 5, -0.66666666666666667",
+            "327, 5, -0.16666666666666667"]
+    out += ["*NODE PRINT", "U", "*EL PRINT, ELSET=S0", "SF", "*END STEP"]
+    write("shell_strip_moment.inp", out)
+
+
+def plate():
+    nodes, elems, nid, m, _ = grid(8, 8, False, False, lambda u, v: (0.5 * u, 0.5 * v, 0.0))
+    out = ["*HEADING", "Quarter of a simply supported (hard) square plate a = 1, t = 0.01, q = 1",
+           "*NODE"] + node_lines(nodes)
+    out += ["*ELEMENT, TYPE=S4R, ELSET=PLATE"] + [f"{k}, " + ", ".join(map(str, e)) for k, e in elems]
+    side = lambda f: ", ".join(str(f(k)) for k in range(m + 1))
+    out += ["*NSET, NSET=X0", side(lambda j: nid(0, j)), "*NSET, NSET=Y0", side(lambda i: nid(i, 0)),
+            "*NSET, NSET=XS", side(lambda j: nid(m, j)), "*NSET, NSET=YS", side(lambda i: nid(i, m))]
+    out += ["*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL", "0.01, 5",
+            "*MATERIAL, NAME=STEEL", "*ELASTIC", "1e7, 0.3",
+            "*BOUNDARY", "X0, 3", "X0, 4", "Y0, 3", "Y0, 5", "XS, XSYMM", "YS, YSYMM",
+            "*STEP", "*STATIC", "*DLOAD", "PLATE, P, 1.0", "*NODE PRINT", "U",
+            "*EL PRINT, ELSET=PLATE", "S", "SF", "*END STEP"]
+    write("shell_plate_ss.inp", out)
+
+
+def scordelis(et, n, name):
+    R, L = 25.0, 50.0
+    X = lambda u, v: (L / 2 * u, R * math.sin(math.radians(40) * v), R * math.cos(math.radians(40) * v))
+    nodes, elems, nid, m, _ = grid(n, n, et == "S8R", False, X)
+    used = {k for k, _ in nodes}
+    sel = lambda lst: ", ".join(str(k) for k in lst if k in used)
+    out = ["*HEADING", f"Scordelis-Lo roof, quarter, {et} {n} x {n}", "*NODE"] + node_lines(nodes)
+    out += [f"*ELEMENT, TYPE={et}, ELSET=ROOF"] + [f"{k}, " + ", ".join(map(str, e)) for k, e in elems]
+    out += ["*NSET, NSET=DIAPH", sel(nid(0, j) for j in range(m + 1)),
+            "*NSET, NSET=MID", sel(nid(m, j) for j in range(m + 1)),
+            "*NSET, NSET=CROWN", sel(nid(i, 0) for i in range(m + 1)),
+            "*NSET, NSET=A", str(nid(m, m))]
+    out += ["*SHELL SECTION, ELSET=ROOF, MATERIAL=M", "0.25", "*MATERIAL, NAME=M", "*ELASTIC",
+            "4.32e8, 0.0", "*DENSITY", "360.0", "*BOUNDARY", "DIAPH, 2", "DIAPH, 3", "DIAPH, 4",
+            "MID, XSYMM", "CROWN, YSYMM", "*STEP", "*STATIC", "*DLOAD", "ROOF, GRAV, 1.0, 0, 0, -1",
+            "*NODE PRINT, NSET=A", "U", "*END STEP"]
+    write(name, out)
+
+
+if __name__ == "__main__":
+    strip()
+    plate()
+    scordelis("S8R", 8, "shell_scordelis_lo.inp")
+    scordelis("S4R", 16, "shell_scordelis_lo_s4r.inp")
