@@ -103,10 +103,11 @@ class ShellKernel final : public ElementKernel {
     std::array<SectionStrains<double>, 4> e{};
     std::array<double, 4> thick{};
     const Rule q = output_rule();
+    const auto ty = tying(in, nv, nl);
     for (int k = 0; k < q.n; ++k) {
       SurfacePoint p;
       surface_point(in.X, D, t, q.pts[k][0], q.pts[k][1], q.pts[k][2], p);
-      e[k] = strains_at(in, p, nv, nl);
+      e[k] = strains_at(p, nv, nl, ty);
       thick[k] = p.thickness;
     }
     recover_shell_output(law, std::span(e.data(), q.n), std::span(thick.data(), q.n), out);
@@ -213,38 +214,59 @@ class ShellKernel final : public ElementKernel {
     return rotation::quat_mul(rotation::quat_exp(th), q0);
   }
 
+  /// What the assumed strains take from points other than the integration point: the covariant
+  /// transverse shear at the MITC tying points and, for the quadrilaterals, the in-plane shear
+  /// strains at the centre (selective integration). Computed once per evaluation.
+  template <class T>
+  struct Tying {
+    std::array<T, 4> g{};   ///< S4: g_r at (0,-1), (0,1), g_s at (-1,0), (1,0); S3: MITC3 values
+    T eps12{}, kap12{};     ///< S4: centre values in the centre's local directions
+  };
+
+  template <class T>
+  Tying<T> tying(const ElementInput& in, const ShellNodal<T, NN>& nv, bool nl) const {
+    Tying<T> ty;
+    if constexpr (NN == 8) return ty;
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    auto shear = [&](double r, double s) {
+      SurfacePoint q;
+      surface_point(in.X, D, t, r, s, 1.0, q);
+      return covariant_shear(q, nv, nl);
+    };
+    if constexpr (NN == 4) {
+      ty.g = {shear(0.0, -1.0)[0], shear(0.0, 1.0)[0], shear(-1.0, 0.0)[1], shear(1.0, 0.0)[1]};
+      SurfacePoint m;
+      surface_point(in.X, D, t, 0.0, 0.0, 1.0, m);
+      const Covariant<T> cm = covariant(m, nv, nl);
+      ty.eps12 = to_local(m, cm.m)[2];
+      ty.kap12 = to_local(m, cm.k)[2];
+    } else {
+      // MITC3: g_r at (1/2, 0), g_s at (0, 1/2), and c from the hypotenuse's midpoint
+      const auto p1 = shear(0.5, 0.0), p2 = shear(0.0, 0.5), p3 = shear(0.5, 0.5);
+      ty.g = {p1[0], p2[1], (p2[1] - p1[0]) - (p3[1] - p3[0]), T(0.0)};
+    }
+    return ty;
+  }
+
   /// Local section strains at a point, with the assumed transverse shear of MITC3/MITC4 and, for
   /// the quadrilaterals, the in-plane shear strains replaced by their centre values.
   template <class T>
-  SectionStrains<T> strains_at(const ElementInput& in, const SurfacePoint& p,
-                               const ShellNodal<T, NN>& nv, bool nl) const {
+  SectionStrains<T> strains_at(const SurfacePoint& p, const ShellNodal<T, NN>& nv, bool nl,
+                               const Tying<T>& ty) const {
     const Covariant<T> c = covariant(p, nv, nl);
     SectionStrains<T> s;
     s.eps = to_local(p, c.m);
     s.kap = to_local(p, c.k);
     T gr = c.g[0], gs = c.g[1];
-    const auto D = directors(in);
-    const auto t = thickness(in);
-    auto tied = [&](double r, double ss) {
-      SurfacePoint q;
-      surface_point(in.X, D, t, r, ss, 1.0, q);
-      return covariant(q, nv, nl);
-    };
     if constexpr (NN == 4) {
-      const auto A = tied(0.0, -1.0), C = tied(0.0, 1.0), B = tied(-1.0, 0.0), E = tied(1.0, 0.0);
-      gr = 0.5 * (1.0 - p.s) * A.g[0] + 0.5 * (1.0 + p.s) * C.g[0];
-      gs = 0.5 * (1.0 - p.r) * B.g[1] + 0.5 * (1.0 + p.r) * E.g[1];
-      // selective integration: in-plane shear strains at the centre, in the centre's frame
-      SurfacePoint m;
-      surface_point(in.X, D, t, 0.0, 0.0, 1.0, m);
-      const Covariant<T> cm = covariant(m, nv, nl);
-      s.eps[2] = to_local(m, cm.m)[2];
-      s.kap[2] = to_local(m, cm.k)[2];
+      gr = 0.5 * (1.0 - p.s) * ty.g[0] + 0.5 * (1.0 + p.s) * ty.g[1];
+      gs = 0.5 * (1.0 - p.r) * ty.g[2] + 0.5 * (1.0 + p.r) * ty.g[3];
+      s.eps[2] = ty.eps12;
+      s.kap[2] = ty.kap12;
     } else if constexpr (NN == 3) {
-      const auto P1 = tied(0.5, 0.0), P2 = tied(0.0, 0.5), P3 = tied(0.5, 0.5);
-      const T cc = (P2.g[1] - P1.g[0]) - (P3.g[1] - P3.g[0]);
-      gr = P1.g[0] + cc * p.s;
-      gs = P2.g[1] - cc * p.r;
+      gr = ty.g[0] + ty.g[2] * p.s;
+      gs = ty.g[1] - ty.g[2] * p.r;
     }
     s.gam = shear_to_local(p, gr, gs);
     return s;
@@ -257,10 +279,11 @@ class ShellKernel final : public ElementKernel {
     const auto t = thickness(in);
     T W(0.0);
     double area = 0.0;
+    const Tying<T> ty = tying(in, nv, nl);
     auto add = [&](double r, double s, double w) {
       SurfacePoint p;
       if (!surface_point(in.X, D, t, r, s, w, p)) return;
-      W += p.dA * section_energy(law, p.thickness, strains_at(in, p, nv, nl));
+      W += p.dA * section_energy(law, p.thickness, strains_at(p, nv, nl, ty));
       area += p.dA;
     };
     if constexpr (NN == 3) {

@@ -13,6 +13,7 @@
 #include "elements/structural/shell_geometry.hpp"
 
 #include <array>
+#include <type_traits>
 
 namespace gapfem::shell {
 
@@ -41,30 +42,59 @@ T change(const Vec3& a0, const V3<T>& da, const Vec3& b0, const V3<T>& db, bool 
   return v;
 }
 
+/// sum_a c_a u_a[i]: the displacements are the independent variables 6a + i, so for jets the
+/// combination is built directly (value and gradient; no Hessian), O(NN) instead of O(NN N^2).
+template <class T, int NN>
+V3<T> combine_displacements(const std::array<double, kMaxNodes>& c, const ShellNodal<T, NN>& nv) {
+  V3<T> r;
+  for (int i = 0; i < 3; ++i) {
+    if constexpr (std::is_same_v<T, double>) {
+      r[i] = 0.0;
+      for (int a = 0; a < NN; ++a) r[i] += c[a] * nv.u[a][i];
+    } else {
+      T v(0.0);
+      for (int a = 0; a < NN; ++a) {
+        v.v += c[a] * nv.u[a][i].v;
+        v.g[6 * a + i] = c[a];
+      }
+      r[i] = v;
+    }
+  }
+  return r;
+}
+
 template <class T, int NN>
 void surface_derivatives(const SurfacePoint& p, const ShellNodal<T, NN>& nv, V3<T>& ur, V3<T>& us) {
+  ur = combine_displacements(p.sh.dr, nv);
+  us = combine_displacements(p.sh.ds, nv);
+}
+
+/// sum_a c_a v_a of per-node vectors.
+template <class T, std::size_t NN>
+V3<T> combine(const std::array<double, kMaxNodes>& c, const std::array<V3<T>, NN>& v) {
+  V3<T> r;
   for (int i = 0; i < 3; ++i) {
-    ur[i] = T(0.0);
-    us[i] = T(0.0);
+    r[i] = c[0] * v[0][i];
+    for (std::size_t a = 1; a < NN; ++a) r[i] += c[a] * v[a][i];
   }
-  for (int a = 0; a < NN; ++a)
-    for (int i = 0; i < 3; ++i) {
-      ur[i] += p.sh.dr[a] * nv.u[a][i];
-      us[i] += p.sh.ds[a] * nv.u[a][i];
-    }
+  return r;
+}
+
+/// The covariant transverse shear strains (g_r, g_s) alone (MITC tying points).
+template <class T, int NN>
+std::array<T, 2> covariant_shear(const SurfacePoint& p, const ShellNodal<T, NN>& nv, bool nl) {
+  V3<T> ur, us;
+  surface_derivatives(p, nv, ur, us);
+  const V3<T> dd = combine(p.sh.N, nv.dd);
+  return {change(p.A1, ur, p.D, dd, nl), change(p.A2, us, p.D, dd, nl)};
 }
 
 template <class T, int NN>
 Covariant<T> covariant(const SurfacePoint& p, const ShellNodal<T, NN>& nv, bool nl) {
-  V3<T> ur, us, dd{}, ddr{}, dds{};
+  V3<T> ur, us;
   surface_derivatives(p, nv, ur, us);
-  for (int i = 0; i < 3; ++i) dd[i] = ddr[i] = dds[i] = T(0.0);
-  for (int a = 0; a < NN; ++a)
-    for (int i = 0; i < 3; ++i) {
-      dd[i] += p.sh.N[a] * nv.dd[a][i];
-      ddr[i] += p.sh.dr[a] * nv.dd[a][i];
-      dds[i] += p.sh.ds[a] * nv.dd[a][i];
-    }
+  const V3<T> dd = combine(p.sh.N, nv.dd), ddr = combine(p.sh.dr, nv.dd),
+              dds = combine(p.sh.ds, nv.dd);
   Covariant<T> c;
   c.m[0] = 0.5 * change(p.A1, ur, p.A1, ur, nl);
   c.m[1] = 0.5 * change(p.A2, us, p.A2, us, nl);

@@ -363,7 +363,7 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
         sec.offset = -0.5;
       else if (o == "SMID")
         sec.offset = 0.0;
-      else if (const auto v = real_param(kw, "OFFSET"))
+      else if (const auto v = parse_real(param_value(kw, "OFFSET", true)))
         sec.offset = *v;
       else
         throw InputError(kw.loc, fmt::format("OFFSET={}", param_value(kw, "OFFSET", true)),
@@ -371,6 +371,12 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
     }
     sec.nodal_thickness = kw.has("NODAL THICKNESS");
     const auto lines = lines_of(kw);
+    if (lines.empty() && sec.nodal_thickness) { // the thicknesses come from the nodes
+      s.model.shell_sections.push_back(std::move(sec));
+      s.shell_material.push_back(material);
+      s.shell_section_ok = true;
+      return;
+    }
     if (lines.empty())
       throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
                        "the data line is missing; give the shell thickness and the number of "

@@ -4,6 +4,9 @@
 shell_strip_moment.inp  cantilever strips of S4R, S4, S3, S8R under an end moment (exact)
 shell_plate_ss.inp      quarter of a simply supported square plate under pressure, S4R 8x8
 shell_scordelis_lo.inp  Scordelis-Lo roof, quarter, S8R 8x8 (and S4R 16x16 in the _s4r deck)
+shell_strip_offset.inp  strips with OFFSET=SPOS (S8R: *NODAL THICKNESS) under a tip axial force
+shell_rollup_*.inp      NLGEOM roll-up of a strip into a circle (S4R 32, S8R 16 elements)
+shell_hemisphere.inp    pinched hemisphere, quarter, S4R 8x8
 """
 import math
 
@@ -103,7 +106,83 @@ def scordelis(et, n, name):
     write(name, out)
 
 
+def strip_offset():
+    """S4R and S8R strips with OFFSET=SPOS under a tip axial force on the reference surface; the
+    S8R strip takes its thickness from *NODAL THICKNESS."""
+    out = ["*HEADING", "Strips 10 x 1 x 0.1 with the reference surface on top (OFFSET=SPOS), tip force 1"]
+    for s, et in enumerate(["S4R", "S8R"]):
+        nodes, elems, nid, mx, my = grid(4, 1, et == "S8R", False,
+                                         lambda u, v: (10 * u, v + 2 * s, 0.0), base=100 * s,
+                                         ebase=100 * s)
+        have = {n for n, _ in nodes}
+        out += ["*NODE, NSET=N%d" % s] + node_lines(nodes)
+        out += [f"*ELEMENT, TYPE={et}, ELSET=S{s}"] + [f"{k}, " + ", ".join(map(str, e))
+                                                        for k, e in elems]
+        out += [f"*NSET, NSET=ROOT{s}", ", ".join(str(nid(0, j)) for j in range(my + 1)
+                                                 if nid(0, j) in have)]
+        if et == "S8R":
+            out += [f"*SHELL SECTION, ELSET=S{s}, MATERIAL=M, OFFSET=SPOS, NODAL THICKNESS", ", 5",
+                    "*NODAL THICKNESS", "N1, 0.1"]
+        else:
+            out += [f"*SHELL SECTION, ELSET=S{s}, MATERIAL=M, OFFSET=SPOS", "0.1, 5"]
+    out += ["*MATERIAL, NAME=M", "*ELASTIC", "1e6, 0", "*BOUNDARY", "ROOT0, 1, 6", "ROOT1, 1, 6",
+            "*STEP", "*STATIC", "*CLOAD", "9, 1, 0.5", "10, 1, 0.5",
+            "125, 1, 0.16666666666666667", "126, 1, 0.66666666666666667",
+            "127, 1, 0.16666666666666667", "*NODE PRINT", "U", "*EL PRINT, ELSET=S0", "SF",
+            "*END STEP"]
+    write("shell_strip_offset.inp", out)
+
+
+def rollup(et, n, name):
+    """Cantilever strip 10 x 1 x 0.1 (E = 1e6, nu = 0) under the end moment 2 pi E I / L that
+    rolls it into a full circle, NLGEOM."""
+    q8 = et == "S8R"
+    nodes, elems, nid, mx, my = grid(n, 1, q8, False, lambda u, v: (10 * u, v, 0.0))
+    have = {k for k, _ in nodes}
+    M = 2 * math.pi * 1e6 * 0.1 ** 3 / 12 / 10
+    tip = [nid(mx, j) for j in range(my + 1) if nid(mx, j) in have]
+    weights = [1 / 6, 2 / 3, 1 / 6] if q8 else [0.5, 0.5]
+    out = ["*HEADING", f"Roll-up of a cantilever strip into a circle, {n} {et}", "*NODE"]
+    out += node_lines(nodes)
+    out += [f"*ELEMENT, TYPE={et}, ELSET=S"] + [f"{k}, " + ", ".join(map(str, e)) for k, e in elems]
+    out += ["*NSET, NSET=ROOT", ", ".join(str(nid(0, j)) for j in range(my + 1) if nid(0, j) in have),
+            "*NSET, NSET=TIP", ", ".join(map(str, tip)),
+            "*SHELL SECTION, ELSET=S, MATERIAL=M", "0.1, 5", "*MATERIAL, NAME=M", "*ELASTIC",
+            "1e6, 0", "*BOUNDARY", "ROOT, 1, 6", "*STEP, NLGEOM, INC=200", "*STATIC",
+            "0.05, 1.0, 1e-5, 0.05", "*CLOAD"]
+    out += [f"{k}, 5, {-M * w:.15g}" for k, w in zip(tip, weights)]
+    out += ["*NODE PRINT, NSET=TIP", "U, UR", "*END STEP"]
+    write(name, out)
+
+
+def hemisphere(et, n, name):
+    """Pinched hemisphere with an 18-degree hole (MacNeal-Harder), quarter model."""
+    R = 10.0
+
+    def X(u, v):
+        ph, la = math.radians(90 * u), math.radians(72 * v)
+        return (R * math.cos(la) * math.cos(ph), R * math.cos(la) * math.sin(ph), R * math.sin(la))
+
+    nodes, elems, nid, m, _ = grid(n, n, et == "S8R", False, X)
+    have = {k for k, _ in nodes}
+    sel = lambda lst: ", ".join(str(k) for k in lst if k in have)
+    out = ["*HEADING", f"Pinched hemisphere, quarter, {et} {n} x {n}", "*NODE"] + node_lines(nodes)
+    out += [f"*ELEMENT, TYPE={et}, ELSET=H"] + [f"{k}, " + ", ".join(map(str, e)) for k, e in elems]
+    out += ["*NSET, NSET=PHI0", sel(nid(0, j) for j in range(m + 1)),
+            "*NSET, NSET=PHI90", sel(nid(m, j) for j in range(m + 1)),
+            "*NSET, NSET=LOADS", f"{nid(0, 0)}, {nid(m, 0)}",
+            "*SHELL SECTION, ELSET=H, MATERIAL=M", "0.04", "*MATERIAL, NAME=M", "*ELASTIC",
+            "6.825e7, 0.3", "*BOUNDARY", "PHI0, YSYMM", "PHI90, XSYMM", f"{nid(0, 0)}, 3",
+            "*STEP", "*STATIC", "*CLOAD", f"{nid(0, 0)}, 1, 1.0", f"{nid(m, 0)}, 2, -1.0",
+            "*NODE PRINT, NSET=LOADS", "U", "*END STEP"]
+    write(name, out)
+
+
 if __name__ == "__main__":
+    strip_offset()
+    rollup("S4R", 32, "shell_rollup_s4r.inp")
+    rollup("S8R", 16, "shell_rollup_s8r.inp")
+    hemisphere("S4R", 8, "shell_hemisphere.inp")
     strip()
     plate()
     scordelis("S8R", 8, "shell_scordelis_lo.inp")
