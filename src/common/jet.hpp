@@ -4,7 +4,8 @@
 /// with respect to N independent variables and its (symmetric) Hessian. An element that writes its
 /// energy once as a template over the scalar type gets the residual (the gradient) and the exact
 /// consistent tangent (the Hessian) from the same code, with no hand-derived linearisation to get
-/// wrong (docs/theory/structural.md, "Geometrically exact beams").
+/// wrong (docs/theory/structural.md, "Geometrically exact beams"). Dual<N> is the first-order
+/// counterpart (value and gradient).
 ///
 /// Fixed size, no heap: the Hessian is stored packed (upper triangle, row by row). Each product
 /// costs O(N^2), so Jets suit small kernels (beams: N <= 18). Functions that are smooth but whose
@@ -125,6 +126,83 @@ struct Jet {
     return chain(a, std::asin(a.v), d, a.v * q * d);
   }
   friend double value(const Jet& a) { return a.v; }
+};
+
+/// First-order forward differentiation: value and gradient only, O(N) per operation. For
+/// functions that are linear in the variables (small-displacement strains), whose Hessian the
+/// caller forms itself (B^T C B).
+template <int N>
+struct Dual {
+  double v = 0.0;
+  std::array<double, N> g{};
+
+  Dual() = default;
+  Dual(double value) : v(value) {} // NOLINT(google-explicit-constructor)
+  static Dual variable(double value, int i) {
+    Dual d(value);
+    d.g[i] = 1.0;
+    return d;
+  }
+  Dual& operator+=(const Dual& b) {
+    v += b.v;
+    for (int i = 0; i < N; ++i) g[i] += b.g[i];
+    return *this;
+  }
+  Dual& operator-=(const Dual& b) {
+    v -= b.v;
+    for (int i = 0; i < N; ++i) g[i] -= b.g[i];
+    return *this;
+  }
+  Dual& operator+=(double s) {
+    v += s;
+    return *this;
+  }
+  Dual& operator-=(double s) {
+    v -= s;
+    return *this;
+  }
+  Dual& operator*=(double s) {
+    v *= s;
+    for (int i = 0; i < N; ++i) g[i] *= s;
+    return *this;
+  }
+  friend Dual operator+(Dual a, const Dual& b) { return a += b; }
+  friend Dual operator-(Dual a, const Dual& b) { return a -= b; }
+  friend Dual operator+(Dual a, double s) { return a += s; }
+  friend Dual operator+(double s, Dual a) { return a += s; }
+  friend Dual operator-(Dual a, double s) { return a -= s; }
+  friend Dual operator-(double s, const Dual& a) { return (-a) += s; }
+  friend Dual operator-(Dual a) { return a *= -1.0; }
+  friend Dual operator*(Dual a, double s) { return a *= s; }
+  friend Dual operator*(double s, Dual a) { return a *= s; }
+  friend Dual operator/(Dual a, double s) { return a *= 1.0 / s; }
+  friend Dual operator*(const Dual& a, const Dual& b) {
+    Dual c;
+    c.v = a.v * b.v;
+    for (int i = 0; i < N; ++i) c.g[i] = a.v * b.g[i] + b.v * a.g[i];
+    return c;
+  }
+  /// f(a) from f(a.v) and f'(a.v) (f'' is not needed at first order).
+  friend Dual chain(const Dual& a, double f0, double f1, double) {
+    Dual c;
+    c.v = f0;
+    for (int i = 0; i < N; ++i) c.g[i] = f1 * a.g[i];
+    return c;
+  }
+  friend Dual reciprocal(const Dual& a) { return chain(a, 1.0 / a.v, -1.0 / (a.v * a.v), 0.0); }
+  friend Dual operator/(const Dual& a, const Dual& b) { return a * reciprocal(b); }
+  friend Dual operator/(double s, const Dual& b) { return reciprocal(b) *= s; }
+  friend Dual sqrt(const Dual& a) {
+    const double s = std::sqrt(a.v);
+    return chain(a, s, 0.5 / s, 0.0);
+  }
+  friend Dual sin(const Dual& a) { return chain(a, std::sin(a.v), std::cos(a.v), 0.0); }
+  friend Dual cos(const Dual& a) { return chain(a, std::cos(a.v), -std::sin(a.v), 0.0); }
+  friend Dual atan(const Dual& a) { return chain(a, std::atan(a.v), 1.0 / (1.0 + a.v * a.v), 0.0); }
+  friend Dual asin(const Dual& a) {
+    return chain(a, std::asin(a.v), 1.0 / std::sqrt(1.0 - a.v * a.v), 0.0);
+  }
+  friend double value(const Dual& a) { return a.v; }
 };
 
 /// Uniform access to the value of a scalar that may be a plain double.

@@ -58,6 +58,11 @@ class ShellKernel final : public ElementKernel {
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
     const SectionLaw law = section_law(_d, in);
+    if (!nl) {
+      linear_evaluate(in, law, out);
+      write_rotations(in, false);
+      return;
+    }
     const auto nv = gather<J>(in, nl);
     const J W = energy(in, law, nv, nl);
     for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
@@ -296,45 +301,104 @@ class ShellKernel final : public ElementKernel {
     return W;
   }
 
+  /// Small displacements: the strains are linear in the DOFs, so first-order duals give their
+  /// matrix B at each point, K = sum w B^T C B and r = sum w B^T C (e - e_th) (the gradient and
+  /// Hessian of the same energy as the NLGEOM path, at a fraction of the cost).
+  void linear_evaluate(const ElementInput& in, const SectionLaw& law, ElementOutput& out) const {
+    using Du = Dual<kN>;
+    const auto nv = gather<Du>(in, false);
+    const Tying<Du> ty = tying(in, nv, false);
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    double area = 0.0;
+    auto add = [&](double r, double s, double w) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, r, s, w, p)) return;
+      area += p.dA;
+      const SectionStrains<Du> e = strains_at(p, nv, false, ty);
+      const std::array<const Du*, 8> b{&e.eps[0], &e.eps[1], &e.eps[2], &e.kap[0],
+                                       &e.kap[1], &e.kap[2], &e.gam[0], &e.gam[1]};
+      const auto C = section_matrix(law, p.thickness);
+      std::array<double, 8> mech;
+      for (int i = 0; i < 8; ++i) mech[i] = b[i]->v - (i < 2 ? law.eps_th : 0.0);
+      // CB (8 x N) and the stress resultants
+      std::array<std::array<double, kN>, 8> CB{};
+      std::array<double, 8> sig{};
+      for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < 8; ++k)
+          if (const double c = C[8 * i + k]; c != 0.0) {
+            sig[i] += c * mech[k];
+            for (int j = 0; j < kN; ++j) CB[i][j] += c * b[k]->g[j];
+          }
+      for (int i = 0; i < 8; ++i)
+        for (int a = 0; a < kN; ++a) out.residual[a] += p.dA * b[i]->g[a] * sig[i];
+      if (!out.want_tangent) return;
+      for (int i = 0; i < 8; ++i)
+        for (int a = 0; a < kN; ++a)
+          if (const double ba = p.dA * b[i]->g[a]; ba != 0.0)
+            for (int j = 0; j < kN; ++j) out.tangent[a * kN + j] += ba * CB[i][j];
+    };
+    if constexpr (NN == 3) {
+      for (const auto& q : kTri3) add(q[0], q[1], q[2]);
+    } else {
+      const Rule q = full_rule(NN);
+      for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
+    }
+    for (int a = 0; a < NN; ++a) {
+      const Du d = drill_at(in, nv, false, a);
+      const double k = kDrillFactor * law.G * t[a] * area / NN;
+      for (int i = 0; i < kN; ++i) out.residual[i] += k * d.v * d.g[i];
+      if (out.want_tangent)
+        for (int i = 0; i < kN; ++i)
+          for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += k * d.g[i] * d.g[j];
+    }
+  }
+
   /// 1/2 k A/NN sum_a (theta_n - omega)_a^2: the rotation about the normal at each node against the
   /// in-plane rotation of the surface there, objective under NLGEOM:
   ///   drill = 1/2 [(R e1) . g2 - (R e2) . g1],  g_i = F e_i (the deformed local directions).
   template <class T>
   T drilling(const ElementInput& in, const SectionLaw& law, const ShellNodal<T, NN>& nv, bool nl,
              double area) const {
-    const auto D = directors(in);
     const auto t = thickness(in);
     T W(0.0);
     for (int a = 0; a < NN; ++a) {
-      const auto rs = node_coordinates(NN, a);
-      SurfacePoint p;
-      if (!surface_point(in.X, D, t, rs[0], rs[1], 1.0, p)) continue;
-      V3<T> ur, us;
-      surface_derivatives(p, nv, ur, us);
-      V3<T> dg1, dg2, de1, de2;
-      for (int i = 0; i < 3; ++i) {
-        dg1[i] = ur[i] * p.T[0][0] + us[i] * p.T[1][0];
-        dg2[i] = ur[i] * p.T[0][1] + us[i] * p.T[1][1];
-      }
-      const V3<double> e1{p.e1[0], p.e1[1], p.e1[2]}, e2{p.e2[0], p.e2[1], p.e2[2]};
-      V3<T> th;
-      for (int i = 0; i < 3; ++i) th[i] = unknown<T>(in.u[6 * a + 3 + i], 6 * a + 3 + i);
-      if (nl) {
-        const auto q = rotation_of(in, th, a);
-        const V3<T> r1 = rotation::rotate(q, e1), r2 = rotation::rotate(q, e2);
-        for (int i = 0; i < 3; ++i) {
-          de1[i] = r1[i] - e1[i];
-          de2[i] = r2[i] - e2[i];
-        }
-      } else {
-        de1 = rotation::cross3(th, e1);
-        de2 = rotation::cross3(th, e2);
-      }
-      const T drill = 0.5 * (change(p.e1, de1, p.e2, dg2, nl) - change(p.e2, de2, p.e1, dg1, nl));
+      const T drill = drill_at(in, nv, nl, a);
       const double k = kDrillFactor * law.G * t[a] * area / NN;
       W += 0.5 * k * (drill * drill);
     }
     return W;
+  }
+
+  template <class T>
+  T drill_at(const ElementInput& in, const ShellNodal<T, NN>& nv, bool nl, int a) const {
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    const auto rs = node_coordinates(NN, a);
+    SurfacePoint p;
+    if (!surface_point(in.X, D, t, rs[0], rs[1], 1.0, p)) return T(0.0);
+    V3<T> ur, us;
+    surface_derivatives(p, nv, ur, us);
+    V3<T> dg1, dg2, de1, de2;
+    for (int i = 0; i < 3; ++i) {
+      dg1[i] = ur[i] * p.T[0][0] + us[i] * p.T[1][0];
+      dg2[i] = ur[i] * p.T[0][1] + us[i] * p.T[1][1];
+    }
+    const V3<double> e1{p.e1[0], p.e1[1], p.e1[2]}, e2{p.e2[0], p.e2[1], p.e2[2]};
+    V3<T> th;
+    for (int i = 0; i < 3; ++i) th[i] = unknown<T>(in.u[6 * a + 3 + i], 6 * a + 3 + i);
+    if (nl) {
+      const auto q = rotation_of(in, th, a);
+      const V3<T> r1 = rotation::rotate(q, e1), r2 = rotation::rotate(q, e2);
+      for (int i = 0; i < 3; ++i) {
+        de1[i] = r1[i] - e1[i];
+        de2[i] = r2[i] - e2[i];
+      }
+    } else {
+      de1 = rotation::cross3(th, e1);
+      de2 = rotation::cross3(th, e2);
+    }
+    return 0.5 * (change(p.e1, de1, p.e2, dg2, nl) - change(p.e2, de2, p.e1, dg1, nl));
   }
 
   /// Trial nodal rotations: exp(theta - theta_start) R_start under NLGEOM, exp(theta) otherwise.

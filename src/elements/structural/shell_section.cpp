@@ -107,6 +107,23 @@ SectionLaw section_law(const ShellData& d, const ElementInput& in) {
   return l;
 }
 
+std::array<double, 64> section_matrix(const SectionLaw& l, double t) {
+  std::array<double, 64> C{};
+  const double c = l.E / (1.0 - l.nu * l.nu);
+  const double Q[3][3] = {{c, c * l.nu, 0.0}, {c * l.nu, c, 0.0}, {0.0, 0.0, c * 0.5 * (1.0 - l.nu)}};
+  const double zm = -l.offset * t;
+  const double A = t, B = t * zm, D = t * t * t / 12.0 + t * zm * zm;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      C[8 * i + j] = A * Q[i][j];
+      C[8 * i + 3 + j] = C[8 * (3 + i) + j] = B * Q[i][j];
+      C[8 * (3 + i) + 3 + j] = D * Q[i][j];
+    }
+  C[8 * 6 + 6] = l.k11 > 0.0 ? l.k11 : 5.0 / 6.0 * l.G * t;
+  C[8 * 7 + 7] = l.k22 > 0.0 ? l.k22 : 5.0 / 6.0 * l.G * t;
+  return C;
+}
+
 void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<double>> e,
                           std::span<const double> thickness, ElementRecovery& out) {
   const int np = static_cast<int>(e.size()), ns = l.n_points;

@@ -66,6 +66,10 @@ T section_energy(const SectionLaw& l, double t, const SectionStrains<T>& s) {
   return W;
 }
 
+/// The 8 x 8 section stiffness of the strains (eps 11, 22, 12; kappa 11, 22, 12; gamma 13, 23) of
+/// a section with thickness t, row-major: the Hessian of section_energy.
+std::array<double, 64> section_matrix(const SectionLaw& l, double t);
+
 /// S and E at the section points (rows point-major: output point, then section point 1..n from
 /// SNEG to SPOS) and SF1-SF5, SM1-SM3 per output point.
 void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<double>> e,
