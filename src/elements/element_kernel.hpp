@@ -60,6 +60,9 @@ struct ElementInput {
   std::span<const double>
       temperature; ///< predefined nodal temperatures now (stress elements), or empty
   std::span<const double> temperature_start; ///< … at the start of the increment
+  /// predefined through-section temperature gradients now, 2 per node (NodalTemperature::gradient),
+  /// or empty when the model has none
+  std::span<const double> temperature_gradient;
   std::span<const double>
       initial_temperature; ///< *INITIAL CONDITIONS temperatures (thermal-strain reference)
   std::span<const double> state_start; ///< committed history (n_state)

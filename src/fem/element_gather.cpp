@@ -40,6 +40,14 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
     _in.temperature = _T;
     _in.temperature_start = _T0;
     _in.initial_temperature = _Ti;
+    if (!f.temperature_gradient.empty()) {
+      _G.resize(2 * nn);
+      for (std::size_t a = 0; a < nn; ++a) {
+        _G[2 * a] = f.temperature_gradient[2 * nodes[a]];
+        _G[2 * a + 1] = f.temperature_gradient[2 * nodes[a] + 1];
+      }
+      _in.temperature_gradient = _G;
+    }
   }
   if (block.n_state > 0) {
     _in.state_start = {block.state_committed.data() + i * block.n_state,

@@ -18,6 +18,7 @@ struct FieldView {
   std::span<const double> temperature;       ///< predefined temperature per node now (may be empty)
   std::span<const double> temperature_start; ///< … at the increment start
   std::span<const double> initial_temperature; ///< per node
+  std::span<const double> temperature_gradient; ///< 2 per node now (may be empty)
 };
 
 class ElementGather {
@@ -33,7 +34,7 @@ class ElementGather {
   ElementInput _in;
   ElementOutput _out;
   std::vector<Vec3> _X;
-  std::vector<double> _u, _u0, _T, _T0, _Ti;
+  std::vector<double> _u, _u0, _T, _T0, _Ti, _G;
   std::vector<double> _r, _K;
   std::vector<std::uint8_t> _free;
   std::vector<int> _cslot;

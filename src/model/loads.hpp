@@ -63,6 +63,9 @@ struct DistributedLoad {
 struct NodalTemperature {
   NodeId node = -1;
   double value = 0.0;
+  /// values 2 and 3 of the data line: shells dT/dn through the thickness (and 0); beams dT/dx2,
+  /// dT/dx1 in the section's local directions (Abaqus TEMPERATURE=GRADIENT(S))
+  std::array<double, 2> gradient{0.0, 0.0};
   int amplitude = -1;
   bool propagated = false;
   SourceLocation loc;

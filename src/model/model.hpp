@@ -80,6 +80,8 @@ struct Model {
 
   std::vector<double> initial_temperature; ///< per node (0 where not given)
   bool has_initial_temperature = false;
+  /// some *TEMPERATURE gives through-section gradients (values 2, 3; shells and beams)
+  bool has_temperature_gradients = false;
   PhysicalConstants constants;
 
   std::vector<Step> steps;

@@ -187,9 +187,19 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
   _temp_base = history.temperature;
   if (_temp_base.empty()) _temp_base = model.initial_temperature;
   _temp_base.resize(static_cast<std::size_t>(model.mesh.n_nodes()), 0.0);
+  _has_gradient = _has_temperature && model.has_temperature_gradients;
+  _grad_base = history.temperature_gradient;
+  _grad_base.resize(2 * static_cast<std::size_t>(model.mesh.n_nodes()), 0.0);
+  auto gradient_entry = [&](NodeId n, std::array<double, 2> to, int amplitude, bool propagated) {
+    if (!_has_gradient) return;
+    _grad.emplace_back(n, std::array<Scalar, 2>{
+                              Scalar{_grad_base[2 * n], to[0], amplitude, propagated},
+                              Scalar{_grad_base[2 * n + 1], to[1], amplitude, propagated}});
+  };
   std::set<NodeId> tseen;
   for (const NodalTemperature& t : _step.temperatures) {
     _temp.emplace_back(t.node, Scalar{_temp_base[t.node], t.value, t.amplitude, t.propagated});
+    gradient_entry(t.node, t.gradient, t.amplitude, t.propagated);
     tseen.insert(t.node);
   }
   if (prev)
@@ -199,6 +209,7 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
                                 ? model.initial_temperature[t.node]
                                 : 0.0;
         _temp.emplace_back(t.node, Scalar{_temp_base[t.node], init, -1, false});
+        gradient_entry(t.node, {0.0, 0.0}, -1, false);
       }
 
   // Interference fits.
@@ -247,6 +258,14 @@ void StepLoads::temperatures(double step_time, std::span<double> T) const {
   for (const auto& [n, sc] : _temp) T[n] = value(sc, step_time);
 }
 
+void StepLoads::temperature_gradients(double step_time, std::span<double> G) const {
+  std::copy(_grad_base.begin(), _grad_base.end(), G.begin());
+  for (const auto& [n, sc] : _grad) {
+    G[2 * n] = value(sc[0], step_time);
+    G[2 * n + 1] = value(sc[1], step_time);
+  }
+}
+
 void StepLoads::interference(double step_time, Discretization& disc) const {
   for (auto& b : disc.blocks()) std::fill(b.interference.begin(), b.interference.end(), 0.0);
   for (const Interf& i : _interf) {
@@ -284,6 +303,10 @@ void StepLoads::finish(double t_end, std::span<const double> reaction, const Con
   }
   h.temperature = _temp_base;
   for (const auto& [n, sc] : _temp) h.temperature[n] = value(sc, t_end);
+  if (_has_gradient) {
+    h.temperature_gradient.assign(_grad_base.size(), 0.0);
+    temperature_gradients(t_end, h.temperature_gradient);
+  }
   h.prescribed = _prescribed;
   h.reaction.assign(reaction.begin(), reaction.end());
 }

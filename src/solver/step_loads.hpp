@@ -27,6 +27,7 @@ struct LoadHistory {
   std::map<std::tuple<ElemId, int, int>, std::pair<double, double>>
       distributed;                      ///< magnitude, sink
   std::vector<double> temperature;      ///< predefined field per node
+  std::vector<double> temperature_gradient; ///< its gradients, 2 per node (empty: none)
   std::vector<std::uint8_t> prescribed; ///< per slot, in the last step
   std::vector<double> reaction;         ///< per slot, at the end of the last step
   /// Boundary conditions in local systems (*TRANSFORM): (node, DOF) -> reaction at step end.
@@ -57,6 +58,9 @@ class StepLoads {
   /// Predefined temperature per node at `step_time` (empty span: none in this model).
   void temperatures(double step_time, std::span<double> T) const;
   bool has_temperature_field() const { return _has_temperature; }
+  /// Through-section gradients at `step_time`, 2 per node (only when has_temperature_gradients()).
+  void temperature_gradients(double step_time, std::span<double> G) const;
+  bool has_temperature_gradients() const { return _has_gradient; }
   /// Interference allowance of each gap element at `step_time` (0 where none).
   void interference(double step_time, Discretization& disc) const;
   /// SHRINK allowances need the clearance at the step start: set v for element e.
@@ -107,6 +111,9 @@ class StepLoads {
   std::vector<std::pair<NodeId, Scalar>> _temp;
   std::vector<double> _temp_base;
   bool _has_temperature = false;
+  std::vector<std::pair<NodeId, std::array<Scalar, 2>>> _grad;
+  std::vector<double> _grad_base; ///< 2 per node
+  bool _has_gradient = false;
   struct Interf {
     ElemId elem;
     double allowance;

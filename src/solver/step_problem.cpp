@@ -27,6 +27,12 @@ void StepProblem::begin_increment(double t0, double dt) {
   _loads.apply_prescribed(_ctx.step_time, _s.u);
   _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
+  if (_loads.has_temperature_gradients()) {
+    _s.G.resize(2 * _s.T.size());
+    _loads.temperature_gradients(_ctx.step_time, _s.G);
+  } else {
+    _s.G.clear();
+  }
   _loads.interference(_ctx.step_time, _disc);
 }
 
@@ -61,6 +67,7 @@ FieldView StepProblem::fields() const {
     f.temperature = _s.T;
     f.temperature_start = _s.T_start;
     f.initial_temperature = _s.T_initial;
+    f.temperature_gradient = _s.G;
   }
   return f;
 }

@@ -16,6 +16,7 @@ namespace gapfem {
 struct SolutionState {
   std::vector<double> u, u_start;   ///< per slot: trial, committed
   std::vector<double> T, T_start;   ///< predefined temperature per node: trial, committed
+  std::vector<double> G;            ///< its through-section gradients now, 2 per node (or empty)
   std::vector<double> T_initial;    ///< per node
   std::vector<double> f_int, f_ext; ///< per slot, at the last evaluation
   double total_time = 0.0;          ///< total time at the start of the current step

@@ -79,6 +79,20 @@ SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int 
     D(1, 2, -F21 / dF);
   }
   s.initial[0] = element_thermal_strain(b.material, in);
+  if (!in.temperature_gradient.empty() && !b.material.expansion.empty()) {
+    // T(x1, x2) = T + x2 dT/dx2 + x1 dT/dx1 over the section (values 2, 3 of *TEMPERATURE): the
+    // fibre strain eps + kappa1 x2 - kappa2 x1 takes the thermal curvatures alpha dT/dx2 and
+    // -alpha dT/dx1 (alpha the thermal strain's slope at the element's temperature)
+    double g2 = 0.0, g1 = 0.0;
+    const std::size_t nn = in.temperature_gradient.size() / 2;
+    for (std::size_t a = 0; a < nn; ++a) {
+      g2 += in.temperature_gradient[2 * a] / nn;
+      g1 += in.temperature_gradient[2 * a + 1] / nn;
+    }
+    const double alpha = b.material.thermal_strain_derivative(*average(in.temperature));
+    s.initial[3] = alpha * g2;
+    s.initial[4] = -alpha * g1;
+  }
   return s;
 }
 

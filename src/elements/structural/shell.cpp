@@ -320,7 +320,8 @@ class ShellKernel final : public ElementKernel {
                                        &e.kap[1], &e.kap[2], &e.gam[0], &e.gam[1]};
       const auto C = section_matrix(law, p.thickness);
       std::array<double, 8> mech;
-      for (int i = 0; i < 8; ++i) mech[i] = b[i]->v - (i < 2 ? law.eps_th : 0.0);
+      for (int i = 0; i < 8; ++i)
+        mech[i] = b[i]->v - (i < 2 ? law.eps_th : (i == 3 || i == 4) ? law.kap_th : 0.0);
       // CB (8 x N) and the stress resultants
       std::array<std::array<double, kN>, 8> CB{};
       std::array<double, 8> sig{};

@@ -100,6 +100,14 @@ SectionLaw section_law(const ShellData& d, const ElementInput& in) {
   elastic_at(d.material, average(in.temperature), l.E, l.nu);
   l.G = l.E / (2.0 * (1.0 + l.nu));
   l.eps_th = element_thermal_strain(d.material, in);
+  if (!in.temperature_gradient.empty() && !d.material.expansion.empty()) {
+    // a linear temperature through the thickness, T + z dT/dn: the thermal strain's slope at the
+    // element's temperature times the gradient (exact for a constant expansion coefficient)
+    double g = 0.0;
+    const std::size_t nn = in.temperature_gradient.size() / 2;
+    for (std::size_t a = 0; a < nn; ++a) g += in.temperature_gradient[2 * a] / nn;
+    l.kap_th = d.material.thermal_strain_derivative(*average(in.temperature)) * g;
+  }
   l.offset = d.offset;
   l.k11 = d.k11;
   l.k22 = d.k22;
@@ -143,7 +151,10 @@ void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<do
     std::array<double, 3> em = e[p].eps;
     em[0] -= l.eps_th;
     em[1] -= l.eps_th;
-    const auto qe = Q(em), qk = Q(e[p].kap);
+    std::array<double, 3> km = e[p].kap;
+    km[0] -= l.kap_th;
+    km[1] -= l.kap_th;
+    const auto qe = Q(em), qk = Q(km);
     const double A = t, B = t * zm, D = t * t * t / 12.0 + t * zm * zm;
     const double K1 = l.k11 > 0.0 ? l.k11 : 5.0 / 6.0 * l.G * t;
     const double K2 = l.k22 > 0.0 ? l.k22 : 5.0 / 6.0 * l.G * t;
@@ -160,8 +171,8 @@ void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<do
       std::array<double, 3> strain;
       for (int i = 0; i < 3; ++i) strain[i] = e[p].eps[i] + z * e[p].kap[i];
       std::array<double, 3> mech = strain;
-      mech[0] -= l.eps_th;
-      mech[1] -= l.eps_th;
+      mech[0] -= l.eps_th + z * l.kap_th;
+      mech[1] -= l.eps_th + z * l.kap_th;
       const auto s = Q(mech);
       for (int i = 0; i < 3; ++i) {
         E.values[3 * row + i] = strain[i];

@@ -529,12 +529,16 @@ void handle_temperature(BuildState& s, const Keyword& kw) {
   std::vector<NodalTemperature> entries;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    r.at_most(2, "node or node set, temperature");
+    r.at_most(4, "node or node set, temperature, gradients (shells: dT/dn; beams: dT/dx2, dT/dx1)");
     const double value = r.real(1, "temperature");
+    const std::array<double, 2> gradient{r.real_or(2, 0.0, "first temperature gradient"),
+                                         r.real_or(3, 0.0, "second temperature gradient")};
+    if (gradient[0] != 0.0 || gradient[1] != 0.0) s.model.has_temperature_gradients = true;
     for (NodeId n : resolve_nodes(s, r, 0)) {
       NodalTemperature t;
       t.node = n;
       t.value = value;
+      t.gradient = gradient;
       t.amplitude = amplitude;
       t.loc = r.loc();
       entries.push_back(t);
@@ -545,7 +549,37 @@ void handle_temperature(BuildState& s, const Keyword& kw) {
       [](const NodalTemperature& t) { return t.node; });
 }
 
+namespace {
+/// Gradients (values 2, 3 of *TEMPERATURE) act on shells and beams; at a node of other elements
+/// only they would be dropped, so that is reported (once per data line).
+void check_temperature_gradients(BuildState& s) {
+  const Mesh& mesh = s.model.mesh;
+  std::vector<std::uint8_t> sectioned;
+  std::vector<std::pair<std::string, int>> reported;
+  for (const NodalTemperature& t : s.step.temperatures) {
+    if (t.propagated || (t.gradient[0] == 0.0 && t.gradient[1] == 0.0)) continue;
+    if (sectioned.empty()) {
+      sectioned.assign(static_cast<std::size_t>(mesh.n_nodes()), 0);
+      for (ElemId e = 0; e < mesh.n_elements(); ++e) {
+        const ElementFamily f = element_info(mesh.elem_types[e]).family;
+        if (f == ElementFamily::Shell || f == ElementFamily::Beam)
+          for (NodeId n : mesh.element_nodes(e)) sectioned[n] = 1;
+      }
+    }
+    const auto where = std::pair(t.loc.file, t.loc.line);
+    if (sectioned[t.node] ||
+        std::find(reported.begin(), reported.end(), where) != reported.end())
+      continue;
+    reported.push_back(where);
+    s.warn(t.loc, fmt::format("node {} has no shell or beam element, so the temperature gradients "
+                              "given for it (values 2 and 3) have no effect there",
+                              s.model.node_label(t.node)));
+  }
+}
+} // namespace
+
 void check_predefined_temperatures(BuildState& s) {
+  check_temperature_gradients(s);
   // The Abaqus Analysis User's Guide ("Predefined Fields", Restrictions; 2023:
   // docs.software.vt.edu/abaqusv2023/English/SIMACAEPRCRefMap/simaprc-c-fields.htm) says not to
   // give predefined temperatures in heat transfer and fully coupled temperature-displacement

@@ -219,8 +219,9 @@ void guarded(BuildState& s, BeamSection& sec, const std::string& material, F&& r
 void check_temperature_param(const Keyword& kw) {
   if (enum_param(kw, "TEMPERATURE", {"GRADIENTS", "VALUES"}, 0) == 1)
     throw InputError(kw.loc, "TEMPERATURE=VALUES",
-                     "gapfem takes beam temperatures as the value at the section origin "
-                     "(TEMPERATURE=GRADIENTS, the default); remove the parameter");
+                     "gapfem takes beam temperatures as the value at the section origin and its "
+                     "gradients dT/dx2, dT/dx1 (TEMPERATURE=GRADIENTS, the default); remove the "
+                     "parameter");
 }
 
 /// Line 3 of *BEAM GENERAL SECTION: E, G, alpha.

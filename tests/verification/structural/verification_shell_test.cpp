@@ -103,5 +103,30 @@ TEST(VerificationStructuralShells, PinchedHemisphere) {
   EXPECT_NEAR(-run.U(73)[1], run.U(1)[0], 1e-3 * 0.094);
 }
 
+TEST(VerificationStructuralShells, ThroughSectionTemperatureGradientsBendFreeMembers) {
+  // *TEMPERATURE node, T, g1[, g2] with T = 20 as the initial temperature: only the gradients act.
+  // Shells (g1 = dT/dn = 100 along the positive normal): the thermal curvature alpha g1 = 1e-3
+  // (kappa = -w''), so a free cantilever strip of length 10 bends to w = -alpha g1 L^2 / 2 = -0.05
+  // and the tip rotation UR2 = alpha g1 L = 0.01; nu = 0 decouples the transverse
+  // curvature, which the clamped root holds (S22 there). S4R reproduces it exactly, S8R (two
+  // elements) within 0.2 %.
+  // Beams (g1 = dT/dx2 = 40, g2 = dT/dx1 = 20; n1 = -z, n2 = +y): curvatures alpha g1 about n1 and
+  // -alpha g2 about n2, so u_y = -alpha g1 L^2 / 2 = -0.02, u_z = +alpha g2 L^2 / 2 = 0.01, free of
+  // stress (S11 = 0 at every section point), exactly for B31 and B32.
+  DeckRun run("thermal_gradient.inp");
+  if (!run.ok()) return;
+  for (Label tip : {5, 10}) {
+    EXPECT_REL(run.U(tip)[2], -0.05);
+    EXPECT_REL(run.UR(tip)[1], 0.01);
+  }
+  for (Label tip : {105, 108, 113}) EXPECT_NEAR(run.U(tip)[2], -0.05, 2e-3 * 0.05);
+  for (Label tip : {203, 305}) {
+    EXPECT_REL(run.U(tip)[1], -0.02);
+    EXPECT_REL(run.U(tip)[2], 0.01);
+  }
+  for (int k = 0; k < 4; ++k) EXPECT_SCALED(run.el(201, ElemVar::S, 0, k), 0.0, 1e3);
+  for (int k = 0; k < 5; ++k) EXPECT_SCALED(run.el(4, ElemVar::S, 0, k), 0.0, 1e3);
+}
+
 } // namespace
 } // namespace gapfem

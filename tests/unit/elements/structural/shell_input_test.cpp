@@ -60,6 +60,20 @@ TEST(ShellInput, SectionThicknessShearStiffnessAndLoadsAreRead) {
   EXPECT_LT(tip_w(e), 0.0);
 }
 
+TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
+  // node 7 belongs to no element: its gradient would have no effect, which the reader says
+  std::string text = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "",
+                          "*EXPANSION\n1e-5\n");
+  text.replace(text.find("*ELEMENT"), 0, "7, 5, 5, 0\n");
+  text.replace(text.find("*CLOAD"), 0, "*TEMPERATURE\n1, 20., 10.\n7, 20., 10.\n");
+  const JobResult r = test::run_deck(text);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  int found = 0;
+  for (const std::string& w : r.model->warnings)
+    found += w.find("node 7 has no shell or beam element") != std::string::npos;
+  EXPECT_EQ(found, 1);
+}
+
 TEST(ShellInput, BadSectionsAndLoadsAreErrors) {
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.\n"),
                      "the shell thickness must be positive, not 0");
