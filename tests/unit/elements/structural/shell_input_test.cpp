@@ -112,3 +112,49 @@ TEST(ShellInput, BadSectionsAndLoadsAreErrors) {
 
 } // namespace
 } // namespace gapfem
+
+namespace gapfem {
+namespace {
+
+/// An S4R strip (10 x 1 x 0.1, E = 1e6, nu = 0) clamped at x = 0; its two tip nodes rest on
+/// GAPUNI elements to ground with clearance 0.1 (or, for the oracle, are held at -0.1).
+std::string strip_on_gaps(bool gaps) {
+  std::string s = "*NODE\n";
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 1; ++j)
+      s += std::to_string(2 * i + j + 1) + ", " + std::to_string(2.5 * i) + ", " +
+           std::to_string(j) + ", 0\n";
+  s += "21, 10, 0, -1\n22, 10, 1, -1\n*ELEMENT, TYPE=S4R, ELSET=S\n";
+  for (int i = 0; i < 4; ++i)
+    s += std::to_string(i + 1) + ", " + std::to_string(2 * i + 1) + ", " +
+         std::to_string(2 * i + 3) + ", " + std::to_string(2 * i + 4) + ", " +
+         std::to_string(2 * i + 2) + "\n";
+  s += "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n1e6, 0\n";
+  if (gaps) s += "*ELEMENT, TYPE=GAPUNI, ELSET=G\n11, 9, 21\n12, 10, 22\n*GAP, ELSET=G\n0.1, 0, 0, -1\n";
+  s += "*BOUNDARY\n1, 1, 6\n2, 1, 6\n21, 1, 3\n22, 1, 3\n";
+  s += "*STEP\n*STATIC\n";
+  if (!gaps) s += "*BOUNDARY\n9, 3, 3, -0.1\n10, 3, 3, -0.1\n";
+  s += "*CLOAD\n9, 3, -0.05\n10, 3, -0.05\n*END STEP\n";
+  return s;
+}
+
+TEST(ShellGaps, StripOnGapUniSupportsMatchesTheHeldStrip) {
+  // free, the tip would deflect F L^3 / (3 E I) = 0.4 > 0.1: both gaps close, the tip sits at
+  // -0.1 and each gap carries what holding the tip there costs (the oracle's reaction)
+  const JobResult a = test::run_deck(strip_on_gaps(true));
+  ASSERT_EQ(a.exit_code, kExitOk) << a.error;
+  const JobResult b = test::run_deck(strip_on_gaps(false));
+  ASSERT_EQ(b.exit_code, kExitOk) << b.error;
+  const Frame& fa = test::last_frame(a);
+  const Frame& fb = test::last_frame(b);
+  for (Label n : {9, 10}) {
+    EXPECT_NEAR(test::U(a, fa, n)[2], -0.1, 1e-9);
+    const GapRecord& g = test::gap(a, fa, n + 2);
+    EXPECT_EQ(g.status, ContactStatus::Closed);
+    EXPECT_NEAR(g.normal_force, test::RF(b, fb, n)[2], 1e-9);
+    EXPECT_GT(g.normal_force, 0.0);
+  }
+}
+
+} // namespace
+} // namespace gapfem
