@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 86> kInfo = {{
+constexpr std::array<ElementTypeInfo, 88> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -145,6 +145,8 @@ constexpr std::array<ElementTypeInfo, 86> kInfo = {{
     {ElementType::S3, "S3", 3, F::Shell, S::ThreeD, P::None, true, false, Shape::Tri3},
     {ElementType::S3R, "S3R", 3, F::Shell, S::ThreeD, P::None, true, false, Shape::Tri3},
     {ElementType::S8R, "S8R", 8, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad8},
+    {ElementType::B32R, "B32R", 3, F::Beam, S::ThreeD, P::None, true, false},
+    {ElementType::S8, "S8", 8, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad8},
 }};
 } // namespace
 

@@ -104,6 +104,10 @@ enum class ElementType : std::uint8_t {
   S3,
   S3R,
   S8R,
+  // CalculiX's names: B32 with reduced integration (gapfem's B32 already uses two points) and the
+  // fully integrated eight-node shell
+  B32R,
+  S8,
 };
 
 enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer, Shell };

@@ -371,6 +371,7 @@ std::unique_ptr<ElementKernel> make_beam_kernel(const KernelContext& ctx) {
   case ElementType::PIPE31:
     return std::make_unique<beam::BeamKernel<2, false>>(std::move(data));
   case ElementType::B32:
+  case ElementType::B32R:
   case ElementType::PIPE32:
     return std::make_unique<beam::BeamKernel<3, false>>(std::move(data));
   case ElementType::B21:

@@ -105,8 +105,8 @@ class ShellKernel final : public ElementKernel {
     const auto nv = gather<double>(in, nl);
     const auto D = directors(in);
     const auto t = thickness(in);
-    std::array<SectionStrains<double>, 4> e{};
-    std::array<double, 4> thick{};
+    std::array<SectionStrains<double>, 9> e{};
+    std::array<double, 9> thick{};
     const Rule q = output_rule();
     const auto ty = tying(in, nv, nl);
     for (int k = 0; k < q.n; ++k) {
@@ -135,6 +135,18 @@ class ShellKernel final : public ElementKernel {
       r.pts[0] = centre_point(NN);
       return r;
     }
+    return rule();
+  }
+
+  /// Integration points: 3 on triangles, 2x2 on S4/S4R/S8R, 3x3 on S8.
+  Rule rule() const {
+    if (_d.type == ElementType::S8) return gauss3x3_rule();
+    if constexpr (NN == 3) {
+      Rule r;
+      r.n = 3;
+      for (int k = 0; k < 3; ++k) r.pts[k] = kTri3[k];
+      return r;
+    }
     return full_rule(NN);
   }
 
@@ -153,8 +165,9 @@ class ShellKernel final : public ElementKernel {
     return r;
   }
 
-  /// Pressure on the reference surface, positive against the positive normal; a follower load
-  /// under NLGEOM (its load stiffness added to the tangent).
+  /// Pressure on the reference surface: the force points along the positive (SPOS) normal, as in
+  /// Abaqus ("Distributed loads": for conventional shells the force vector points along the SPOS
+  /// normal) and CalculiX; a follower load under NLGEOM (its load stiffness added to the tangent).
   void pressure(const ElementInput& in, double pr, bool nl, std::span<double> f,
                 std::span<double> tangent) const {
     for (const auto& q : load_rule()) {
@@ -168,7 +181,7 @@ class ShellKernel final : public ElementKernel {
         }
       const Vec3 n = cross(xr, xs);
       for (int a = 0; a < NN; ++a)
-        for (int i = 0; i < 3; ++i) f[6 * a + i] -= pr * q[2] * sh.N[a] * n[i];
+        for (int i = 0; i < 3; ++i) f[6 * a + i] += pr * q[2] * sh.N[a] * n[i];
       if (!nl || tangent.empty()) continue;
       // d(xr x xs)/du_bk = dr_b (e_k x xs) + ds_b (xr x e_k); tangent -= d f / du
       for (int b = 0; b < NN; ++b)
@@ -178,7 +191,7 @@ class ShellKernel final : public ElementKernel {
           const Vec3 c1 = cross(ek, xs), c2 = cross(xr, ek);
           for (int a = 0; a < NN; ++a)
             for (int i = 0; i < 3; ++i)
-              tangent[(6 * a + i) * kN + 6 * b + k] +=
+              tangent[(6 * a + i) * kN + 6 * b + k] -=
                   pr * q[2] * sh.N[a] * (sh.dr[b] * c1[i] + sh.ds[b] * c2[i]);
         }
     }
@@ -291,12 +304,8 @@ class ShellKernel final : public ElementKernel {
       W += p.dA * section_energy(law, p.thickness, strains_at(p, nv, nl, ty));
       area += p.dA;
     };
-    if constexpr (NN == 3) {
-      for (const auto& q : kTri3) add(q[0], q[1], q[2]);
-    } else {
-      const Rule q = full_rule(NN);
-      for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
-    }
+    const Rule q = rule();
+    for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
     W += drilling(in, law, nv, nl, area);
     return W;
   }
@@ -339,12 +348,8 @@ class ShellKernel final : public ElementKernel {
           if (const double ba = p.dA * b[i]->g[a]; ba != 0.0)
             for (int j = 0; j < kN; ++j) out.tangent[a * kN + j] += ba * CB[i][j];
     };
-    if constexpr (NN == 3) {
-      for (const auto& q : kTri3) add(q[0], q[1], q[2]);
-    } else {
-      const Rule q = full_rule(NN);
-      for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
-    }
+    const Rule q = rule();
+    for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
     for (int a = 0; a < NN; ++a) {
       const Du d = drill_at(in, nv, false, a);
       const double k = kDrillFactor * law.G * t[a] * area / NN;

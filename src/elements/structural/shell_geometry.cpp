@@ -138,6 +138,15 @@ Rule full_rule(int n_nodes) {
   return q;
 }
 
+Rule gauss3x3_rule() {
+  Rule q;
+  const double g = std::sqrt(0.6), x[3] = {-g, 0.0, g}, w[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+  q.n = 9;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) q.pts[3 * j + i] = {x[i], x[j], w[i] * w[j]};
+  return q;
+}
+
 std::array<double, 3> centre_point(int n_nodes) {
   if (n_nodes == 3) return {1.0 / 3.0, 1.0 / 3.0, 0.5};
   return {0.0, 0.0, 4.0};

@@ -57,10 +57,12 @@ Vec3 element_normal_at_node(std::span<const Vec3> X, int a);
 /// Integration rule of an element: in-plane points and weights.
 struct Rule {
   int n = 0;
-  std::array<std::array<double, 3>, 4> pts{}; ///< r, s, weight
+  std::array<std::array<double, 3>, 9> pts{}; ///< r, s, weight
 };
 /// Full rule: 2x2 Gauss for quadrilaterals, the centroid for triangles.
 Rule full_rule(int n_nodes);
+/// 3x3 Gauss (S8, CalculiX's fully integrated eight-node shell).
+Rule gauss3x3_rule();
 /// The centre point (r, s, weight = reference area in natural coordinates).
 std::array<double, 3> centre_point(int n_nodes);
 

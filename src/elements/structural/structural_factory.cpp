@@ -90,6 +90,7 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
     return make_truss_kernel(ctx);
   case ElementType::B31:
   case ElementType::B32:
+  case ElementType::B32R:
   case ElementType::B21:
   case ElementType::B22:
   case ElementType::PIPE31:
@@ -100,6 +101,7 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   case ElementType::S4:
   case ElementType::S4R:
   case ElementType::S8R:
+  case ElementType::S8:
     return make_shell_kernel(ctx);
   case ElementType::T2D2T:
   case ElementType::T3D2T:

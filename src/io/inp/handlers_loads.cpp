@@ -354,7 +354,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
                                             s.model.element_label(e), info.name));
         r.fail(fmt::format("field 2 ({})", label),
                fmt::format("element {} is a shell ({}), loaded on its reference surface by P "
-                           "(positive against the shell normal); use P",
+                           "(its force along the shell's positive normal); use P",
                            s.model.element_label(e), info.name));
       }
       if (info.family == ElementFamily::Shell) {

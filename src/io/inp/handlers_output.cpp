@@ -109,7 +109,9 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
   ElPrintRequest req;
   req.loc = kw.loc;
   req.frequency = frequency_param(kw);
-  yes_no_param(kw, "GLOBAL", true); // accepted: gapfem's elements report global components
+  // continuum elements report global components either way; shells report S, E, SF in their local
+  // directions (Abaqus's default, GLOBAL=NO), which a GLOBAL=YES request is told below
+  const bool global = yes_no_param(kw, "GLOBAL", false);
   req.summary = yes_no_param(kw, "SUMMARY", true);
   totals_param(kw, req);
   const int pos =
@@ -131,6 +133,16 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
                        "this element set is not defined; define it with *ELSET in the model data");
     req.elements = *set;
   }
+  if (global)
+    for (ElemId e : req.elements)
+      if (element_info(s.model.mesh.elem_types[e]).family == ElementFamily::Shell) {
+        s.warn(kw.loc, fmt::format("GLOBAL=YES: shell element {} ({}) reports S, E, SF and SM in "
+                                   "its local shell directions (docs/theory/structural.md §4.1), "
+                                   "not in global components",
+                                   s.model.element_label(e),
+                                   element_info(s.model.mesh.elem_types[e]).name));
+        break;
+      }
   req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList);
   if (req.vars.empty())
     throw InputError(

@@ -347,12 +347,13 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
   ShellSection sec;
   sec.loc = kw.loc;
   sec.elset = set_param(s, kw, "ELSET", true);
-  const std::string material = name_param(kw, "MATERIAL", true);
+  std::string material;
   try {
     reject_param(kw, "ORIENTATION",
                  "gapfem shell materials are isotropic, so no orientation is needed; remove the "
                  "parameter");
     reject_param(kw, "COMPOSITE", "give one homogeneous layer (thickness, points, material)");
+    material = name_param(kw, "MATERIAL", true);
     reject_param(kw, "POISSON", "the thickness change of gapfem shells is not computed");
     enum_param(kw, "SECTION INTEGRATION", {"SIMPSON"}, 0);
     enum_param(kw, "TEMPERATURE", {"GRADIENT"}, 0);

@@ -55,7 +55,7 @@ TEST(ShellInput, SectionThicknessShearStiffnessAndLoadsAreRead) {
   // P and GRAV on shells
   const JobResult e = test::run_deck(
       deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n",
-           "*DLOAD\nS, P, 1.\n1, GRAV, 9810., 0, 0, -1\n", "*DENSITY\n7.8e-9\n"));
+           "*DLOAD\nS, P, -1.\n1, GRAV, 9810., 0, 0, -1\n", "*DENSITY\n7.8e-9\n"));
   EXPECT_EQ(e.exit_code, kExitOk) << e.error;
   EXPECT_LT(tip_w(e), 0.0);
 }
