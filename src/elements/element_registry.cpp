@@ -7,10 +7,14 @@ namespace gapfem {
 
 std::string_view contact_status_name(ContactStatus s) {
   switch (s) {
-  case ContactStatus::Open: return "open";
-  case ContactStatus::Closed: return "closed";
-  case ContactStatus::Stick: return "stick";
-  case ContactStatus::Slip: return "slip";
+  case ContactStatus::Open:
+    return "open";
+  case ContactStatus::Closed:
+    return "closed";
+  case ContactStatus::Stick:
+    return "stick";
+  case ContactStatus::Slip:
+    return "slip";
   }
   return "?";
 }
@@ -20,10 +24,14 @@ std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
   case ElementFamily::Spring:
   case ElementFamily::Truss:
   case ElementFamily::Beam:
-  case ElementFamily::Shell: return make_structural_kernel(ctx);
-  case ElementFamily::Continuum: return make_continuum_kernel(ctx);
-  case ElementFamily::Gap: return make_gap_kernel(ctx);
-  case ElementFamily::HeatTransfer: return make_heat_kernel(ctx);
+  case ElementFamily::Shell:
+    return make_structural_kernel(ctx);
+  case ElementFamily::Continuum:
+    return make_continuum_kernel(ctx);
+  case ElementFamily::Gap:
+    return make_gap_kernel(ctx);
+  case ElementFamily::HeatTransfer:
+    return make_heat_kernel(ctx);
   }
   throw InternalError("unknown element family");
 }

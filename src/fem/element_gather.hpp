@@ -17,7 +17,7 @@ struct FieldView {
   std::span<const double> u_start;           ///< committed values per slot
   std::span<const double> temperature;       ///< predefined temperature per node now (may be empty)
   std::span<const double> temperature_start; ///< … at the increment start
-  std::span<const double> initial_temperature; ///< per node
+  std::span<const double> initial_temperature;  ///< per node
   std::span<const double> temperature_gradient; ///< 2 per node now (may be empty)
 };
 

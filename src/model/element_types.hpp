@@ -110,7 +110,15 @@ enum class ElementType : std::uint8_t {
   S8,
 };
 
-enum class ElementFamily : std::uint8_t { Spring, Truss, Beam, Continuum, Gap, HeatTransfer, Shell };
+enum class ElementFamily : std::uint8_t {
+  Spring,
+  Truss,
+  Beam,
+  Continuum,
+  Gap,
+  HeatTransfer,
+  Shell
+};
 
 /// Which model space an element type requires.
 enum class SpaceRequirement : std::uint8_t { Any, Planar, Axisymmetric, ThreeD };

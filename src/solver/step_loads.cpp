@@ -192,9 +192,9 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
   _grad_base.resize(2 * static_cast<std::size_t>(model.mesh.n_nodes()), 0.0);
   auto gradient_entry = [&](NodeId n, std::array<double, 2> to, int amplitude, bool propagated) {
     if (!_has_gradient) return;
-    _grad.emplace_back(n, std::array<Scalar, 2>{
-                              Scalar{_grad_base[2 * n], to[0], amplitude, propagated},
-                              Scalar{_grad_base[2 * n + 1], to[1], amplitude, propagated}});
+    _grad.emplace_back(
+        n, std::array<Scalar, 2>{Scalar{_grad_base[2 * n], to[0], amplitude, propagated},
+                                 Scalar{_grad_base[2 * n + 1], to[1], amplitude, propagated}});
   };
   std::set<NodeId> tseen;
   for (const NodalTemperature& t : _step.temperatures) {

@@ -25,11 +25,11 @@ class ConstraintSet;
 struct LoadHistory {
   std::map<std::pair<NodeId, int>, double> nodal; ///< CLOAD/CFLUX values at step end
   std::map<std::tuple<ElemId, int, int>, std::pair<double, double>>
-      distributed;                      ///< magnitude, sink
-  std::vector<double> temperature;      ///< predefined field per node
+      distributed;                          ///< magnitude, sink
+  std::vector<double> temperature;          ///< predefined field per node
   std::vector<double> temperature_gradient; ///< its gradients, 2 per node (empty: none)
-  std::vector<std::uint8_t> prescribed; ///< per slot, in the last step
-  std::vector<double> reaction;         ///< per slot, at the end of the last step
+  std::vector<std::uint8_t> prescribed;     ///< per slot, in the last step
+  std::vector<double> reaction;             ///< per slot, at the end of the last step
   /// Boundary conditions in local systems (*TRANSFORM): (node, DOF) -> reaction at step end.
   std::map<std::pair<NodeId, int>, double> local_reaction;
 };

@@ -80,8 +80,7 @@ class ShellKernel final : public ElementKernel {
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
-    if (load.kind == DistLoadKind::Pressure)
-      return pressure(in, magnitude, nl, f_ext, tangent);
+    if (load.kind == DistLoadKind::Pressure) return pressure(in, magnitude, nl, f_ext, tangent);
     // body loads per unit reference area: rho g t or b t
     const auto D = directors(in);
     const auto t = thickness(in);
@@ -237,8 +236,8 @@ class ShellKernel final : public ElementKernel {
   /// strains at the centre (selective integration). Computed once per evaluation.
   template <class T>
   struct Tying {
-    std::array<T, 4> g{};   ///< S4: g_r at (0,-1), (0,1), g_s at (-1,0), (1,0); S3: MITC3 values
-    T eps12{}, kap12{};     ///< S4: centre values in the centre's local directions
+    std::array<T, 4> g{}; ///< S4: g_r at (0,-1), (0,1), g_s at (-1,0), (1,0); S3: MITC3 values
+    T eps12{}, kap12{};   ///< S4: centre values in the centre's local directions
   };
 
   template <class T>

@@ -68,7 +68,8 @@ ShellData shell_data(const KernelContext& ctx) {
   check_density_for_gravity(ctx, d.material);
   const std::vector<Vec3> avg = averaged_normals(model);
   // a node's director is the average of the normals of the shells that meet there, unless this
-  // element's own normal differs from it by more than 20 degrees (a fold: the element keeps its own)
+  // element's own normal differs from it by more than 20 degrees (a fold: the element keeps its
+  // own)
   const double cos20 = std::cos(20.0 * M_PI / 180.0);
   std::array<Vec3, kMaxNodes> X;
   for (ElemId e : ctx.elements) {
@@ -118,7 +119,8 @@ SectionLaw section_law(const ShellData& d, const ElementInput& in) {
 std::array<double, 64> section_matrix(const SectionLaw& l, double t) {
   std::array<double, 64> C{};
   const double c = l.E / (1.0 - l.nu * l.nu);
-  const double Q[3][3] = {{c, c * l.nu, 0.0}, {c * l.nu, c, 0.0}, {0.0, 0.0, c * 0.5 * (1.0 - l.nu)}};
+  const double Q[3][3] = {
+      {c, c * l.nu, 0.0}, {c * l.nu, c, 0.0}, {0.0, 0.0, c * 0.5 * (1.0 - l.nu)}};
   const double zm = -l.offset * t;
   const double A = t, B = t * zm, D = t * t * t / 12.0 + t * zm * zm;
   for (int i = 0; i < 3; ++i)

@@ -25,7 +25,7 @@ struct ShellData {
   int n_points = 5;    ///< section points (Simpson)
   double offset = 0.0; ///< reference surface offset, fraction of the thickness
   double k11 = 0.0, k22 = 0.0;
-  std::vector<Vec3> directors;  ///< per element of the block, per node: unit reference director
+  std::vector<Vec3> directors;   ///< per element of the block, per node: unit reference director
   std::vector<double> thickness; ///< per element of the block, per node
 };
 
@@ -36,7 +36,8 @@ ShellData shell_data(const KernelContext& ctx);
 struct SectionLaw {
   double E = 0.0, nu = 0.0, G = 0.0;
   double eps_th = 0.0; ///< isotropic thermal strain of the membrane
-  double kap_th = 0.0; ///< thermal curvature alpha dT/dn (11 and 22) of a through-thickness gradient
+  double kap_th =
+      0.0; ///< thermal curvature alpha dT/dn (11 and 22) of a through-thickness gradient
   double offset = 0.0;
   double k11 = 0.0, k22 = 0.0; ///< given shear stiffnesses, 0 for 5/6 G t
   int n_points = 5;
@@ -62,8 +63,8 @@ T section_energy(const SectionLaw& l, double t, const SectionStrains<T>& s) {
   std::array<T, 3> k = s.kap;
   k[0] -= l.kap_th;
   k[1] -= l.kap_th;
-  T W = 0.5 * A * plane_energy(l, e, e) + B * plane_energy(l, e, k) +
-        0.5 * D * plane_energy(l, k, k);
+  T W =
+      0.5 * A * plane_energy(l, e, e) + B * plane_energy(l, e, k) + 0.5 * D * plane_energy(l, k, k);
   const double K1 = l.k11 > 0.0 ? l.k11 : 5.0 / 6.0 * l.G * t;
   const double K2 = l.k22 > 0.0 ? l.k22 : 5.0 / 6.0 * l.G * t;
   W += 0.5 * (K1 * (s.gam[0] * s.gam[0]) + K2 * (s.gam[1] * s.gam[1]));

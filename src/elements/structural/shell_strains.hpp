@@ -128,9 +128,9 @@ std::array<T, 2> shear_to_local(const SurfacePoint& p, const T& gr, const T& gs)
 /// The strains of the section at one point in local components.
 template <class T>
 struct SectionStrains {
-  std::array<T, 3> eps{};  ///< membrane 11, 22, 12 (engineering)
-  std::array<T, 3> kap{};  ///< bending 11, 22, 12 (engineering twist)
-  std::array<T, 2> gam{};  ///< transverse shear 13, 23
+  std::array<T, 3> eps{}; ///< membrane 11, 22, 12 (engineering)
+  std::array<T, 3> kap{}; ///< bending 11, 22, 12 (engineering twist)
+  std::array<T, 2> gam{}; ///< transverse shear 13, 23
 };
 
 } // namespace gapfem::shell

@@ -346,7 +346,8 @@ void handle_dload(BuildState& s, const Keyword& kw) {
         loads.push_back(beam_dload(s, r, e, d, label));
         continue;
       }
-      if (d.kind == DistLoadKind::Pressure && (d.face == 0) != (info.family == ElementFamily::Shell)) {
+      if (d.kind == DistLoadKind::Pressure &&
+          (d.face == 0) != (info.family == ElementFamily::Shell)) {
         if (d.face == 0)
           r.fail("field 2 (P)", fmt::format("element {} is not a shell: give the face of the "
                                             "pressure, P1, P2, … (face numbers of {}), or use "
@@ -567,8 +568,7 @@ void check_temperature_gradients(BuildState& s) {
       }
     }
     const auto where = std::pair(t.loc.file, t.loc.line);
-    if (sectioned[t.node] ||
-        std::find(reported.begin(), reported.end(), where) != reported.end())
+    if (sectioned[t.node] || std::find(reported.begin(), reported.end(), where) != reported.end())
       continue;
     reported.push_back(where);
     s.warn(t.loc, fmt::format("node {} has no shell or beam element, so the temperature gradients "

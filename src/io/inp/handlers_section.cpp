@@ -1,5 +1,5 @@
-// Section keywords: *SOLID SECTION, *BEAM SECTION, *SHELL SECTION, *NODAL THICKNESS, *SPRING. The ELSET and MATERIAL references are
-// resolved when the model data is complete (model_validate.cpp).
+// Section keywords: *SOLID SECTION, *BEAM SECTION, *SHELL SECTION, *NODAL THICKNESS, *SPRING. The
+// ELSET and MATERIAL references are resolved when the model data is complete (model_validate.cpp).
 #include "io/inp/handlers.hpp"
 
 #include <cmath>

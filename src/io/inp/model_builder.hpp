@@ -84,7 +84,7 @@ struct BuildState {
   /// the last *BEAM (GENERAL) SECTION was read without error (its sub-options may attach to it)
   bool beam_section_ok = false;
   std::vector<std::string> shell_material; ///< per shell section: material name
-  bool shell_section_ok = false;             ///< as beam_section_ok, for *SHELL SECTION
+  bool shell_section_ok = false;           ///< as beam_section_ok, for *SHELL SECTION
   /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
   /// of the ELSET are known.
   std::vector<DataLine> spring_dof_line;

@@ -257,9 +257,10 @@ TOP, P, 7.
 TEST(ReaderLoads, DistributedLoadErrors) {
   const std::string b(kBrickAndSpring);
   auto err = [&](std::string lines) { return error_text(b + lines + "\n*END STEP\n"); };
-  EXPECT_CONTAINS(err("*DLOAD\n1, P, 1."),
-                  "deck.inp:30: *DLOAD: field 2 (P): element 1 is not a shell: give the face of the "
-                  "pressure");
+  EXPECT_CONTAINS(
+      err("*DLOAD\n1, P, 1."),
+      "deck.inp:30: *DLOAD: field 2 (P): element 1 is not a shell: give the face of the "
+      "pressure");
   EXPECT_CONTAINS(err("*DLOAD\n1, P7, 1."),
                   "deck.inp:30: *DLOAD: element 1 (C3D8): face 7 does not exist");
   EXPECT_CONTAINS(err("*DLOAD\n1, PX, 1."),

@@ -65,7 +65,7 @@ TEST(VerificationStructuralShells, OffsetReferenceSurfaceAndNodalThickness) {
     EXPECT_REL(run.U(tip)[0], 4e-4);
     EXPECT_REL(run.U(tip)[2], -0.03);
   }
-  EXPECT_REL(run.el(1, ElemVar::SF, 0), 1.0); // SF1 = N11 per unit width
+  EXPECT_REL(run.el(1, ElemVar::SF, 0), 1.0);         // SF1 = N11 per unit width
   EXPECT_SCALED(run.el(1, ElemVar::SF, 5), 0.0, 0.1); // SM1 about the reference surface
 }
 
@@ -81,7 +81,8 @@ TEST(VerificationStructuralShells, StripRollsIntoACircleUnderNlgeom) {
     Label tip;
     double tol;
   };
-  for (const Case& c : {Case{"shell_rollup_s4r.inp", 65, 0.08}, Case{"shell_rollup_s8r.inp", 98, 0.01}}) {
+  for (const Case& c :
+       {Case{"shell_rollup_s4r.inp", 65, 0.08}, Case{"shell_rollup_s8r.inp", 98, 0.01}}) {
     SCOPED_TRACE(c.deck);
     DeckRun run(c.deck);
     if (!run.ok()) continue;

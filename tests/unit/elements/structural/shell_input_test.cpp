@@ -53,17 +53,16 @@ TEST(ShellInput, SectionThicknessShearStiffnessAndLoadsAreRead) {
   ASSERT_EQ(d.exit_code, kExitOk) << d.error;
   EXPECT_LT(tip_w(d), 1.5 * tip_w(a));
   // P and GRAV on shells
-  const JobResult e = test::run_deck(
-      deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n",
-           "*DLOAD\nS, P, -1.\n1, GRAV, 9810., 0, 0, -1\n", "*DENSITY\n7.8e-9\n"));
+  const JobResult e =
+      test::run_deck(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n",
+                          "*DLOAD\nS, P, -1.\n1, GRAV, 9810., 0, 0, -1\n", "*DENSITY\n7.8e-9\n"));
   EXPECT_EQ(e.exit_code, kExitOk) << e.error;
   EXPECT_LT(tip_w(e), 0.0);
 }
 
 TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
   // node 7 belongs to no element: its gradient would have no effect, which the reader says
-  std::string text = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "",
-                          "*EXPANSION\n1e-5\n");
+  std::string text = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "", "*EXPANSION\n1e-5\n");
   text.replace(text.find("*ELEMENT"), 0, "7, 5, 5, 0\n");
   text.replace(text.find("*CLOAD"), 0, "*TEMPERATURE\n1, 20., 10.\n7, 20., 10.\n");
   const JobResult r = test::run_deck(text);
@@ -97,9 +96,9 @@ TEST(ShellInput, BadSectionsAndLoadsAreErrors) {
                      "K12 must be 0 or blank");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "*DLOAD\n1, P2, 1.\n"),
                      "is a shell (S4R), loaded on its reference surface by P");
-  expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n",
-                          "*DLOAD\n1, GRAV, 9810., 0, 0, -1\n"),
-                     "GRAV needs the mass density of material M");
+  expect_input_error(
+      deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "*DLOAD\n1, GRAV, 9810., 0, 0, -1\n"),
+      "GRAV needs the mass density of material M");
   expect_input_error(deck("*SOLID SECTION, ELSET=S, MATERIAL=M\n0.1\n"),
                      "needs a *SHELL SECTION, not a *SOLID SECTION");
   // a folded element: nodes not numbered around it
@@ -130,7 +129,8 @@ std::string strip_on_gaps(bool gaps) {
          std::to_string(2 * i + 3) + ", " + std::to_string(2 * i + 4) + ", " +
          std::to_string(2 * i + 2) + "\n";
   s += "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n*MATERIAL, NAME=M\n*ELASTIC\n1e6, 0\n";
-  if (gaps) s += "*ELEMENT, TYPE=GAPUNI, ELSET=G\n11, 9, 21\n12, 10, 22\n*GAP, ELSET=G\n0.1, 0, 0, -1\n";
+  if (gaps)
+    s += "*ELEMENT, TYPE=GAPUNI, ELSET=G\n11, 9, 21\n12, 10, 22\n*GAP, ELSET=G\n0.1, 0, 0, -1\n";
   s += "*BOUNDARY\n1, 1, 6\n2, 1, 6\n21, 1, 3\n22, 1, 3\n";
   s += "*STEP\n*STATIC\n";
   if (!gaps) s += "*BOUNDARY\n9, 3, 3, -0.1\n10, 3, 3, -0.1\n";

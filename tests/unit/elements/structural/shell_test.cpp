@@ -25,8 +25,8 @@ std::vector<Vec3> element_nodes(int nn) {
   if (nn == 8) {
     for (int a = 0; a < 4; ++a) {
       const Vec3 &p = X[a], &q = X[(a + 1) % 4];
-      X.push_back({0.5 * (p[0] + q[0]) + 0.02, 0.5 * (p[1] + q[1]) - 0.01,
-                   0.5 * (p[2] + q[2]) + 0.03});
+      X.push_back(
+          {0.5 * (p[0] + q[0]) + 0.02, 0.5 * (p[1] + q[1]) - 0.01, 0.5 * (p[2] + q[2]) + 0.03});
     }
   }
   return X;
