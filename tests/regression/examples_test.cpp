@@ -332,3 +332,66 @@ TEST(RegressionExamples, FuelPinGapClosesAndCentreTemperature) {
   ASSERT_TRUE(c.thermal);
   EXPECT_LT(c.heat_balance_error, 1e-6 * c.heat_scale);
 }
+
+// examples/04_pipe_elbow: an L of PIPE31 (6 m along x, a six-chord long-radius elbow, 4 m along y)
+// anchored at the origin on frictionless GAPUNI rests and a +-x guide; weight, 5 MPa, +150 K.
+TEST(RegressionExamples, PipeElbowWeightPressureAndFreeThermalGrowth) {
+  const JobResult r = run_example("04_pipe_elbow", "pipe_elbow.inp");
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  ASSERT_EQ(r.steps.size(), 3u);
+  EXPECT_TRUE(r.model->warnings.empty()) << "examples run clean";
+  const double ro = 0.1683 / 2, ri = ro - 0.00711, R = 0.2286, p = 5e6;
+  const double A = kPi * (ro * ro - ri * ri);
+  const double L = (6 - R) + 6 * 2 * R * std::sin(kPi / 24) + (4 - R);
+  const double W = 7850.0 * 9.81 * A * L;
+  ASSERT_NEAR(W, 2745.2, 0.1);
+  const Label rests[] = {201, 202, 203, 204, 205};
+  const double README_N[] = {620.5, 648.4, 640.5, 254.4, 126.7};
+  const Label anchor = 1, free_end = 27, guide_px = 301, guide_mx = 302;
+
+  // WEIGHT: the rests close and carry the README's loads, the reactions sum to W
+  const Frame& f1 = last_frame(r, 1);
+  double carried = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    SCOPED_TRACE(rests[i]);
+    EXPECT_EQ(gap(r, f1, rests[i]).status, ContactStatus::Closed);
+    EXPECT_NEAR(gap(r, f1, rests[i]).normal_force, README_N[i], 0.1);
+    carried += gap(r, f1, rests[i]).normal_force;
+  }
+  EXPECT_NEAR(r.steps[0].checks.reaction_sum[2], W, 1e-6 * W);
+  EXPECT_NEAR(RF(r, f1, anchor)[2], W - carried, 1e-6 * W);
+  EXPECT_NEAR(RF(r, f1, anchor)[2], 454.8, 0.2);
+  EXPECT_NEAR(gap(r, f1, guide_px).clearance, 0.015, 1e-9);
+
+  // PRESSURE: Lame hoop stress at the outer fibre; the thrusts are self-equilibrated
+  const Frame& f2 = last_frame(r, 2);
+  const double hoop = 2 * p * ri * ri / (ro * ro - ri * ri);
+  int checked = 0;
+  for (const ElementResult& res : f2.elements)
+    if (const OutputBlock* b = res.data.find(ElemVar::S);
+        b && r.model->mesh.elem_types[res.elem] == ElementType::PIPE31)
+      for (int k = 0; k < b->n_points; ++k, ++checked)
+        EXPECT_NEAR(b->values[3 * k + 1], hoop, 1e-6 * hoop);
+  EXPECT_GT(checked, 0);
+  EXPECT_NEAR(RF(r, f2, anchor)[0], 0.0, 1e-6 * p * kPi * ri * ri);
+  EXPECT_NEAR(RF(r, f2, anchor)[1], 0.0, 1e-6 * p * kPi * ri * ri);
+  EXPECT_NEAR(f2.nodes.RM[r.model->mesh.find_node(anchor)][2], 0.0, 1e-6 * p * kPi * ri * ri);
+  for (int i = 0; i < 5; ++i)
+    EXPECT_NEAR(gap(r, f2, rests[i]).normal_force, gap(r, f1, rests[i]).normal_force, 1e-6 * W);
+
+  // HOT: a free uniform expansion about the anchor, stress-free: du = alpha dT (x - x_A)
+  const Frame& f3 = last_frame(r, 3);
+  const double s = 1.2e-5 * 150.0;
+  EXPECT_NEAR(U(r, f3, free_end)[0] - U(r, f2, free_end)[0], s * 6.0, 1e-9);
+  EXPECT_NEAR(U(r, f3, free_end)[1] - U(r, f2, free_end)[1], s * 4.0, 1e-9);
+  const Label guide_node =
+      r.model->mesh
+          .node_labels[r.model->mesh.element_nodes(r.model->mesh.find_element(guide_px))[0]];
+  const double ux = U(r, f3, guide_node)[0];
+  EXPECT_NEAR(gap(r, f3, guide_px).clearance, 0.015 - ux, 1e-9);
+  EXPECT_NEAR(gap(r, f3, guide_mx).clearance, 0.015 + ux, 1e-9);
+  EXPECT_EQ(gap(r, f3, guide_px).status, ContactStatus::Open);
+  EXPECT_NEAR(gap(r, f3, guide_px).clearance, 3.89e-3, 0.01e-3);
+  for (int i = 0; i < 5; ++i)
+    EXPECT_NEAR(gap(r, f3, rests[i]).normal_force, gap(r, f2, rests[i]).normal_force, 1e-6 * W);
+}
