@@ -7,6 +7,7 @@ shell_scordelis_lo.inp  Scordelis-Lo roof, quarter, S8R 8x8 (and S4R 16x16 in th
 shell_strip_offset.inp  strips with OFFSET=SPOS (S8R: *NODAL THICKNESS) under a tip axial force
 shell_rollup_*.inp      NLGEOM roll-up of a strip into a circle (S4R 32, S8R 16 elements)
 shell_hemisphere.inp    pinched hemisphere, quarter, S4R 8x8
+shell_macneal_harder_straight.inp  MacNeal-Harder straight cantilever, S4R 6 x 1, four loads
 """
 import math
 
@@ -178,7 +179,32 @@ def hemisphere(et, n, name):
     write(name, out)
 
 
+def macneal_harder_straight():
+    """MacNeal-Harder straight cantilever (L = 6, width 0.2, t = 0.1, E = 1e7, nu = 0.3), 6 x 1
+    rectangular S4R, four copies (1 apart in z) with unit tip loads: extension, in-plane shear,
+    out-of-plane shear, twist."""
+    out = ["*HEADING", "MacNeal-Harder straight cantilever, 6 x 1 S4R, four load cases"]
+    loads = []
+    for c in range(4):
+        base = 100 * c
+        out.append("*NODE")
+        out += [f"{base + 2 * i + j + 1}, {i:.15g}, {0.2 * j:.15g}, {float(c):.15g}"
+                for i in range(7) for j in range(2)]
+        out.append(f"*ELEMENT, TYPE=S4R, ELSET=C{c}")
+        out += [f"{base + i + 1}, {base + 2 * i + 1}, {base + 2 * i + 3}, {base + 2 * i + 4}, "
+                f"{base + 2 * i + 2}" for i in range(6)]
+        out += [f"*SHELL SECTION, ELSET=C{c}, MATERIAL=M", "0.1"]
+        a, b = base + 13, base + 14
+        loads += {0: [f"{a}, 1, 0.5", f"{b}, 1, 0.5"], 1: [f"{a}, 2, 0.5", f"{b}, 2, 0.5"],
+                  2: [f"{a}, 3, 0.5", f"{b}, 3, 0.5"], 3: [f"{a}, 3, -5.", f"{b}, 3, 5."]}[c]
+    out += ["*MATERIAL, NAME=M", "*ELASTIC", "1e7, 0.3", "*BOUNDARY"]
+    out += [f"{100 * c + k}, 1, 6" for c in range(4) for k in (1, 2)]
+    out += ["*STEP", "*STATIC", "*CLOAD"] + loads + ["*NODE PRINT", "U", "*END STEP"]
+    write("shell_macneal_harder_straight.inp", out)
+
+
 if __name__ == "__main__":
+    macneal_harder_straight()
     strip_offset()
     rollup("S4R", 32, "shell_rollup_s4r.inp")
     rollup("S8R", 16, "shell_rollup_s8r.inp")
