@@ -350,10 +350,7 @@ class BeamKernel final : public ElementKernel {
     if (in.state.size() < static_cast<std::size_t>(4 * NN)) return;
     const auto nv = gather<double>(in, nl);
     for (int a = 0; a < NN; ++a) {
-      Quat<double> q = nl ? nv.q[a] : rotation::quat_exp(nv.psi[a]);
-      const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-      const double v[4] = {q.w / n, q.x / n, q.y / n, q.z / n};
-      for (int i = 0; i < 4; ++i) in.state[4 * a + i] = v[i];
+      rotation::store_unit(nl ? nv.q[a] : rotation::quat_exp(nv.psi[a]), in.state.data() + 4 * a);
     }
   }
 

@@ -133,6 +133,16 @@ auto rotate(const Quat<T>& q, const V3<A>& a) {
   return r;
 }
 
+/// Writes q normalised to a unit quaternion (w, x, y, z) into out[0..3]: the nodal-rotation history
+/// of the beams and shells.
+inline void store_unit(const Quat<double>& q, double* out) {
+  const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  out[0] = q.w / n;
+  out[1] = q.x / n;
+  out[2] = q.y / n;
+  out[3] = q.z / n;
+}
+
 /// Normalised midpoint of two rotations on the shortest arc: exp(log(a* b) / 2) applied to a.
 template <class T>
 Quat<T> quat_mid(const Quat<T>& a, Quat<T> b) {

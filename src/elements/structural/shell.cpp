@@ -412,9 +412,7 @@ class ShellKernel final : public ElementKernel {
     for (int a = 0; a < NN; ++a) {
       V3<double> th{in.u[6 * a + 3], in.u[6 * a + 4], in.u[6 * a + 5]};
       const auto q = nl ? rotation_of(in, th, a) : rotation::quat_exp(th);
-      const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-      const double v[4] = {q.w / n, q.x / n, q.y / n, q.z / n};
-      for (int i = 0; i < 4; ++i) in.state[4 * a + i] = v[i];
+      rotation::store_unit(q, in.state.data() + 4 * a);
     }
   }
 
