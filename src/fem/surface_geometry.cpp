@@ -14,11 +14,52 @@ std::optional<Shape> cell_shape(ElementType type) {
   return cell;
 }
 
+namespace {
+
+/// The facet of a shell's SNEG (face 1) or SPOS (face 2) side: the whole reference surface, its
+/// nodes ordered so that the facet normal points out of that side (SNEG reversed).
+bool shell_facet(const Model& model, const Surface::Face& f, Shape cell, SurfaceFacet& sf) {
+  if (f.face != 1 && f.face != 2) return false;
+  const auto nodes = model.mesh.element_nodes(f.elem);
+  static constexpr std::array<int, 8> tri3{0, 2, 1}, tri6{0, 2, 1, 5, 4, 3}, quad4{0, 3, 2, 1},
+      quad8{0, 3, 2, 1, 7, 6, 5, 4};
+  const std::array<int, 8>* reversed = nullptr;
+  switch (cell) {
+  case Shape::Tri3:
+    reversed = &tri3;
+    break;
+  case Shape::Tri6:
+    reversed = &tri6;
+    break;
+  case Shape::Quad4:
+    reversed = &quad4;
+    break;
+  case Shape::Quad8:
+    reversed = &quad8;
+    break;
+  default:
+    return false;
+  }
+  sf.elem = f.elem;
+  sf.face = f.face;
+  sf.shape = cell;
+  sf.n_nodes = static_cast<int>(nodes.size());
+  for (int a = 0; a < sf.n_nodes; ++a) sf.nodes[a] = nodes[f.face == 1 ? (*reversed)[a] : a];
+  return true;
+}
+
+} // namespace
+
 std::vector<SurfaceFacet> surface_facets(const Model& model, const Surface& surface) {
   std::vector<SurfaceFacet> out;
   for (const Surface::Face& f : surface.faces) {
     const auto cell = cell_shape(model.mesh.elem_types[f.elem]);
     if (!cell) continue;
+    if (element_info(model.mesh.elem_types[f.elem]).family == ElementFamily::Shell) {
+      SurfaceFacet sf;
+      if (shell_facet(model, f, *cell, sf)) out.push_back(sf);
+      continue;
+    }
     const auto faces = element_faces(*cell);
     if (f.face < 1 || f.face > static_cast<int>(faces.size())) continue;
     const FaceDef& fd = faces[f.face - 1];

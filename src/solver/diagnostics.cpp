@@ -60,7 +60,8 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
     if (d < 4 || d > 6) return false;
     for (ElemId e : node_elems[dofs.slot_node(s)]) {
       const ElementFamily f = element_info(mesh.elem_types[e]).family;
-      if (f == ElementFamily::Beam || f == ElementFamily::Spring) return false;
+      if (f == ElementFamily::Beam || f == ElementFamily::Shell || f == ElementFamily::Spring)
+        return false;
     }
     return true;
   });

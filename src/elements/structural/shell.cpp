@@ -73,14 +73,18 @@ class ShellKernel final : public ElementKernel {
   }
 
   bool supports_load(DistLoadKind kind, int face) const override {
-    return face == 0 && (kind == DistLoadKind::Pressure || kind == DistLoadKind::Gravity ||
-                         kind == DistLoadKind::BodyForce);
+    if (kind == DistLoadKind::Pressure) return face >= 0 && face <= 2; // P, SNEG, SPOS
+    return face == 0 && (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce);
   }
 
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
-    if (load.kind == DistLoadKind::Pressure) return pressure(in, magnitude, nl, f_ext, tangent);
+    if (load.kind == DistLoadKind::Pressure) {
+      // a surface pressure pushes against the face's outward normal: SPOS (face 2) along -n
+      const double sign = load.face == 2 ? -1.0 : 1.0;
+      return pressure(in, sign * magnitude, nl, f_ext, tangent);
+    }
     // body loads per unit reference area: rho g t or b t
     const auto D = directors(in);
     const auto t = thickness(in);
@@ -167,6 +171,8 @@ class ShellKernel final : public ElementKernel {
   /// Pressure on the reference surface: the force points along the positive (SPOS) normal, as in
   /// Abaqus ("Distributed loads": for conventional shells the force vector points along the SPOS
   /// normal) and CalculiX; a follower load under NLGEOM (its load stiffness added to the tangent).
+  /// A surface-based pressure (*DSLOAD) acts against the surface normal: on an SNEG face (face 1)
+  /// along +n like P, on an SPOS face (face 2) along -n; load() passes the signed magnitude.
   void pressure(const ElementInput& in, double pr, bool nl, std::span<double> f,
                 std::span<double> tangent) const {
     for (const auto& q : load_rule()) {

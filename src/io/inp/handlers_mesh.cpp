@@ -279,6 +279,24 @@ void handle_elset(BuildState& s, const Keyword& kw) {
   handle_set<false>(s, kw);
 }
 
+namespace {
+
+/// The side of a shell named by a surface face: SNEG or S1 (CalculiX's label) is 1, SPOS or S2
+/// is 2. Shell edges (Abaqus E1…, CalculiX S3…) carry edge loads, which gapfem does not have.
+int shell_side(const BuildState& s, const FieldReader& r, ElemId e, int side, long long face) {
+  if (side == 0 && (face == 1 || face == 2)) side = static_cast<int>(face);
+  if (side == 0)
+    r.fail(fmt::format("element {} ({})", s.model.element_label(e),
+                       element_info(s.model.mesh.elem_types[e]).name),
+           fmt::format("face '{}' of a shell is an edge; gapfem's shell surfaces are the sides "
+                       "SPOS (or S2) and SNEG (or S1): edge loads and edge surfaces are not "
+                       "supported",
+                       r.text(1)));
+  return side;
+}
+
+} // namespace
+
 void handle_surface(BuildState& s, const Keyword& kw) {
   const bool node_based = enum_param(kw, "TYPE", {"ELEMENT", "NODE"}, 0) == 1;
   const std::string name = set_param(s, kw, "NAME", true);
@@ -308,25 +326,36 @@ void handle_surface(BuildState& s, const Keyword& kw) {
   }
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    r.at_most(2, "element or element set, face label S1..S6");
+    r.at_most(2, "element or element set, face label (S1..S6; SPOS, SNEG on shells)");
     const auto elems = resolve_elements(s, r, 0);
     if (elems.empty()) s.incomplete_surfaces.insert(name); // a failed definition (reported)
     const std::string face_text = canonical(r.text(1));
     const auto face = face_text.size() >= 2 && face_text[0] == 'S'
                           ? parse_integer(std::string_view(face_text).substr(1))
                           : std::nullopt;
-    if (!face || *face < 1)
+    const int side = face_text == "SNEG" ? 1 : face_text == "SPOS" ? 2 : 0;
+    const long long fnum = face.value_or(0);
+    if (fnum < 1 && side == 0)
       r.fail(fmt::format("face '{}'", r.text(1)),
-             "write the face as S1, S2, … (the face numbers of the element type)");
+             "write the face as S1, S2, … (the face numbers of the element type; SPOS or SNEG "
+             "for the sides of shells)");
     for (ElemId e : elems) {
       const ElementType t = s.model.mesh.elem_types[e];
+      if (element_info(t).family == ElementFamily::Shell) {
+        surf.faces.push_back({e, shell_side(s, r, e, side, fnum)});
+        continue;
+      }
+      if (side != 0)
+        r.fail(fmt::format("element {} ({})", s.model.element_label(e), element_info(t).name),
+               "SPOS and SNEG are the sides of shell elements; faces of this element type are "
+               "written S1, S2, …");
       const int nf = n_faces(t);
-      if (*face > nf)
+      if (fnum > nf)
         r.fail(fmt::format("element {} ({})", s.model.element_label(e), element_info(t).name),
                nf == 0 ? std::string("this element type has no faces for a surface")
                        : fmt::format("face S{} does not exist; this element type has faces S1-S{}",
-                                     *face, nf));
-      surf.faces.push_back({e, static_cast<int>(*face)});
+                                     fnum, nf));
+      surf.faces.push_back({e, static_cast<int>(fnum)});
     }
   });
 }

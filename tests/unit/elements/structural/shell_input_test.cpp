@@ -3,6 +3,7 @@
 // never a crash or a follow-on error.
 #include "test_util.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 namespace gapfem {
@@ -60,6 +61,50 @@ TEST(ShellInput, SectionThicknessShearStiffnessAndLoadsAreRead) {
   EXPECT_LT(tip_w(e), 0.0);
 }
 
+TEST(ShellInput, SurfacePressurePushesAgainstTheSideItIsOn) {
+  // *DLOAD P pushes along +n (here +z); a surface pressure pushes against its side's outward
+  // normal: on SPOS (S2 in CalculiX) along -n, on SNEG (S1) along +n.
+  const std::string sec = "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n";
+  const JobResult p = test::run_deck(deck(sec, "*DLOAD\nS, P, -1.\n"));
+  ASSERT_EQ(p.exit_code, kExitOk) << p.error;
+  ASSERT_LT(tip_w(p), 0.0);
+  auto surface = [&](const std::string& side, double magnitude) {
+    std::string text = deck(sec, fmt::format("*DSLOAD\nTOP, P, {}\n", magnitude));
+    text.replace(text.find("*BOUNDARY"), 0,
+                 "*ELSET, ELSET=_TOP_" + side + "\n1, 2\n*SURFACE, TYPE=ELEMENT, NAME=TOP\n_TOP_" +
+                     side + ", " + side + "\n");
+    const JobResult r = test::run_deck(text);
+    EXPECT_EQ(r.exit_code, kExitOk) << r.error;
+    return tip_w(r);
+  };
+  const double w = tip_w(p);
+  EXPECT_NEAR(surface("SPOS", 1.0), w, 1e-12 * std::abs(w));
+  EXPECT_NEAR(surface("S2", 1.0), w, 1e-12 * std::abs(w));
+  EXPECT_NEAR(surface("SNEG", -1.0), w, 1e-12 * std::abs(w));
+  EXPECT_NEAR(surface("S1", 1.0), -w, 1e-12 * std::abs(w));
+  // both sides loaded by the same pressure cancel (two entries, not one replacing the other)
+  std::string both = deck(sec, "*DSLOAD\nUP, P, 1.\nDN, P, 1.\n");
+  both.replace(both.find("*BOUNDARY"), 0,
+               "*SURFACE, NAME=UP\nS, SPOS\n*SURFACE, NAME=DN\nS, SNEG\n");
+  const JobResult b = test::run_deck(both);
+  ASSERT_EQ(b.exit_code, kExitOk) << b.error;
+  EXPECT_NEAR(tip_w(b), 0.0, 1e-12 * std::abs(w));
+}
+
+TEST(ShellInput, SurfacePressureFollowsTheShellUnderNlgeom) {
+  // the SPOS pressure and -P are the same follower load: same answer under NLGEOM
+  const std::string sec = "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n";
+  std::string a = deck(sec, "*DLOAD\nS, P, -2.\n");
+  std::string b = deck(sec, "*DSLOAD\nTOP, P, 2.\n");
+  b.replace(b.find("*BOUNDARY"), 0, "*SURFACE, NAME=TOP\nS, SPOS\n");
+  for (std::string* t : {&a, &b}) t->replace(t->find("*STEP"), 5, "*STEP, NLGEOM");
+  const JobResult ra = test::run_deck(a), rb = test::run_deck(b);
+  ASSERT_EQ(ra.exit_code, kExitOk) << ra.error;
+  ASSERT_EQ(rb.exit_code, kExitOk) << rb.error;
+  EXPECT_LT(tip_w(ra), -0.1); // large enough for the follower effect to matter
+  EXPECT_NEAR(tip_w(ra), tip_w(rb), 1e-9 * std::abs(tip_w(ra)));
+}
+
 TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
   // node 7 belongs to no element: its gradient would have no effect, which the reader says
   std::string text = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "", "*EXPANSION\n1e-5\n");
@@ -74,6 +119,11 @@ TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
 }
 
 TEST(ShellInput, BadSectionsAndLoadsAreErrors) {
+  {
+    std::string t = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "*DSLOAD\nE, P, 1.\n");
+    t.replace(t.find("*BOUNDARY"), 0, "*SURFACE, NAME=E\nS, S3\n");
+    expect_input_error(t, "face 'S3' of a shell is an edge");
+  }
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.\n"),
                      "the shell thickness must be positive, not 0");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n-0.1\n"),
