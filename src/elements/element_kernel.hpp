@@ -138,6 +138,9 @@ struct OutputBlock {
   std::span<const std::string_view> names; ///< component names, e.g. S11 S22 S33 S12 S13 S23
   int n_points = 0;
   std::vector<double> values; ///< n_points * names.size()
+  /// points through the section at each integration point (shells, beams): point p is
+  /// integration point p / section_points, section point p % section_points (both 0-based)
+  int section_points = 1;
 };
 
 /// Everything an element can report for output. Kernels fill what they support.

@@ -50,6 +50,9 @@ struct ElPrintRequest {
   bool totals_only = false; ///< TOTALS=ONLY: the column totals without the rows and summary
   bool summary = true;
   ElPosition position = ElPosition::IntegrationPoints;
+  /// section points to print (1-based, a data line of numbers); empty: Abaqus's default, the
+  /// bottom and top (SNEG, SPOS) of shells and every section point of beams
+  std::vector<int> section_points;
   SourceLocation loc;
 };
 

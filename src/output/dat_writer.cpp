@@ -375,6 +375,60 @@ void DatWriter::write_element_tables(const Model& model, const Frame& frame,
   }
 }
 
+namespace {
+
+/// The section points a request prints from a block with `ns` points per integration point:
+/// the requested ones that exist, or by default SNEG and SPOS of a shell and all of a beam.
+std::vector<int> printed_section_points(const ElPrintRequest& request, int ns, bool shell) {
+  std::vector<int> pts;
+  for (int k : request.section_points)
+    if (k >= 1 && k <= ns) pts.push_back(k);
+  if (!request.section_points.empty()) return pts;
+  if (shell) return {1, ns};
+  for (int k = 1; k <= ns; ++k) pts.push_back(k);
+  return pts;
+}
+
+} // namespace
+
+void DatWriter::write_section_rows(const OutputBlock& block, const ElPrintRequest& request,
+                                   bool shell, const EntityLabel& label, std::size_t ncols,
+                                   bool at_points) {
+  auto& buf = _out.buffer();
+  auto out = std::back_inserter(buf);
+  const std::size_t bn = block.names.size();
+  const int ns = block.section_points;
+  const auto np = static_cast<int>(std::min<std::size_t>(block.n_points, block.values.size() / bn));
+  const int nip = np / ns;
+  const std::vector<int> pts = printed_section_points(request, ns, shell);
+  if (at_points) {
+    for (int p = 0; p < nip; ++p)
+      for (int k : pts) {
+        fmt::format_to(out, "{:>12}{:>4}{:>4}   ", label, p + 1, k);
+        for (std::size_t c = 0; c < ncols; ++c) {
+          const double v = block.values[static_cast<std::size_t>(p * ns + k - 1) * bn + c];
+          append_e12(buf, v);
+          track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
+        }
+        buf.push_back('\n');
+      }
+    return;
+  }
+  // centroidal: each section point averaged over the integration points
+  for (int k : pts) {
+    fmt::format_to(out, "{:>12}    {:>4}   ", label, k);
+    for (std::size_t c = 0; c < ncols; ++c) {
+      double v = 0.0;
+      for (int p = 0; p < nip; ++p)
+        v += block.values[static_cast<std::size_t>(p * ns + k - 1) * bn + c];
+      v /= std::max(nip, 1);
+      append_e12(buf, v);
+      track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
+    }
+    buf.push_back('\n');
+  }
+}
+
 void DatWriter::write_element_table(const Model& model, const Frame& frame,
                                     const ElPrintRequest& request, std::span<const ElemId> group,
                                     ElemVar var) {
@@ -405,10 +459,18 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
   if (request.position == ElPosition::Averaged)
     fmt::format_to(out, " (AVERAGED AT NODES IS NOT AVAILABLE: ELEMENT CENTROID VALUES ARE "
                         "PRINTED INSTEAD)\n");
-  fmt::format_to(out, "\n    ELEMENT  {} FOOT-       ", at_points ? "PT" : "  ");
+  const bool sections = first->section_points > 1;
+  if (sections) {
+    fmt::format_to(out, "\n    ELEMENT  {} SEC FOOT-   ", at_points ? "PT" : "  ");
+  } else {
+    fmt::format_to(out, "\n    ELEMENT  {} FOOT-       ", at_points ? "PT" : "  ");
+  }
   for (auto name : first->names) fmt::format_to(out, "{:<12}", name);
   while (buf.size() && buf[buf.size() - 1] == ' ') buf.resize(buf.size() - 1);
-  fmt::format_to(out, "\n                NOTE\n\n");
+  const std::string_view note =
+      sections ? "\n                 PT NOTE\n\n" : "\n                NOTE\n\n";
+  buf.append(note);
+  const bool shell = element_info(model.mesh.elem_types[group[0]]).family == ElementFamily::Shell;
 
   reset_summary(_max, _min, _total, _max_at, _min_at, nc);
   for (ElemId e : group) {
@@ -419,7 +481,9 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     const std::size_t ncols = std::min(nc, block->names.size());
     if (ncols == 0) continue;
     const std::size_t mark = buf.size();
-    if (at_points) {
+    if (block->section_points > 1) {
+      write_section_rows(*block, request, shell, label, ncols, at_points);
+    } else if (at_points) {
       const std::size_t bn = block->names.size();
       const std::size_t np = std::min<std::size_t>(block->n_points, block->values.size() / bn);
       for (std::size_t p = 0; p < np; ++p) {

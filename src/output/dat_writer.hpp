@@ -39,6 +39,9 @@ class DatWriter : public ResultWriter {
                             const std::vector<ElemId>& elements);
   void write_element_table(const Model& model, const Frame& frame, const ElPrintRequest& request,
                            std::span<const ElemId> group, ElemVar var);
+  /// The rows of a block with section points (shells, beams): PT and SEC columns.
+  void write_section_rows(const OutputBlock& block, const ElPrintRequest& request, bool shell,
+                          const EntityLabel& label, std::size_t ncols, bool at_points);
   void write_checks(const Model& model, int step_index, const StepSummary& summary);
 
   std::filesystem::path _path;

@@ -162,6 +162,7 @@ void recover_pipe_points(const BeamOutput& o, std::span<const Strains<double>> e
   add_block(out, ElemVar::E, kPipeE, np * sec.n_points);
   OutputBlock& S = out.blocks[out.blocks.size() - 2];
   OutputBlock& E = out.blocks.back();
+  S.section_points = E.section_points = sec.n_points;
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < sec.n_points; ++k) {
       const auto [e11, e0, e12, r] = fibre(o, e[p], k);
@@ -204,6 +205,7 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
   add_block(out, ElemVar::E, kBeamE, np * sec.n_points);
   OutputBlock& S = out.blocks[out.blocks.size() - 2];
   OutputBlock& E = out.blocks.back();
+  S.section_points = E.section_points = sec.n_points;
   for (int p = 0; p < np; ++p)
     for (int k = 0; k < sec.n_points; ++k) {
       const auto [e11, e0, e12, r] = fibre(o, e[p], k);

@@ -143,6 +143,7 @@ void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<do
   OutputBlock& SF = out.blocks[out.blocks.size() - 3];
   OutputBlock& S = out.blocks[out.blocks.size() - 2];
   OutputBlock& E = out.blocks.back();
+  S.section_points = E.section_points = ns;
   const double c = l.E / (1.0 - l.nu * l.nu);
   auto Q = [&](const std::array<double, 3>& a) {
     return std::array<double, 3>{c * (a[0] + l.nu * a[1]), c * (a[1] + l.nu * a[0]),

@@ -43,13 +43,43 @@ void add_unique(std::vector<T>& list, T v) {
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
 constexpr const char* kElemVarList = "S, E, SF, HFL";
 
+/// A data line of positive integers only (a list of section points), else nullopt.
+std::optional<std::vector<int>> number_line(const DataLine& line) {
+  std::vector<int> out;
+  for (const auto& f : line.fields) {
+    if (f.empty()) continue;
+    const auto n = parse_integer(f);
+    if (!n) return std::nullopt;
+    out.push_back(static_cast<int>(std::clamp<long long>(*n, -1, 1 << 20)));
+  }
+  if (out.empty()) return std::nullopt;
+  return out;
+}
+
 /// Reads variable names from all data lines; unknown names are errors (`strict`) or warnings.
+/// A line of numbers is a list of section points: appended to `points` when given (each must be
+/// positive), otherwise reported by `points_note`.
 template <typename V, typename Parse>
 std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool strict,
-                         const char* known) {
+                         const char* known, std::vector<int>* points = nullptr,
+                         const char* points_note = nullptr) {
   std::vector<V> vars;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
+    if (const auto numbers = number_line(line); numbers && (points || points_note)) {
+      if (!points) {
+        s.warn(r.loc(), points_note);
+        return;
+      }
+      for (int n : *numbers) {
+        if (n < 1)
+          r.fail(fmt::format("section point {}", n),
+                 "section points are numbered from 1 (the SNEG side of a shell, the first "
+                 "point of a beam section)");
+        if (std::find(points->begin(), points->end(), n) == points->end()) points->push_back(n);
+      }
+      return;
+    }
     for (std::size_t i = 0; i < line.fields.size(); ++i) {
       if (line.fields[i].empty()) continue;
       if (const auto v = parse(line.fields[i])) {
@@ -143,7 +173,8 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
                                    element_info(s.model.mesh.elem_types[e]).name));
         break;
       }
-  req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList);
+  req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList, &req.section_points);
+  std::sort(req.section_points.begin(), req.section_points.end());
   if (req.vars.empty())
     throw InputError(
         kw.loc, "",
@@ -193,7 +224,11 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
 void handle_element_output(BuildState& s, const Keyword& kw) {
   if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
-  for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList))
+  for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
+                                      "a list of section points on *ELEMENT OUTPUT: the ParaView "
+                                      "frames hold each element's average over its points; "
+                                      "print section points with *EL PRINT (a data line of "
+                                      "section point numbers)"))
     add_unique(req.elem_vars, v);
 }
 

@@ -8,6 +8,10 @@ shell_strip_offset.inp  strips with OFFSET=SPOS (S8R: *NODAL THICKNESS) under a 
 shell_rollup_*.inp      NLGEOM roll-up of a strip into a circle (S4R 32, S8R 16 elements)
 shell_hemisphere.inp    pinched hemisphere, quarter, S4R 8x8
 shell_macneal_harder_straight.inp  MacNeal-Harder straight cantilever, S4R 6 x 1, four loads
+shell_twisted_beam.inp  MacNeal-Harder twisted beam t = 0.32, S4R and S8R 12 x 2, two tip loads each
+shell_twisted_beam_thin.inp  the same with t = 0.0032 and tip loads 1e-6
+shell_plate_thick_*.inp  quarter of a hard simply supported square plate, a/h = 10 and 5, S4R 8 x 8
+                        and S8R 8 x 8 (Mindlin closed form: see thick_plate)
 """
 import math
 
@@ -203,7 +207,149 @@ def macneal_harder_straight():
     write("shell_macneal_harder_straight.inp", out)
 
 
+def edge_weights(n_nodes, quad8):
+    """Consistent nodal forces of a unit uniform line load along an edge of n_nodes nodes (equally
+    spaced elements, linear or quadratic)."""
+    ne = (n_nodes - 1) // (2 if quad8 else 1)
+    w = [0.0] * n_nodes
+    for e in range(ne):
+        if quad8:
+            for k, f in enumerate((1 / 6, 2 / 3, 1 / 6)):
+                w[2 * e + k] += f / ne
+        else:
+            w[e] += 0.5 / ne
+            w[e + 1] += 0.5 / ne
+    return w
+
+
+# MacNeal & Harder (1985) twisted beam: L = 12, width 1.1, twist 90 degrees from root to tip,
+# E = 29.0e6, nu = 0.22, root clamped. Published tip displacements along the load: t = 0.32, P = 1:
+# 5.424e-3 for the load in the plane of the tip (along the tip's width, i.e. along the root's
+# normal) and 1.754e-3 for the load normal to the tip (along the root's width); t = 0.0032,
+# P = 1e-6: 5.256e-3 and 1.294e-3. The root lies in the x-y plane (width along y, normal +z); the
+# section at x is turned by theta = (pi/2) x / L about x, so the tip's width runs along z and its
+# normal along -y: the in-plane load is along z (DOF 3), the out-of-plane one along y (DOF 2).
+TWIST_CASES = [("S4R", 12, 2, 3), ("S4R", 12, 2, 2), ("S8R", 12, 2, 3), ("S8R", 12, 2, 2)]
+
+
+def twisted_beam(t, P, name, cases=TWIST_CASES):
+    """One twisted beam per case (element, n along, n across, load DOF), copy c shifted 3c in y,
+    labels from 1000c; the tip load P is split over the tip nodes as a uniform line load."""
+    L, W = 12.0, 1.1
+    out = ["*HEADING", f"MacNeal-Harder twisted beam, t = {t:g}, tip load {P:g}: "
+           + "; ".join(f"{et} {nx} x {ny} load {d}" for et, nx, ny, d in cases)]
+    loads, outs = [], []
+    for c, (et, nx, ny, dof) in enumerate(cases):
+        def X(u, v, c=c):
+            th = 0.5 * math.pi * u
+            s = W * (v - 0.5)
+            return (L * u, 3.0 * c + s * math.cos(th), s * math.sin(th))
+
+        q8 = et == "S8R"
+        nodes, elems, nid, mx, my = grid(nx, ny, q8, et == "S3", X, base=1000 * c,
+                                         ebase=1000 * c)
+        assert len(cases) == 1 or len(nodes) < 1000, "labels of the copies would overlap"
+        have = {k for k, _ in nodes}
+        root = [nid(0, j) for j in range(my + 1) if nid(0, j) in have]
+        tip = [nid(mx, j) for j in range(my + 1) if nid(mx, j) in have]
+        out += ["*NODE"] + node_lines(nodes)
+        out += [f"*ELEMENT, TYPE={et}, ELSET=B{c}"] + [f"{k}, " + ", ".join(map(str, e))
+                                                        for k, e in elems]
+        out += [f"*NSET, NSET=ROOT{c}", ", ".join(map(str, root)),
+                f"*NSET, NSET=TIP{c}", ", ".join(map(str, tip)),
+                f"*SHELL SECTION, ELSET=B{c}, MATERIAL=M", f"{t:g}"]
+        loads += [f"{k}, {dof}, {P * w:.15g}" for k, w in zip(tip, edge_weights(len(tip), q8))]
+        outs.append(f"TIP{c}")
+    out += ["*MATERIAL, NAME=M", "*ELASTIC", "29.0e6, 0.22", "*BOUNDARY"]
+    out += [f"ROOT{c}, 1, 6" for c in range(len(cases))]
+    out += ["*STEP", "*STATIC", "*CLOAD"] + loads
+    for s in outs:
+        out += [f"*NODE PRINT, NSET={s}", "U"]
+    out += ["*END STEP"]
+    write(name, out)
+
+
+def marcus_and_kirchhoff_centre():
+    """Centre values of the simply supported square plate (a = q = D = 1) under uniform load:
+    the Marcus moment M (laplacian M = -q, M = 0 on the edges) and the Kirchhoff deflection w_K
+    (laplacian w = -M / D), by the single (Levy) series, checked against the Navier double
+    series."""
+    M = 1 / 8 - sum((-1) ** ((m - 1) // 2) * 4 / (m * math.pi) ** 3 / math.cosh(m * math.pi / 2)
+                    for m in range(1, 60, 2))
+    w = 0.0
+    for m in range(1, 60, 2):
+        am = m * math.pi / 2
+        w += (-1) ** ((m - 1) // 2) / m ** 5 * (1 - (am * math.tanh(am) + 2) / (2 * math.cosh(am)))
+    w *= 4 / math.pi ** 5
+    Mn = wn = 0.0
+    for m in range(1, 400, 2):
+        for n in range(1, 400, 2):
+            s = (-1) ** ((m + n - 2) // 2) / (m * n)
+            Mn += s / (m * m + n * n)
+            wn += s / (m * m + n * n) ** 2
+    Mn *= 16 / math.pi ** 4
+    wn *= 16 / math.pi ** 6
+    assert abs(Mn - M) < 1e-6 * M and abs(wn - w) < 1e-7 * w, (M, Mn, w, wn)
+    return M, w
+
+
+def thick_plate(et, n, ratios, name):
+    """Quarter of a hard simply supported square plate a = 1 under q = 1 (E = 1e7, nu = 0.3), one
+    copy per a/h (copy c shifted 2c in x, labels from 1000c); edges x = 0 and y = 0 hold w and the
+    rotation along the edge (UR1 on x = 0, UR2 on y = 0), x = y = a/2 are symmetry planes.
+
+    Mindlin plate with hard supports (Wang & Alwis 1995; Wang, Reddy & Lee, "Shear Deformable
+    Beams and Plates", 2000): with the rotations psi, M = (Mx + My) / (1 + nu) = D div psi and
+    Q = kappa G h (grad w + psi), equilibrium div Q = -q and Q = div(moments) give
+    laplacian M = -q. On a straight hard-supported edge psi_s = 0 along it (so d psi_s / ds = 0)
+    and M_n = D (d psi_n / dn + nu d psi_s / ds) = 0, so d psi_n / dn = 0 and M = D div psi = 0:
+    the same problem as the Kirchhoff plate's Marcus moment, so M_Mindlin = M_Kirchhoff. Then
+    laplacian w = -q / (kappa G h) - M / D = laplacian (M / (kappa G h)) + laplacian w_K with
+    w = M = w_K = 0 on the edges, so w_M = w_K + M / (kappa G h), kappa = 5/6. At the centre
+    (a = q = 1) M = 0.0736714 and w_K = 0.00406235 / D (marcus_and_kirchhoff_centre); with
+    D / (G h) = h^2 / (6 (1 - nu)), w_M / w_K = 1 + 18.1352 (h/a)^2 / (6 kappa (1 - nu)) = 1.051815
+    at a/h = 10 and 1.20726 at a/h = 5."""
+    E, nu = 1e7, 0.3
+    Mc, wc = marcus_and_kirchhoff_centre()
+    out = ["*HEADING", f"Thick hard simply supported square plate, quarter, {et} {n} x {n}, a/h = "
+           + ", ".join(f"{r:g}" for r in ratios)]
+    bcs = []
+    for c, r in enumerate(ratios):
+        h = 1.0 / r
+        D, G = E * h ** 3 / (12 * (1 - nu * nu)), E / (2 * (1 + nu))
+        wk, ws = wc / D, Mc / (5 / 6 * G * h)
+        nodes, elems, nid, m, _ = grid(n, n, et == "S8R", et == "S3",
+                                       lambda u, v, c=c: (2.0 * c + 0.5 * u, 0.5 * v, 0.0),
+                                       base=1000 * c, ebase=1000 * c)
+        assert len(ratios) == 1 or (m + 1) ** 2 < 1000, "labels of the copies would overlap"
+        have = {k for k, _ in nodes}
+        side = lambda f: ", ".join(str(f(k)) for k in range(m + 1) if f(k) in have)
+        out += [f"** a/h = {r:g}: w_K = {wk:.10g}, w_shear = {ws:.10g}, Mindlin w = {wk + ws:.10g}"
+                f" at node {nid(m, m)}"]
+        out += ["*NODE"] + node_lines(nodes)
+        out += [f"*ELEMENT, TYPE={et}, ELSET=P{c}"] + [f"{k}, " + ", ".join(map(str, e))
+                                                        for k, e in elems]
+        out += [f"*NSET, NSET=X0_{c}", side(lambda j: nid(0, j)),
+                f"*NSET, NSET=Y0_{c}", side(lambda i: nid(i, 0)),
+                f"*NSET, NSET=XS_{c}", side(lambda j: nid(m, j)),
+                f"*NSET, NSET=YS_{c}", side(lambda i: nid(i, m)),
+                f"*NSET, NSET=C{c}", str(nid(m, m)),
+                f"*SHELL SECTION, ELSET=P{c}, MATERIAL=M", f"{h:.15g}, 5"]
+        bcs += [f"X0_{c}, 3", f"X0_{c}, 4", f"Y0_{c}, 3", f"Y0_{c}, 5", f"XS_{c}, XSYMM",
+                f"YS_{c}, YSYMM"]
+    out += ["*MATERIAL, NAME=M", "*ELASTIC", "1e7, 0.3", "*BOUNDARY"] + bcs
+    out += ["*STEP", "*STATIC", "*DLOAD"] + [f"P{c}, P, 1.0" for c in range(len(ratios))]
+    for c in range(len(ratios)):
+        out += [f"*NODE PRINT, NSET=C{c}", "U"]
+    out += ["*END STEP"]
+    write(name, out)
+
+
 if __name__ == "__main__":
+    twisted_beam(0.32, 1.0, "shell_twisted_beam.inp")
+    twisted_beam(0.0032, 1e-6, "shell_twisted_beam_thin.inp")
+    thick_plate("S4R", 8, [10, 5], "shell_plate_thick_s4r.inp")
+    thick_plate("S8R", 8, [10, 5], "shell_plate_thick_s8r.inp")
     macneal_harder_straight()
     strip_offset()
     rollup("S4R", 32, "shell_rollup_s4r.inp")

@@ -38,6 +38,43 @@ TEST(VerificationStructuralShells, SimplySupportedPlateUnderPressure) {
   EXPECT_NEAR(run.U(81)[2], wk + ws, 2e-3 * wk); // positive P pushes along +n (+z)
 }
 
+TEST(VerificationStructuralShells, ThickSimplySupportedPlateMindlin) {
+  // Quarter of a hard simply supported square plate (w = 0 and the rotation along the edge fixed:
+  // UR1 on x = 0, UR2 on y = 0; symmetry at x = y = a/2), a = 1, E = 1e7, nu = 0.3, q = 1, one
+  // copy with a/h = 10 (h = 0.1, centre node 81 / 289) and one with a/h = 5 (h = 0.2, 1081 /
+  // 1289) per deck. Mindlin closed form (Wang & Alwis 1995; Wang, Reddy & Lee 2000): with the
+  // rotations psi, the Marcus moment M = (Mx + My) / (1 + nu) = D div psi and Q = kappa G h
+  // (grad w + psi); div Q = -q with Q from the moments gives laplacian M = -q, and on a straight
+  // hard-supported edge psi_s = 0 and M_n = 0 make d psi_n / dn = 0, so M = 0 there: M is the
+  // Kirchhoff plate's Marcus moment. Then laplacian w = -q / (kappa G h) - M / D = laplacian
+  // (M / (kappa G h) + w_K) with zero edge values, so w = w_K + M / (kappa G h), kappa = 5/6.
+  // Centre (Levy series, checked against the Navier double series in gen_shell_decks.py):
+  // M = 0.0736714 q a^2, w_K = 0.00406235 q a^4 / D, so w / w_K = 1 + 18.1352 (h/a)^2 /
+  // (6 kappa (1 - nu)) = 1.05181 (a/h = 10) and 1.20726 (a/h = 5): the bounds below exclude
+  // Kirchhoff. Measured w / w_Mindlin: S4R 8 x 8 0.99948 and 0.99994, S8R 8 x 8 0.999998 and
+  // 0.999997.
+  const double E = 1e7, nu = 0.3, G = E / (2 * (1 + nu));
+  const double Mc = 0.0736713533, wc = 0.00406235265;
+  const double h[2] = {0.1, 0.2};
+  struct Case {
+    const char* deck;
+    Label centre[2];
+    double tol[2];
+  };
+  for (const Case& c : {Case{"shell_plate_thick_s4r.inp", {81, 1081}, {7e-4, 1e-4}},
+                        Case{"shell_plate_thick_s8r.inp", {289, 1289}, {5e-6, 5e-6}}}) {
+    SCOPED_TRACE(c.deck);
+    DeckRun run(c.deck);
+    if (!run.ok()) continue;
+    for (int k = 0; k < 2; ++k) {
+      SCOPED_TRACE(h[k]);
+      const double D = E * h[k] * h[k] * h[k] / (12 * (1 - nu * nu));
+      const double w = wc / D + Mc / (5.0 / 6 * G * h[k]);
+      EXPECT_NEAR(run.U(c.centre[k])[2], w, c.tol[k] * w); // positive P pushes along +n (+z)
+    }
+  }
+}
+
 TEST(VerificationStructuralShells, ScordelisLoRoof) {
   // MacNeal & Harder (1985): R = 25, L = 50, t = 0.25, 80-degree arc, E = 4.32e8, nu = 0, gravity
   // 90 per unit area, rigid diaphragms at the ends. Vertical displacement at the middle of the free
@@ -142,6 +179,38 @@ TEST(VerificationStructuralShells, MacNealHarderStraightCantilever) {
   EXPECT_NEAR(run.U(213)[2] / 0.4321, 0.980, 0.003);
   const double twist = (run.U(314)[2] - run.U(313)[2]) / 0.2;
   EXPECT_NEAR(twist / 0.03208, 0.946, 0.003);
+}
+
+TEST(VerificationStructuralShells, MacNealHarderTwistedBeam) {
+  // MacNeal & Harder (1985): L = 12, width 1.1, t = 0.32, twisted 90 degrees from root to tip,
+  // E = 29.0e6, nu = 0.22, root clamped, unit tip load split over the tip nodes as a uniform line
+  // load; 12 x 2 elements. Targets along the load: 5.424e-3 for the load in the plane of the tip
+  // (along the tip's width, z here: the root's normal) and 1.754e-3 for the load normal to the tip
+  // (y: the root's width). An Euler-Bernoulli beam whose principal axes turn with the section
+  // gives P L^3 / E (c / I_root + s / I_other), I_root the second moment for bending along the
+  // load at the root, c and s the integrals of (1 - x/L)^2 cos^2 and sin^2 of pi x / 2L,
+  // 1/6 + 1/pi^2 and 1/6 - 1/pi^2: 5.426e-3 and 1.746e-3, which fixes which load is which.
+  // Measured ratios (middle tip node): S4R 0.9952 (in-plane), 0.9842 (out-of-plane); S8R 0.9979,
+  // 0.9993.
+  DeckRun run("shell_twisted_beam.inp");
+  if (!run.ok()) return;
+  EXPECT_NEAR(run.U(38)[2] / 5.424e-3, 1.0, 0.006);   // S4R, in-plane
+  EXPECT_NEAR(run.U(1038)[1] / 1.754e-3, 1.0, 0.02);  // S4R, out-of-plane
+  EXPECT_NEAR(run.U(2123)[2] / 5.424e-3, 1.0, 0.003); // S8R, in-plane
+  EXPECT_NEAR(run.U(3123)[1] / 1.754e-3, 1.0, 0.001); // S8R, out-of-plane
+}
+
+TEST(VerificationStructuralShells, MacNealHarderTwistedBeamThin) {
+  // The twisted beam with t = 0.0032 (width / t = 344) and tip loads 1e-6 (the thin version of
+  // later studies): targets 5.256e-3 (in the plane of the tip) and 1.294e-3 (normal to it);
+  // same meshes and labels as the thick deck. Measured ratios: S4R 12 x 2 0.9855, 0.9813; S8R
+  // 12 x 2 0.9908, 0.9998 (S4R 24 x 4: 0.9953, 0.9948).
+  DeckRun run("shell_twisted_beam_thin.inp");
+  if (!run.ok()) return;
+  EXPECT_NEAR(run.U(38)[2] / 5.256e-3, 1.0, 0.02);     // S4R, in-plane
+  EXPECT_NEAR(run.U(1038)[1] / 1.294e-3, 1.0, 0.025);  // S4R, out-of-plane
+  EXPECT_NEAR(run.U(2123)[2] / 5.256e-3, 1.0, 0.012);  // S8R, in-plane
+  EXPECT_NEAR(run.U(3123)[1] / 1.294e-3, 1.0, 0.0005); // S8R, out-of-plane
 }
 
 } // namespace

@@ -3,6 +3,9 @@
 // never a crash or a follow-on error.
 #include "test_util.hpp"
 
+#include <fstream>
+#include <sstream>
+#include <array>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -103,6 +106,52 @@ TEST(ShellInput, SurfacePressureFollowsTheShellUnderNlgeom) {
   ASSERT_EQ(rb.exit_code, kExitOk) << rb.error;
   EXPECT_LT(tip_w(ra), -0.1); // large enough for the follower effect to matter
   EXPECT_NEAR(tip_w(ra), tip_w(rb), 1e-9 * std::abs(tip_w(ra)));
+}
+
+/// The data rows of the first S table in job.dat: {element, PT, SEC, S11}.
+std::vector<std::array<double, 4>> s_rows(const std::string& text) {
+  const JobResult r = test::run_deck(text, true);
+  EXPECT_EQ(r.exit_code, kExitOk) << r.error;
+  std::ifstream in(test::test_dir() / "job.dat");
+  std::vector<std::array<double, 4>> rows;
+  std::string line;
+  bool table = false;
+  while (std::getline(in, line)) {
+    if (line.find("PT SEC FOOT-") != std::string::npos && line.find("S11") != std::string::npos) {
+      table = true;
+      continue;
+    }
+    if (!table) continue;
+    std::istringstream ls(line);
+    std::array<double, 4> row{};
+    if (ls >> row[0] >> row[1] >> row[2] >> row[3]) rows.push_back(row);
+    else if (!rows.empty()) break;
+  }
+  return rows;
+}
+
+TEST(ShellInput, DatFilePrintsTheRequestedSectionPoints) {
+  // 5 Simpson points; a tip moment bends the strip: S11 is linear through the thickness
+  const std::string sec = "*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1, 5\n";
+  const std::string load = "*CLOAD\n3, 5, 1.\n6, 5, 1.\n";
+  // the default: SNEG and SPOS (points 1 and 5) at each integration point (S4R: one)
+  const auto d = s_rows(deck(sec, load + "*EL PRINT, ELSET=S\nS\n"));
+  ASSERT_EQ(d.size(), 4u);
+  EXPECT_EQ(d[0][1], 1.0);
+  EXPECT_EQ(d[0][2], 1.0);
+  EXPECT_EQ(d[1][2], 5.0);
+  EXPECT_NEAR(d[0][3], -d[1][3], 1e-9 * std::abs(d[0][3]));
+  EXPECT_GT(std::abs(d[0][3]), 1.0);
+  // a data line of numbers selects section points: 2 and 3 (the mid-surface, zero in bending)
+  const auto m = s_rows(deck(sec, load + "*EL PRINT, ELSET=S\n3, 2\nS\n"));
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[0][2], 2.0);
+  EXPECT_EQ(m[1][2], 3.0);
+  EXPECT_NEAR(m[0][3], 0.5 * d[0][3], 1e-9 * std::abs(d[0][3]));
+  EXPECT_NEAR(m[1][3], 0.0, 1e-9 * std::abs(d[0][3]));
+  // section point 0 does not exist
+  expect_input_error(deck(sec, load + "*EL PRINT, ELSET=S\n0\nS\n"),
+                     "section points are numbered from 1");
 }
 
 TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
