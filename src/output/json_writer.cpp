@@ -260,12 +260,21 @@ void JsonWriter::write_element(const Model& model, const ElementResult& res, boo
   fmt::format_to(fmt::appender(b), "\"{}\":{{\"type\":\"{}\"", model.element_label(res.elem),
                  element_info(type).name);
   _components[static_cast<std::size_t>(type)].seen = true;
+  const bool shell = element_info(type).family == ElementFamily::Shell;
   for (const OutputBlock& block : res.data.blocks) {
     output::average_block(block, _avg);
     b.push_back(',');
     key(b, elem_var_name(block.var));
     append_json_array(b, _avg);
     note_components(type, block);
+    if (!shell || block.section_points < 2) continue;
+    // a shell's SNEG and SPOS sides (section points 1 and n), averaged over its points
+    for (const bool top : {false, true}) {
+      output::average_section_point(block, top ? block.section_points - 1 : 0, _avg);
+      b.push_back(',');
+      key(b, fmt::format("{}_{}", elem_var_name(block.var), top ? "SPOS" : "SNEG"));
+      append_json_array(b, _avg);
+    }
   }
   if (res.data.gap) {
     const GapRecord& g = *res.data.gap;

@@ -228,6 +228,20 @@ void average_block(const OutputBlock& block, std::vector<double>& out) {
   for (auto& v : out) v /= static_cast<double>(np);
 }
 
+void average_section_point(const OutputBlock& block, int k, std::vector<double>& out) {
+  const std::size_t nc = block.names.size();
+  out.assign(nc, 0.0);
+  const int ns = std::max(block.section_points, 1);
+  if (nc == 0 || block.n_points <= 0 || k < 0 || k >= ns) return;
+  const auto np = static_cast<int>(std::min<std::size_t>(block.n_points, block.values.size() / nc));
+  const int nip = np / ns;
+  if (nip == 0) return;
+  for (int p = 0; p < nip; ++p)
+    for (std::size_t c = 0; c < nc; ++c)
+      out[c] += block.values[static_cast<std::size_t>(p * ns + k) * nc + c];
+  for (auto& v : out) v /= static_cast<double>(nip);
+}
+
 int voigt_slot(std::string_view name) {
   if (name.size() != 3 || (name[0] != 'S' && name[0] != 'E')) return -1;
   const std::string_view ij = name.substr(1);

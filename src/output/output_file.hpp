@@ -100,6 +100,9 @@ int n_translations(ModelSpace space);
 /// Average of an output block over its points (component order of
 /// OutputBlock::names) into `out` (resized to names.size()).
 void average_block(const OutputBlock& block, std::vector<double>& out);
+/// The average over the integration points of section point `k` (0-based) of a block with
+/// section points (OutputBlock::section_points).
+void average_section_point(const OutputBlock& block, int k, std::vector<double>& out);
 
 /// Voigt slot (0..5 for 11 22 33 12 13 23) of a stress/strain component name
 /// such as "S12" or "E33"; -1 if the name is not of that form.

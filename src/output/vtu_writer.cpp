@@ -107,6 +107,17 @@ int vtk_node_from_abaqus(ElementType type, int vtk_index) {
 VtuWriter::VtuWriter(std::filesystem::path directory, std::string job)
     : _dir(std::move(directory)), _job(std::move(job)) {}
 
+/// The values at section point `k` of a block (averaged over the integration points), in the
+/// Voigt slots of element `e` of `target` (zeros in components the block does not have).
+static void add_side(const OutputBlock& block, int k, std::size_t e, std::vector<double>& target) {
+  std::vector<double> avg;
+  output::average_section_point(block, k, avg);
+  std::fill_n(target.begin() + 6 * e, 6, 0.0);
+  for (std::size_t c = 0; c < block.names.size(); ++c)
+    if (const int slot = output::voigt_slot(block.names[c]); slot >= 0)
+      target[6 * e + slot] = avg[c];
+}
+
 void VtuWriter::begin(const Model& model) {
   const Mesh& mesh = model.mesh;
   const auto ne = static_cast<std::size_t>(mesh.n_elements());
@@ -167,7 +178,8 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   _S.assign(6 * ne, kNaN);
   _E.assign(6 * ne, kNaN);
   _HFL.assign(3 * ne, kNaN);
-  bool any_S = false, any_E = false, any_HFL = false;
+  bool any_S = false, any_E = false, any_HFL = false, any_sides = false;
+  for (auto* side : {&_S_neg, &_S_pos, &_E_neg, &_E_pos}) side->assign(6 * ne, kNaN);
   if (_has_gaps) {
     _gap_status.assign(ne, -1);
     _gap_clearance.assign(ne, kNaN);
@@ -178,6 +190,13 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
     const auto e = static_cast<std::size_t>(res.elem);
     for (const OutputBlock& block : res.data.blocks) {
       if (block.var == ElemVar::SF) continue;
+      if (block.section_points > 1 && (block.var == ElemVar::S || block.var == ElemVar::E) &&
+          element_info(mesh.elem_types[res.elem]).family == ElementFamily::Shell) {
+        const bool stress = block.var == ElemVar::S;
+        add_side(block, 0, e, stress ? _S_neg : _E_neg);
+        add_side(block, block.section_points - 1, e, stress ? _S_pos : _E_pos);
+        any_sides = true;
+      }
       output::average_block(block, _avg);
       for (std::size_t c = 0; c < block.names.size(); ++c) {
         const std::string_view name = block.names[c];
@@ -249,6 +268,14 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   if (any_E) {
     cell_arrays.push_back(make_array("E", "Float64", 6, _E));
     cell_arrays.back().component_names = kVoigt;
+  }
+  if (any_sides) { // shells: their SNEG and SPOS sides (section points 1 and n)
+    const std::pair<std::string_view, const std::vector<double>*> sides[] = {
+        {"S_SNEG", &_S_neg}, {"S_SPOS", &_S_pos}, {"E_SNEG", &_E_neg}, {"E_SPOS", &_E_pos}};
+    for (const auto& [name, v] : sides) {
+      cell_arrays.push_back(make_array(name, "Float64", 6, *v));
+      cell_arrays.back().component_names = kVoigt;
+    }
   }
   if (any_HFL) cell_arrays.push_back(make_array("HFL", "Float64", 3, _HFL));
   if (_has_gaps) {

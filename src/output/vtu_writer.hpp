@@ -57,6 +57,7 @@ class VtuWriter : public ResultWriter {
 
   // per-frame cell data (reused)
   std::vector<double> _S, _E, _HFL, _gap_clearance, _gap_pressure;
+  std::vector<double> _S_neg, _S_pos, _E_neg, _E_pos; ///< shells: SNEG, SPOS section points
   std::vector<std::int32_t> _gap_status;
   std::vector<double> _avg;
   std::vector<double> _zeros;

@@ -2,6 +2,7 @@
 // (UInt64 headers), values as handed over, and the .pvd collection.
 #include "fem/shape_functions.hpp"
 #include "output/vtu_writer.hpp"
+#include "test_util.hpp"
 #include "writer_fixture.hpp"
 
 #include <cmath>
@@ -334,6 +335,40 @@ TEST(OutputVtu, QuadraticTetraNodeOrder) {
       EXPECT_EQ(pts[3 * conn[4 + k] + c], 0.5 * (a + b)) << "VTK edge " << k;
     }
   EXPECT_FALSE(v.arrays.count("U")) << "no nodal results in this frame";
+}
+
+} // namespace
+} // namespace gapfem
+
+namespace gapfem {
+namespace {
+
+TEST(OutputVtu, ShellsShowBothSides) {
+  // a strip of two S4R bent by an end moment: the section average S11 is zero, the SNEG and
+  // SPOS sides (section points 1 and 5) carry -/+ the bending stress M / (t^2 / 6) per width
+  const std::string deck =
+      "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 2, 0, 0\n4, 0, 1, 0\n5, 1, 1, 0\n6, 2, 1, 0\n"
+      "*ELEMENT, TYPE=S4R, ELSET=S\n1, 1, 2, 5, 4\n2, 2, 3, 6, 5\n*MATERIAL, NAME=M\n*ELASTIC\n"
+      "210000., 0.3\n*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1, 5\n*BOUNDARY\n1, ENCASTRE\n"
+      "4, ENCASTRE\n*STEP\n*STATIC\n*CLOAD\n3, 5, 0.5\n6, 5, 0.5\n*END STEP\n";
+  const JobResult r = test::run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_1.vtu");
+  ASSERT_EQ(v.arrays.count("S_SNEG"), 1u);
+  ASSERT_EQ(v.arrays.count("E_SPOS"), 1u);
+  EXPECT_EQ(v.arrays.at("S_SPOS").components, 6);
+  const auto neg = v.values<double>("S_SNEG"), pos = v.values<double>("S_SPOS");
+  const auto avg = v.values<double>("S");
+  const double sigma = 1.0 / (0.1 * 0.1 / 6.0); // M = 1 over width 1
+  for (int e = 0; e < 2; ++e) {
+    EXPECT_NEAR(std::abs(neg[6 * e]), sigma, 1e-6 * sigma);
+    EXPECT_NEAR(pos[6 * e], -neg[6 * e], 1e-9 * sigma);
+    EXPECT_NEAR(avg[6 * e], 0.0, 1e-9 * sigma);
+  }
+  // the JSON results carry the same sides next to the average
+  const std::string json = read_file(test::test_dir() / "job.results.json");
+  EXPECT_NE(json.find("\"S_SNEG\":["), std::string::npos);
+  EXPECT_NE(json.find("\"E_SPOS\":["), std::string::npos);
 }
 
 } // namespace
