@@ -226,8 +226,9 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
   auto& req = s.step.field_outputs[s.current_field];
   for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
                                       "a list of section points on *ELEMENT OUTPUT: the ParaView "
-                                      "frames hold each element's average over its points; "
-                                      "print section points with *EL PRINT (a data line of "
+                                      "frames hold each element's average over its points "
+                                      "and a shell's SNEG and SPOS sides (S_SNEG, S_SPOS); "
+                                      "print other section points with *EL PRINT (a data line of "
                                       "section point numbers)"))
     add_unique(req.elem_vars, v);
 }
