@@ -42,7 +42,7 @@ struct SolidSection {
 struct BeamSection {
   /// library shapes (docs/theory/structural.md §3.1); General: SECTION=GENERAL of *BEAM GENERAL
   /// SECTION (A, I11, I12, I22, J given directly)
-  enum class Shape { Rect, Circ, Pipe, Box, I, General };
+  enum class Shape { Rect, Circ, Pipe, Box, I, General, Hex };
   std::string elset;
   int material = -1; ///< *BEAM SECTION; -1 for *BEAM GENERAL SECTION (constants below)
   Shape shape = Shape::Rect;

@@ -33,6 +33,8 @@ const char* shape_name(BeamSection::Shape s) {
     return "I";
   case BeamSection::Shape::General:
     return "GENERAL";
+  case BeamSection::Shape::Hex:
+    return "HEX";
   }
   return "?";
 }
@@ -146,6 +148,34 @@ void i_section(BeamSectionProperties& p, const Checker& c, const std::vector<dou
   p.torsion_radius = {t2, t2, t1, t1};
 }
 
+/// HEX: a regular hexagonal tube, r the outer radius (centre to a corner), t the wall thickness
+/// (across a flat, t < r sqrt(3) / 2). Thin-walled like BOX: six walls on the mid-line hexagon,
+/// whose corners lie at r_m = r - t / sqrt(3), corners on the local 1-axis; single closed cell:
+/// Bredt's J = 4 A_m^2 t / (6 r_m). A regular hexagon bends alike about every axis (I11 = I22,
+/// I12 = 0), so the corners' orientation matters only for the output points: the corners on
+/// the 1-axis and the middles of the flats on the 2-axis.
+void hex(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
+  c.need(2, "the outer radius r and the wall thickness t");
+  const double r = d[0], t = d[1], s3 = std::sqrt(3.0);
+  if (!(t < 0.5 * s3 * r))
+    c.fail(fmt::format("the wall thickness t = {} must be smaller than r sqrt(3) / 2 = {} (the "
+                       "distance from the centre to a flat)",
+                       t, 0.5 * s3 * r));
+  const double rm = r - t / s3, am = 0.5 * s3 * rm; // mid-line corner radius and apothem
+  const double pi = std::numbers::pi;
+  for (int i = 0; i < 6; ++i) {
+    const double a0 = i * pi / 3.0, a1 = (i + 1) * pi / 3.0;
+    add_wall(p, {rm * std::cos(a0), rm * std::sin(a0)}, {rm * std::cos(a1), rm * std::sin(a1)}, t);
+  }
+  const double Am = 1.5 * s3 * rm * rm;
+  p.J = 4.0 * Am * Am * t / (6.0 * rm);
+  p.k = kShearPipe; // a thin closed tube, as PIPE
+  p.n_points = 4;
+  p.points = {{{rm, 0.0}, {0.0, am}, {-rm, 0.0}, {0.0, -am}}};
+  const double tr = p.J / (2.0 * Am * t); // closed thin wall: tau = T / (2 A_m t)
+  p.torsion_radius = {tr, tr, tr, tr};
+}
+
 void general(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d,
              bool planar) {
   c.need(2, "A, I11, I12, I22, J (A and I11 at least)");
@@ -215,6 +245,9 @@ BeamSectionProperties beam_section_properties(const BeamSection& section, bool p
     break;
   case BeamSection::Shape::General:
     general(p, c, d, planar);
+    break;
+  case BeamSection::Shape::Hex:
+    hex(p, c, d);
     break;
   }
   p.k23 = section.k23;

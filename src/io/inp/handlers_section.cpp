@@ -134,6 +134,7 @@ const ShapeSpec kShapes[] = {
     {"BOX", BeamSection::Shape::Box, {"width a", "height b", "t1", "t2", "t3", "t4"}, 0},
     {"I", BeamSection::Shape::I, {"offset l", "height h", "b1", "b2", "t1", "t2", "t3"}, 1},
     {"GENERAL", BeamSection::Shape::General, {"A", "I11", "I12", "I22", "J"}, 5},
+    {"HEX", BeamSection::Shape::Hex, {"outer radius r", "wall thickness t"}, 0},
 };
 
 std::string dim_list(const ShapeSpec& sp) {
@@ -157,8 +158,8 @@ void read_beam_geometry(BuildState& s, const Keyword& kw, BeamSection& sec, bool
       spec = &sp;
   if (spec == nullptr) {
     const std::string c = canonical(given);
-    const bool known = c == "L" || c == "HEX" || c == "TRAPEZOID" || c == "ARBITRARY" ||
-                       c == "THICKPIPE" || c == "ELBOW" || c == "MESHED" || c == "NONLINEARGENERAL";
+    const bool known = c == "L" || c == "TRAPEZOID" || c == "ARBITRARY" || c == "THICKPIPE" ||
+                       c == "ELBOW" || c == "MESHED" || c == "NONLINEARGENERAL";
     throw InputError(kw.loc, fmt::format("SECTION={}", given),
                      fmt::format("{}gapfem's beam sections are {}",
                                  known ? "this section is not "

@@ -10,7 +10,7 @@ namespace {
 
 constexpr double E = 210000.0, G = E / 2.6, L = 1000.0;
 
-TEST(VerificationStructuralBeamSections, BoxIGeneralAndB32Cantilevers) {
+TEST(VerificationStructuralBeamSections, BoxIGeneralHexAndB32Cantilevers) {
   DeckRun run("beam_sections.inp");
   if (!run.ok()) return;
   {
@@ -46,6 +46,18 @@ TEST(VerificationStructuralBeamSections, BoxIGeneralAndB32Cantilevers) {
     const double Gg = 80769.23076923077, F = 1000.0;
     EXPECT_REL(run.U(21)[1], F * I22 * L * L * L / (3 * E * det) + F * L / (Gg * A));
     EXPECT_REL(run.U(21)[2], F * I12 * L * L * L / (3 * E * det));
+  }
+  {
+    // HEX r = 60 (outer corner radius), t = 4: thin-walled on the mid-line hexagon of side
+    // s = r - t / sqrt(3). Each wall at apothem a = s sqrt(3) / 2 adds t (a^2 s + s^3 / 12) =
+    // (5/6) t s^3 to the polar moment, so I11 = I22 = (1/2) 6 (5/6) t s^3 = 2.5 t s^3; A = 6 s t;
+    // Bredt J = 4 A_m^2 t / (6 s) with A_m = (3 sqrt(3) / 2) s^2, i.e. J = 4.5 t s^3; k = 0.53 (a
+    // thin tube). Tip Fy = 1000 and torque Mx = 1e6.
+    const double t = 4.0, s = 60.0 - t / std::sqrt(3.0), A = 6 * s * t, I = 2.5 * t * s * s * s;
+    const double J = 4.5 * t * s * s * s;
+    EXPECT_REL(run.U(31)[1], 1000 * L * L * L / (3 * E * I) + 1000 * L / (0.53 * G * A));
+    EXPECT_REL(run.UR(31)[2], 1000 * L * L / (2 * E * I));
+    EXPECT_REL(run.UR(31)[0], 1e6 * L / (G * J));
   }
   {
     // B32 (two elements), RECT 20 x 40, Fy = 1000: w = F L^3 / (3 E I) + F L / (0.85 G A),

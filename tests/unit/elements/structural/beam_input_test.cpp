@@ -67,6 +67,8 @@ TEST(BeamInput, BadSectionsAreOneClearError) {
                      "SECTION=I: the flanges (t1 + t2 = 1.2) must be thinner than the height");
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=PIPE\n0.1, 0.1\n"),
                      "the wall thickness 0.1 must be smaller than the outer radius 0.1");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=HEX\n1., 0.9\n"),
+                     "SECTION=HEX: the wall thickness t = 0.9 must be smaller than r sqrt(3) / 2");
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n-1., 1.\n"),
                      "section dimensions must be positive, not -1");
   expect_input_error(deck("PIPE31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n"),
