@@ -40,7 +40,8 @@ enum class DistLoadKind : std::uint8_t {
   /// beams: force per unit reference length; face 1/2: P1/P2 along the section's n1/n2, face 0:
   /// PX/PY/PZ along the global axis in `direction`
   LineLoad,
-  /// PIPE31/PIPE32: PI (face 1, internal) or PE (face 2, external) pressure, closed-end condition
+  /// PIPE31/PIPE32: PI (face 1, internal) or PE (face 2, external) pressure, closed-end condition;
+  /// HPI/HPE (`hydrostatic`) the same with a pressure varying linearly with height
   PipePressure,
 };
 
@@ -53,8 +54,12 @@ struct DistributedLoad {
   Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
   double sink_temperature = 0.0; ///< Film
   double diameter = 0.0;         ///< PI/PE: effective diameter (0: the section's)
-  int amplitude = -1;            ///< magnitude amplitude (film: sink temperature amplitude)
-  int film_amplitude = -1;       ///< film coefficient amplitude
+  /// HPI/HPE: p = magnitude (z0 - z) / (z0 - z1) at height z (global Z; Y in planar models),
+  /// zero beyond the zero-pressure height z0 (on the side away from z1)
+  bool hydrostatic = false;
+  double z0 = 0.0, z1 = 0.0;
+  int amplitude = -1;      ///< magnitude amplitude (film: sink temperature amplitude)
+  int film_amplitude = -1; ///< film coefficient amplitude
   bool propagated = false;
   SourceLocation loc;
 };

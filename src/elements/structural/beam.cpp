@@ -7,8 +7,10 @@
 #include "elements/structural/structural_factory.hpp"
 #include "model/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <numbers>
 
 namespace gapfem {
 
@@ -226,8 +228,22 @@ class BeamKernel final : public ElementKernel {
   /// PI/PE, closed-end condition: the axial force F of pipe_axial_force acting through the
   /// element's axis length l(x), f_ext = F dl/dx (the pressure's work F dl at constant area), with
   /// the load stiffness -F d2l/dx2 under NLGEOM (symmetric: the load is conservative).
+  /// HPI/HPE: the pressure at the height of the element's midpoint in the reference
+  /// configuration, p = magnitude (z0 - z) / (z0 - z1), zero beyond z0, constant along the
+  /// element, plus the fluid's own weight (HPI, the contents) or its buoyancy (HPE) per unit
+  /// length, A grad p with A the cap area: the pressure on a closed pipe sums to Archimedes'
+  /// force, which the end-cap forces of a straight run alone (equal and opposite at each shared
+  /// node) would miss.
   void pipe_pressure(const ElementInput& in, const DistributedLoad& load, double p,
                      std::span<double> f, std::span<double> tangent, bool nl) const {
+    if (load.hydrostatic) {
+      const int up = Planar ? 1 : 2;
+      double z = 0.0;
+      for (int a = 0; a < NN; ++a) z += in.X[a][up] / NN;
+      const double factor = (load.z0 - z) / (load.z0 - load.z1);
+      if (factor > 0.0) fluid_weight(in, load, p / (load.z0 - load.z1), up, f);
+      p *= std::max(0.0, factor);
+    }
     double E = 0.0, nu = 0.0;
     elastic_at(_b.material, average(in.temperature), E, nu);
     const double F = pipe_axial_force(_b.section, load, p, nu);
@@ -242,6 +258,22 @@ class BeamKernel final : public ElementKernel {
       in.state[slot + 1] = in.ctx->total_time;
       in.state[slot + 2] = in.ctx->step_index;
     }
+  }
+
+  /// HPI (contents' weight) or HPE (buoyancy): A grad p per unit reference length, grad p =
+  /// -gradient e_up, A = pi D^2 / 4 with the load's effective or the section's diameter.
+  void fluid_weight(const ElementInput& in, const DistributedLoad& load, double gradient, int up,
+                    std::span<double> f) const {
+    const bool inner = load.face == 1;
+    const double D = load.diameter > 0.0 ? load.diameter
+                                         : 2.0 * (inner ? _b.section.r_inner : _b.section.r_outer);
+    const double q = 0.25 * std::numbers::pi * D * D * gradient * (inner ? -1.0 : 1.0);
+    DistributedLoad line;
+    line.kind = DistLoadKind::LineLoad;
+    line.face = 0;
+    line.direction[up] = 1.0;
+    const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    dead_line_load<NN, kDpn>(BeamLoadInput{_b, g, line, q, in, false, Planar}, f);
   }
 
   /// The PI and PE that load() recorded at the current time (0 when none acts now).

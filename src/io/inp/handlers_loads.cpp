@@ -128,7 +128,7 @@ void merge_dloads(BuildState& s, const Keyword& kw, std::vector<DistributedLoad>
       s.step.dloads, loads, op_new(kw),
       [&](const DistributedLoad& d) { return d.loc.keyword == family; },
       [](const DistributedLoad& d) {
-        int axis = -1;
+        int axis = d.hydrostatic ? 3 : -1; // HPI/HPE and PI/PE are different loads
         if (d.kind == DistLoadKind::BodyForce || d.kind == DistLoadKind::LineLoad)
           for (int i = 0; i < 3; ++i)
             if (d.direction[i] != 0.0) axis = i;
@@ -279,14 +279,34 @@ void handle_cflux(BuildState& s, const Keyword& kw) {
   nodal_loads(s, kw, true);
 }
 
+namespace {
+/// A pipe carries one internal and one external pressure: PI with HPI (or PE with HPE) on the
+/// same element would each claim the wall's pressure for the hoop stress.
+void check_one_pipe_pressure(const BuildState& s, const Keyword& kw) {
+  std::map<std::pair<ElemId, int>, const DistributedLoad*> seen;
+  for (const DistributedLoad& d : s.step.dloads) {
+    if (d.kind != DistLoadKind::PipePressure) continue;
+    const auto [it, fresh] = seen.try_emplace({d.elem, d.face}, &d);
+    if (fresh || it->second->hydrostatic == d.hydrostatic) continue;
+    const char* both = d.face == 1 ? "PI and HPI" : "PE and HPE";
+    throw InputError(kw.loc, fmt::format("element {}", s.model.element_label(d.elem)),
+                     fmt::format("the pipe has both {} ({} and {}); give one {} pressure per "
+                                 "element (remove one with OP=NEW or in another step)",
+                                 both, it->second->loc.str(), d.loc.str(),
+                                 d.face == 1 ? "internal" : "external"));
+  }
+}
+} // namespace
+
 void handle_dload(BuildState& s, const Keyword& kw) {
   const int amplitude = amplitude_param(s, kw);
   std::vector<DistributedLoad> loads;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(6, "element or element set, load label, magnitude, direction x, y, z");
-    const bool pipe_label = canonical(r.text(1)) == "PI" || canonical(r.text(1)) == "PE";
     const std::string label = canonical(r.text(1));
+    const bool hydro_label = label == "HPI" || label == "HPE";
+    const bool pipe_label = label == "PI" || label == "PE" || hydro_label;
     const double mag = r.real(2, "magnitude");
     const bool single = is_label(r, 0);
     const auto elems = resolve_elements(s, r, 0);
@@ -314,6 +334,23 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       if (d.diameter < 0.0)
         r.fail("field 4 (effective diameter)",
                fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
+    } else if (hydro_label) {
+      r.at_most(6, "element or element set, HPI/HPE, magnitude, zero-pressure height z0, "
+                   "reference height z1, effective diameter");
+      d.kind = DistLoadKind::PipePressure;
+      d.face = label == "HPI" ? 1 : 2;
+      d.hydrostatic = true;
+      d.z0 = r.real(3, "zero-pressure height z0");
+      d.z1 = r.real(4, "reference height z1");
+      if (d.z0 == d.z1)
+        r.fail("fields 4-5 (z0, z1)",
+               fmt::format("the zero-pressure height and the reference height (where the "
+                           "pressure is the magnitude) must differ, both are {}",
+                           d.z0));
+      d.diameter = r.real_or(5, 0.0, "effective diameter");
+      if (d.diameter < 0.0)
+        r.fail("field 6 (effective diameter)",
+               fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
     } else if (label == "PX" || label == "PY" || label == "PZ") {
       r.at_most(3, "element or element set, PX/PY/PZ, magnitude");
       d.kind = DistLoadKind::LineLoad;
@@ -329,7 +366,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
-             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV; pipes also PI, PE)");
+             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV; pipes also PI, PE, HPI, HPE)");
     }
     for (ElemId e : elems) {
       const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
@@ -390,6 +427,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
     }
   });
   merge_dloads(s, kw, loads);
+  check_one_pipe_pressure(s, kw);
 }
 
 void handle_dsload(BuildState& s, const Keyword& kw) {

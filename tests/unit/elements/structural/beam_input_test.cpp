@@ -3,7 +3,9 @@
 // never a crash or a follow-on error.
 #include "test_util.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <numbers>
 
 namespace gapfem {
 namespace {
@@ -56,6 +58,57 @@ TEST(BeamInput, GeneralSectionAndTransverseShearAreRead) {
   // shear stiffness K23: F L^3 / (3 E I11) + F L / K23
   const double w = 100.0 * 8.0 / (3 * 200000.0 * 1000.0) + 100.0 * 2.0 / 5.e5;
   EXPECT_NEAR(test::U(r, test::last_frame(r), 3)[1], w, 1e-12 * w);
+}
+
+/// A PIPE31 run of n elements from (0, 0, 0) to `end`, clamped at node 1.
+std::string pipe_run(const Vec3& end, int n, const std::string& step) {
+  std::string s = "*NODE, NSET=ALL\n";
+  for (int i = 0; i <= n; ++i)
+    s += fmt::format("{}, {}, {}, {}\n", i + 1, end[0] * i / n, end[1] * i / n, end[2] * i / n);
+  s += "*ELEMENT, TYPE=PIPE31, ELSET=B\n";
+  for (int i = 1; i <= n; ++i) s += fmt::format("{}, {}, {}\n", i, i, i + 1);
+  s += "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*BEAM SECTION, ELSET=B, MATERIAL=M, "
+       "SECTION=PIPE\n0.5, 0.05\n0., 1., 0.\n*BOUNDARY\n1, ENCASTRE\n*STEP\n*STATIC\n" +
+       step + "*END STEP\n";
+  return s;
+}
+
+TEST(BeamInput, HydrostaticPipePressureSumsToArchimedes) {
+  // A closed vertical column 10 long in water up to z0 = 10 (rho g = 9810, p1 = 98100 at
+  // z1 = 0), HPE: the pressure on the closed pipe sums to the buoyancy rho g (pi r^2) h upward,
+  // whatever the mesh, so the clamp holds it down: RF3 = -9810 pi 0.25 10.
+  const double buoyancy = 9810.0 * std::numbers::pi * 0.25 * 10.0;
+  for (int n : {1, 4, 7}) {
+    const JobResult r =
+        test::run_deck(pipe_run({0, 0, 10}, n, "*DLOAD\nB, HPE, 98100., 10., 0.\n"));
+    ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+    EXPECT_NEAR(test::RF(r, test::last_frame(r), 1)[2], -buoyancy, 1e-9 * buoyancy) << n;
+  }
+  // Half the column above the water (z0 = 5): only the wet part is buoyed (element midpoints
+  // below z0: with 10 elements, the five lower ones).
+  const JobResult h = test::run_deck(pipe_run({0, 0, 10}, 10, "*DLOAD\nB, HPE, 49050., 5., 0.\n"));
+  ASSERT_EQ(h.exit_code, kExitOk) << h.error;
+  EXPECT_NEAR(test::RF(h, test::last_frame(h), 1)[2], -0.5 * buoyancy, 1e-9 * buoyancy);
+  // A level pipe at z = 0 under HPI with its reference height there is PI with the same
+  // pressure (same hoop stress, same axial thrust) plus the contents' weight rho g pi r_i^2 L
+  // downward: RF3 = +9810 pi 0.45^2 4, RF1 the same as PI's.
+  const JobResult a = test::run_deck(pipe_run({4, 0, 0}, 4, "*DLOAD\nB, HPI, 5., 10., 0.\n"));
+  const JobResult b = test::run_deck(pipe_run({4, 0, 0}, 4, "*DLOAD\nB, PI, 5.\n"));
+  ASSERT_EQ(a.exit_code, kExitOk) << a.error;
+  ASSERT_EQ(b.exit_code, kExitOk) << b.error;
+  const double weight = 0.5 * std::numbers::pi * 0.45 * 0.45 * 4.0; // rho g = 5 / 10
+  EXPECT_NEAR(test::RF(a, test::last_frame(a), 1)[2], weight, 1e-9 * weight);
+  EXPECT_NEAR(test::RF(a, test::last_frame(a), 1)[0], test::RF(b, test::last_frame(b), 1)[0], 1e-9);
+  const auto* sa = a.step_end(1)->element(0)->data.find(ElemVar::S);
+  const auto* sb = b.step_end(1)->element(0)->data.find(ElemVar::S);
+  ASSERT_TRUE(sa && sb);
+  EXPECT_NEAR(sa->values[1], sb->values[1], 1e-9 * std::abs(sb->values[1])); // hoop S22
+  EXPECT_GT(sb->values[1], 0.0);
+  // bad input: equal heights; PI and HPI on one element
+  expect_input_error(pipe_run({4, 0, 0}, 2, "*DLOAD\nB, HPI, 5., 1., 1.\n"),
+                     "the zero-pressure height and the reference height");
+  expect_input_error(pipe_run({4, 0, 0}, 2, "*DLOAD\nB, PI, 5.\n*DLOAD\nB, HPI, 5., 10., 0.\n"),
+                     "the pipe has both PI and HPI");
 }
 
 TEST(BeamInput, BadSectionsAreOneClearError) {
