@@ -267,7 +267,11 @@ TEST(ReaderLoads, DistributedLoadErrors) {
                   "element 1 (C3D8): PX is a load per unit length on beams");
   EXPECT_CONTAINS(err("*DLOAD\n1, PE, 1."),
                   "element 1 (C3D8): PE is a pressure on pipe elements (PIPE31, PIPE32)");
-  EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1."), "field 2 (HPI): this load label is not supported");
+  EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1., 10., 0."),
+                  "element 1 (C3D8): HPI is a pressure on pipe elements (PIPE31, PIPE32)");
+  EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1."), "field 4 (zero-pressure height z0): this value is "
+                                              "required");
+  EXPECT_CONTAINS(err("*DLOAD\n1, HPX, 1."), "field 2 (HPX): this load label is not supported");
   EXPECT_CONTAINS(err("*DLOAD\n1, GRAV, 9.81"), "GRAV needs a non-zero direction");
   EXPECT_CONTAINS(err("*DLOAD\n2, GRAV, 9.81, 0, 0, -1"),
                   "element 2 (SPRINGA): body loads need an element");
