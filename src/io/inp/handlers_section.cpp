@@ -343,7 +343,12 @@ void handle_spring(BuildState& s, const Keyword& kw) {
 
 namespace gapfem::inp {
 
-void handle_shell_section(BuildState& s, const Keyword& kw) {
+namespace {
+
+/// *SHELL SECTION, or *SHELL GENERAL SECTION with MATERIAL= (`general`): the same homogeneous
+/// elastic section, whose response gapfem integrates exactly through the thickness either way;
+/// the general section's stresses are reported at 3 points (SNEG, middle, SPOS).
+void read_shell_section(BuildState& s, const Keyword& kw, bool general) {
   s.shell_section_ok = false;
   ShellSection sec;
   sec.loc = kw.loc;
@@ -354,6 +359,14 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
                  "gapfem shell materials are isotropic, so no orientation is needed; remove the "
                  "parameter");
     reject_param(kw, "COMPOSITE", "give one homogeneous layer (thickness, points, material)");
+    if (general) {
+      for (const char* p : {"DENSITY", "ZERO", "USER", "DEPENDENCIES", "UNSYMM"})
+        reject_param(kw, p, "gapfem reads the general shell section from a material only");
+      if (!kw.has("MATERIAL"))
+        throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                         "a general shell section given by its stiffness matrix is not supported "
+                         "by gapfem; give MATERIAL= (an elastic material) and the thickness");
+    }
     material = name_param(kw, "MATERIAL", true);
     reject_param(kw, "POISSON", "the thickness change of gapfem shells is not computed");
     enum_param(kw, "SECTION INTEGRATION", {"SIMPSON"}, 0);
@@ -385,12 +398,12 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
                        "the data line is missing; give the shell thickness and the number of "
                        "integration points through it (e.g. 0.01, 5)");
     const FieldReader r = s.reader(kw, *lines[0]);
-    r.at_most(2, "thickness, number of integration points");
+    r.at_most(general ? 1 : 2, general ? "thickness" : "thickness, number of integration points");
     sec.thickness = sec.nodal_thickness ? r.real_or(0, 0.0, "thickness") : r.real(0, "thickness");
     if (!(sec.thickness > 0.0) && !(sec.nodal_thickness && sec.thickness == 0.0))
       r.fail("field 1 (thickness)",
              fmt::format("the shell thickness must be positive, not {}", sec.thickness));
-    const long long n = r.integer_or(1, 5, "number of integration points");
+    const long long n = general ? 3 : r.integer_or(1, 5, "number of integration points");
     if (n < 3 || n % 2 == 0 || n > 15)
       r.fail("field 2 (integration points)",
              fmt::format("Simpson's rule needs an odd number of points from 3 to 15, not {}", n));
@@ -405,6 +418,16 @@ void handle_shell_section(BuildState& s, const Keyword& kw) {
   s.model.shell_sections.push_back(std::move(sec));
   s.shell_material.push_back(material);
   s.shell_section_ok = true;
+}
+
+} // namespace
+
+void handle_shell_section(BuildState& s, const Keyword& kw) {
+  read_shell_section(s, kw, false);
+}
+
+void handle_shell_general_section(BuildState& s, const Keyword& kw) {
+  read_shell_section(s, kw, true);
 }
 
 void handle_nodal_thickness(BuildState& s, const Keyword& kw) {

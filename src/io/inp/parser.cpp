@@ -53,6 +53,7 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE", 0, P::BeamSection},
   {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kSection},
   {"*SHELL SECTION", handle_shell_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|SECTION INTEGRATION|TEMPERATURE", 0, P::ShellSection},
+  {"*SHELL GENERAL SECTION", handle_shell_general_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|DENSITY|ZERO|USER|DEPENDENCIES|UNSYMM", 0, P::ShellSection},
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
   {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},

@@ -3,11 +3,11 @@
 // never a crash or a follow-on error.
 #include "test_util.hpp"
 
-#include <fstream>
-#include <sstream>
 #include <array>
 #include <fmt/format.h>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
 
 namespace gapfem {
 namespace {
@@ -124,8 +124,10 @@ std::vector<std::array<double, 4>> s_rows(const std::string& text) {
     if (!table) continue;
     std::istringstream ls(line);
     std::array<double, 4> row{};
-    if (ls >> row[0] >> row[1] >> row[2] >> row[3]) rows.push_back(row);
-    else if (!rows.empty()) break;
+    if (ls >> row[0] >> row[1] >> row[2] >> row[3])
+      rows.push_back(row);
+    else if (!rows.empty())
+      break;
   }
   return rows;
 }
@@ -152,6 +154,27 @@ TEST(ShellInput, DatFilePrintsTheRequestedSectionPoints) {
   // section point 0 does not exist
   expect_input_error(deck(sec, load + "*EL PRINT, ELSET=S\n0\nS\n"),
                      "section points are numbered from 1");
+}
+
+TEST(ShellInput, GeneralSectionWithAMaterialIsTheHomogeneousSection) {
+  // Abaqus/CAE writes *SHELL GENERAL SECTION for a homogeneous section integrated "before the
+  // analysis": for an elastic material it is the same section
+  const JobResult a = test::run_deck(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1, 5\n"));
+  const JobResult b =
+      test::run_deck(deck("*SHELL GENERAL SECTION, ELSET=S, MATERIAL=M, OFFSET=SMID\n0.1,\n"));
+  ASSERT_EQ(a.exit_code, kExitOk) << a.error;
+  ASSERT_EQ(b.exit_code, kExitOk) << b.error;
+  EXPECT_NEAR(tip_w(b), tip_w(a), 1e-12 * std::abs(tip_w(a)));
+  EXPECT_EQ(b.model->shell_sections.at(0).n_points, 3);
+  // *TRANSVERSE SHEAR STIFFNESS belongs to it as to *SHELL SECTION: a stiffer shear, less sag
+  const JobResult c = test::run_deck(deck("*SHELL GENERAL SECTION, ELSET=S, MATERIAL=M\n0.1\n"
+                                          "*TRANSVERSE SHEAR STIFFNESS\n1.e9, 1.e9\n"));
+  ASSERT_EQ(c.exit_code, kExitOk) << c.error;
+  EXPECT_LT(std::abs(tip_w(c)), std::abs(tip_w(a)));
+  expect_input_error(deck("*SHELL GENERAL SECTION, ELSET=S\n1., 2., 3.\n"),
+                     "a general shell section given by its stiffness matrix is not supported");
+  expect_input_error(deck("*SHELL GENERAL SECTION, ELSET=S, MATERIAL=M\n0.1, 5\n"),
+                     "this data line has at most 1 fields (thickness)");
 }
 
 TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
