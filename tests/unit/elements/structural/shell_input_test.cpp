@@ -177,6 +177,33 @@ TEST(ShellInput, GeneralSectionWithAMaterialIsTheHomogeneousSection) {
                      "this data line has at most 1 fields (thickness)");
 }
 
+TEST(ShellInput, AbaqusCaeLayoutWithTheSectionInThePart) {
+  // Abaqus/CAE puts the shell section (and *NODAL THICKNESS, *TRANSVERSE SHEAR STIFFNESS) in the
+  // part and the SPOS surface in the assembly: the same answer as the flat deck
+  const std::string part =
+      "*Part, name=Strip\n*Node\n1, 0, 0, 0\n2, 1, 0, 0\n3, 2, 0, 0\n4, 0, 1, 0\n5, 1, 1, 0\n"
+      "6, 2, 1, 0\n*Element, type=S4R\n1, 1, 2, 5, 4\n2, 2, 3, 6, 5\n*Elset, elset=All\n1, 2\n"
+      "*Shell Section, elset=All, material=M, nodal thickness\n, 5\n*Transverse Shear "
+      "Stiffness\n1.e5, 1.e5\n*Nodal Thickness\n1, 0.1\n2, 0.1\n3, 0.1\n4, 0.1\n5, 0.1\n"
+      "6, 0.1\n*End Part\n";
+  const std::string assembly =
+      "*Assembly, name=Assembly\n*Instance, name=Strip-1, part=Strip\n*End Instance\n"
+      "*Nset, nset=Root, instance=Strip-1\n1, 4\n*Elset, elset=_Top_SPOS, internal, "
+      "instance=Strip-1\n1, 2\n*Surface, type=ELEMENT, name=Top\n_Top_SPOS, SPOS\n"
+      "*End Assembly\n*Material, name=M\n*Elastic\n210000., 0.3\n*Boundary\nRoot, "
+      "ENCASTRE\n*Step, name=Step-1\n*Static\n*Dsload\nTop, P, 1.\n*End Step\n";
+  const JobResult cae = test::run_deck(part + assembly);
+  ASSERT_EQ(cae.exit_code, kExitOk) << cae.error;
+  const JobResult flat = test::run_deck(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1, 5\n"
+                                             "*TRANSVERSE SHEAR STIFFNESS\n1.e5, 1.e5\n",
+                                             "*DLOAD\nS, P, -1.\n"));
+  ASSERT_EQ(flat.exit_code, kExitOk) << flat.error;
+  const Frame& f = test::last_frame(cae);
+  const double w = f.nodes.U[cae.model->mesh.find_node(make_key(1, 3))][2]; // instance 1, node 3
+  EXPECT_NEAR(w, tip_w(flat), 1e-12 * std::abs(tip_w(flat)));
+  EXPECT_LT(w, 0.0);
+}
+
 TEST(ShellInput, TemperatureGradientsAtNodesWithoutShellsOrBeamsAreReported) {
   // node 7 belongs to no element: its gradient would have no effect, which the reader says
   std::string text = deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1\n", "", "*EXPANSION\n1e-5\n");
