@@ -41,7 +41,7 @@ void add_unique(std::vector<T>& list, T v) {
 }
 
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
-constexpr const char* kElemVarList = "S, E, SF, HFL";
+constexpr const char* kElemVarList = "S, E, SF (with SM), HFL";
 
 /// A data line of positive integers only (a list of section points), else nullopt.
 std::optional<std::vector<int>> number_line(const DataLine& line) {

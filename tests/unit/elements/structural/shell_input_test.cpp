@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <sstream>
 
 namespace gapfem {
@@ -151,6 +152,14 @@ TEST(ShellInput, DatFilePrintsTheRequestedSectionPoints) {
   EXPECT_EQ(m[1][2], 3.0);
   EXPECT_NEAR(m[0][3], 0.5 * d[0][3], 1e-9 * std::abs(d[0][3]));
   EXPECT_NEAR(m[1][3], 0.0, 1e-9 * std::abs(d[0][3]));
+  // SM (Abaqus's section moments) prints the SF table, which holds the moments SM1-SM3
+  {
+    const JobResult r = test::run_deck(deck(sec, load + "*EL PRINT, ELSET=S\nSM\n"), true);
+    ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+    std::ifstream in(test::test_dir() / "job.dat");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("SM1"), std::string::npos);
+  }
   // section point 0 does not exist
   expect_input_error(deck(sec, load + "*EL PRINT, ELSET=S\n0\nS\n"),
                      "section points are numbered from 1");
