@@ -6,6 +6,7 @@
 #include "model/element_types.hpp"
 #include "model/table.hpp"
 
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -57,6 +58,9 @@ struct BeamSection {
   double density = 0.0; ///< DENSITY= of *BEAM GENERAL SECTION (0: none)
   /// *TRANSVERSE SHEAR STIFFNESS: K23 (shear along local 2), K13 (along local 1); 0 = default
   double k23 = 0.0, k13 = 0.0;
+  /// *SECTION POINTS after *BEAM GENERAL SECTION: (x1, x2) of the points where S11 and E11 are
+  /// reported (replacing the section's own points)
+  std::vector<std::array<double, 2>> output_points;
   double slenderness = -1.0; ///< slenderness compensation factor given there (-1: default)
   bool invalid = false;      ///< its keyword had an error (reported): nothing more is checked
   SourceLocation loc;

@@ -250,6 +250,17 @@ BeamSectionProperties beam_section_properties(const BeamSection& section, bool p
     hex(p, c, d);
     break;
   }
+  if (!section.output_points.empty()) {
+    // *SECTION POINTS: the axial stress and strain there; the torsional shear at an arbitrary
+    // point of a general section is not known, so S12 is not reported (0)
+    if (section.output_points.size() > static_cast<std::size_t>(BeamSectionProperties::kMaxPoints))
+      c.fail(fmt::format("*SECTION POINTS gives {} points; gapfem reports at most {}",
+                         section.output_points.size(), BeamSectionProperties::kMaxPoints));
+    p.n_points = static_cast<int>(section.output_points.size());
+    p.points = {};
+    p.torsion_radius = {};
+    for (int k = 0; k < p.n_points; ++k) p.points[k] = section.output_points[k];
+  }
   p.k23 = section.k23;
   p.k13 = section.k13;
   return p;

@@ -28,10 +28,11 @@ struct BeamSectionProperties {
   /// corners of RECT and BOX, 0/90/180/270 degrees on the outer radius of CIRC/PIPE, the flange
   /// tips of I.
   int n_points = 0;
-  std::array<std::array<double, 2>, 4> points{};
+  static constexpr int kMaxPoints = 20; ///< *SECTION POINTS may give up to this many
+  std::array<std::array<double, 2>, kMaxPoints> points{};
   /// Shear stress per unit twist and shear modulus at each point, S12 = G * r * twist (CIRC/PIPE:
   /// the radius; RECT corners 0; thin walls: the wall thickness (open) or J / (2 A_m t) (closed)).
-  std::array<double, 4> torsion_radius{};
+  std::array<double, kMaxPoints> torsion_radius{};
 
   /// PIPE: outer and inner radius (0 for other sections)
   double r_outer = 0.0, r_inner = 0.0;

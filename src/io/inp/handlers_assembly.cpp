@@ -27,6 +27,7 @@ bool part_keyword(const std::string& key) {
                                          "SHELLSECTION",
                                          "SHELLGENERALSECTION",
                                          "TRANSVERSESHEARSTIFFNESS",
+                                         "SECTIONPOINTS",
                                          "NODALTHICKNESS",
                                          "SPRING",
                                          "GAP",

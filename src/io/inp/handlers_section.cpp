@@ -292,6 +292,32 @@ void handle_beam_general_section(BuildState& s, const Keyword& kw) {
   s.beam_section_ok = true;
 }
 
+void handle_section_points(BuildState& s, const Keyword& kw) {
+  if (s.model.beam_sections.empty() || !s.beam_section_ok) return; // its section was reported
+  BeamSection& sec = s.model.beam_sections.back();
+  if (!sec.general)
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "*SECTION POINTS belongs to a *BEAM GENERAL SECTION; a *BEAM SECTION reports "
+                     "at its own section points");
+  bool any_line = false; // a line that failed is reported by itself
+  for_each_line(s, kw, [&](const DataLine& line) {
+    any_line = true;
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(8, "up to four pairs x1, x2");
+    std::size_t n = line.fields.size();
+    while (n > 0 && line.fields[n - 1].empty()) --n;
+    if (n % 2 != 0) r.fail(fmt::format("field {}", n), "give the points as pairs x1, x2");
+    std::vector<std::array<double, 2>> pts;
+    for (std::size_t i = 0; i < n; i += 2) pts.push_back({r.real(i, "x1"), r.real(i + 1, "x2")});
+    // Abaqus: a last (0, 0) on a line is ignored unless it is the only point
+    if (pts.size() > 1 && pts.back()[0] == 0.0 && pts.back()[1] == 0.0) pts.pop_back();
+    sec.output_points.insert(sec.output_points.end(), pts.begin(), pts.end());
+  });
+  if (sec.output_points.empty() && !any_line)
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "give the section points as pairs x1, x2 on the data lines");
+}
+
 void handle_beam_transverse_shear(BuildState& s, const Keyword& kw) {
   if (s.model.beam_sections.empty() || !s.beam_section_ok) return; // its section was reported
   BeamSection& sec = s.model.beam_sections.back();

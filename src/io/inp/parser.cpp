@@ -52,6 +52,7 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION|TEMPERATURE", 0, P::BeamSection},
   {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE", 0, P::BeamSection},
   {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kSection},
+  {"*SECTION POINTS", handle_section_points, W::Model, "", kBeam},
   {"*SHELL SECTION", handle_shell_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|SECTION INTEGRATION|TEMPERATURE", 0, P::ShellSection},
   {"*SHELL GENERAL SECTION", handle_shell_general_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|DENSITY|ZERO|USER|DEPENDENCIES|UNSYMM", 0, P::ShellSection},
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},

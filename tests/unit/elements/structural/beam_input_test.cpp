@@ -111,6 +111,32 @@ TEST(BeamInput, HydrostaticPipePressureSumsToArchimedes) {
                      "the pipe has both PI and HPI");
 }
 
+TEST(BeamInput, SectionPointsOfAGeneralSectionReportTheAxialStress) {
+  // GENERAL A = 100, I11 = 1000, I22 = 500, J = 800 under a tip moment of 1000 about n1 (DOF 6,
+  // n1 = -z): uniform bending M1 = 1000, S11 = M1 x2 / I11 at the points (x1, x2) of *SECTION
+  // POINTS: +-2 at (0, +-2), 0 on x2 = 0. The (0, 0) closing the first line is dropped, the one
+  // alone on the second line is kept.
+  const std::string gen = "*BEAM GENERAL SECTION, ELSET=B\n100., 1000., 0., 500., 800.\n\n"
+                          "200000., 80000.\n*SECTION POINTS\n0., 2., 0., -2., 3., 0., 0., 0.\n"
+                          "0., 0.\n";
+  const JobResult r = test::run_deck(deck("B31", gen, "*CLOAD\n3, 6, -1000.\n"));
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const OutputBlock* S = r.step_end(1)->element(0)->data.find(ElemVar::S);
+  ASSERT_NE(S, nullptr);
+  ASSERT_EQ(S->section_points, 4);
+  const std::size_t nc = S->names.size();
+  EXPECT_NEAR(std::abs(S->values[0]), 2.0, 1e-9);
+  EXPECT_NEAR(S->values[nc], -S->values[0], 1e-9);
+  EXPECT_NEAR(S->values[2 * nc], 0.0, 1e-9);
+  EXPECT_NEAR(S->values[3 * nc], 0.0, 1e-9);
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT\n1., 1.\n"
+                                 "*SECTION POINTS\n0., 0.5\n"),
+                     "*SECTION POINTS belongs to a *BEAM GENERAL SECTION");
+  expect_input_error(
+      deck("B31", gen.substr(0, gen.find("*SECTION")) + "*SECTION POINTS\n1., 2., 3.\n"),
+      "give the points as pairs x1, x2");
+}
+
 TEST(BeamInput, BadSectionsAreOneClearError) {
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=BOX\n"
                                  "1., 1., 0.6, 0.1, 0.6, 0.1\n"),
