@@ -1,6 +1,8 @@
 // Shell verification (decks written by gen_shell_decks.py in this directory).
 #include "structural_deck_support.hpp"
 
+#include <array>
+
 namespace gapfem {
 namespace {
 
@@ -181,6 +183,19 @@ TEST(VerificationStructuralShells, MacNealHarderStraightCantilever) {
   EXPECT_NEAR(twist / 0.03208, 0.946, 0.003);
 }
 
+/// The twisted-beam decks: S4R 12 x 2 and S8R 12 x 2, each under the load in the plane of the
+/// tip (middle tip nodes 38, 2123, displacement along z) and normal to it (1038, 3123, along y);
+/// `tol` bounds |ratio - 1| for S4R in-plane, S4R out-of-plane, S8R in-plane, S8R out-of-plane.
+void check_twisted_beam(const char* deck, double in_plane, double out_of_plane,
+                        std::array<double, 4> tol) {
+  DeckRun run(deck);
+  if (!run.ok()) return;
+  EXPECT_NEAR(run.U(38)[2] / in_plane, 1.0, tol[0]);
+  EXPECT_NEAR(run.U(1038)[1] / out_of_plane, 1.0, tol[1]);
+  EXPECT_NEAR(run.U(2123)[2] / in_plane, 1.0, tol[2]);
+  EXPECT_NEAR(run.U(3123)[1] / out_of_plane, 1.0, tol[3]);
+}
+
 TEST(VerificationStructuralShells, MacNealHarderTwistedBeam) {
   // MacNeal & Harder (1985): L = 12, width 1.1, t = 0.32, twisted 90 degrees from root to tip,
   // E = 29.0e6, nu = 0.22, root clamped, unit tip load split over the tip nodes as a uniform line
@@ -192,12 +207,7 @@ TEST(VerificationStructuralShells, MacNealHarderTwistedBeam) {
   // 1/6 + 1/pi^2 and 1/6 - 1/pi^2: 5.426e-3 and 1.746e-3, which fixes which load is which.
   // Measured ratios (middle tip node): S4R 0.9952 (in-plane), 0.9842 (out-of-plane); S8R 0.9979,
   // 0.9993.
-  DeckRun run("shell_twisted_beam.inp");
-  if (!run.ok()) return;
-  EXPECT_NEAR(run.U(38)[2] / 5.424e-3, 1.0, 0.006);   // S4R, in-plane
-  EXPECT_NEAR(run.U(1038)[1] / 1.754e-3, 1.0, 0.02);  // S4R, out-of-plane
-  EXPECT_NEAR(run.U(2123)[2] / 5.424e-3, 1.0, 0.003); // S8R, in-plane
-  EXPECT_NEAR(run.U(3123)[1] / 1.754e-3, 1.0, 0.001); // S8R, out-of-plane
+  check_twisted_beam("shell_twisted_beam.inp", 5.424e-3, 1.754e-3, {0.006, 0.02, 0.003, 0.001});
 }
 
 TEST(VerificationStructuralShells, MacNealHarderTwistedBeamThin) {
@@ -205,12 +215,8 @@ TEST(VerificationStructuralShells, MacNealHarderTwistedBeamThin) {
   // later studies): targets 5.256e-3 (in the plane of the tip) and 1.294e-3 (normal to it);
   // same meshes and labels as the thick deck. Measured ratios: S4R 12 x 2 0.9855, 0.9813; S8R
   // 12 x 2 0.9908, 0.9998 (S4R 24 x 4: 0.9953, 0.9948).
-  DeckRun run("shell_twisted_beam_thin.inp");
-  if (!run.ok()) return;
-  EXPECT_NEAR(run.U(38)[2] / 5.256e-3, 1.0, 0.02);     // S4R, in-plane
-  EXPECT_NEAR(run.U(1038)[1] / 1.294e-3, 1.0, 0.025);  // S4R, out-of-plane
-  EXPECT_NEAR(run.U(2123)[2] / 5.256e-3, 1.0, 0.012);  // S8R, in-plane
-  EXPECT_NEAR(run.U(3123)[1] / 1.294e-3, 1.0, 0.0005); // S8R, out-of-plane
+  check_twisted_beam("shell_twisted_beam_thin.inp", 5.256e-3, 1.294e-3,
+                     {0.02, 0.025, 0.012, 0.0005});
 }
 
 } // namespace
