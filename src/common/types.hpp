@@ -21,37 +21,64 @@ using ElemId = std::int32_t;
 
 using Vec3 = std::array<double, 3>;
 
-/// Degrees of freedom, in Abaqus numbering 1..6 (displacements and rotations) and 11 (temperature).
-/// The enumerator value is a compact bit index; use abaqus_number() for the deck number.
+/// Degrees of freedom, in Abaqus numbering 1..6 (displacements and rotations), 11 (temperature,
+/// or the first temperature through a heat-transfer shell's thickness) and 12..25 (the further
+/// temperatures through a shell's thickness, DOF 11 at SNEG, the last at SPOS). The enumerator
+/// value is a compact bit index; use abaqus_number() for the deck number.
 enum class DofType : std::uint8_t { U1 = 0, U2, U3, UR1, UR2, UR3, NT };
-inline constexpr int kNumDofTypes = 7;
+/// Temperatures through a shell's thickness: DOFs 11 .. 11 + kMaxTemperaturePoints - 1.
+inline constexpr int kMaxTemperaturePoints = 15;
+inline constexpr int kNumDofTypes = 6 + kMaxTemperaturePoints;
+/// Which DOFs a node carries: bit dof_bit(d) per DofType.
+using DofMask = std::uint32_t;
+static_assert(kNumDofTypes <= 32, "DofMask holds one bit per DOF type");
 
-constexpr int abaqus_number(DofType d) {
-  return d == DofType::NT ? 11 : static_cast<int>(d) + 1;
+/// Temperature point k (0-based) through the thickness: DOF 11 + k.
+constexpr DofType temperature_dof(int k) {
+  return static_cast<DofType>(static_cast<int>(DofType::NT) + k);
 }
-/// Deck DOF number (1..6, 11) to DofType; returns false for numbers gapfem does not know.
+constexpr bool is_temperature(DofType d) {
+  return d >= DofType::NT;
+}
+/// 0 for DOF 11, k for DOF 11 + k (temperature DOFs only).
+constexpr int temperature_index(DofType d) {
+  return static_cast<int>(d) - static_cast<int>(DofType::NT);
+}
+constexpr int abaqus_number(DofType d) {
+  return is_temperature(d) ? 11 + temperature_index(d) : static_cast<int>(d) + 1;
+}
+/// Largest deck DOF number gapfem knows.
+inline constexpr int kMaxAbaqusDof = 10 + kMaxTemperaturePoints;
+/// Deck DOF number (1..6, 11..25) to DofType; returns false for numbers gapfem does not know.
 constexpr bool dof_from_abaqus(int number, DofType& out) {
   if (number >= 1 && number <= 6) {
     out = static_cast<DofType>(number - 1);
     return true;
   }
-  if (number == 11) {
-    out = DofType::NT;
+  if (number >= 11 && number <= kMaxAbaqusDof) {
+    out = temperature_dof(number - 11);
     return true;
   }
   return false;
 }
-constexpr std::uint8_t dof_bit(DofType d) { return static_cast<std::uint8_t>(1u << static_cast<int>(d)); }
+constexpr DofMask dof_bit(DofType d) {
+  return DofMask{1} << static_cast<int>(d);
+}
+/// All temperature bits.
+inline constexpr DofMask kTemperatureBits =
+    ((DofMask{1} << kNumDofTypes) - 1u) & ~((DofMask{1} << static_cast<int>(DofType::NT)) - 1u);
 
 /// Which solution field a DOF belongs to (convergence checks are per field, as in Abaqus).
 enum class Field : std::uint8_t { Displacement = 0, Rotation, Temperature };
 inline constexpr int kNumFields = 3;
 constexpr Field field_of(DofType d) {
-  return d == DofType::NT ? Field::Temperature
-                          : (static_cast<int>(d) >= 3 ? Field::Rotation : Field::Displacement);
+  return is_temperature(d) ? Field::Temperature
+                           : (static_cast<int>(d) >= 3 ? Field::Rotation : Field::Displacement);
 }
 constexpr std::string_view field_name(Field f) {
-  return f == Field::Displacement ? "displacement" : f == Field::Rotation ? "rotation" : "temperature";
+  return f == Field::Displacement ? "displacement"
+         : f == Field::Rotation   ? "rotation"
+                                  : "temperature";
 }
 
 } // namespace gapfem

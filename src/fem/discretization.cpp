@@ -35,7 +35,7 @@ Discretization::Discretization(const Model& model) : _model(model) {
     b.elements.push_back(e);
   }
   // Kernels and DOF masks.
-  std::vector<std::uint8_t> masks(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  std::vector<DofMask> masks(static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (auto& b : _blocks) {
     b.kernel = make_element_kernel(KernelContext{model, b.type, b.property, b.elements});
     const ElementKernel& k = *b.kernel;

@@ -15,27 +15,32 @@ class DofMap {
  public:
   DofMap() = default;
   /// masks[n]: bit dof_bit(d) set when node n carries DOF d.
-  explicit DofMap(std::vector<std::uint8_t> masks);
+  explicit DofMap(std::vector<DofMask> masks);
 
   LocalIndex n_slots() const { return static_cast<LocalIndex>(_slot_node.size()); }
   NodeId n_nodes() const { return static_cast<NodeId>(_mask.size()); }
-  std::uint8_t mask(NodeId n) const { return _mask[n]; }
+  DofMask mask(NodeId n) const { return _mask[n]; }
   bool has(NodeId n, DofType d) const { return (_mask[n] & dof_bit(d)) != 0; }
   /// Slot of (node, dof), or -1 when the node does not carry that DOF.
   LocalIndex slot(NodeId n, DofType d) const {
-    const std::uint8_t bit = dof_bit(d);
+    const DofMask bit = dof_bit(d);
     if (!(_mask[n] & bit)) return -1;
     return _first[n] + std::popcount(static_cast<unsigned>(_mask[n] & (bit - 1u)));
   }
   NodeId slot_node(LocalIndex s) const { return _slot_node[s]; }
   DofType slot_dof(LocalIndex s) const { return _slot_dof[s]; }
   Field slot_field(LocalIndex s) const { return field_of(_slot_dof[s]); }
+  bool slot_is_temperature(LocalIndex s) const { return is_temperature(_slot_dof[s]); }
+  /// Largest number of temperature DOFs (11, 12, …) at any node: 0 without temperatures, 1
+  /// unless heat-transfer shells carry temperatures through their thickness.
+  int max_temperature_points() const { return _max_temperature_points; }
 
  private:
-  std::vector<std::uint8_t> _mask;
+  std::vector<DofMask> _mask;
   std::vector<LocalIndex> _first;
   std::vector<NodeId> _slot_node;
   std::vector<DofType> _slot_dof;
+  int _max_temperature_points = 0;
 };
 
 /// The equation numbering of one step.

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace gapfem {
 namespace {
@@ -24,11 +25,21 @@ constexpr std::array<std::string_view, 3> kCM = {"CM1", "CM2", "CM3"};
 /// nodes carry it.
 struct NodeColumns {
   const std::vector<Vec3>* vec = nullptr;      ///< vector fields
-  const std::vector<double>* scalar = nullptr; ///< scalar fields (NT, RFL, CFL)
-  std::array<std::string_view, 3> names{};
-  std::array<int, 3> comp{};
+  const std::vector<double>* scalar = nullptr; ///< scalar fields (NT, RFL, CFL): DOF 11
+  /// DOFs 12 … of heat-transfer shells (NodeResults::NT_more …), columns 2 … of a scalar field
+  const std::vector<double>* more = nullptr;
+  std::array<std::string_view, kMaxTemperaturePoints> names{};
+  std::array<int, kMaxTemperaturePoints> comp{};
   int n = 0;
   enum class Carrier { Displacement, Rotation, Temperature } carrier = Carrier::Displacement;
+};
+
+/// "NT11" … "NT25" (and RFL, CFL): one column per temperature DOF.
+struct TemperatureNames {
+  std::array<std::string, kMaxTemperaturePoints> text;
+  explicit TemperatureNames(std::string_view var) {
+    for (int k = 0; k < kMaxTemperaturePoints; ++k) text[k] = fmt::format("{}{}", var, 11 + k);
+  }
 };
 
 NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) {
@@ -58,10 +69,14 @@ NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) 
       c.comp[0] = 2;
     }
   };
-  auto scalar = [&](const std::vector<double>& v, std::string_view nm) {
+  auto scalar = [&](const std::vector<double>& v, const std::vector<double>& more,
+                    std::string_view nm) {
+    static const TemperatureNames nt("NT"), rfl("RFL"), cfl("CFL");
+    const auto& names = nm == "NT" ? nt : nm == "RFL" ? rfl : cfl;
     c.scalar = &v;
-    c.n = 1;
-    c.names[0] = nm;
+    c.more = &more;
+    c.n = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
+    for (int k = 0; k < c.n; ++k) c.names[k] = names.text[k];
     c.carrier = NodeColumns::Carrier::Temperature;
   };
   switch (var) {
@@ -84,13 +99,13 @@ NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) 
     rotations(r.CM, kCM);
     break;
   case NodeVar::NT:
-    scalar(r.NT, "NT11");
+    scalar(r.NT, r.NT_more, "NT");
     break;
   case NodeVar::RFL:
-    scalar(r.RFL, "RFL11");
+    scalar(r.RFL, r.RFL_more, "RFL");
     break;
   case NodeVar::CFL:
-    scalar(r.CFL, "CFL11");
+    scalar(r.CFL, r.CFL_more, "CFL");
     break;
   }
   return c;
@@ -328,8 +343,15 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
     const Vec3 vec = !cols.vec        ? Vec3{}
                      : request.global ? r.global(n, (*cols.vec)[n])
                                       : (*cols.vec)[n];
+    const int n_values = cols.vec ? cols.n : std::clamp(r.temperatures_at(n), 1, cols.n);
     for (int c = 0; c < cols.n; ++c) {
-      const double v = cols.vec ? vec[cols.comp[c]] : (*cols.scalar)[n];
+      if (c >= n_values) { // a node with fewer temperatures than a shell's: blank columns
+        fmt::format_to(out, "{:>12}", "");
+        continue;
+      }
+      const double v = cols.vec ? vec[cols.comp[c]]
+                       : c == 0 ? (*cols.scalar)[n]
+                                : (*cols.more)[static_cast<std::size_t>(cols.n - 1) * n + c - 1];
       append_e12(buf, v);
       track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
     }

@@ -240,6 +240,19 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
     if (idx < r.NT.size()) scalar("NT", r.NT[idx]);
     if (idx < r.RFL.size()) scalar("RFL", r.RFL[idx]);
     if (idx < r.CFL.size() && r.CFL[idx] != 0.0) scalar("CFL", r.CFL[idx]);
+    // heat-transfer shells: all temperatures through the thickness, DOF 11 (SNEG) first
+    if (const int k = r.temperatures_at(n); k > 1 && r.temperature_points > 1) {
+      sep(b);
+      key(b, "NT_SECTION");
+      b.push_back('[');
+      append_json_number(b, r.NT[idx]);
+      for (int j = 1; j < k; ++j) {
+        b.push_back(',');
+        append_json_number(b, r.NT_more[static_cast<std::size_t>(r.temperature_points - 1) * idx +
+                                        static_cast<std::size_t>(j - 1)]);
+      }
+      b.push_back(']');
+    }
   }
   b.push_back('}');
 }

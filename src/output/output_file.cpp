@@ -200,11 +200,11 @@ void append_json_string(fmt::memory_buffer& out, std::string_view s) {
 NodeFields node_fields(const NodeResults& r, NodeId n) {
   NodeFields f;
   if (n >= 0 && static_cast<std::size_t>(n) < r.dof_mask.size()) {
-    const std::uint8_t m = r.dof_mask[n];
+    const DofMask m = r.dof_mask[n];
     f.displacement =
         (m & (dof_bit(DofType::U1) | dof_bit(DofType::U2) | dof_bit(DofType::U3))) != 0;
     f.rotation = (m & (dof_bit(DofType::UR1) | dof_bit(DofType::UR2) | dof_bit(DofType::UR3))) != 0;
-    f.temperature = (m & dof_bit(DofType::NT)) != 0;
+    f.temperature = (m & kTemperatureBits) != 0;
     return f;
   }
   f.displacement = r.any_displacement;

@@ -7,6 +7,7 @@
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
 
+#include <bit>
 #include <map>
 #include <optional>
 #include <string>
@@ -21,7 +22,18 @@ struct Model;
 struct NodeResults {
   std::vector<Vec3> U, UR, RF, RM, CF, CM;
   std::vector<double> NT, RFL, CFL;
-  std::vector<std::uint8_t> dof_mask; ///< per node: bit dof_bit(DofType) set when the DOF is active
+  /// Heat-transfer shells carry temperatures at points through their thickness (DOFs 11, 12, …):
+  /// NT/RFL/CFL above hold DOF 11; the further points 12 … 10 + temperature_points are in the
+  /// *_more vectors, (temperature_points - 1) values per node (empty when temperature_points <= 1)
+  int temperature_points = 1;
+  std::vector<double> NT_more, RFL_more, CFL_more;
+  /// Number of temperature DOFs node n carries (0, 1, or up to temperature_points).
+  int temperatures_at(NodeId n) const {
+    return n >= 0 && static_cast<std::size_t>(n) < dof_mask.size()
+               ? std::popcount(dof_mask[n] & kTemperatureBits)
+               : 0;
+  }
+  std::vector<DofMask> dof_mask; ///< per node: bit dof_bit(DofType) set when the DOF is active
   /// Nodes with a *TRANSFORM: their vectors above are in the local system with these axes (rows
   /// e1, e2, e3), as Abaqus reports them; the VTU writer turns them back to global components.
   std::map<NodeId, std::array<double, 9>> local_axes;

@@ -246,9 +246,28 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
     vec_point("UR", UR);
     vec_point("RM", RM);
   }
+  // heat-transfer shells: NT12 … through the thickness; a node with fewer temperatures shows its
+  // last one (a solid's single temperature), so colour maps stay continuous
+  static const std::array<std::string, kMaxTemperaturePoints> kNtNames = [] {
+    std::array<std::string, kMaxTemperaturePoints> a;
+    for (int k = 0; k < kMaxTemperaturePoints; ++k) a[k] = fmt::format("NT{}", 11 + k);
+    return a;
+  }();
+  const int n_points = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
+  std::vector<std::vector<double>> nt_more(static_cast<std::size_t>(n_points - 1));
   if (r.any_temperature) {
     scalar_point("NT", r.NT);
     scalar_point("RFL", r.RFL);
+    for (int k = 1; k < n_points && r.NT_more.size() == nn * (n_points - 1); ++k) {
+      auto& v = nt_more[k - 1];
+      v.resize(nn);
+      for (std::size_t n = 0; n < nn; ++n) {
+        const int have = r.temperatures_at(static_cast<NodeId>(n));
+        const int j = std::min(k, have - 1);
+        v[n] = j <= 0 ? r.NT[n] : r.NT_more[(n_points - 1) * n + j - 1];
+      }
+      scalar_point(kNtNames[k], v);
+    }
   }
 
   std::vector<Array> cell_arrays;

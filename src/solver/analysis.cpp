@@ -81,8 +81,7 @@ struct Analysis::Impl {
     st.T_initial.resize(static_cast<std::size_t>(m.mesh.n_nodes()), 0.0);
     st.T = st.T_start = st.T_initial;
     check_step_procedures(m);
-    for (LocalIndex s = 0; s < ns; ++s)
-      has_temperature_dofs |= disc.dofs().slot_dof(s) == DofType::NT;
+    for (LocalIndex s = 0; s < ns; ++s) has_temperature_dofs |= disc.dofs().slot_is_temperature(s);
   }
 
   StepSummary run_step(int index);
@@ -463,6 +462,10 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
   nr.NT.assign(nn, 0.0);
   nr.RFL = nr.CFL = nr.NT;
+  nr.temperature_points = std::max(1, dofs.max_temperature_points());
+  const std::size_t more = static_cast<std::size_t>(nr.temperature_points - 1);
+  nr.NT_more.assign(more * static_cast<std::size_t>(nn), 0.0);
+  nr.RFL_more = nr.CFL_more = nr.NT_more;
   nr.dof_mask.resize(nn);
   const std::vector<double> reaction = prob.reactions();
   const std::vector<double> cload = prob.concentrated_loads();
@@ -480,11 +483,17 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
       nr.RM[n][d - 3] = reaction[s];
       nr.CM[n][d - 3] = cload[s];
       nr.any_rotation = true;
-    } else {
+    } else if (d == static_cast<int>(DofType::NT)) {
       nr.NT[n] = u;
       nr.RFL[n] = reaction[s];
       nr.CFL[n] = cload[s];
       nr.any_temperature = true;
+    } else { // DOF 12 … through a heat-transfer shell's thickness
+      const std::size_t k = more * static_cast<std::size_t>(n) +
+                            static_cast<std::size_t>(temperature_index(dofs.slot_dof(s)) - 1);
+      nr.NT_more[k] = u;
+      nr.RFL_more[k] = reaction[s];
+      nr.CFL_more[k] = cload[s];
     }
   }
   for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);

@@ -128,7 +128,7 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         at, list_labels(model, body), list_labels(model, gaps));
   }
   const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
-    return eq >= 0 && eq < eqm.n_eq() && dofs.slot_dof(eqm.eq_slot[eq]) == DofType::NT;
+    return eq >= 0 && eq < eqm.n_eq() && dofs.slot_is_temperature(eqm.eq_slot[eq]);
   });
   if (temperature)
     return fmt::format(

@@ -32,7 +32,7 @@ void check_step_procedures(const Model& model) {
 void set_initial_temperatures(const Model& model, const DofMap& dofs, std::span<double> u) {
   if (model.initial_temperature.empty()) return;
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
-    if (dofs.slot_dof(s) == DofType::NT) {
+    if (dofs.slot_is_temperature(s)) { // every temperature through a shell starts at the value
       const NodeId n = dofs.slot_node(s);
       if (n < static_cast<NodeId>(model.initial_temperature.size()))
         u[s] = model.initial_temperature[n];
@@ -48,7 +48,7 @@ double max_free_temperature_change(const DofMap& dofs, const EquationMap& eqs,
   double m = 0.0;
   for (LocalIndex i = 0; i < eqs.n_eq(); ++i) {
     const LocalIndex s = eqs.eq_slot[i];
-    if (dofs.slot_dof(s) == DofType::NT) m = std::max(m, std::abs(u[s] - u_start[s]));
+    if (dofs.slot_is_temperature(s)) m = std::max(m, std::abs(u[s] - u_start[s]));
   }
   return m;
 }
@@ -77,7 +77,7 @@ void HeatBalance::add_increment(const DofMap& dofs, double dt, std::span<const d
                                 std::span<const double> f_ext) {
   if (!_active || !_transient) return;
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
-    if (dofs.slot_dof(s) != DofType::NT) continue;
+    if (!dofs.slot_is_temperature(s)) continue;
     _reaction += dt * reaction[s];
     _applied += dt * f_ext[s];
     _scale += dt * (std::abs(reaction[s]) + std::abs(f_ext[s]));
@@ -98,7 +98,7 @@ void HeatBalance::finish(Discretization& disc, const StepContext& ctx,
     const DofMap& dofs = disc.dofs();
     double scale = 0.0;
     for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
-      if (dofs.slot_dof(s) != DofType::NT) continue;
+      if (!dofs.slot_is_temperature(s)) continue;
       c.reaction_flux_sum += reaction[s];
       c.applied_flux_sum += f_ext[s];
       scale += std::abs(reaction[s]) + std::abs(f_ext[s]);

@@ -118,7 +118,7 @@ std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx) {
   const bool planar = model.space != ModelSpace::ThreeD;
   auto check_dof = [&](int dof, const char* which) {
     DofType d{};
-    if (!dof_from_abaqus(dof, d) || d == DofType::NT)
+    if (!dof_from_abaqus(dof, d) || is_temperature(d))
       throw InputError(sec.loc, entity,
                        fmt::format("{} degree of freedom {} is not a displacement or rotation "
                                    "(1-6); give the DOF the spring acts on",

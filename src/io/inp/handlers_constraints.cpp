@@ -22,10 +22,11 @@ std::vector<NodeId> nodes_by_label(BuildState& s, const FieldReader& r, std::siz
 DofType equation_dof(const FieldReader& r, std::size_t field) {
   const long long n = r.integer(field, "degree of freedom");
   DofType d{};
-  if (n < 1 || n > 11 || !dof_from_abaqus(static_cast<int>(n), d))
+  if (n < 1 || n > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(n), d))
     r.fail(fmt::format("field {} (degree of freedom)", field + 1),
            fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, "
-                       "rotations) and 11 (temperature)",
+                       "rotations) and 11-25 (temperatures: 11, and 12-25 through the thickness of "
+                       "heat-transfer shells)",
                        n));
   return d;
 }
@@ -265,7 +266,8 @@ void check_axis_nodes(BuildState& s) {
   };
   const std::string remedy =
       "the node lies on the axis of its cylindrical *TRANSFORM (at {}), where the radial and "
-      "tangential directions are undefined; {}: hold local DOFs {} and {} together at zero, or give "
+      "tangential directions are undefined; {}: hold local DOFs {} and {} together at zero, or "
+      "give "
       "the node a rectangular *TRANSFORM of its own";
   auto fail = [&](const SourceLocation& loc, NodeId n, int pair, std::string_view what) {
     s.error(loc, fmt::format("node {}", m.node_label(n)),

@@ -66,11 +66,13 @@ bool bc_type_dofs(const std::string& name, std::vector<int>& dofs) {
 
 DofType to_dof(const FieldReader& r, long long n, std::size_t field) {
   DofType d{};
-  if (n < 0 || n > 11 || !dof_from_abaqus(static_cast<int>(n), d))
-    r.fail(fmt::format("field {} (degree of freedom)", field + 1),
-           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, rotations) "
-                       "and 11 (temperature)",
-                       n));
+  if (n < 0 || n > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(n), d))
+    r.fail(
+        fmt::format("field {} (degree of freedom)", field + 1),
+        fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, rotations) "
+                    "and 11-25 (temperatures: 11, and 12-25 through the thickness of heat-transfer "
+                    "shells)",
+                    n));
   return d;
 }
 
@@ -245,12 +247,18 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
     r.at_most(3, "node or node set, DOF, magnitude");
     DofType dof = DofType::NT;
     if (flux) {
-      if (!r.blank(1) && r.integer(1, "DOF") != 11)
+      const long long d = r.blank(1) ? 11 : r.integer(1, "DOF");
+      if (d < 11 || d > kMaxAbaqusDof)
         r.fail("field 2 (DOF)",
-               "a concentrated heat flux acts on DOF 11; write 11 or leave it blank");
+               fmt::format("a concentrated heat flux acts on a temperature DOF: 11 (or 12-{} "
+                           "through the thickness of a heat-transfer shell), not {}; write 11 or "
+                           "leave it blank",
+                           kMaxAbaqusDof, d));
+      dof_from_abaqus(static_cast<int>(d), dof);
     } else {
       const long long d = r.integer(1, "DOF");
-      if (d == 11) r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
+      if (d >= 11 && d <= kMaxAbaqusDof)
+        r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
       if (d < 1 || d > 6)
         r.fail("field 2 (DOF)", fmt::format("*CLOAD acts on DOFs 1-6, not {}", d));
       dof_from_abaqus(static_cast<int>(d), dof);
@@ -268,7 +276,7 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
   });
   merge(
       s.step.cloads, entries, op_new(kw),
-      [flux](const NodalLoad& l) { return (l.dof == DofType::NT) == flux; },
+      [flux](const NodalLoad& l) { return is_temperature(l.dof) == flux; },
       [](const NodalLoad& l) { return std::pair(l.node, static_cast<int>(l.dof)); });
 }
 

@@ -186,8 +186,9 @@ ALL, 2, -1.
                   "deck.inp:14: *CLOAD: field 2 (DOF): use *CFLUX");
   EXPECT_CONTAINS(error_text(step("*CLOAD\n1, 7, 1.")), "*CLOAD acts on DOFs 1-6, not 7");
   EXPECT_CONTAINS(error_text(step("*CLOAD\n1, 1")), "field 3 (magnitude): this value is required");
-  EXPECT_CONTAINS(error_text(step("*CFLUX\n1, 2, 1.")),
-                  "deck.inp:14: *CFLUX: field 2 (DOF): a concentrated heat flux acts on DOF 11");
+  EXPECT_CONTAINS(
+      error_text(step("*CFLUX\n1, 2, 1.")),
+      "deck.inp:14: *CFLUX: field 2 (DOF): a concentrated heat flux acts on a temperature DOF: 11");
 }
 
 TEST(ReaderLoads, RepeatedEntryInOneKeywordReplaces) {
@@ -270,7 +271,7 @@ TEST(ReaderLoads, DistributedLoadErrors) {
   EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1., 10., 0."),
                   "element 1 (C3D8): HPI is a pressure on pipe elements (PIPE31, PIPE32)");
   EXPECT_CONTAINS(err("*DLOAD\n1, HPI, 1."), "field 4 (zero-pressure height z0): this value is "
-                                              "required");
+                                             "required");
   EXPECT_CONTAINS(err("*DLOAD\n1, HPX, 1."), "field 2 (HPX): this load label is not supported");
   EXPECT_CONTAINS(err("*DLOAD\n1, GRAV, 9.81"), "GRAV needs a non-zero direction");
   EXPECT_CONTAINS(err("*DLOAD\n2, GRAV, 9.81, 0, 0, -1"),

@@ -82,8 +82,7 @@ TEST(ThermalStep, FixedIncrementsForTransientStepsWithoutDeltmx) {
 
 // Two nodes: node 0 carries U1 and NT, node 1 NT only. Slots: (0, U1), (0, NT), (1, NT).
 TEST(ThermalStep, TemperatureChangeAndInitialTemperatures) {
-  const DofMap dofs({static_cast<std::uint8_t>(dof_bit(DofType::U1) | dof_bit(DofType::NT)),
-                     dof_bit(DofType::NT)});
+  const DofMap dofs({dof_bit(DofType::U1) | dof_bit(DofType::NT), dof_bit(DofType::NT)});
   ASSERT_EQ(dofs.n_slots(), 3);
   Model m;
   m.initial_temperature = {15.0, 25.0};
@@ -97,6 +96,40 @@ TEST(ThermalStep, TemperatureChangeAndInitialTemperatures) {
   const EquationMap eqs = EquationMap::build(prescribed);
   const std::vector<double> now{9.0, 18.0, 125.0};
   EXPECT_DOUBLE_EQ(max_free_temperature_change(dofs, eqs, now, u), 3.0);
+}
+
+// Heat-transfer shells: DOFs 11, 12, 13 at node 0 (a 3-point shell), 11 at node 1 (a solid).
+// Slots follow the DOF numbers; every temperature starts at the node's initial value, and a
+// change of any of them counts for DELTMX.
+TEST(ThermalStep, TemperaturesThroughAShellsThickness) {
+  DofType d{};
+  ASSERT_TRUE(dof_from_abaqus(13, d));
+  EXPECT_TRUE(is_temperature(d));
+  EXPECT_EQ(temperature_index(d), 2);
+  EXPECT_EQ(abaqus_number(d), 13);
+  EXPECT_EQ(field_of(d), Field::Temperature);
+  ASSERT_TRUE(dof_from_abaqus(kMaxAbaqusDof, d));
+  EXPECT_EQ(abaqus_number(d), 25);
+  EXPECT_FALSE(dof_from_abaqus(26, d));
+  EXPECT_FALSE(dof_from_abaqus(7, d));
+  EXPECT_FALSE(is_temperature(DofType::UR3));
+  const DofMap dofs(
+      {dof_bit(DofType::NT) | dof_bit(temperature_dof(1)) | dof_bit(temperature_dof(2)),
+       dof_bit(DofType::NT)});
+  ASSERT_EQ(dofs.n_slots(), 4);
+  EXPECT_EQ(dofs.max_temperature_points(), 3);
+  EXPECT_EQ(dofs.slot(0, temperature_dof(2)), 2);
+  EXPECT_EQ(dofs.slot(1, DofType::NT), 3);
+  EXPECT_EQ(dofs.slot(1, temperature_dof(1)), -1);
+  Model m;
+  m.initial_temperature = {15.0, 25.0};
+  std::vector<double> u(4, 0.0);
+  set_initial_temperatures(m, dofs, u);
+  EXPECT_EQ(u, (std::vector<double>{15.0, 15.0, 15.0, 25.0}));
+  const std::vector<std::uint8_t> prescribed{0, 0, 0, 0};
+  const EquationMap eqs = EquationMap::build(prescribed);
+  const std::vector<double> now{15.0, 15.0, 22.0, 26.0};
+  EXPECT_DOUBLE_EQ(max_free_temperature_change(dofs, eqs, now, u), 7.0);
 }
 
 } // namespace
