@@ -1,4 +1,5 @@
 #include "elements/element_kernel.hpp"
+#include "elements/heat/heat_shell.hpp"
 #include "model/model.hpp"
 
 #include <fmt/format.h>
@@ -21,10 +22,12 @@ std::string_view contact_status_name(ContactStatus s) {
 
 std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
   switch (element_info(ctx.type).family) {
+  case ElementFamily::Shell:
+    if (!element_info(ctx.type).displacement) return make_heat_shell_kernel(ctx); // DS3, DS4, DS8
+    return make_structural_kernel(ctx);
   case ElementFamily::Spring:
   case ElementFamily::Truss:
   case ElementFamily::Beam:
-  case ElementFamily::Shell:
     return make_structural_kernel(ctx);
   case ElementFamily::Continuum:
     return make_continuum_kernel(ctx);

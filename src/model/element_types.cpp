@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 88> kInfo = {{
+constexpr std::array<ElementTypeInfo, 91> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -147,6 +147,9 @@ constexpr std::array<ElementTypeInfo, 88> kInfo = {{
     {ElementType::S8R, "S8R", 8, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad8},
     {ElementType::B32R, "B32R", 3, F::Beam, S::ThreeD, P::None, true, false},
     {ElementType::S8, "S8", 8, F::Shell, S::ThreeD, P::None, true, false, Shape::Quad8},
+    {ElementType::DS3, "DS3", 3, F::Shell, S::ThreeD, P::None, false, true, Shape::Tri3},
+    {ElementType::DS4, "DS4", 4, F::Shell, S::ThreeD, P::None, false, true, Shape::Quad4},
+    {ElementType::DS8, "DS8", 8, F::Shell, S::ThreeD, P::None, false, true, Shape::Quad8},
 }};
 } // namespace
 

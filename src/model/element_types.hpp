@@ -108,6 +108,10 @@ enum class ElementType : std::uint8_t {
   // fully integrated eight-node shell
   B32R,
   S8,
+  // heat-transfer shells (DOFs 11, 12, … through the thickness)
+  DS3,
+  DS4,
+  DS8,
 };
 
 enum class ElementFamily : std::uint8_t {

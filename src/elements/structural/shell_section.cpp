@@ -62,6 +62,12 @@ ShellData shell_data(const KernelContext& ctx) {
   d.type = ctx.type;
   d.material = section_material(model, sec.material, sec.loc, entity);
   d.n_points = sec.n_points;
+  if (d.n_points < 3)
+    throw InputError(sec.loc, entity,
+                     fmt::format("{} elements need at least 3 section points through the "
+                                 "thickness (only heat-transfer shells may use 1); give 3 or more "
+                                 "(odd) on the data line",
+                                 element_info(ctx.type).name));
   d.offset = sec.offset;
   d.k11 = sec.k11;
   d.k22 = sec.k22;

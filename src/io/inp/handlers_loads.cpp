@@ -143,6 +143,15 @@ void require_temperature(const BuildState& s, const FieldReader& r, ElemId e) {
     r.fail(elem_entity(s, e), "this element has no temperature DOF, so it cannot take a heat flux "
                               "or film condition; use a heat-transfer or coupled element type");
 }
+/// SNEG/SPOS/FNEG/FPOS name the sides of a shell.
+void require_shell_side(const BuildState& s, const FieldReader& r, ElemId e,
+                        const std::string& label) {
+  if (element_info(s.model.mesh.elem_types[e]).family != ElementFamily::Shell)
+    r.fail(elem_entity(s, e),
+           fmt::format("{} names a side of a heat-transfer shell (DS3, DS4, DS8); this element "
+                       "is not a shell, so give its face as {}n (n = face number)",
+                       label, label[0]));
+}
 void require_displacement(const BuildState& s, const FieldReader& r, ElemId e) {
   if (!element_info(s.model.mesh.elem_types[e]).displacement)
     r.fail(elem_entity(s, e),
@@ -404,6 +413,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
                            s.model.element_label(e), info.name));
       }
       if (info.family == ElementFamily::Shell) {
+        if (d.kind == DistLoadKind::Pressure) require_displacement(s, r, e); // not on DS3 …
         d.elem = e;
         loads.push_back(d);
         continue;
@@ -477,15 +487,20 @@ void handle_dflux(BuildState& s, const Keyword& kw) {
     d.loc = r.loc();
     if (label == "BF") {
       d.kind = DistLoadKind::BodyFlux;
+    } else if (label == "SNEG" || label == "SPOS") { // the sides of heat-transfer shells
+      d.kind = DistLoadKind::SurfaceFlux;
+      d.face = label == "SNEG" ? 1 : 2;
     } else if (const int face = face_of(label, "S"); face > 0) {
       d.kind = DistLoadKind::SurfaceFlux;
       d.face = face;
     } else {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "use BF (body flux) or Sn (surface flux on face n)");
+             "use BF (body flux), Sn (surface flux on face n) or, on heat-transfer shells, SNEG "
+             "or SPOS");
     }
     for (ElemId e : resolve_elements(s, r, 0)) {
       require_temperature(s, r, e);
+      if (label == "SNEG" || label == "SPOS") require_shell_side(s, r, e, label);
       if (d.face > 0) check_face(s, r, e, d.face, FaceUse::Thermal);
       d.elem = e;
       loads.push_back(d);
@@ -549,12 +564,15 @@ static void film(BuildState& s, const Keyword& kw, bool surface) {
       }
       return;
     }
-    d.face = face_of(label, "F");
+    const bool side = label == "FNEG" || label == "FPOS"; // the sides of heat-transfer shells
+    d.face = side ? (label == "FNEG" ? 1 : 2) : face_of(label, "F");
     if (d.face <= 0)
       r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "write the film label as Fn (n = face number)");
+             "write the film label as Fn (n = face number) or, on heat-transfer shells, FNEG or "
+             "FPOS");
     for (ElemId e : resolve_elements(s, r, 0)) {
       require_temperature(s, r, e);
+      if (side) require_shell_side(s, r, e, label);
       check_face(s, r, e, d.face, FaceUse::Thermal);
       d.elem = e;
       loads.push_back(d);

@@ -430,9 +430,11 @@ void read_shell_section(BuildState& s, const Keyword& kw, bool general) {
       r.fail("field 1 (thickness)",
              fmt::format("the shell thickness must be positive, not {}", sec.thickness));
     const long long n = general ? 3 : r.integer_or(1, 5, "number of integration points");
-    if (n < 3 || n % 2 == 0 || n > 15)
+    if (n < 1 || n % 2 == 0 || n > 15)
       r.fail("field 2 (integration points)",
-             fmt::format("Simpson's rule needs an odd number of points from 3 to 15, not {}", n));
+             fmt::format("Simpson's rule needs an odd number of points from 3 to 15 (1 for a "
+                         "heat-transfer shell without a gradient through its thickness), not {}",
+                         n));
     sec.n_points = static_cast<int>(n);
     extra_lines_warning(s, kw, 1);
   } catch (const InputError&) {

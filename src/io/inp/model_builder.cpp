@@ -292,7 +292,10 @@ int cell_faces(ElementType type) {
 int n_faces(ElementType type, FaceUse use) {
   const ElementTypeInfo& info = element_info(type);
   if (info.family == ElementFamily::Shell) // SNEG (1) and SPOS (2)
-    return use == FaceUse::Thermal && !info.temperature ? 0 : 2;
+    return (use == FaceUse::Thermal && !info.temperature) ||
+                   (use == FaceUse::Pressure && !info.displacement)
+               ? 0
+               : 2;
   const int pressure =
       info.family == ElementFamily::Continuum && info.displacement ? cell_faces(type) : 0;
   const int thermal = info.temperature && info.family != ElementFamily::Gap ? cell_faces(type) : 0;

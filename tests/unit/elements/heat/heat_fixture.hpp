@@ -34,7 +34,8 @@ inline Shape shape_of(ElementType t) {
 inline std::vector<ElementType> heat_types(bool coupled) {
   std::vector<ElementType> out;
   for (const ElementTypeInfo& info : all_element_types())
-    if (info.temperature && info.family != ElementFamily::Gap && info.displacement == coupled)
+    if (info.temperature && info.family != ElementFamily::Gap &&
+        info.family != ElementFamily::Shell && info.displacement == coupled) // shells: own tests
       out.push_back(info.type);
   return out;
 }

@@ -237,7 +237,8 @@ TEST(ShellInput, BadSectionsAndLoadsAreErrors) {
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n-0.1\n"),
                      "the shell thickness must be positive, not -0.1");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n0.1, 4\n"),
-                     "Simpson's rule needs an odd number of points from 3 to 15, not 4");
+                     "Simpson's rule needs an odd number of points from 3 to 15 (1 for a "
+                     "heat-transfer shell without a gradient through its thickness), not 4");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M\n"), "the data line is missing");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M, COMPOSITE\n0.1\n"), "COMPOSITE");
   expect_input_error(deck("*SHELL SECTION, ELSET=S, MATERIAL=M, OFFSET=TOP\n0.1\n"),
