@@ -1,5 +1,6 @@
 #include "elements/element_kernel.hpp"
 #include "elements/heat/heat_shell.hpp"
+#include "elements/structural/coupled_shell.hpp"
 #include "model/model.hpp"
 
 #include <fmt/format.h>
@@ -23,7 +24,8 @@ std::string_view contact_status_name(ContactStatus s) {
 std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
   switch (element_info(ctx.type).family) {
   case ElementFamily::Shell:
-    if (!element_info(ctx.type).displacement) return make_heat_shell_kernel(ctx); // DS3, DS4, DS8
+    if (!element_info(ctx.type).displacement) return make_heat_shell_kernel(ctx);  // DS3, DS4, DS8
+    if (element_info(ctx.type).temperature) return make_coupled_shell_kernel(ctx); // S4RT, …
     return make_structural_kernel(ctx);
   case ElementFamily::Spring:
   case ElementFamily::Truss:

@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 91> kInfo = {{
+constexpr std::array<ElementTypeInfo, 95> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -150,6 +150,10 @@ constexpr std::array<ElementTypeInfo, 91> kInfo = {{
     {ElementType::DS3, "DS3", 3, F::Shell, S::ThreeD, P::None, false, true, Shape::Tri3},
     {ElementType::DS4, "DS4", 4, F::Shell, S::ThreeD, P::None, false, true, Shape::Quad4},
     {ElementType::DS8, "DS8", 8, F::Shell, S::ThreeD, P::None, false, true, Shape::Quad8},
+    {ElementType::S3RT, "S3RT", 3, F::Shell, S::ThreeD, P::None, true, true, Shape::Tri3},
+    {ElementType::S4T, "S4T", 4, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad4},
+    {ElementType::S4RT, "S4RT", 4, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad4},
+    {ElementType::S8RT, "S8RT", 8, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad8},
 }};
 } // namespace
 

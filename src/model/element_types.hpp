@@ -112,6 +112,11 @@ enum class ElementType : std::uint8_t {
   DS3,
   DS4,
   DS8,
+  // coupled temperature-displacement shells (DOFs 1-6 and 11, 12, …)
+  S3RT,
+  S4T,
+  S4RT,
+  S8RT,
 };
 
 enum class ElementFamily : std::uint8_t {

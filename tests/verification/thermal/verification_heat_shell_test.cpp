@@ -251,6 +251,41 @@ TEST(HeatShellVerification, DatFileHasOneColumnPerTemperatureAndSurfaceLoadsWork
       << dat.substr(0, 3000);
 }
 
+// Coupled S4RT strip 1 x 0.1 (10 x 1 elements), t = 0.01, alpha = 1e-5, initial temperature 0;
+// its SNEG side held at 0 and its SPOS side at 100 (DOFs 11 and 13 of every node; 3 points), one
+// node held in all six DOFs and nothing else. Steady conduction gives T linear through the
+// thickness: mean 50 and gradient g = 1e4 along +n. A free plate under a linear temperature
+// through its thickness deforms without stress: membrane strain alpha * 50 in both directions and
+// the isotropic curvature kappa = alpha g = 0.1 that bends the hot SPOS side outwards, so from the
+// held node at the origin u1 = 5e-4 x, u2 = 5e-4 y and w = -kappa (x^2 + y^2) / 2 (toward -n = -z
+// for this node order). The stresses vanish.
+TEST(HeatShellVerification, CoupledPlateBendsFreelyUnderAThroughThicknessGradient) {
+  for (const std::string type : {"S4RT", "S8RT"}) {
+    std::string deck = plate(type == "S4RT" ? "DS4" : "DS8", 10, 1, 1.0, 0.1);
+    const auto at = deck.find("TYPE=DS");
+    deck.replace(at, 8, "TYPE=" + type);
+    deck += "*SHELL SECTION, ELSET=PLATE, MATERIAL=M\n0.01, 3\n"
+            "*MATERIAL, NAME=M\n*ELASTIC\n2.0e11, 0.3\n*EXPANSION\n1.0e-5\n*CONDUCTIVITY\n50.0\n"
+            "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1.0, 1.0\n"
+            "*BOUNDARY\n1, 1, 6\nNALL, 11, 11, 0.0\nNALL, 13, 13, 100.0\n"
+            "*EL PRINT\nS\n*END STEP\n";
+    const JobResult r = run_deck(deck);
+    ASSERT_EQ(r.exit_code, 0) << type << ": " << r.error;
+    const Frame& f = last_frame(r);
+    for (NodeId n = 0; n < r.model->mesh.n_nodes(); ++n) {
+      const Vec3& X = r.model->mesh.coords[n];
+      const Vec3& u = f.nodes.U[n];
+      EXPECT_NEAR(u[0], 5e-4 * X[0], 1e-8) << type << " node " << n;
+      EXPECT_NEAR(u[1], 5e-4 * X[1], 1e-8) << type << " node " << n;
+      EXPECT_NEAR(u[2], -0.05 * (X[0] * X[0] + X[1] * X[1]), 2e-5) << type << " node " << n;
+      EXPECT_NEAR(NTi(f, n, 1), 50.0, 1e-9);
+    }
+    const OutputBlock* s = f.element(4)->data.find(ElemVar::S);
+    ASSERT_NE(s, nullptr);
+    for (double v : s->values) EXPECT_NEAR(v, 0.0, 1e-3 * 2.0e11 * 1e-5 * 50.0) << type;
+  }
+}
+
 TEST(HeatShellVerification, InputErrors) {
   auto error_of = [](const std::string& deck) {
     const JobResult r = run_deck(deck);
