@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -283,6 +284,76 @@ TEST(HeatShellVerification, CoupledPlateBendsFreelyUnderAThroughThicknessGradien
     const OutputBlock* s = f.element(4)->data.find(ElemVar::S);
     ASSERT_NE(s, nullptr);
     for (double v : s->values) EXPECT_NEAR(v, 0.0, 1e-3 * 2.0e11 * 1e-5 * 50.0) << type;
+  }
+}
+
+// A DS4 plate (1 x 1, t = 0.02, k = 5, 3 points) on four DGAP elements (area 0.25 each, gap
+// conductance 1000 per area) to ground nodes held at 0, its SPOS side held at 100. Every node is
+// alike, so the field is uniform along the plate and each node is a 1-D series of the shell's
+// thickness and its gap: q = 100 / (t / k + 1 / k_g) = 100 / 0.005 = 20000 per area, T(SNEG) = q /
+// k_g = 20 (the DGAP acts on the shell's DOF 11), the middle point 60, and every gap carries
+// q 0.25 = 5000 from the shell to the ground.
+TEST(HeatShellVerification, ShellOnThermalGapsConductsInSeries) {
+  const std::string deck = "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, 1, 0\n4, 0, 1, 0\n"
+                           "11, 0, 0, -0.1\n12, 1, 0, -0.1\n13, 1, 1, -0.1\n14, 0, 1, -0.1\n"
+                           "*NSET, NSET=GROUND\n11, 12, 13, 14\n*NSET, NSET=SKIN\n1, 2, 3, 4\n"
+                           "*ELEMENT, TYPE=DS4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
+                           "*ELEMENT, TYPE=DGAP, ELSET=G\n21, 11, 1\n22, 12, 2\n23, 13, 3\n"
+                           "24, 14, 4\n*GAP, ELSET=G\n0., , , , 0.25\n"
+                           "*GAP CONDUCTANCE\n1000., 0.\n1000., 1.\n"
+                           "*SHELL SECTION, ELSET=PLATE, MATERIAL=M\n0.02, 3\n"
+                           "*MATERIAL, NAME=M\n*CONDUCTIVITY\n5.0\n"
+                           "*STEP\n*HEAT TRANSFER, STEADY STATE\n1.0, 1.0\n"
+                           "*BOUNDARY\nGROUND, 11, 11, 0.0\nSKIN, 13, 13, 100.0\n"
+                           "*EL PRINT, ELSET=G\nHFL\n*END STEP\n";
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  for (Label n : {1, 2, 3, 4}) {
+    EXPECT_NEAR(NTk(r, f, n, 0), 20.0, 1e-9);
+    EXPECT_NEAR(NTk(r, f, n, 1), 60.0, 1e-9);
+  }
+  for (Label g : {21, 22, 23, 24}) {
+    const ElementResult* e = f.element(r.model->mesh.find_element(g));
+    ASSERT_TRUE(e && e->data.gap);
+    EXPECT_NEAR(std::abs(e->data.gap->heat_flow), 5000.0, 1e-7) << g;
+  }
+  double sum = 0.0;
+  for (Label n : {11, 12, 13, 14}) sum += f.nodes.RFL[r.model->mesh.find_node(n)];
+  EXPECT_NEAR(sum, -20000.0, 1e-6);
+}
+
+// Transient conduction through the thickness: a DS4 wall of thickness L = 0.02 (k = 50, rho c =
+// 4e6, diffusivity a = 1.25e-5), initially at 0, its SNEG side held at 100 from t = 0 and its SPOS
+// side insulated. The slab solution (separation of variables, x from the held side):
+//   T(x, t) = 100 [1 - sum_n 4 / ((2n+1) pi) sin((2n+1) pi x / (2L)) exp(-(2n+1)^2 pi^2 a t /
+//   (4L^2))]
+// At t = 8 s (a t / L^2 = 0.25) the insulated side is at 100 (1 - 4/pi e^{-pi^2/16} + 4/(3 pi)
+// e^{-9 pi^2/16} - ...) = 31.45;
+// the shell with 9 points and 0.05 s increments (backward Euler) is within 1 % of it, and so is its
+// middle point.
+TEST(HeatShellVerification, TransientConductionThroughTheThicknessMatchesTheSlabSolution) {
+  const std::string deck = plate("DS4", 1, 1, 1.0, 1.0) +
+                           "*SHELL SECTION, ELSET=PLATE, MATERIAL=M\n0.02, 9\n" + kMaterial +
+                           "*AMPLITUDE, NAME=ON\n0., 1., 100., 1.\n"
+                           "*STEP, INC=1000\n*HEAT TRANSFER\n0.05, 8.0\n"
+                           "*BOUNDARY, AMPLITUDE=ON\nNALL, 11, 11, 100.0\n*END STEP\n";
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const Frame& f = last_frame(r);
+  const double a = 50.0 / (8000.0 * 500.0), L = 0.02, t = 8.0;
+  auto exact = [&](double x) {
+    double s = 0.0;
+    for (int n = 0; n < 50; ++n) {
+      const double m = (2 * n + 1) * std::numbers::pi;
+      s += 4.0 / m * std::sin(m * x / (2.0 * L)) * std::exp(-m * m * a * t / (4.0 * L * L));
+    }
+    return 100.0 * (1.0 - s);
+  };
+  EXPECT_NEAR(exact(L), 31.45, 0.01); // the closed form itself
+  for (Label n : {1, 2, 3, 4}) {
+    EXPECT_NEAR(NTk(r, f, n, 8), exact(L), 0.01 * exact(L));
+    EXPECT_NEAR(NTk(r, f, n, 4), exact(0.5 * L), 0.01 * exact(0.5 * L));
   }
 }
 
