@@ -36,7 +36,7 @@ out.append(", ".join(str(201 + k) for k in range(len(rests))))
 out.append("*ELEMENT, TYPE=GAPCYL, ELSET=GUIDES")
 for k, x in enumerate(guides):
     out.append(f"{301 + k}, {node_at(x)}, {ground[x]}")
-out += ["*GAP, ELSET=GUIDES", "0.003, 1., 0., 0.",
+out += ["*GAP, ELSET=GUIDES", "0.003, 1., 0., 0., 0.02",  # guide shoes of 0.02 m^2: S11 is the pressure
         "*BOUNDARY", "1, ENCASTRE", "GROUND, 1, 3",
         "*INITIAL CONDITIONS, TYPE=TEMPERATURE", "PIPE, 20.",
         "*STEP, NAME=WEIGHT", "*STATIC", "*DLOAD", "LINE, GRAV, 9.81, 0., 0., -1.",

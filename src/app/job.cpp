@@ -40,7 +40,18 @@ NodeId JobResult::node(const Model& model, Label label) {
   return model.mesh.find_node(label);
 }
 
-JobResult run_job(const JobOptions& options) {
+/// `gapfem job` (no extension, the `abaqus job=job` / `ccx -i job` habit) reads job.inp.
+static std::filesystem::path resolve_deck(const std::filesystem::path& deck) {
+  std::error_code ec;
+  if (deck.has_extension() || std::filesystem::exists(deck, ec)) return deck;
+  std::filesystem::path inp = deck;
+  inp += ".inp";
+  return std::filesystem::exists(inp, ec) ? inp : deck;
+}
+
+JobResult run_job(const JobOptions& given) {
+  JobOptions options = given;
+  options.deck = resolve_deck(given.deck);
   JobResult result;
   Stopwatch watch;
   const std::string job =

@@ -38,11 +38,14 @@ void StaWriter::increment(const IncrementInfo& info) {
   if (!_out.is_open()) return;
   const int severe = std::max(0, info.severe_discontinuities);
   const int equil = std::max(0, info.iterations - severe);
+  // like Abaqus, a rejected attempt shows the times reached so far (the last converged
+  // increment's), with the increment it tried in the last column: time never runs backwards
+  const double back = info.converged ? 0.0 : info.dt;
   fmt::format_to(std::back_inserter(_out.buffer()),
                  "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}\n", info.step, info.increment,
                  info.attempts, attempt_marker(info), severe, equil, info.iterations,
-                 fmt::format("{:.5G}", info.total_time), fmt::format("{:.5G}", info.step_time),
-                 fmt::format("{:.5G}", info.dt));
+                 fmt::format("{:.5G}", info.total_time - back),
+                 fmt::format("{:.5G}", info.step_time - back), fmt::format("{:.5G}", info.dt));
   _out.flush();
 }
 

@@ -2,10 +2,9 @@
 // writes, --ignore-unknown, and the sentences users see.
 #include "test_util.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <sstream>
 
 using namespace gapfem::test;
@@ -19,8 +18,8 @@ struct CliRun {
 
 CliRun run_cli(const std::filesystem::path& deck, const std::string& args = "") {
   const auto log = deck.parent_path() / "cli.log";
-  const std::string cmd = std::string("'") + GAPFEM_EXE + "' " + args + " '" + deck.string() + "' > '" +
-                          log.string() + "' 2>&1";
+  const std::string cmd = std::string("'") + GAPFEM_EXE + "' " + args + " '" + deck.string() +
+                          "' > '" + log.string() + "' 2>&1";
   const int rc = std::system(cmd.c_str());
   CliRun r;
   r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
@@ -67,6 +66,19 @@ TEST(Cli, SuccessWritesAllResultFiles) {
   for (const char* ext : {".dat", ".sta", ".results.json", ".pvd"})
     EXPECT_TRUE(std::filesystem::exists(deck.parent_path() / (std::string("good") + ext))) << ext;
   EXPECT_NE(r.output.find("Analysis completed"), std::string::npos) << r.output;
+}
+
+// `gapfem good` (no extension, as `abaqus job=good` or `ccx -i good`) runs good.inp; a name that
+// is neither a file nor one with .inp added is an error naming it.
+TEST(Cli, DeckWithoutExtensionReadsTheInpFile) {
+  const auto deck = write_deck(kGood, "good");
+  std::filesystem::remove(deck.parent_path() / "good.dat");
+  const CliRun r = run_cli(deck.parent_path() / "good");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(deck.parent_path() / "good.dat"));
+  const CliRun missing = run_cli(deck.parent_path() / "nosuchjob");
+  EXPECT_EQ(missing.status, 1) << missing.output;
+  EXPECT_NE(missing.output.find("nosuchjob"), std::string::npos) << missing.output;
 }
 
 TEST(Cli, InputErrorExitsWithOneBeforeSolving) {

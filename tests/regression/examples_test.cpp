@@ -23,7 +23,10 @@ JobResult run_example(const std::string& dir, const std::string& deck) {
   o.deck = std::filesystem::path(GAPFEM_SOURCE_DIR) / "examples" / dir / deck;
   o.write_files = false;
   o.quiet = true;
-  return run_job(o);
+  JobResult r = run_job(o);
+  // examples run clean: a newcomer's first run shows no warning
+  EXPECT_TRUE(r.run.warnings.empty()) << dir << ": " << r.run.warnings.front();
+  return r;
 }
 
 double NT(const JobResult& r, const Frame& f, Label n) {

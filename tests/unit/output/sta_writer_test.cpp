@@ -23,8 +23,9 @@ TEST(OutputSta, LinesPerAttemptAndCompletion) {
   // Columns: STEP(4) INC(6) ATT(4) flag(1) SEVERE(5) EQUIL(6) TOTAL(6), two
   // blanks, then total time, step time (11 wide, left-aligned) and increment.
   // The first attempt of increment 1 was cut back: 8 iterations of which 1
-  // severe discontinuity iteration -> EQUIL 7.
-  EXPECT_EQ(lines[5], "   1     1   1U    1     7     8  0.5        0.5        0.5");
+  // severe discontinuity iteration -> EQUIL 7. Like Abaqus, its times are those reached before
+  // it (0), with the increment it tried in the last column.
+  EXPECT_EQ(lines[5], "   1     1   1U    1     7     8  0          0          0.5");
   EXPECT_EQ(lines[6], "   1     1   2     1     2     3  0.5        0.5        0.5");
   EXPECT_EQ(lines[7], "   1     2   1     1     2     3  1          1          0.5");
   EXPECT_EQ(lines.back(), " THE ANALYSIS HAS COMPLETED SUCCESSFULLY");
@@ -58,9 +59,31 @@ TEST(OutputSta, DeltmxRepeatHasItsOwnMarker) {
   w.increment(inc_info(1, 2, false, 0.25));
   const auto lines = read_lines(dir / "wt.sta");
   ASSERT_EQ(lines.size(), 7u);
-  EXPECT_EQ(lines[5], "   1     1   1D    1     2     3  0.5        0.5        0.5");
+  EXPECT_EQ(lines[5], "   1     1   1D    1     2     3  0          0          0.5");
   EXPECT_EQ(lines[6].substr(0, 15), "   1     1   2U");
   EXPECT_EQ(StaWriter::attempt_marker(inc_info(1, 1, true, 0.5)), ' ');
+}
+
+// The times of a rejected attempt are the last converged ones: the total time column never runs
+// backwards (a cut-back after increment 1 at 0.25 tried 0.25 + 0.5 and then 0.25 + 0.125).
+TEST(OutputSta, RejectedAttemptsKeepTheLastConvergedTime) {
+  const Model m = make_model();
+  const auto dir = fresh_dir();
+  StaWriter w(dir / "wt.sta");
+  w.begin(m);
+  w.begin_step(m, 0);
+  auto info = [](int inc, int att, bool ok, double t, double dt) {
+    IncrementInfo i = inc_info(inc, att, ok, t);
+    i.dt = dt;
+    return i;
+  };
+  w.increment(info(1, 1, true, 0.25, 0.25));
+  w.increment(info(2, 1, false, 0.75, 0.5));
+  w.increment(info(2, 2, true, 0.375, 0.125));
+  const auto lines = read_lines(dir / "wt.sta");
+  ASSERT_EQ(lines.size(), 8u);
+  EXPECT_EQ(lines[6], "   1     2   1U    1     7     8  0.25       0.25       0.5");
+  EXPECT_EQ(lines[7], "   1     2   2     1     2     3  0.375      0.375      0.125");
 }
 
 TEST(OutputSta, FailedRun) {
