@@ -64,6 +64,8 @@ struct Analysis::Impl {
   LoadHistory history;
   RunStatistics stats;
   std::vector<StepSummary> summaries;
+  /// warnings found while solving (they join the deck's in every results file and the summary)
+  std::vector<std::string> solver_warnings;
   Stopwatch watch;
   bool has_temperature_dofs = false;
   AnalysisOptions options;
@@ -140,6 +142,7 @@ RunSummary Analysis::run() {
   run.wall_seconds = m.watch.seconds();
   run.stats = m.stats;
   run.warnings = m.model.warnings;
+  run.warnings.insert(run.warnings.end(), m.solver_warnings.begin(), m.solver_warnings.end());
   run.peak_memory_kb = peak_memory_kb();
   for (auto* w : m.writers) w->end(m.model, run);
   if (!run.completed) throw AnalysisError(run.failure);
@@ -186,6 +189,7 @@ void Analysis::Impl::to_local_systems(NodeResults& nr) const {
 StepSummary Analysis::Impl::run_step(int index) {
   const Step& step = model.steps[index];
   StepLoads loads(model, disc, index, history, st.u_start, st.total_time);
+  solver_warnings.insert(solver_warnings.end(), loads.warnings().begin(), loads.warnings().end());
   disc.set_equations(loads.equations(), loads.local_bcs());
   std::shared_ptr<const SparsityPattern> pattern;
   {
@@ -409,10 +413,11 @@ StepSummary Analysis::Impl::run_step(int index) {
     sum.checks.allsd = st.allsd;
     sum.checks.allie = st.allie;
     if (stab->allsdtol > 0 && st.allie > 0 && st.allsd > stab->allsdtol * st.allie)
-      log::warning("step {}: the stabilization dissipated {:.3g} of the internal energy "
-                   "(ALLSD {:.4g}, ALLIE {:.4g}), more than ALLSDTOL {:.3g}; check that the "
-                   "damping does not change the answer",
-                   step.number, st.allsd / st.allie, st.allsd, st.allie, stab->allsdtol);
+      solver_warnings.push_back(
+          fmt::format("step {}: the stabilization dissipated {:.3g} of the internal energy "
+                      "(ALLSD {:.4g}, ALLIE {:.4g}), more than ALLSDTOL {:.3g}; check that the "
+                      "damping does not change the answer",
+                      step.number, st.allsd / st.allie, st.allsd, st.allie, stab->allsdtol));
   }
   carried_stabilization = stab && stab->carry ? *stab : Stabilization{};
   carried_factor = stab ? prob.stabilization_factor() : 0.0;

@@ -94,7 +94,7 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
         thermal ? " (stress/displacement elements such as C3D20R carry no temperature DOF: use the "
                   "coupled types, e.g. C3D20RT, for heat conduction in the body, as in Abaqus)"
                 : "");
-    log::warning("{}", msg);
+    _warnings.push_back(msg);
   }
   _eqmap = EquationMap::build(_prescribed);
 

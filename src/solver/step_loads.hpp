@@ -11,6 +11,7 @@
 #include "fem/dof_map.hpp"
 
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -42,6 +43,8 @@ class StepLoads {
             double step_start_total_time);
 
   const EquationMap& equations() const { return _eqmap; }
+  /// Warnings found while resolving the step's loads (reported with the run's warnings).
+  const std::vector<std::string>& warnings() const { return _warnings; }
   std::span<const std::uint8_t> prescribed() const { return _prescribed; }
   double period() const { return _period; }
 
@@ -86,6 +89,7 @@ class StepLoads {
   double _step_start = 0.0;
   EquationMap _eqmap;
   std::vector<std::uint8_t> _prescribed;
+  std::vector<std::string> _warnings;
   std::vector<std::pair<LocalIndex, Scalar>> _bc;
   struct NodalEntry {
     LocalIndex slot;

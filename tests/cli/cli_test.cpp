@@ -81,6 +81,30 @@ TEST(Cli, DeckWithoutExtensionReadsTheInpFile) {
   EXPECT_NE(missing.output.find("nosuchjob"), std::string::npos) << missing.output;
 }
 
+// A warning found while solving (a boundary condition on DOF 11 of a node that has only
+// displacements) is a warning like the deck's: in job.dat, in the JSON and in the terminal's
+// count, and silent with -q.
+TEST(Cli, SolverWarningsReachEveryResultsFileAndObeyQuiet) {
+  std::string deck = kGood;
+  deck.replace(deck.find("*STATIC\n"), 8, "*STATIC\n*BOUNDARY\n10, 11, 11, 5.\n");
+  const auto path = write_deck(deck, "warned");
+  const CliRun loud = run_cli(path);
+  EXPECT_EQ(loud.status, 0) << loud.output;
+  EXPECT_NE(loud.output.find("1 warning(s)"), std::string::npos) << loud.output;
+  EXPECT_NE(loud.output.find("refer to DOFs that no element at the node has"), std::string::npos);
+  auto text = [&](const char* ext) {
+    std::ifstream in(path.parent_path() / (std::string("warned") + ext));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  EXPECT_NE(text(".dat").find("refer to DOFs that no element"), std::string::npos);
+  EXPECT_NE(text(".results.json").find("refer to DOFs that no element"), std::string::npos);
+  const CliRun quiet = run_cli(path, "-q");
+  EXPECT_EQ(quiet.status, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("refer to DOFs"), std::string::npos) << quiet.output;
+}
+
 TEST(Cli, InputErrorExitsWithOneBeforeSolving) {
   std::string text = kGood;
   text.replace(text.find("101, 10, 12"), 11, "101, 10, 99");
