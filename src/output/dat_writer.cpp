@@ -31,7 +31,8 @@ struct NodeColumns {
   std::array<std::string_view, kMaxTemperaturePoints> names{};
   std::array<int, kMaxTemperaturePoints> comp{};
   int n = 0;
-  enum class Carrier { Displacement, Rotation, Temperature } carrier = Carrier::Displacement;
+  /// Temperature: NT (a DOF or the predefined field); Flux: RFL, CFL (temperature DOFs only)
+  enum class Carrier { Displacement, Rotation, Temperature, Flux } carrier = Carrier::Displacement;
 };
 
 /// "NT11" … "NT25" (and RFL, CFL): one column per temperature DOF.
@@ -77,7 +78,7 @@ NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) 
     c.more = &more;
     c.n = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
     for (int k = 0; k < c.n; ++k) c.names[k] = names.text[k];
-    c.carrier = NodeColumns::Carrier::Temperature;
+    c.carrier = nm == "NT" ? NodeColumns::Carrier::Temperature : NodeColumns::Carrier::Flux;
   };
   switch (var) {
   case NodeVar::U:
@@ -119,6 +120,8 @@ bool carries(const NodeResults& r, NodeId n, NodeColumns::Carrier carrier) {
   case NodeColumns::Carrier::Rotation:
     return f.rotation;
   case NodeColumns::Carrier::Temperature:
+    return f.nt;
+  case NodeColumns::Carrier::Flux:
     return f.temperature;
   }
   return false;

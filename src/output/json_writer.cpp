@@ -236,8 +236,8 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
     }
     b.push_back(']');
   }
+  if (f.nt && idx < r.NT.size()) scalar("NT", r.NT[idx]);
   if (f.temperature) {
-    if (idx < r.NT.size()) scalar("NT", r.NT[idx]);
     if (idx < r.RFL.size()) scalar("RFL", r.RFL[idx]);
     if (idx < r.CFL.size() && r.CFL[idx] != 0.0) scalar("CFL", r.CFL[idx]);
     // heat-transfer shells: all temperatures through the thickness, DOF 11 (SNEG) first

@@ -205,11 +205,13 @@ NodeFields node_fields(const NodeResults& r, NodeId n) {
         (m & (dof_bit(DofType::U1) | dof_bit(DofType::U2) | dof_bit(DofType::U3))) != 0;
     f.rotation = (m & (dof_bit(DofType::UR1) | dof_bit(DofType::UR2) | dof_bit(DofType::UR3))) != 0;
     f.temperature = (m & kTemperatureBits) != 0;
+    f.nt = f.temperature || (static_cast<std::size_t>(n) < r.nt_field.size() && r.nt_field[n] != 0);
     return f;
   }
   f.displacement = r.any_displacement;
   f.rotation = r.any_rotation;
-  f.temperature = r.any_temperature;
+  f.temperature = r.any_temperature && r.nt_field.empty();
+  f.nt = r.any_temperature;
   return f;
 }
 

@@ -89,7 +89,8 @@ void append_json_array(fmt::memory_buffer& out, std::span<const double> values);
 struct NodeFields {
   bool displacement = false;
   bool rotation = false;
-  bool temperature = false;
+  bool temperature = false; ///< temperature DOFs (NT, RFL, CFL)
+  bool nt = false;          ///< a temperature: a DOF, or the predefined field of a stress analysis
 };
 NodeFields node_fields(const NodeResults& r, NodeId n);
 

@@ -37,8 +37,12 @@ struct NodeResults {
   /// Nodes with a *TRANSFORM: their vectors above are in the local system with these axes (rows
   /// e1, e2, e3), as Abaqus reports them; the VTU writer turns them back to global components.
   std::map<NodeId, std::array<double, 9>> local_axes;
+  /// Stress analyses with a predefined temperature field (*TEMPERATURE, *INITIAL CONDITIONS): NT
+  /// holds the field; nt_field[n] is 1 at the nodes of elements that read it (the only nodes that
+  /// report NT), and there is no RFL or CFL. Empty when the model solves for temperatures.
+  std::vector<std::uint8_t> nt_field;
   bool any_rotation = false;
-  bool any_temperature = false;
+  bool any_temperature = false; ///< temperature DOFs, or a predefined field (nt_field)
   bool any_displacement = false;
   /// Global components of a vector `v` given at `n`: Q^T v at a *TRANSFORM node, v elsewhere.
   Vec3 global(NodeId n, const Vec3& v) const {

@@ -255,7 +255,16 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   }();
   const int n_points = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
   std::vector<std::vector<double>> nt_more(static_cast<std::size_t>(n_points - 1));
-  if (r.any_temperature) {
+  // a predefined field (stress analysis) is NT at the nodes of the elements that read it and NaN
+  // elsewhere (ground nodes of gaps have no temperature); it has no RFL
+  std::vector<double> nt_field;
+  if (r.any_temperature && !r.nt_field.empty()) {
+    nt_field = r.NT;
+    for (std::size_t n = 0; n < nt_field.size() && n < r.nt_field.size(); ++n)
+      if (!r.nt_field[n]) nt_field[n] = std::numeric_limits<double>::quiet_NaN();
+    scalar_point("NT", nt_field);
+  }
+  if (r.any_temperature && r.nt_field.empty()) {
     scalar_point("NT", r.NT);
     scalar_point("RFL", r.RFL);
     for (int k = 1; k < n_points && r.NT_more.size() == nn * (n_points - 1); ++k) {

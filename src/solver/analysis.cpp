@@ -507,6 +507,11 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   if (!nr.any_temperature && disc.has_temperature_field()) {
     nr.NT = st.T_start;
     nr.any_temperature = true;
+    nr.nt_field.assign(static_cast<std::size_t>(nn), 0);
+    for (const auto& b : disc.blocks())
+      if (b.uses_temperature)
+        for (ElemId e : b.elements)
+          for (NodeId n : model.mesh.element_nodes(e)) nr.nt_field[n] = 1;
   }
 
   // Elements needed by the due requests (every element at the last frame).

@@ -371,5 +371,40 @@ TEST(OutputVtu, ShellsShowBothSides) {
   EXPECT_NE(json.find("\"E_SPOS\":["), std::string::npos);
 }
 
+// A predefined temperature (stress analysis): one rule everywhere. NT is reported at the nodes of
+// the elements that read the field (the truss) — in job.dat, the JSON and the VTU — and nowhere
+// else: the gap's ground node has no temperature (VTU NaN, no JSON key, no .dat row), and there is
+// no RFL (no temperature DOF).
+TEST(OutputVtu, PredefinedTemperatureIsReportedWhereElementsReadIt) {
+  const std::string deck =
+      "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 1, -0.1, 0\n"
+      "*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n*ELEMENT, TYPE=GAPUNI, ELSET=G\n2, 2, 3\n"
+      "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n0.01\n*MATERIAL, NAME=M\n*ELASTIC\n2e11, 0.3\n"
+      "*EXPANSION\n1e-5\n*GAP, ELSET=G\n0.5, 0., -1., 0.\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n"
+      "1, 20.\n2, 20.\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n3, 1, 3\n*STEP\n*STATIC\n*TEMPERATURE\n"
+      "1, 120.\n2, 120.\n*NODE PRINT\nNT\n*END STEP\n";
+  const JobResult r = test::run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_1.vtu");
+  ASSERT_EQ(v.arrays.count("NT"), 1u);
+  EXPECT_EQ(v.arrays.count("RFL"), 0u);
+  const auto nt = v.values<double>("NT");
+  ASSERT_EQ(nt.size(), 3u);
+  EXPECT_DOUBLE_EQ(nt[0], 120.0);
+  EXPECT_DOUBLE_EQ(nt[1], 120.0);
+  EXPECT_TRUE(std::isnan(nt[2]));
+  const std::string json = read_file(test::test_dir() / "job.results.json");
+  EXPECT_NE(json.find("\"1\":{\"U\":[0,0,0],\"RF\":"), std::string::npos) << json.substr(0, 800);
+  EXPECT_NE(json.find("\"NT\":120"), std::string::npos);
+  EXPECT_EQ(json.find("\"RFL\""), std::string::npos);
+  const auto n3 = json.find("\"3\":{");
+  ASSERT_NE(n3, std::string::npos);
+  EXPECT_EQ(json.substr(n3, json.find('}', n3) - n3).find("NT"), std::string::npos);
+  const std::string dat = read_file(test::test_dir() / "job.dat");
+  EXPECT_EQ(dat.find("NO NODE OF THIS SET CARRIES NT"), std::string::npos);
+  EXPECT_NE(dat.find("          2      1.2000E+02"), std::string::npos) << dat;
+  EXPECT_EQ(dat.find("          3      "), std::string::npos);
+}
+
 } // namespace
 } // namespace gapfem
