@@ -1,13 +1,45 @@
 // gapfem: run an Abaqus input deck.  Usage: gapfem [options] job.inp
+#include "app/check.hpp"
 #include "app/job.hpp"
 #include "common/log.hpp"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
+namespace {
+
+/// `gapfem check deck.inp`: validate and summarise without solving (Abaqus's datacheck).
+int check_main(int argc, char** argv) {
+  CLI::App app{"gapfem check: read and validate a deck, print a model summary, solve nothing"};
+  gapfem::JobOptions options;
+  std::string deck;
+  app.add_option("deck", deck, "Abaqus input deck (job.inp)")->required();
+  app.add_flag("--ignore-unknown", options.ignore_unknown,
+               "report unknown keywords and parameters as warnings instead of errors");
+  app.add_flag("-q,--quiet", options.quiet, "print errors only");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : gapfem::kExitInputError;
+  }
+  options.deck = deck;
+  try {
+    return gapfem::check_job(options).exit_code;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "gapfem: internal error: %s\n", e.what());
+    return gapfem::kExitInternal;
+  }
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"gapfem: nonlinear finite elements with Abaqus gap contact elements"};
+  if (argc >= 2 && std::strcmp(argv[1], "check") == 0) return check_main(argc - 1, argv + 1);
+  CLI::App app{"gapfem: nonlinear finite elements with Abaqus gap contact elements\n"
+               "  gapfem [options] job.inp   run the analysis\n"
+               "  gapfem check job.inp       validate the deck and summarise the model, no solve"};
   gapfem::JobOptions options;
   std::string deck;
   bool no_vtu = false;

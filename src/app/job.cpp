@@ -1,5 +1,6 @@
 #include "app/job.hpp"
 
+#include "app/check.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/inp/reader.hpp"
@@ -40,8 +41,7 @@ NodeId JobResult::node(const Model& model, Label label) {
   return model.mesh.find_node(label);
 }
 
-/// `gapfem job` (no extension, the `abaqus job=job` / `ccx -i job` habit) reads job.inp.
-static std::filesystem::path resolve_deck(const std::filesystem::path& deck) {
+std::filesystem::path resolve_deck(const std::filesystem::path& deck) {
   std::error_code ec;
   if (deck.has_extension() || std::filesystem::exists(deck, ec)) return deck;
   std::filesystem::path inp = deck;

@@ -90,8 +90,13 @@ class CholmodSolver final : public LinearSolver {
     return fmt::format("CHOLMOD {} failed (status {}) on {} equations", what, _c.status, _n);
   }
 
+  /// After analyze() CHOLMOD's prediction (supernodal: the value array it will fill; simplicial:
+  /// the predicted nnz(L)), after factorize() the factor's own size.
   std::size_t factor_bytes() const override {
-    return _L ? static_cast<std::size_t>(_L->xsize) * sizeof(double) : 0;
+    if (!_L) return 0;
+    const double entries = _L->is_super ? static_cast<double>(_L->xsize)
+                                        : std::max(static_cast<double>(_L->nzmax), _c.lnz);
+    return static_cast<std::size_t>(entries) * sizeof(double);
   }
 
  private:

@@ -87,6 +87,10 @@ struct Analysis::Impl {
   }
 
   StepSummary run_step(int index);
+  /// The sparsity pattern of a step's equations (elements and active constraint rows).
+  std::shared_ptr<const SparsityPattern> step_pattern(const StepLoads& loads);
+  /// Gap counts by type and status at the reference configuration (gapfem check).
+  void initial_gap_status(ModelCheck& c);
   /// Is the stiffness at the committed state (step time t0) non-singular? Used to tell a limit
   /// point or crushed element (singular only in the increment) from a missing support.
   bool supported_at_last_converged(StepProblem& prob, double t0);
@@ -186,23 +190,76 @@ void Analysis::Impl::to_local_systems(NodeResults& nr) const {
   }
 }
 
+std::shared_ptr<const SparsityPattern> Analysis::Impl::step_pattern(const StepLoads& loads) {
+  ScopedTimer t(&stats, TimeCategory::Assembly);
+  std::vector<std::span<const LocalIndex>> lists;
+  for (const auto& b : disc.blocks())
+    for (std::size_t i = 0; i < b.size(); ++i) lists.push_back(b.element_eqs(i));
+  // a constraint row couples its DOFs (the KKT augmentation C^T R C lies inside its block)
+  const ConstraintSet& cs = disc.constraints();
+  for (int r = 0; r < cs.n_rows(); ++r)
+    if (cs.active(r)) lists.push_back(cs.row_eqs(r));
+  return build_pattern(loads.equations().n_eq(), lists);
+}
+
+ModelCheck Analysis::check() {
+  Impl& m = *_impl;
+  ModelCheck c;
+  c.dofs = m.disc.dofs().n_slots();
+  for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
+    const Step& step = m.model.steps[i];
+    StepLoads loads(m.model, m.disc, i, m.history, m.st.u_start, m.st.total_time);
+    m.solver_warnings.insert(m.solver_warnings.end(), loads.warnings().begin(),
+                             loads.warnings().end());
+    m.disc.set_equations(loads.equations(), loads.local_bcs());
+    const auto pattern = m.step_pattern(loads);
+    auto cholmod = make_cholmod_solver();
+    cholmod->analyze(*pattern);
+    ModelCheck::StepInfo s;
+    s.number = step.number;
+    s.name = step.name;
+    s.procedure = std::string(procedure_name(step.procedure));
+    s.equations = loads.equations().n_eq();
+    const ConstraintSet& cs = m.disc.constraints();
+    for (int r = 0; r < cs.n_rows(); ++r) s.constraint_rows += cs.active(r) ? 1 : 0;
+    s.factor_bytes = cholmod->factor_bytes();
+    c.steps.push_back(s);
+    if (i == 0) m.initial_gap_status(c);
+  }
+  return c;
+}
+
+void Analysis::Impl::initial_gap_status(ModelCheck& c) {
+  // the gaps' own recovery at the reference configuration, before any load
+  const std::vector<double> T0 = st.T_initial;
+  const FieldView fields{st.u, st.u, T0, T0, T0};
+  StepContext ctx;
+  ctx.space = model.space;
+  ctx.model_size = model.model_size();
+  ctx.constants = &model.constants;
+  ElementRecovery rec;
+  for (ElemId e = 0; e < model.mesh.n_elements(); ++e) {
+    const auto& info = element_info(model.mesh.elem_types[e]);
+    if (info.family != ElementFamily::Gap) continue;
+    auto it = std::find_if(c.gaps.begin(), c.gaps.end(),
+                           [&](const ModelCheck::GapInfo& g) { return g.type == info.name; });
+    if (it == c.gaps.end()) it = c.gaps.insert(c.gaps.end(), {std::string(info.name)});
+    ++it->total;
+    rec.clear();
+    assembler.recover(e, fields, ctx, rec);
+    if (rec.gap && rec.gap->status != ContactStatus::Open)
+      ++it->closed;
+    else
+      ++it->open;
+  }
+}
+
 StepSummary Analysis::Impl::run_step(int index) {
   const Step& step = model.steps[index];
   StepLoads loads(model, disc, index, history, st.u_start, st.total_time);
   solver_warnings.insert(solver_warnings.end(), loads.warnings().begin(), loads.warnings().end());
   disc.set_equations(loads.equations(), loads.local_bcs());
-  std::shared_ptr<const SparsityPattern> pattern;
-  {
-    ScopedTimer t(&stats, TimeCategory::Assembly);
-    std::vector<std::span<const LocalIndex>> lists;
-    for (const auto& b : disc.blocks())
-      for (std::size_t i = 0; i < b.size(); ++i) lists.push_back(b.element_eqs(i));
-    // a constraint row couples its DOFs (the KKT augmentation C^T R C lies inside its block)
-    const ConstraintSet& cs = disc.constraints();
-    for (int r = 0; r < cs.n_rows(); ++r)
-      if (cs.active(r)) lists.push_back(cs.row_eqs(r));
-    pattern = build_pattern(loads.equations().n_eq(), lists);
-  }
+  const std::shared_ptr<const SparsityPattern> pattern = step_pattern(loads);
   kkt.analyze(pattern);
 
   StepContext base;

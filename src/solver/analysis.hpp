@@ -7,6 +7,7 @@
 #include "output/results.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace gapfem {
@@ -18,6 +19,24 @@ struct AnalysisOptions {
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
 };
 
+/// What `gapfem check` reports: the model as the analysis sees it before solving.
+struct ModelCheck {
+  struct StepInfo {
+    int number = 0;
+    std::string name, procedure;
+    LocalIndex equations = 0;
+    int constraint_rows = 0; ///< active linear-constraint rows (*EQUATION, ties, couplings …)
+    std::size_t factor_bytes = 0; ///< CHOLMOD's symbolic estimate of the factor of K
+  };
+  struct GapInfo {
+    std::string type;
+    int total = 0, open = 0, closed = 0; ///< status of the reference configuration
+  };
+  std::vector<StepInfo> steps;
+  std::vector<GapInfo> gaps;
+  LocalIndex dofs = 0; ///< active nodal DOFs
+};
+
 class Analysis {
  public:
   Analysis(const Model& model, std::vector<ResultWriter*> writers, AnalysisOptions options = {});
@@ -26,6 +45,9 @@ class Analysis {
   /// (after the writers received the last converged state and the failed step's summary).
   RunSummary run();
   const std::vector<StepSummary>& step_summaries() const;
+  /// Everything up to solving (element checks, procedures, each step's loads, equations and
+  /// symbolic factorisation) without solving; throws InputError as run() would.
+  ModelCheck check();
 
  private:
   struct Impl;

@@ -105,6 +105,27 @@ TEST(Cli, SolverWarningsReachEveryResultsFileAndObeyQuiet) {
   EXPECT_EQ(quiet.output.find("refer to DOFs"), std::string::npos) << quiet.output;
 }
 
+// `gapfem check` validates without solving: a summary (elements by type, gaps with their status
+// at the start, each step's equations and factor size), exit 0, no results files; errors found
+// only when a step is set up (a load on a DOF no element has) still make it exit 1.
+TEST(Cli, CheckSummarisesWithoutSolving) {
+  const auto deck = write_deck(kGood, "checked");
+  const CliRun r = run_cli(deck, "check");
+  EXPECT_EQ(r.status, 0) << r.output;
+  for (const char* want : {"nodes 2, elements 2: GAPUNI 1, SPRING1 1",
+                           "gaps 1, status at the start: "
+                           "GAPUNI 1 (1 open, 0 closed)",
+                           "steps 1", "step 1 Step-1 (STATIC): 1 equations", "factor of K about",
+                           "nothing was solved"})
+    EXPECT_NE(r.output.find(want), std::string::npos) << want << "\n" << r.output;
+  EXPECT_FALSE(std::filesystem::exists(deck.parent_path() / "checked.dat"));
+  std::string bad = kGood;
+  bad.replace(bad.find("10, 2, -100."), 12, "10, 5, -100.");
+  const CliRun e = run_cli(write_deck(bad, "checkbad"), "check");
+  EXPECT_EQ(e.status, 1) << e.output;
+  EXPECT_NE(e.output.find("DOF 5"), std::string::npos) << e.output;
+}
+
 TEST(Cli, InputErrorExitsWithOneBeforeSolving) {
   std::string text = kGood;
   text.replace(text.find("101, 10, 12"), 11, "101, 10, 99");

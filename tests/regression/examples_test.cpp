@@ -2,6 +2,7 @@
 // (examples/<name>/<deck>.inp, located through GAPFEM_SOURCE_DIR, no files written) and the numbers
 // its README quotes are checked, together with a closed form or a conservation law wherever one
 // exists, so that the tests fail when the physics breaks and not only when a digit changes.
+#include "app/check.hpp"
 #include "test_util.hpp"
 
 #include <algorithm>
@@ -42,6 +43,24 @@ double friction_magnitude(const GapRecord& g) {
 // examples/01_pipe_on_supports: B31 pipe, 12 m, anchored at x = 0, GAPUNI rests at x = 3, 6 (2 mm
 // clearance), 9 and 12 m with mu = 0.3, GAPCYL guides at 3 and 9 m (3 mm). Step 1 weight, step 2
 // +150 K and a 2 kN lateral load at x = 7.5 m.
+// `gapfem check` passes on every example deck and names its steps.
+TEST(RegressionExamples, CheckPassesOnEveryExample) {
+  int decks = 0;
+  for (const auto& dir :
+       std::filesystem::directory_iterator(std::filesystem::path(GAPFEM_SOURCE_DIR) / "examples"))
+    for (const auto& f : std::filesystem::directory_iterator(dir.path()))
+      if (f.path().extension() == ".inp") {
+        JobOptions o;
+        o.deck = f.path();
+        o.quiet = true;
+        const CheckResult c = check_job(o);
+        EXPECT_EQ(c.exit_code, 0) << f.path() << ": " << c.error;
+        EXPECT_NE(c.summary.find("step 1"), std::string::npos) << c.summary;
+        ++decks;
+      }
+  EXPECT_GE(decks, 4);
+}
+
 TEST(RegressionExamples, PipeOnSupportsWeightFrictionAndGuides) {
   const JobResult r = run_example("01_pipe_on_supports", "pipe_on_supports.inp");
   ASSERT_EQ(r.exit_code, 0) << r.error;

@@ -1,0 +1,83 @@
+// gapfem check: validate a deck and summarise the model without solving (check.hpp).
+#include "app/check.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "io/inp/reader.hpp"
+#include "model/model.hpp"
+#include "solver/analysis.hpp"
+
+#include <fmt/format.h>
+#include <map>
+
+namespace gapfem {
+
+namespace {
+
+std::string size_text(std::size_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (b < 1024.0 * 1024.0) return fmt::format("{:.1f} KiB", b / 1024.0);
+  if (b < 1024.0 * 1024.0 * 1024.0) return fmt::format("{:.1f} MiB", b / (1024.0 * 1024.0));
+  return fmt::format("{:.2f} GiB", b / (1024.0 * 1024.0 * 1024.0));
+}
+
+std::string summary_of(const Model& model, const ModelCheck& c, const std::string& deck) {
+  std::string s = fmt::format("gapfem check: {}\n", deck);
+  std::map<std::string_view, int> by_type;
+  for (ElementType t : model.mesh.elem_types) ++by_type[element_info(t).name];
+  std::string types;
+  for (const auto& [name, n] : by_type)
+    types += fmt::format("{}{} {}", types.empty() ? "" : ", ", name, n);
+  s += fmt::format("  nodes {}, elements {}{}{}\n", model.mesh.n_nodes(), model.mesh.n_elements(),
+                   types.empty() ? "" : ": ", types);
+  s += fmt::format("  active nodal DOFs {}\n", c.dofs);
+  int gaps = 0;
+  for (const auto& g : c.gaps) gaps += g.total;
+  if (gaps > 0) {
+    s += fmt::format("  gaps {}, status at the start:", gaps);
+    for (const auto& g : c.gaps)
+      s += fmt::format(" {} {} ({} open, {} closed);", g.type, g.total, g.open, g.closed);
+    s.back() = '\n';
+  }
+  s += fmt::format("  steps {}\n", c.steps.size());
+  for (const auto& st : c.steps)
+    s += fmt::format("    step {}{} ({}): {} equations, {} constraint rows, factor of K about {} "
+                     "(CHOLMOD's symbolic analysis)\n",
+                     st.number, st.name.empty() ? "" : " " + st.name, st.procedure, st.equations,
+                     st.constraint_rows, size_text(st.factor_bytes));
+  if (!model.warnings.empty()) {
+    s += fmt::format("  {} warning(s):\n", model.warnings.size());
+    for (const auto& w : model.warnings) s += fmt::format("    {}\n", w);
+  }
+  s += "The deck is valid; nothing was solved.\n";
+  return s;
+}
+
+} // namespace
+
+CheckResult check_job(const JobOptions& given) {
+  JobOptions options = given;
+  options.deck = resolve_deck(given.deck);
+  CheckResult result;
+  try {
+    ReadOptions ro;
+    ro.ignore_unknown = options.ignore_unknown;
+    Model model = read_deck(options.deck, ro);
+    Analysis analysis(model, {});
+    const ModelCheck c = analysis.check();
+    result.summary = summary_of(model, c, options.deck.string());
+    if (!options.quiet)
+      log::info("{}", std::string_view(result.summary).substr(0, result.summary.size() - 1));
+  } catch (const InputError& e) {
+    result.exit_code = kExitInputError;
+    result.error = e.what();
+    log::error("{}", e.what());
+  } catch (const AnalysisError& e) { // e.g. a symbolic analysis CHOLMOD cannot do
+    result.exit_code = kExitNoConvergence;
+    result.error = e.what();
+    log::error("{}", e.what());
+  }
+  return result;
+}
+
+} // namespace gapfem
