@@ -220,9 +220,10 @@ class HeatShellKernel final : public ElementKernel {
         double kc = 0.0, dk = 0.0;
         _mat.conductivity(T, kc, dk);
         double* v = &b.values[static_cast<std::size_t>(3 * (q * _P + k))];
-        v[0] = -kc * dot3(gs, p.e1);
-        v[1] = -kc * dot3(gs, p.e2);
-        v[2] = -kc * thickness_gradient(p, in.u, k);
+        // + 0.0: a zero flux prints as 0, not -0
+        v[0] = -kc * dot3(gs, p.e1) + 0.0;
+        v[1] = -kc * dot3(gs, p.e2) + 0.0;
+        v[2] = -kc * thickness_gradient(p, in.u, k) + 0.0;
       }
     }
     out.blocks.push_back(std::move(b));
