@@ -4,6 +4,7 @@
 
 #include "elements/heat/heat_kernel.hpp"
 #include "elements/structural/shell_geometry.hpp"
+#include "elements/structural/shell_section.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -391,24 +392,11 @@ class HeatShellKernel final : public ElementKernel {
   std::array<double, kMaxPoints> _frac{};
 };
 
-const ShellSection& heat_shell_section(const KernelContext& ctx) {
-  const auto& list = ctx.model.shell_sections;
-  const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
-  if (ctx.property.kind != PropertyRef::Kind::Shell || ctx.property.index < 0 ||
-      ctx.property.index >= static_cast<int>(list.size()))
-    throw InputError(ctx.model.element_location(e),
-                     e >= 0 ? fmt::format("element {}", ctx.model.element_label(e)) : "",
-                     fmt::format("{} elements need a *SHELL SECTION; add *SHELL SECTION, "
-                                 "ELSET=..., MATERIAL=... for the element set that contains them",
-                                 element_info(ctx.type).name));
-  return list[ctx.property.index];
-}
-
 } // namespace
 
 std::unique_ptr<ElementKernel> make_heat_shell_kernel(const KernelContext& ctx) {
   const Model& model = ctx.model;
-  const ShellSection& sec = heat_shell_section(ctx);
+  const ShellSection& sec = shell::shell_section_of(ctx);
   const std::string entity = fmt::format("*SHELL SECTION, ELSET={}", sec.elset);
   if (sec.material < 0 || sec.material >= static_cast<int>(model.materials.size()))
     throw InputError(sec.loc, entity, "the *SHELL SECTION has no valid MATERIAL");
@@ -418,23 +406,7 @@ std::unique_ptr<ElementKernel> make_heat_shell_kernel(const KernelContext& ctx) 
                                  "thickness (DOFs 11-{}); give at most {} section points",
                                  kMaxTemperaturePoints, kMaxAbaqusDof, kMaxTemperaturePoints));
   HeatMaterial m = heat_material_for(ctx, model.materials[sec.material]);
-  const int nn = element_info(ctx.type).n_nodes;
-  std::vector<double> thickness;
-  thickness.reserve(ctx.elements.size() * static_cast<std::size_t>(nn));
-  for (ElemId e : ctx.elements)
-    for (NodeId node : model.mesh.element_nodes(e)) {
-      double t = sec.thickness;
-      if (sec.nodal_thickness) {
-        const auto& nt = model.nodal_thickness;
-        t = node < static_cast<NodeId>(nt.size()) ? nt[node] : 0.0;
-        if (!(t > 0.0))
-          throw InputError(sec.loc, entity,
-                           fmt::format("the section has NODAL THICKNESS but node {} of element {} "
-                                       "has no thickness; give it in *NODAL THICKNESS",
-                                       model.node_label(node), model.element_label(e)));
-      }
-      thickness.push_back(t);
-    }
+  std::vector<double> thickness = shell::block_thicknesses(ctx, sec);
   return std::make_unique<HeatShellKernel>(ctx.type, std::move(m), sec.n_points,
                                            std::move(thickness));
 }

@@ -6,6 +6,7 @@
 #include "elements/heat/heat_kernel.hpp"
 #include "elements/heat/heat_shell.hpp"
 #include "elements/structural/shell.hpp"
+#include "elements/structural/shell_section.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -292,27 +293,15 @@ std::unique_ptr<ElementKernel> make_coupled_shell_kernel(const KernelContext& ct
     throw InternalError("make_coupled_shell_kernel: not a coupled shell type");
   }
   const Model& model = ctx.model;
-  const ElemId e0 = ctx.elements.empty() ? -1 : ctx.elements[0];
-  if (ctx.property.kind != PropertyRef::Kind::Shell || ctx.property.index < 0 ||
-      ctx.property.index >= static_cast<int>(model.shell_sections.size()))
-    throw InputError(model.element_location(e0),
-                     e0 >= 0 ? fmt::format("element {}", model.element_label(e0)) : "",
-                     fmt::format("{} elements need a *SHELL SECTION; add *SHELL SECTION, "
-                                 "ELSET=..., MATERIAL=... for the element set that contains them",
-                                 element_info(ctx.type).name));
-  const ShellSection& sec = model.shell_sections[ctx.property.index];
+  const ShellSection& sec = shell::shell_section_of(ctx);
   if (sec.material >= 0 && sec.material < static_cast<int>(model.materials.size()))
     heat_material_for(ctx, model.materials[sec.material]); // names the coupled type in errors
   auto m = make_shell_kernel(KernelContext{model, mech, ctx.property, ctx.elements});
   auto h = make_heat_shell_kernel(KernelContext{model, heat, ctx.property, ctx.elements});
-  std::vector<double> thickness, initial;
+  std::vector<double> thickness = shell::block_thicknesses(ctx, sec), initial;
   bool any_initial = false;
   for (ElemId e : ctx.elements)
     for (NodeId node : model.mesh.element_nodes(e)) {
-      double t = sec.thickness;
-      if (sec.nodal_thickness) // make_shell_kernel checked that every node has one
-        t = model.nodal_thickness[node];
-      thickness.push_back(t);
       const double ti = node < static_cast<NodeId>(model.initial_temperature.size())
                             ? model.initial_temperature[node]
                             : 0.0;

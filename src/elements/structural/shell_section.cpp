@@ -18,19 +18,6 @@ inline constexpr std::array<std::string_view, 3> kShellE{"E11", "E22", "E12"};
 inline constexpr std::array<std::string_view, 8> kShellSF{"SF1", "SF2", "SF3", "SF4",
                                                           "SF5", "SM1", "SM2", "SM3"};
 
-const ShellSection& shell_section_of(const KernelContext& ctx) {
-  const auto& list = ctx.model.shell_sections;
-  const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
-  if (ctx.property.kind != PropertyRef::Kind::Shell || ctx.property.index < 0 ||
-      ctx.property.index >= static_cast<int>(list.size()))
-    throw InputError(ctx.model.element_location(e),
-                     e >= 0 ? fmt::format("element {}", ctx.model.element_label(e)) : "",
-                     fmt::format("{} elements need a *SHELL SECTION; add *SHELL SECTION, "
-                                 "ELSET=..., MATERIAL=... for the element set that contains them",
-                                 element_info(ctx.type).name));
-  return list[ctx.property.index];
-}
-
 /// Averaged unit normals at the nodes of all shell elements of the model (zero where none).
 std::vector<Vec3> averaged_normals(const Model& model) {
   std::vector<Vec3> sum(static_cast<std::size_t>(model.mesh.n_nodes()), Vec3{0.0, 0.0, 0.0});
@@ -53,6 +40,39 @@ std::vector<Vec3> averaged_normals(const Model& model) {
 }
 
 } // namespace
+
+const ShellSection& shell_section_of(const KernelContext& ctx) {
+  const auto& list = ctx.model.shell_sections;
+  const ElemId e = ctx.elements.empty() ? -1 : ctx.elements[0];
+  if (ctx.property.kind != PropertyRef::Kind::Shell || ctx.property.index < 0 ||
+      ctx.property.index >= static_cast<int>(list.size()))
+    throw InputError(ctx.model.element_location(e),
+                     e >= 0 ? fmt::format("element {}", ctx.model.element_label(e)) : "",
+                     fmt::format("{} elements need a *SHELL SECTION; add *SHELL SECTION, "
+                                 "ELSET=..., MATERIAL=... for the element set that contains them",
+                                 element_info(ctx.type).name));
+  return list[ctx.property.index];
+}
+
+std::vector<double> block_thicknesses(const KernelContext& ctx, const ShellSection& sec) {
+  const Model& model = ctx.model;
+  std::vector<double> thickness;
+  for (ElemId e : ctx.elements)
+    for (NodeId node : model.mesh.element_nodes(e)) {
+      double t = sec.thickness;
+      if (sec.nodal_thickness) {
+        const auto& nt = model.nodal_thickness;
+        t = node < static_cast<NodeId>(nt.size()) ? nt[node] : 0.0;
+        if (!(t > 0.0))
+          throw InputError(sec.loc, fmt::format("*SHELL SECTION, ELSET={}", sec.elset),
+                           fmt::format("the section has NODAL THICKNESS but node {} of element {} "
+                                       "has no thickness; give it in *NODAL THICKNESS",
+                                       model.node_label(node), model.element_label(e)));
+      }
+      thickness.push_back(t);
+    }
+  return thickness;
+}
 
 ShellData shell_data(const KernelContext& ctx) {
   const Model& model = ctx.model;
@@ -86,19 +106,9 @@ ShellData shell_data(const KernelContext& ctx) {
       const Vec3 own = element_normal_at_node(xs, static_cast<int>(a));
       const Vec3& mean = avg[nodes[a]];
       d.directors.push_back(dot(own, mean) >= cos20 ? mean : own);
-      double t = sec.thickness;
-      if (sec.nodal_thickness) {
-        const auto& nt = model.nodal_thickness;
-        t = nodes[a] < static_cast<NodeId>(nt.size()) ? nt[nodes[a]] : 0.0;
-        if (!(t > 0.0))
-          throw InputError(sec.loc, entity,
-                           fmt::format("the section has NODAL THICKNESS but node {} of element {} "
-                                       "has no thickness; give it in *NODAL THICKNESS",
-                                       model.node_label(nodes[a]), model.element_label(e)));
-      }
-      d.thickness.push_back(t);
     }
   }
+  d.thickness = block_thicknesses(ctx, sec);
   return d;
 }
 

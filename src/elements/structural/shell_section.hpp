@@ -31,6 +31,12 @@ struct ShellData {
 
 /// The block's data; InputError for wrong combinations (no *ELASTIC, missing nodal thickness).
 ShellData shell_data(const KernelContext& ctx);
+/// The *SHELL SECTION of a block of shells (stress, heat-transfer or coupled); InputError naming
+/// the element type when the block has none.
+const ShellSection& shell_section_of(const KernelContext& ctx);
+/// Thickness per element of the block, per node: the section's, or with NODAL THICKNESS the
+/// node's (InputError for a node without one).
+std::vector<double> block_thicknesses(const KernelContext& ctx, const ShellSection& sec);
 
 /// Elastic constants of an element at its temperature.
 struct SectionLaw {

@@ -19,27 +19,23 @@
 namespace gapfem::test {
 namespace {
 
+/// DOF 11 + k of node n from a DOF-11 vector and its "more" vector (NodeResults::NT_more …).
+double at_point(const Frame& f, const std::vector<double>& first, const std::vector<double>& more,
+                NodeId n, int k) {
+  if (k == 0) return first.at(n);
+  const auto P = static_cast<std::size_t>(f.nodes.temperature_points);
+  return more.at((P - 1) * static_cast<std::size_t>(n) + static_cast<std::size_t>(k - 1));
+}
 /// Temperature DOF 11 + k of a node (by index) in a frame.
 double NTi(const Frame& f, NodeId n, int k) {
-  if (k == 0) return f.nodes.NT.at(n);
-  const auto P = static_cast<std::size_t>(f.nodes.temperature_points);
-  return f.nodes.NT_more.at((P - 1) * static_cast<std::size_t>(n) +
-                            static_cast<std::size_t>(k - 1));
+  return at_point(f, f.nodes.NT, f.nodes.NT_more, n, k);
 }
-/// Temperature DOF 11 + k of a node (by label) in a frame.
+/// Temperature DOF 11 + k of a node (by label) in a frame, and its reaction flux.
 double NTk(const JobResult& r, const Frame& f, Label node, int k) {
-  const NodeId n = r.model->mesh.find_node(node);
-  if (k == 0) return f.nodes.NT.at(n);
-  const auto P = static_cast<std::size_t>(f.nodes.temperature_points);
-  return f.nodes.NT_more.at((P - 1) * static_cast<std::size_t>(n) +
-                            static_cast<std::size_t>(k - 1));
+  return NTi(f, r.model->mesh.find_node(node), k);
 }
 double RFLk(const JobResult& r, const Frame& f, Label node, int k) {
-  const NodeId n = r.model->mesh.find_node(node);
-  if (k == 0) return f.nodes.RFL.at(n);
-  const auto P = static_cast<std::size_t>(f.nodes.temperature_points);
-  return f.nodes.RFL_more.at((P - 1) * static_cast<std::size_t>(n) +
-                             static_cast<std::size_t>(k - 1));
+  return at_point(f, f.nodes.RFL, f.nodes.RFL_more, r.model->mesh.find_node(node), k);
 }
 
 /// An nx x ny grid of `type` (DS4 or DS8; DS3: each square cut in two) over [0, a] x [0, b] in
