@@ -63,6 +63,7 @@ CheckResult check_job(const JobOptions& given) {
     ReadOptions ro;
     ro.ignore_unknown = options.ignore_unknown;
     Model model = read_deck(options.deck, ro);
+    require_steps(model, options.deck);
     Analysis analysis(model, {});
     const ModelCheck c = analysis.check();
     result.summary = summary_of(model, c, options.deck.string());

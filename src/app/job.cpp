@@ -5,10 +5,12 @@
 #include "common/log.hpp"
 #include "io/inp/reader.hpp"
 #include "model/model.hpp"
+#include "output/output_file.hpp"
 #include "output/writers.hpp"
 #include "solver/analysis.hpp"
 
 #include <cstdlib>
+#include <cstring>
 #include <fmt/format.h>
 
 namespace gapfem {
@@ -49,6 +51,44 @@ std::filesystem::path resolve_deck(const std::filesystem::path& deck) {
   return std::filesystem::exists(inp, ec) ? inp : deck;
 }
 
+void require_steps(const Model& model, const std::filesystem::path& deck) {
+  if (!model.steps.empty()) return;
+  throw InputError(SourceLocation{deck.string(), 0, {}}, "",
+                   "the deck defines no *STEP, so there is nothing to analyse; add a step, e.g. "
+                   "*STEP / *STATIC / loads and boundary conditions / *END STEP");
+}
+
+void prepare_output(const std::filesystem::path& dir, const std::string& job) {
+  namespace fs = std::filesystem;
+  if (job.empty() || job == "." || job == ".." || job.find_first_of("/\\") != std::string::npos)
+    throw InputError(SourceLocation{}, fmt::format("job name '{}'", job),
+                     "a job name is a file name without a directory (job.dat, job.sta, ... are "
+                     "written into the output directory); choose the directory with -o");
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
+                     "it exists and is not a directory; choose another with -o");
+  fs::create_directories(dir, ec);
+  if (ec)
+    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
+                     fmt::format("cannot create it: {}; choose another with -o", ec.message()));
+  // Probe before solving: a read-only or full directory is reported now, not after the analysis.
+  const fs::path probe = dir / fmt::format(".{}.write-test", job);
+  output::OutputFile f;
+  try {
+    f.open(probe);
+    f.write("gapfem\n");
+    f.close();
+  } catch (const AnalysisError&) {
+    fs::remove(probe, ec);
+    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
+                     fmt::format("cannot write into it: {}; free space there or choose another "
+                                 "directory with -o",
+                                 std::strerror(f.error_number())));
+  }
+  fs::remove(probe, ec);
+}
+
 JobResult run_job(const JobOptions& given) {
   JobOptions options = given;
   options.deck = resolve_deck(given.deck);
@@ -73,6 +113,8 @@ JobResult run_job(const JobOptions& given) {
     ro.ignore_unknown = options.ignore_unknown;
     model = std::make_shared<Model>(read_deck(options.deck, ro));
     model->job_name = job;
+    require_steps(*model, options.deck);
+    if (options.write_files) prepare_output(dir, job);
   } catch (const InputError& e) {
     result.exit_code = kExitInputError;
     result.error = e.what();

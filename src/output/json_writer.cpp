@@ -24,16 +24,9 @@ std::string_view space_key(ModelSpace s) {
   return "3D";
 }
 
-void key(fmt::memory_buffer& b, std::string_view k) {
-  b.push_back('"');
-  b.append(k);
-  b.append(std::string_view("\":"));
-}
-
+void key(fmt::memory_buffer& b, std::string_view k) { output::append_json_key(b, k); }
 void number_field(fmt::memory_buffer& b, std::string_view k, double v) {
-  b.push_back(',');
-  key(b, k);
-  append_json_number(b, v);
+  output::append_json_field(b, k, v);
 }
 
 /// Writes a comma before every field but the first of an object.
@@ -60,17 +53,6 @@ bool nonzero(const Vec3& v) {
   return v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0;
 }
 
-/// An element key as JSON: null for none, the number of a flat deck, the string "INSTANCE.n" of a
-/// part instance.
-void label_or_null(fmt::memory_buffer& b, const Model& model, Label l) {
-  if (l == 0)
-    b.append(std::string_view("null"));
-  else if (key_instance(l) == 0)
-    fmt::format_to(fmt::appender(b), "{}", l);
-  else
-    append_json_string(b, model.label_of_key(l).str());
-}
-
 } // namespace
 
 JsonWriter::JsonWriter(std::filesystem::path path, std::string job)
@@ -78,7 +60,11 @@ JsonWriter::JsonWriter(std::filesystem::path path, std::string job)
 
 void JsonWriter::begin(const Model& model) {
   _model = &model;
-  _out.open(_path);
+  _watch = Stopwatch();
+  _failed = false;
+  _has_last = false;
+  _seen = RunStatistics{};
+  _out.open(part_path());
   auto& b = _out.buffer();
   b.append(std::string_view("{\"schema\":\"gapfem.results/1\",\"job\":"));
   append_json_string(b, _job.empty() ? model.job_name : _job);
@@ -102,7 +88,7 @@ void JsonWriter::begin(const Model& model) {
   _node_mark.assign(model.mesh.n_nodes(), 0);
   _elem_mark.assign(model.mesh.n_elements(), 0);
   _all_nodes = output::request_nodes_by_label(model, {}, {});
-  _out.flush();
+  checkpoint();
 }
 
 void JsonWriter::begin_step(const Model& model, int step_index) {
@@ -323,140 +309,7 @@ void JsonWriter::write_element(const Model& model, const ElementResult& res, boo
 
 void JsonWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {
   if (_step_open) close_step(&summary);
-  _out.flush();
-}
-
-void JsonWriter::close_step(const StepSummary* s) {
-  auto& b = _out.buffer();
-  b.push_back(']');
-  if (!s) {
-    b.append(std::string_view(",\"converged\":false,\"failure\":\"the step was not finished\"}"));
-    _step_open = false;
-    return;
-  }
-  fmt::format_to(fmt::appender(b),
-                 ",\"converged\":{},\"increments\":{},\"attempts\":{},"
-                 "\"iterations\":{},\"failure\":",
-                 s->converged, s->increments, s->attempts, s->iterations);
-  if (s->converged && s->failure.empty())
-    b.append(std::string_view("null"));
-  else
-    append_json_string(b, s->failure.empty() ? "the step did not converge" : s->failure);
-
-  const StepChecks& c = s->checks;
-  fmt::format_to(fmt::appender(b),
-                 ",\"checks\":{{\"gaps\":{{\"total\":{},\"open\":{},\"closed\":"
-                 "{},\"stick\":{},"
-                 "\"slip\":{}}}",
-                 c.n_gaps, c.n_open, c.n_closed, c.n_stick, c.n_slip);
-  b.append(std::string_view(",\"max_penetration\":{\"value\":"));
-  append_json_number(b, c.max_penetration);
-  b.append(std::string_view(",\"element\":"));
-  label_or_null(b, *_model, c.max_penetration_elem);
-  b.append(std::string_view("},\"max_tensile_force\":{\"value\":"));
-  append_json_number(b, c.max_tensile_force);
-  b.append(std::string_view(",\"element\":"));
-  label_or_null(b, *_model, c.max_tensile_elem);
-  b.append(std::string_view("},\"equilibrium\":{\"reaction_sum\":"));
-  append_json_array(b, c.reaction_sum);
-  b.append(std::string_view(",\"applied_sum\":"));
-  append_json_array(b, c.applied_sum);
-  number_field(b, "error", c.equilibrium_error);
-  number_field(b, "force_scale", c.force_scale);
-  b.append(std::string_view(",\"relative_error\":"));
-  if (c.force_scale > 0)
-    append_json_number(b, c.equilibrium_error / c.force_scale);
-  else
-    b.append(std::string_view("null"));
-  b.append(std::string_view("},\"heat_balance\":"));
-  if (c.thermal) {
-    b.append(std::string_view("{\"reaction_flux_sum\":"));
-    append_json_number(b, c.reaction_flux_sum);
-    number_field(b, "applied_flux_sum", c.applied_flux_sum);
-    number_field(b, "stored_heat", c.stored_heat);
-    number_field(b, "error", c.heat_balance_error);
-    number_field(b, "heat_scale", c.heat_scale);
-    b.append(std::string_view(",\"relative_error\":"));
-    if (c.heat_scale > 0)
-      append_json_number(b, c.heat_balance_error / c.heat_scale);
-    else
-      b.append(std::string_view("null"));
-    b.push_back('}');
-  } else {
-    b.append(std::string_view("null"));
-  }
-  number_field(b, "max_damping_force", c.max_damping_force);
-  if (c.hourglass) {
-    b.append(std::string_view(",\"energy\":{\"ALLAE\":"));
-    append_json_number(b, c.allae);
-    number_field(b, "ALLSE", c.allse);
-    b.push_back('}');
-  }
-  if (c.stabilized) {
-    b.append(std::string_view(",\"stabilization\":{\"damping_factor\":"));
-    append_json_number(b, c.stabilization_factor);
-    number_field(b, "ALLSD", c.allsd);
-    number_field(b, "ALLIE", c.allie);
-    b.push_back('}');
-  }
-  b.append(std::string_view("}}"));
-  _step_open = false;
-}
-
-void JsonWriter::end(const Model& model, const RunSummary& summary) {
-  if (!_out.is_open()) return;
-  if (_step_open) close_step(nullptr);
-  auto& b = _out.buffer();
-  b.append(std::string_view("],\n\"element_types\":{"));
-  bool first_type = true;
-  for (std::size_t t = 0; t < _components.size(); ++t) {
-    const auto& tc = _components[t];
-    if (!tc.seen) continue;
-    if (!first_type) b.push_back(',');
-    first_type = false;
-    fmt::format_to(fmt::appender(b), "\"{}\":{{", element_info(static_cast<ElementType>(t)).name);
-    bool first_var = true;
-    for (std::size_t v = 0; v < tc.names.size(); ++v) {
-      if (tc.names[v].empty()) continue;
-      if (!first_var) b.push_back(',');
-      first_var = false;
-      key(b, elem_var_name(static_cast<ElemVar>(v)));
-      b.push_back('[');
-      for (std::size_t i = 0; i < tc.names[v].size(); ++i) {
-        if (i) b.push_back(',');
-        append_json_string(b, tc.names[v][i]);
-      }
-      b.push_back(']');
-    }
-    b.push_back('}');
-  }
-  const RunStatistics& st = summary.stats;
-  fmt::format_to(fmt::appender(b),
-                 "}},\n\"summary\":{{\"completed\":{},\"failure\":", summary.completed);
-  if (summary.completed && summary.failure.empty())
-    b.append(std::string_view("null"));
-  else
-    append_json_string(b, summary.failure);
-  number_field(b, "wall_seconds", summary.wall_seconds);
-  fmt::format_to(fmt::appender(b),
-                 ",\"increments\":{},\"attempts\":{},\"iterations\":{},"
-                 "\"factorizations\":{},"
-                 "\"linear_solves\":{},\"peak_memory_kb\":{},\"seconds\":{{",
-                 st.increments, st.attempts, st.iterations, st.factorizations, st.linear_solves,
-                 summary.peak_memory_kb);
-  for (int c = 0; c < kNumTimeCategories; ++c) {
-    if (c) b.push_back(',');
-    append_json_string(b, time_category_name(static_cast<TimeCategory>(c)));
-    b.push_back(':');
-    append_json_number(b, st.seconds[c]);
-  }
-  b.append(std::string_view("},\"warnings\":["));
-  for (std::size_t i = 0; i < summary.warnings.size(); ++i) {
-    if (i) b.push_back(',');
-    append_json_string(b, summary.warnings[i]);
-  }
-  b.append(std::string_view("]}}\n"));
-  _out.close();
+  checkpoint();
 }
 
 } // namespace gapfem

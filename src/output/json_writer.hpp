@@ -1,8 +1,12 @@
 #pragma once
 /// @file json_writer.hpp
 /// job.results.json, schema "gapfem.results/1" (docs/results.md). The document
-/// is streamed: each frame is formatted into a buffer and written in large
-/// chunks, and end() closes the structure.
+/// is streamed into job.results.json.part: each frame is formatted into a buffer and written in
+/// large chunks. After every converged increment (and each step's end) the part is copied with a
+/// closing tail into job.results.json.tmp, which is fsync'ed and renamed over job.results.json:
+/// the file is at every moment one complete JSON document (a kill -9 or a full disk leaves the
+/// last one). end() publishes the final document and removes the part.
+#include "common/timer.hpp"
 #include "output/output_file.hpp"
 #include "output/results.hpp"
 
@@ -21,6 +25,7 @@ class JsonWriter : public ResultWriter {
 
   void begin(const Model& model) override;
   void begin_step(const Model& model, int step_index) override;
+  void increment(const IncrementInfo& info) override;
   void frame(const Model& model, int step_index, const Frame& frame) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
@@ -29,12 +34,28 @@ class JsonWriter : public ResultWriter {
   void write_node(const Model& model, const NodeResults& r, NodeId n, bool& first);
   void write_element(const Model& model, const ElementResult& res, bool& first);
   void close_step(const StepSummary* summary);
+  /// Appends `]` closing the frames, then the step's status and checks (`unfinished`: the
+  /// failure text when `summary` is null) and `}`.
+  void append_step_end(fmt::memory_buffer& b, const StepSummary* summary,
+                       std::string_view unfinished) const;
+  /// Appends the end of the document after the steps: element types and the run summary.
+  void append_tail(fmt::memory_buffer& b, const RunSummary& summary) const;
+  /// Publishes the document so far, closed by a tail marking the run as not completed.
+  void checkpoint();
+  /// Copies the part and `suffix` into the staging file and renames it over the final name.
+  void publish(std::string_view suffix);
+  std::filesystem::path part_path() const;
   void note_components(ElementType type, const OutputBlock& block);
 
   std::filesystem::path _path;
   std::string _job;
   const Model* _model = nullptr; ///< the model of begin() (names of instance entities)
-  output::OutputFile _out;
+  output::OutputFile _out; ///< the document's body so far (job.results.json.part)
+  bool _failed = false;    ///< a write failed: the last published document stays
+  Stopwatch _watch;
+  RunStatistics _seen;     ///< increments, attempts and iterations reported so far
+  IncrementInfo _last;     ///< the last converged increment
+  bool _has_last = false;
   bool _step_open = false;
   bool _first_step = true;
   bool _first_frame = true;

@@ -4,41 +4,102 @@
 #include "model/model.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <numeric>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace gapfem::output {
 
 // ---------------------------------------------------------------- OutputFile
 
+namespace {
+
+std::atomic<long long> g_write_budget{-1}; ///< testing::limit_writes; negative: unlimited
+
+/// fwrite with the injected limit: a write beyond the budget fails as on a full disk.
+std::size_t write_limited(const void* data, std::size_t n, std::FILE* f) {
+  long long budget = g_write_budget.load();
+  if (budget >= 0) {
+    const auto allowed = static_cast<std::size_t>(std::min<long long>(budget, n));
+    g_write_budget = budget - static_cast<long long>(allowed);
+    const std::size_t done = allowed > 0 ? std::fwrite(data, 1, allowed, f) : 0;
+    if (allowed < n) errno = ENOSPC;
+    return done;
+  }
+  return std::fwrite(data, 1, n, f);
+}
+
+/// fsync of a directory, so that a rename in it survives a power loss (best effort).
+void sync_directory(const std::filesystem::path& dir) {
+  const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+} // namespace
+
+namespace testing {
+void limit_writes(long long bytes) { g_write_budget = bytes; }
+} // namespace testing
+
 OutputFile::~OutputFile() {
-  // Destructors must not throw: write what we can and close quietly.
+  // Destructors must not throw: write what we can and close quietly. A Replace file not closed
+  // normally (an exception unwinding) is not moved over the previous complete file.
   if (_file) {
-    if (_buffer.size() > 0) std::fwrite(_buffer.data(), 1, _buffer.size(), _file);
+    if (_buffer.size() > 0 && !_failed) write_limited(_buffer.data(), _buffer.size(), _file);
     std::fclose(_file);
+    if (_mode == Mode::Replace) {
+      std::error_code ec;
+      std::filesystem::remove(_staging, ec);
+    }
   }
 }
 
-void OutputFile::open(const std::filesystem::path& path) {
+void OutputFile::open(const std::filesystem::path& path, Mode mode) {
   close();
   _path = path;
-  _file = std::fopen(path.string().c_str(), "wb");
-  if (!_file) fail("cannot create");
+  _mode = mode;
+  _failed = false;
+  _errno = 0;
+  _staging = path;
+  if (mode == Mode::Replace) _staging += ".tmp";
   _buffer.clear();
+  _file = std::fopen(_staging.c_str(), "wb");
+  if (!_file) fail("cannot create");
 }
 
-void OutputFile::fail(const char* what) const {
-  throw AnalysisError(fmt::format("{} results file '{}': {}; check that the output directory "
-                                  "exists, is writable and has free space",
-                                  what, _path.string(), std::strerror(errno)));
+void OutputFile::fail(const char* what) {
+  const int err = errno;
+  _errno = err;
+  _failed = true;
+  if (_file) {
+    std::fclose(_file);
+    _file = nullptr;
+  }
+  _buffer.clear();
+  std::error_code ec;
+  if (_mode == Mode::Replace) std::filesystem::remove(_staging, ec);
+  const bool full = err == ENOSPC || err == EDQUOT || err == EFBIG;
+  throw AnalysisError(fmt::format(
+      "{} results file '{}': {}; {}", what, _path.string(), std::strerror(err),
+      full ? "the result files keep the increments completed before; free space and run again"
+           : "check that the output directory exists, is writable and has free space"));
+}
+
+void OutputFile::put(const void* data, std::size_t n) {
+  if (n > 0 && write_limited(data, n, _file) != n) fail("cannot write");
 }
 
 void OutputFile::drain() {
   if (!_file || _buffer.size() == 0) return;
-  if (std::fwrite(_buffer.data(), 1, _buffer.size(), _file) != _buffer.size()) fail("cannot write");
+  put(_buffer.data(), _buffer.size());
   _buffer.clear();
 }
 
@@ -50,7 +111,25 @@ void OutputFile::write_bytes(const void* data, std::size_t n) {
     return;
   }
   drain();
-  if (_file && n > 0 && std::fwrite(data, 1, n, _file) != n) fail("cannot write");
+  if (_file) put(data, n);
+}
+
+void OutputFile::append_file(const std::filesystem::path& source) {
+  if (!_file) return;
+  drain();
+  std::FILE* in = std::fopen(source.c_str(), "rb");
+  if (!in) fail("cannot read the staged part of the");
+  std::vector<char> chunk(kChunk);
+  std::size_t got = 0;
+  while ((got = std::fread(chunk.data(), 1, chunk.size(), in)) > 0) {
+    if (write_limited(chunk.data(), got, _file) != got) {
+      std::fclose(in);
+      fail("cannot write");
+    }
+  }
+  const bool bad = std::ferror(in) != 0;
+  std::fclose(in);
+  if (bad) fail("cannot read the staged part of the");
 }
 
 void OutputFile::flush() {
@@ -61,9 +140,14 @@ void OutputFile::flush() {
 void OutputFile::close() {
   if (!_file) return;
   drain();
+  if (std::fflush(_file) != 0) fail("cannot write");
+  if (_mode == Mode::Replace && ::fsync(fileno(_file)) != 0) fail("cannot write");
   const int rc = std::fclose(_file);
   _file = nullptr;
   if (rc != 0) fail("cannot close");
+  if (_mode != Mode::Replace) return;
+  if (std::rename(_staging.c_str(), _path.c_str()) != 0) fail("cannot replace");
+  sync_directory(_path.parent_path());
 }
 
 // ---------------------------------------------------------------- formatting
@@ -91,6 +175,18 @@ void append_json_number(fmt::memory_buffer& out, double v) {
   }
   fmt::format_to(std::back_inserter(out), "{}",
                  v); // shortest round-trip representation
+}
+
+void append_json_key(fmt::memory_buffer& b, std::string_view k) {
+  b.push_back('"');
+  b.append(k);
+  b.append(std::string_view("\":"));
+}
+
+void append_json_field(fmt::memory_buffer& b, std::string_view k, double v) {
+  b.push_back(',');
+  append_json_key(b, k);
+  append_json_number(b, v);
 }
 
 void append_json_array(fmt::memory_buffer& out, std::span<const double> values) {

@@ -22,16 +22,26 @@ namespace gapfem::output {
 /// A file written through a large in-memory buffer. Text is formatted into
 /// buffer() with fmt::format_to and handed to the operating system in chunks of
 /// about `chunk` bytes. Errors raise AnalysisError naming the file.
+///
+/// Opened with Mode::Replace, the file is written under `path` + ".tmp" and close() moves it
+/// over `path` after fsync, so `path` always holds either its previous complete content or the
+/// new one, never a part (docs/results.md). A failed file stays failed: the first error is thrown
+/// once, later writes and close() do nothing, and a Replace file's partial copy is removed.
 class OutputFile {
  public:
+  enum class Mode { InPlace, Replace };
+
   OutputFile() = default;
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
 
-  /// Create (truncate) `path` for writing.
-  void open(const std::filesystem::path& path);
+  /// Create (truncate) `path` for writing (Replace: its staging copy).
+  void open(const std::filesystem::path& path, Mode mode = Mode::InPlace);
   bool is_open() const { return _file != nullptr; }
+  bool failed() const { return _failed; }
+  /// The errno of the failure (0 when none).
+  int error_number() const { return _errno; }
   const std::filesystem::path& path() const { return _path; }
 
   /// The buffer to format into; call maybe_flush() now and then.
@@ -40,6 +50,8 @@ class OutputFile {
   void write(std::string_view text) { _buffer.append(text.data(), text.data() + text.size()); }
   /// Append raw bytes, bypassing the buffer when the block is large.
   void write_bytes(const void* data, std::size_t n);
+  /// Append the whole content of another (flushed) file.
+  void append_file(const std::filesystem::path& source);
   /// Hand the buffer to the operating system when it holds more than the chunk
   /// size.
   void maybe_flush() {
@@ -48,19 +60,30 @@ class OutputFile {
   /// Write everything buffered and flush the C stream (for files users tail
   /// -f).
   void flush();
-  /// Flush and close; no-op when not open.
+  /// Flush and close (Replace: fsync, then move over the final name); no-op when not open.
   void close();
 
   static constexpr std::size_t kChunk = std::size_t{1} << 22; ///< 4 MiB
 
  private:
   void drain();
-  void fail(const char* what) const;
+  void put(const void* data, std::size_t n);
+  [[noreturn]] void fail(const char* what);
 
   std::FILE* _file = nullptr;
-  std::filesystem::path _path;
+  std::filesystem::path _path;    ///< the final name
+  std::filesystem::path _staging; ///< Replace: the file written; InPlace: _path
+  Mode _mode = Mode::InPlace;
+  bool _failed = false;
+  int _errno = 0;
   fmt::memory_buffer _buffer;
 };
+
+namespace testing {
+/// Fault injection for tests: after `bytes` more bytes, every result-file write fails with
+/// ENOSPC (as on a full disk); a negative value removes the limit.
+void limit_writes(long long bytes);
+} // namespace testing
 
 /// Abaqus-style spaced capitals: "STATIC ANALYSIS" -> "S T A T I C   A N A L Y
 /// S I S".
@@ -81,6 +104,10 @@ void append_json_string(fmt::memory_buffer& out, std::string_view s);
 /// Append text for an XML attribute value or element content (&, <, >, " and '
 /// escaped).
 void append_xml_text(fmt::memory_buffer& out, std::string_view s);
+/// Append `"k":` (the key is written as is: no escaping).
+void append_json_key(fmt::memory_buffer& out, std::string_view k);
+/// Append `,"k":v` with v a JSON number.
+void append_json_field(fmt::memory_buffer& out, std::string_view k, double v);
 /// Append a JSON array of numbers.
 void append_json_array(fmt::memory_buffer& out, std::span<const double> values);
 

@@ -317,8 +317,8 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
                                     make_array("types", "UInt8", 1, _cell_types)};
 
   const std::string file = fmt::format("{}_{}_{}.vtu", _job, frame.step, frame.increment);
-  output::OutputFile out;
-  out.open(_dir / file);
+  output::OutputFile out; // written aside and renamed: a frame file is complete or absent
+  out.open(_dir / file, output::OutputFile::Mode::Replace);
   auto& b = out.buffer();
   std::uint64_t offset = 0;
   fmt::format_to(fmt::appender(b),
@@ -369,32 +369,22 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
 }
 
 void VtuWriter::write_pvd() {
-  const auto path = _dir / (_job + ".pvd");
-  auto tmp = path;
-  tmp += ".tmp";
-  {
-    output::OutputFile out;
-    out.open(tmp);
-    auto& b = out.buffer();
-    fmt::format_to(fmt::appender(b),
-                   "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
-                   "byte_order=\"{}\">\n  <Collection>\n",
-                   kByteOrder);
-    for (const auto& e : _entries) {
-      b.append(std::string_view("    <DataSet timestep=\""));
-      output::append_json_number(b, e.time);
-      b.append(std::string_view("\" group=\"\" part=\"0\" file=\""));
-      output::append_xml_text(b, e.file);
-      b.append(std::string_view("\"/>\n"));
-    }
-    b.append(std::string_view("  </Collection>\n</VTKFile>\n"));
-    out.close();
+  output::OutputFile out; // replaced whole: the collection lists complete frame files only
+  out.open(_dir / (_job + ".pvd"), output::OutputFile::Mode::Replace);
+  auto& b = out.buffer();
+  fmt::format_to(fmt::appender(b),
+                 "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                 "byte_order=\"{}\">\n  <Collection>\n",
+                 kByteOrder);
+  for (const auto& e : _entries) {
+    b.append(std::string_view("    <DataSet timestep=\""));
+    output::append_json_number(b, e.time);
+    b.append(std::string_view("\" group=\"\" part=\"0\" file=\""));
+    output::append_xml_text(b, e.file);
+    b.append(std::string_view("\"/>\n"));
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec)
-    throw AnalysisError(
-        fmt::format("cannot replace ParaView collection '{}': {}", path.string(), ec.message()));
+  b.append(std::string_view("  </Collection>\n</VTKFile>\n"));
+  out.close();
 }
 
 } // namespace gapfem

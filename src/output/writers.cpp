@@ -23,11 +23,13 @@ std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptio
       throw AnalysisError(
           fmt::format("cannot create the output directory '{}': {}", dir.string(), ec.message()));
   }
+  // The files that report progress (.sta, terminal) come last: an increment they report is
+  // already in the result files.
   if (options.dat) writers.push_back(std::make_unique<DatWriter>(dir / (job + ".dat")));
-  if (options.sta) writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
   if (options.json)
     writers.push_back(std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
   if (options.vtu) writers.push_back(std::make_unique<VtuWriter>(dir, job));
+  if (options.sta) writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
   if (options.terminal) writers.push_back(std::make_unique<TerminalWriter>());
   return writers;
 }

@@ -22,8 +22,8 @@ struct WriterOptions {
   bool terminal = false;           ///< also add a TerminalWriter (progress through gapfem::log)
 };
 
-/// The writers selected by `options`, in the order dat, sta, json, vtu,
-/// terminal. Files are opened in begin(); errors opening or writing them raise
+/// The writers selected by `options`, in the order dat, json, vtu, sta,
+/// terminal (what reports an increment comes after what stores it). Files are opened in begin(); errors opening or writing them raise
 /// AnalysisError.
 std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);
 

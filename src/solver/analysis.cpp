@@ -148,7 +148,16 @@ RunSummary Analysis::run() {
   run.warnings = m.model.warnings;
   run.warnings.insert(run.warnings.end(), m.solver_warnings.begin(), m.solver_warnings.end());
   run.peak_memory_kb = peak_memory_kb();
-  for (auto* w : m.writers) w->end(m.model, run);
+  // Every writer closes its files, even after another failed (e.g. a full disk): the first
+  // failure is the one reported.
+  for (auto* w : m.writers) {
+    try {
+      w->end(m.model, run);
+    } catch (const AnalysisError& e) {
+      if (run.completed) run.failure = e.what();
+      run.completed = false;
+    }
+  }
   if (!run.completed) throw AnalysisError(run.failure);
   return run;
 }
@@ -388,7 +397,10 @@ StepSummary Analysis::Impl::run_step(int index) {
     }
     info.converged = res.converged && !redo;
     info.deltmx_exceeded = redo;
-    for (auto* w : writers) w->increment(info);
+    // A converged increment is reported after its frame is written, so that what the .sta and
+    // the terminal call converged is already in the result files (docs/results.md).
+    if (!info.converged)
+      for (auto* w : writers) w->increment(info);
     if (redo) continue;
     if (res.converged) {
       attempts_log.clear();
@@ -407,6 +419,7 @@ StepSummary Analysis::Impl::run_step(int index) {
       ++sum.increments;
       step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
       write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
+      for (auto* w : writers) w->increment(info);
       continue;
     }
     // Failed attempt: explain, cut back or stop.

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <fmt/format.h>
 #include <limits>
 
@@ -118,6 +119,14 @@ void FieldReader::at_most(std::size_t n, std::string_view layout) const {
 }
 
 void FieldReader::fail(std::string entity, std::string message) const {
+  // "field N (...)": the message echoes the value as written, unless it quotes it already
+  unsigned n = 0;
+  if (std::sscanf(entity.c_str(), "field %u", &n) == 1 && n >= 1 && n <= _line.fields.size() &&
+      entity.rfind("fields", 0) != 0) {
+    const std::string& text = _line.fields[n - 1];
+    if (!text.empty() && message.find(text) == std::string::npos)
+      message += fmt::format(" (given: {})", text);
+  }
   throw InputError(_loc, std::move(entity), std::move(message));
 }
 

@@ -227,7 +227,7 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
       s.warn(kw.loc, "ROUGH friction takes no data lines; the friction coefficients were ignored");
     return f;
   }
-  for_each_line(s, kw, [&](const DataLine& line) {
+  const int failed = for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(4, "friction coefficient, slip rate, contact pressure, temperature");
     FrictionSpec::Row row;
@@ -241,7 +241,7 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
     f.n_columns = std::max(f.n_columns, static_cast<int>(used));
     f.rows.push_back(row);
   });
-  if (f.rows.empty())
+  if (f.rows.empty() && failed == 0)
     throw InputError(kw.loc, "",
                      "the friction coefficient is missing; add a data line with mu (or use ROUGH)");
   return f;

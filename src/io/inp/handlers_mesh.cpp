@@ -12,6 +12,8 @@ std::string where(const BuildState& s, SourceRef ref) {
 
 /// Largest number of members one GENERATE line may produce (guards against typos like 1,1E9).
 constexpr long long kMaxGenerate = 100'000'000;
+/// The most characters of *HEADING text carried into the result files.
+constexpr std::size_t kMaxHeading = 4096;
 
 struct Range {
   long long first, last, step;
@@ -50,9 +52,18 @@ void handle_heading(BuildState& s, const Keyword& kw) {
   std::vector<std::string> lines;
   for (const auto& d : kw.data) lines.emplace_back(trim(d.text));
   while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  std::size_t total = 0;
+  for (const auto& l : lines) total += l.size() + 1;
   for (const auto& l : lines) {
     if (!s.model.heading.empty()) s.model.heading += '\n';
     s.model.heading += l;
+    if (s.model.heading.size() >= kMaxHeading) break;
+  }
+  if (s.model.heading.size() > kMaxHeading) {
+    s.model.heading.resize(kMaxHeading);
+    s.warn(kw.loc, fmt::format("the heading is {} characters long; the result files keep its "
+                               "first {}",
+                               total, kMaxHeading));
   }
 }
 

@@ -1,5 +1,6 @@
 #include "io/inp/lexer.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <fmt/format.h>
 #include <fstream>
@@ -77,13 +78,32 @@ std::string unquote(std::string_view v) {
   return std::string(v);
 }
 
-bool read_file(const fs::path& path, std::string& out) {
+/// Why a file cannot be read as deck text, or "" when `out` holds its contents. Only regular
+/// files are read (a directory, FIFO, socket or device such as /dev/zero is refused before it is
+/// opened), and at most `limit` bytes: a larger file is refused rather than exhausting memory.
+std::string read_file(const fs::path& path, std::string& out, std::uintmax_t limit) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st))
+    return "it does not exist; check the name and the directory";
+  if (fs::is_directory(st)) return "it is a directory, not an input file; name a .inp file in it";
+  if (!fs::is_regular_file(st))
+    return "it is not a regular file (a device, FIFO or socket); give the path of a deck file";
   std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
+  if (!in) return "cannot open it; check that you may read it";
+  out.clear();
+  char chunk[1 << 16];
+  while (in) {
+    in.read(chunk, sizeof chunk);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    if (out.size() + got > limit)
+      return fmt::format("it is larger than {} MiB, the most gapfem reads from one deck and its "
+                         "included files; split the model or check that this is the right file",
+                         limit >> 20);
+    out.append(chunk, got);
+  }
+  if (in.bad()) return "reading it failed (an input/output error)";
+  return {};
 }
 
 class Lexer {
@@ -92,7 +112,14 @@ class Lexer {
 
   Deck run(std::string_view text, const std::string& name, const fs::path& dir) {
     _deck.files.push_back(name);
+    _stack.push_back(identity(name));
+    _bytes = text.size();
     lex_text(text, 0, dir, 0);
+    if (_deck.keywords.empty() && _diag.n_errors() == 0)
+      _diag.error(SourceLocation{name, 0, {}}, "",
+                  "the deck has no keyword lines (it is empty or holds only ** comments); a deck "
+                  "defines the model (*NODE, *ELEMENT, sections, materials) and at least one "
+                  "*STEP");
     return std::move(_deck);
   }
 
@@ -101,6 +128,26 @@ class Lexer {
   Deck _deck;
   int _current = -1; ///< index of the keyword receiving data lines (spans
                      ///< *INCLUDE boundaries)
+  bool _drop_data = false;        ///< after a keyword line in error: its data lines are dropped
+  std::vector<std::string> _stack; ///< the files being lexed, outermost first (cycle check)
+  std::uintmax_t _bytes = 0;       ///< deck text read so far, all files
+
+  /// A file's identity for the include-cycle check: its canonical path where it exists.
+  static std::string identity(const fs::path& path) {
+    std::error_code ec;
+    const fs::path c = fs::weakly_canonical(path, ec);
+    return (ec ? path.lexically_normal() : c).string();
+  }
+
+  /// Reports a line longer than kMaxLineLength; true when the line is to be skipped.
+  bool too_long(std::string_view line, int file, int lineno) {
+    if (line.size() <= kMaxLineLength) return false;
+    _diag.error(loc(file, lineno), "",
+                fmt::format("the line is {} characters long; gapfem reads lines of up to {} "
+                            "characters (Abaqus reads 256): break the data over several lines",
+                            line.size(), kMaxLineLength));
+    return true;
+  }
 
   SourceLocation loc(int file, int line, std::string keyword = {}) const {
     return SourceLocation{_deck.files[file], line, std::move(keyword)};
@@ -116,6 +163,10 @@ class Lexer {
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string_view line = lines[i];
       const int lineno = static_cast<int>(i) + 1;
+      if (too_long(line, file, lineno)) {
+        if (is_keyword_line(line)) _drop_data = true;
+        continue;
+      }
       if (is_comment(line)) continue;
       if (!is_keyword_line(line)) {
         add_data_line(line, file, lineno);
@@ -132,7 +183,8 @@ class Lexer {
         i = j;
       }
       Keyword kw = parse_keyword_line(full, file, lineno);
-      if (kw.key.empty()) continue; // reported
+      _drop_data = kw.key.empty(); // reported; its data lines would only add false errors
+      if (_drop_data) continue;
       if (kw.key == "INCLUDE") {
         include(kw, dir, depth);
         continue;
@@ -147,6 +199,7 @@ class Lexer {
   }
 
   void add_data_line(std::string_view line, int file, int lineno) {
+    if (_drop_data) return;
     if (_current < 0) {
       if (trim(line).empty()) return;
       _diag.error(loc(file, lineno), "",
@@ -204,13 +257,15 @@ class Lexer {
       return false;
     }
     path = dir / p->value;
-    if (!read_file(path, text)) {
+    const std::string why = read_file(path, text, kMaxDeckBytes - std::min(_bytes, kMaxDeckBytes));
+    if (!why.empty()) {
       _diag.error(at, fmt::format("INPUT={}", p->value),
-                  fmt::format("cannot read file '{}'; check the name (paths are relative to the "
-                              "directory of the file that contains this line)",
-                              path.lexically_normal().string()));
+                  fmt::format("cannot read file '{}': {} (paths are relative to the directory of the file "
+                              "that contains this line)",
+                              path.lexically_normal().string(), why));
       return false;
     }
+    _bytes += text.size();
     return true;
   }
 
@@ -224,11 +279,26 @@ class Lexer {
                               kMaxIncludeDepth));
       return;
     }
+    const Parameter* input = kw.find("INPUT");
+    if (input && input->has_value && !input->value.empty()) {
+      const std::string id = identity(dir / input->value);
+      if (const auto it = std::find(_stack.begin(), _stack.end(), id); it != _stack.end()) {
+        std::string cycle;
+        for (auto f = it; f != _stack.end(); ++f) cycle += fmt::format("{} includes ", *f);
+        _diag.error(kw.loc, fmt::format("INPUT={}", input->value),
+                    fmt::format("the include files form a cycle: {}{} again; remove this "
+                                "*INCLUDE",
+                                cycle, id));
+        return;
+      }
+    }
     fs::path path;
     std::string text;
-    if (!open_relative(kw.find("INPUT"), dir, kw.loc, path, text)) return;
+    if (!open_relative(input, dir, kw.loc, path, text)) return;
     const int file = add_file(path);
+    _stack.push_back(identity(path));
     lex_text(text, file, path.parent_path(), depth + 1);
+    _stack.pop_back();
   }
 
   void read_data_file(const Parameter& p, const fs::path& dir) {
@@ -239,8 +309,9 @@ class Lexer {
     const int file = add_file(path);
     const auto lines = split_lines(text);
     for (std::size_t i = 0; i < lines.size(); ++i) {
-      if (is_comment(lines[i])) continue;
       const int lineno = static_cast<int>(i) + 1;
+      if (too_long(lines[i], file, lineno)) continue;
+      if (is_comment(lines[i])) continue;
       if (is_keyword_line(lines[i])) {
         _diag.error(loc(file, lineno), "",
                     fmt::format("keyword line in a data file read by {}, INPUT=; such a file holds "
@@ -282,9 +353,10 @@ DataLine split_data_line(std::string_view text) {
 
 Deck lex_file(const fs::path& deck, Diagnostics& diag) {
   std::string text;
-  if (!read_file(deck, text))
+  const std::string why = read_file(deck, text, kMaxDeckBytes);
+  if (!why.empty())
     throw InputError(SourceLocation{deck.string(), 0, {}}, "",
-                     "cannot read the input deck; check the file name and that the file exists");
+                     fmt::format("cannot read the input deck: {}", why));
   Lexer lexer(diag);
   return lexer.run(text, deck.string(), deck.parent_path());
 }

@@ -8,12 +8,18 @@
 #include "io/inp/diagnostics.hpp"
 #include "io/inp/keyword.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace gapfem::inp {
+
+/// The longest line read (characters, without the line end); a longer one is an input error.
+constexpr std::size_t kMaxLineLength = 65536;
+/// The most deck text read for one job, the main deck and all its *INCLUDE and INPUT= files.
+constexpr std::uintmax_t kMaxDeckBytes = std::uintmax_t{2} << 30;
 
 /// The lexed deck: the files read (index = DataLine::file; [0] is the main deck) and the keywords
 /// in deck order (*INCLUDE keywords are resolved and do not appear).

@@ -184,22 +184,26 @@ struct BuildState {
 };
 
 /// Calls f(line) for every non-empty data line of `lines`; an InputError thrown by f is recorded
-/// and the next line is read.
+/// and the next line is read. Returns the number of lines in error, so that a caller reports no
+/// false "data missing" error after lines it has already reported.
 template <typename F>
-void for_each_line(BuildState& s, std::span<const DataLine> lines, F&& f) {
+int for_each_line(BuildState& s, std::span<const DataLine> lines, F&& f) {
+  int failed = 0;
   for (const DataLine& line : lines) {
     if (line.empty()) continue;
     try {
       f(line);
     } catch (const InputError& e) {
       s.diag.error(e);
+      ++failed;
     }
   }
+  return failed;
 }
 /// for_each_line over all data lines of `kw`.
 template <typename F>
-void for_each_line(BuildState& s, const Keyword& kw, F&& f) {
-  for_each_line(s, std::span<const DataLine>(kw.data), std::forward<F>(f));
+int for_each_line(BuildState& s, const Keyword& kw, F&& f) {
+  return for_each_line(s, std::span<const DataLine>(kw.data), std::forward<F>(f));
 }
 
 /// Checks the property values of one table row; returns an error sentence or "".

@@ -360,6 +360,10 @@ void finish_deck(BuildState& s) {
             "the step has no *END STEP; add *END STEP at the end of the step");
     close_step(s);
   }
+  // The model-wide checks below (elements without a section, a material without *ELASTIC, ...)
+  // would only repeat, as false follow-on errors, the definitions already reported in error: a
+  // deck with errors in its keyword blocks gets those alone; the checks run once they are fixed.
+  if (s.diag.n_errors() > 0) return;
   finish_model_data(s);
   check_constraints(s);
 }

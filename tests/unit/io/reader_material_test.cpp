@@ -276,7 +276,7 @@ TEST(ReaderMaterial, Amplitudes) {
 }
 
 TEST(ReaderMaterial, AmplitudeFromInputFile) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "amp.txt", "0., 0.\n1., 1.\n");
   test::write_file(dir / "main.inp", "*AMPLITUDE, NAME=A, INPUT=amp.txt\n");
   const Model m = read_deck(dir / "main.inp");

@@ -171,7 +171,7 @@ TEST(ReaderSyntax, NsetDataWithTrailingCommasOverSeveralLines) {
 }
 
 TEST(ReaderSyntax, NestedIncludesRelativeToIncludingFile) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "main.inp", "*HEADING\nmain\n*INCLUDE, INPUT=parts/mesh.inp\n"
                                      "*NSET, NSET=LAST\n3\n");
   // parts/mesh.inp includes nodes.inp from its own directory (parts/)
@@ -188,7 +188,7 @@ TEST(ReaderSyntax, NestedIncludesRelativeToIncludingFile) {
 }
 
 TEST(ReaderSyntax, LocationsInIncludedFilesNameThatFile) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "main.inp", "*NODE\n1\n*INCLUDE, INPUT=elems.inp\n");
   test::write_file(dir / "elems.inp", "*ELEMENT, TYPE=T3D2\n\n7, 1, 99\n");
   try {
@@ -201,7 +201,7 @@ TEST(ReaderSyntax, LocationsInIncludedFilesNameThatFile) {
 }
 
 TEST(ReaderSyntax, MissingIncludeNamesTheIncludingLine) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "main.inp", "*HEADING\nx\n*INCLUDE, INPUT=nothere.inp\n");
   try {
     read_deck(dir / "main.inp");
@@ -215,22 +215,23 @@ TEST(ReaderSyntax, MissingIncludeNamesTheIncludingLine) {
 }
 
 TEST(ReaderSyntax, MissingMainDeckIsAnInputError) {
-  EXPECT_THROW(read_deck(test::test_dir() / "absent.inp"), InputError);
+  EXPECT_THROW(read_deck(test::fresh_dir() / "absent.inp"), InputError);
 }
 
 TEST(ReaderSyntax, SelfIncludeStopsWithError) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "loop.inp", "*INCLUDE, INPUT=loop.inp\n");
   try {
     read_deck(dir / "loop.inp");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_CONTAINS(e.what(), "nested deeper");
+    EXPECT_CONTAINS(e.what(), "the include files form a cycle");
+    EXPECT_CONTAINS(e.what(), "loop.inp:1");
   }
 }
 
 TEST(ReaderSyntax, InputParameterReadsDataLinesFromFile) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "nodes.txt", "1, 0, 0, 0\n2, 1, 0, 0\n** comment\n3, 2, 0, 0\n");
   test::write_file(dir / "sub" / "elems.txt", "1, 1, 2\n2, 2, 3\n");
   test::write_file(dir / "sub" / "set.txt", "1, 3\n");
@@ -254,7 +255,7 @@ TEST(ReaderSyntax, InputParameterReadsDataLinesFromFile) {
 }
 
 TEST(ReaderSyntax, InputFileMustHoldDataLinesOnly) {
-  const auto dir = test::test_dir();
+  const auto dir = test::fresh_dir();
   test::write_file(dir / "nodes.txt", "1, 0, 0, 0\n*NODE\n2\n");
   test::write_file(dir / "main.inp", "*NODE, INPUT=nodes.txt\n");
   try {

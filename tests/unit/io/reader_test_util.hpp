@@ -48,8 +48,9 @@ inline std::string error_text(std::string_view text, ReadOptions opts = {}) {
   return read_error(text, opts).what();
 }
 
-/// A fresh, empty directory for the files of the current test.
-inline std::filesystem::path test_dir() {
+/// A fresh, empty directory for the files of the current test (not test_util.hpp's test_dir(),
+/// which keeps what an earlier run left: two inline functions of one name would break the ODR).
+inline std::filesystem::path fresh_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gapfem_reader" /
                                     (std::string(info->test_suite_name()) + "_" + info->name());

@@ -1,0 +1,233 @@
+// job.results.json: the end of a step (status and self-checks), the document's tail (element
+// types, run summary) and the checkpoints that keep the file one complete document at all times.
+#include "model/model.hpp"
+#include "output/json_writer.hpp"
+
+#include <system_error>
+
+namespace gapfem {
+namespace {
+
+using output::append_json_array;
+using output::append_json_number;
+using output::append_json_string;
+
+void key(fmt::memory_buffer& b, std::string_view k) { output::append_json_key(b, k); }
+void number_field(fmt::memory_buffer& b, std::string_view k, double v) {
+  output::append_json_field(b, k, v);
+}
+
+/// An element key as JSON: null for none, the number of a flat deck, the string "INSTANCE.n" of a
+/// part instance.
+void label_or_null(fmt::memory_buffer& b, const Model& model, Label l) {
+  if (l == 0)
+    b.append(std::string_view("null"));
+  else if (key_instance(l) == 0)
+    fmt::format_to(fmt::appender(b), "{}", l);
+  else
+    append_json_string(b, model.label_of_key(l).str());
+}
+
+} // namespace
+
+void JsonWriter::close_step(const StepSummary* s) {
+  append_step_end(_out.buffer(), s, "the step was not finished");
+  _step_open = false;
+}
+
+void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
+                                 std::string_view unfinished) const {
+  b.push_back(']');
+  if (!s) {
+    b.append(std::string_view(",\"converged\":false,\"failure\":"));
+    append_json_string(b, unfinished);
+    b.push_back('}');
+    return;
+  }
+  fmt::format_to(fmt::appender(b),
+                 ",\"converged\":{},\"increments\":{},\"attempts\":{},"
+                 "\"iterations\":{},\"failure\":",
+                 s->converged, s->increments, s->attempts, s->iterations);
+  if (s->converged && s->failure.empty())
+    b.append(std::string_view("null"));
+  else
+    append_json_string(b, s->failure.empty() ? "the step did not converge" : s->failure);
+
+  const StepChecks& c = s->checks;
+  fmt::format_to(fmt::appender(b),
+                 ",\"checks\":{{\"gaps\":{{\"total\":{},\"open\":{},\"closed\":"
+                 "{},\"stick\":{},"
+                 "\"slip\":{}}}",
+                 c.n_gaps, c.n_open, c.n_closed, c.n_stick, c.n_slip);
+  b.append(std::string_view(",\"max_penetration\":{\"value\":"));
+  append_json_number(b, c.max_penetration);
+  b.append(std::string_view(",\"element\":"));
+  label_or_null(b, *_model, c.max_penetration_elem);
+  b.append(std::string_view("},\"max_tensile_force\":{\"value\":"));
+  append_json_number(b, c.max_tensile_force);
+  b.append(std::string_view(",\"element\":"));
+  label_or_null(b, *_model, c.max_tensile_elem);
+  b.append(std::string_view("},\"equilibrium\":{\"reaction_sum\":"));
+  append_json_array(b, c.reaction_sum);
+  b.append(std::string_view(",\"applied_sum\":"));
+  append_json_array(b, c.applied_sum);
+  number_field(b, "error", c.equilibrium_error);
+  number_field(b, "force_scale", c.force_scale);
+  b.append(std::string_view(",\"relative_error\":"));
+  if (c.force_scale > 0)
+    append_json_number(b, c.equilibrium_error / c.force_scale);
+  else
+    b.append(std::string_view("null"));
+  b.append(std::string_view("},\"heat_balance\":"));
+  if (c.thermal) {
+    b.append(std::string_view("{\"reaction_flux_sum\":"));
+    append_json_number(b, c.reaction_flux_sum);
+    number_field(b, "applied_flux_sum", c.applied_flux_sum);
+    number_field(b, "stored_heat", c.stored_heat);
+    number_field(b, "error", c.heat_balance_error);
+    number_field(b, "heat_scale", c.heat_scale);
+    b.append(std::string_view(",\"relative_error\":"));
+    if (c.heat_scale > 0)
+      append_json_number(b, c.heat_balance_error / c.heat_scale);
+    else
+      b.append(std::string_view("null"));
+    b.push_back('}');
+  } else {
+    b.append(std::string_view("null"));
+  }
+  number_field(b, "max_damping_force", c.max_damping_force);
+  if (c.hourglass) {
+    b.append(std::string_view(",\"energy\":{\"ALLAE\":"));
+    append_json_number(b, c.allae);
+    number_field(b, "ALLSE", c.allse);
+    b.push_back('}');
+  }
+  if (c.stabilized) {
+    b.append(std::string_view(",\"stabilization\":{\"damping_factor\":"));
+    append_json_number(b, c.stabilization_factor);
+    number_field(b, "ALLSD", c.allsd);
+    number_field(b, "ALLIE", c.allie);
+    b.push_back('}');
+  }
+  b.append(std::string_view("}}"));
+}
+
+void JsonWriter::append_tail(fmt::memory_buffer& b, const RunSummary& summary) const {
+  b.append(std::string_view("],\n\"element_types\":{"));
+  bool first_type = true;
+  for (std::size_t t = 0; t < _components.size(); ++t) {
+    const auto& tc = _components[t];
+    if (!tc.seen) continue;
+    if (!first_type) b.push_back(',');
+    first_type = false;
+    fmt::format_to(fmt::appender(b), "\"{}\":{{", element_info(static_cast<ElementType>(t)).name);
+    bool first_var = true;
+    for (std::size_t v = 0; v < tc.names.size(); ++v) {
+      if (tc.names[v].empty()) continue;
+      if (!first_var) b.push_back(',');
+      first_var = false;
+      key(b, elem_var_name(static_cast<ElemVar>(v)));
+      b.push_back('[');
+      for (std::size_t i = 0; i < tc.names[v].size(); ++i) {
+        if (i) b.push_back(',');
+        append_json_string(b, tc.names[v][i]);
+      }
+      b.push_back(']');
+    }
+    b.push_back('}');
+  }
+  const RunStatistics& st = summary.stats;
+  fmt::format_to(fmt::appender(b),
+                 "}},\n\"summary\":{{\"completed\":{},\"failure\":", summary.completed);
+  if (summary.completed && summary.failure.empty())
+    b.append(std::string_view("null"));
+  else
+    append_json_string(b, summary.failure);
+  number_field(b, "wall_seconds", summary.wall_seconds);
+  fmt::format_to(fmt::appender(b),
+                 ",\"increments\":{},\"attempts\":{},\"iterations\":{},"
+                 "\"factorizations\":{},"
+                 "\"linear_solves\":{},\"peak_memory_kb\":{},\"seconds\":{{",
+                 st.increments, st.attempts, st.iterations, st.factorizations, st.linear_solves,
+                 summary.peak_memory_kb);
+  for (int c = 0; c < kNumTimeCategories; ++c) {
+    if (c) b.push_back(',');
+    append_json_string(b, time_category_name(static_cast<TimeCategory>(c)));
+    b.push_back(':');
+    append_json_number(b, st.seconds[c]);
+  }
+  b.append(std::string_view("},\"last_converged\":"));
+  if (_has_last) {
+    fmt::format_to(fmt::appender(b), "{{\"step\":{},\"increment\":{}", _last.step,
+                   _last.increment);
+    number_field(b, "step_time", _last.step_time);
+    number_field(b, "total_time", _last.total_time);
+    b.push_back('}');
+  } else {
+    b.append(std::string_view("null"));
+  }
+  b.append(std::string_view(",\"warnings\":["));
+  for (std::size_t i = 0; i < summary.warnings.size(); ++i) {
+    if (i) b.push_back(',');
+    append_json_string(b, summary.warnings[i]);
+  }
+  b.append(std::string_view("]}}\n"));
+}
+
+std::filesystem::path JsonWriter::part_path() const {
+  std::filesystem::path p = _path;
+  p += ".part";
+  return p;
+}
+
+void JsonWriter::increment(const IncrementInfo& info) {
+  ++_seen.attempts;
+  _seen.iterations += info.iterations;
+  if (!info.converged) return;
+  ++_seen.increments;
+  _last = info;
+  _has_last = true;
+  checkpoint();
+}
+
+void JsonWriter::publish(std::string_view suffix) {
+  if (_failed || !_out.is_open()) return;
+  try {
+    _out.flush();
+    output::OutputFile doc;
+    doc.open(_path, output::OutputFile::Mode::Replace);
+    doc.append_file(_out.path());
+    doc.write(suffix);
+    doc.close();
+  } catch (const AnalysisError&) {
+    _failed = true; // the previous complete document stays; the first error is reported
+    throw;
+  }
+}
+
+void JsonWriter::checkpoint() {
+  fmt::memory_buffer suffix;
+  if (_step_open) append_step_end(suffix, nullptr, "the step is running, or the run stopped in it");
+  RunSummary partial;
+  partial.completed = false;
+  partial.failure = "the analysis is running, or it stopped before the end: this document holds "
+                    "the increments completed so far";
+  partial.wall_seconds = _watch.seconds();
+  partial.stats = _seen;
+  partial.warnings = _model->warnings;
+  append_tail(suffix, partial);
+  publish(std::string_view(suffix.data(), suffix.size()));
+}
+
+void JsonWriter::end(const Model& model, const RunSummary& summary) {
+  if (_failed || !_out.is_open()) return;
+  if (_step_open) close_step(nullptr);
+  fmt::memory_buffer suffix;
+  append_tail(suffix, summary);
+  publish(std::string_view(suffix.data(), suffix.size()));
+  _out.close();
+  std::error_code ec;
+  std::filesystem::remove(part_path(), ec);
+}
+
+} // namespace gapfem
