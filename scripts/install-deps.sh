@@ -5,7 +5,8 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
           libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
-          calculix-ccx python3 time)
+          calculix-ccx python3 time
+          clang libclang-rt-14-dev llvm)  # clang: the sanitize build (ASan, UBSan, libFuzzer)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

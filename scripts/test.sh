@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
-# Quick start, command 2: build gapfem and run the whole test suite (unit, verification,
-# regression and CalculiX comparisons). Exits non-zero when any test fails.
+# Quick start, command 2 (and CI, .ci/run): build gapfem with clang under AddressSanitizer and
+# UndefinedBehaviorSanitizer (the "sanitize" preset), run the whole test suite (unit,
+# verification, regression, the bad-input corpus and the CalculiX comparisons) in that build,
+# then fuzz the deck reader and the model builder for a bounded time (fuzz/run.sh).
+# Exits non-zero when any test fails or a fuzzer finds anything.
+# The optimised build of command 1 runs the same suite with: ctest --preset release
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake --preset release >/dev/null
-cmake --build --preset release -j"$(nproc)"
-ctest --preset release --timeout 900
+cmake --preset sanitize >/dev/null
+cmake --build --preset sanitize -j"$(nproc)"
+ctest --preset sanitize --timeout 900
+bash fuzz/run.sh "${GAPFEM_FUZZ_SECONDS:-60}"

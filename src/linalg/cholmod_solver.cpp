@@ -56,8 +56,9 @@ class CholmodSolver final : public LinearSolver {
       const auto k = static_cast<LocalIndex>(_L->minor);
       std::vector<LocalIndex> eqs;
       if (k < _n) eqs.push_back(perm ? perm[k] : k);
-      throw SingularSystem("the matrix is not positive definite", std::move(eqs),
-                           /*indefinite=*/k < _n && M.diagonal(eqs[0]) > 0);
+      // decided before eqs is moved (argument evaluation order is unspecified)
+      const bool indefinite = k < _n && M.diagonal(eqs[0]) > 0;
+      throw SingularSystem("the matrix is not positive definite", std::move(eqs), indefinite);
     }
     check_pivots(M);
   }

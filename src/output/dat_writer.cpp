@@ -232,7 +232,9 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   _out.flush();
 }
 
-void DatWriter::increment(const IncrementInfo&) { _out.flush(); } // tail -f, kill -9
+void DatWriter::increment(const IncrementInfo&) {
+  _out.flush();
+} // tail -f, kill -9
 
 void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame,
                                        bool repeated) {

@@ -12,7 +12,9 @@ using output::append_json_array;
 using output::append_json_number;
 using output::append_json_string;
 
-void key(fmt::memory_buffer& b, std::string_view k) { output::append_json_key(b, k); }
+void key(fmt::memory_buffer& b, std::string_view k) {
+  output::append_json_key(b, k);
+}
 void number_field(fmt::memory_buffer& b, std::string_view k, double v) {
   output::append_json_field(b, k, v);
 }
@@ -158,8 +160,7 @@ void JsonWriter::append_tail(fmt::memory_buffer& b, const RunSummary& summary) c
   }
   b.append(std::string_view("},\"last_converged\":"));
   if (_has_last) {
-    fmt::format_to(fmt::appender(b), "{{\"step\":{},\"increment\":{}", _last.step,
-                   _last.increment);
+    fmt::format_to(fmt::appender(b), "{{\"step\":{},\"increment\":{}", _last.step, _last.increment);
     number_field(b, "step_time", _last.step_time);
     number_field(b, "total_time", _last.total_time);
     b.push_back('}');

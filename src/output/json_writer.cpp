@@ -24,7 +24,9 @@ std::string_view space_key(ModelSpace s) {
   return "3D";
 }
 
-void key(fmt::memory_buffer& b, std::string_view k) { output::append_json_key(b, k); }
+void key(fmt::memory_buffer& b, std::string_view k) {
+  output::append_json_key(b, k);
+}
 void number_field(fmt::memory_buffer& b, std::string_view k, double v) {
   output::append_json_field(b, k, v);
 }

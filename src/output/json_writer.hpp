@@ -50,11 +50,11 @@ class JsonWriter : public ResultWriter {
   std::filesystem::path _path;
   std::string _job;
   const Model* _model = nullptr; ///< the model of begin() (names of instance entities)
-  output::OutputFile _out; ///< the document's body so far (job.results.json.part)
-  bool _failed = false;    ///< a write failed: the last published document stays
+  output::OutputFile _out;       ///< the document's body so far (job.results.json.part)
+  bool _failed = false;          ///< a write failed: the last published document stays
   Stopwatch _watch;
-  RunStatistics _seen;     ///< increments, attempts and iterations reported so far
-  IncrementInfo _last;     ///< the last converged increment
+  RunStatistics _seen; ///< increments, attempts and iterations reported so far
+  IncrementInfo _last; ///< the last converged increment
   bool _has_last = false;
   bool _step_open = false;
   bool _first_step = true;

@@ -9,9 +9,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <numeric>
-
 #include <fcntl.h>
+#include <numeric>
 #include <unistd.h>
 
 namespace gapfem::output {
@@ -46,7 +45,9 @@ void sync_directory(const std::filesystem::path& dir) {
 } // namespace
 
 namespace testing {
-void limit_writes(long long bytes) { g_write_budget = bytes; }
+void limit_writes(long long bytes) {
+  g_write_budget = bytes;
+}
 } // namespace testing
 
 OutputFile::~OutputFile() {

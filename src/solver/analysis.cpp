@@ -241,7 +241,7 @@ ModelCheck Analysis::check() {
 void Analysis::Impl::initial_gap_status(ModelCheck& c) {
   // the gaps' own recovery at the reference configuration, before any load
   const std::vector<double> T0 = st.T_initial;
-  const FieldView fields{st.u, st.u, T0, T0, T0};
+  const FieldView fields{st.u, st.u, T0, T0, T0, {}};
   StepContext ctx;
   ctx.space = model.space;
   ctx.model_size = model.model_size();
@@ -419,7 +419,10 @@ StepSummary Analysis::Impl::run_step(int index) {
       ++sum.increments;
       step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
       write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
-      for (auto* w : writers) w->increment(info);
+      {
+        ScopedTimer timer(&stats, TimeCategory::Output); // the JSON checkpoint is output time
+        for (auto* w : writers) w->increment(info);
+      }
       continue;
     }
     // Failed attempt: explain, cut back or stop.

@@ -151,8 +151,8 @@ TEST(DurableResults, KillAtAnyPointKeepsEveryReportedIncrement) {
     }
     const std::vector<int> reported = sta_converged(dir / "job.sta");
     const int reported_last = reported.empty() ? 0 : reported.back();
-    SCOPED_TRACE(fmt::format("killed after {} increments; the .sta reports {}", kill_after,
-                             reported_last));
+    SCOPED_TRACE(
+        fmt::format("killed after {} increments; the .sta reports {}", kill_after, reported_last));
     const int upto = check_results(dir, every);
     EXPECT_GE(upto, reported_last);
     if (exited) EXPECT_EQ(upto, n);

@@ -5,6 +5,10 @@
 namespace gapfem::inp {
 
 void Diagnostics::error(const InputError& e) {
+  if (_muted) {
+    ++_suppressed;
+    return;
+  }
   _errors.push_back(e);
   if (static_cast<int>(_errors.size()) >= _max_errors) throw TooManyErrors{};
 }

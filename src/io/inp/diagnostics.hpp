@@ -29,6 +29,10 @@ class Diagnostics {
   void warning(const SourceLocation& loc, const std::string& message);
 
   int n_errors() const { return static_cast<int>(_errors.size()); }
+  /// While muted, errors are dropped (counted in n_suppressed()): used for checks whose failures
+  /// would only be consequences of errors already reported.
+  void set_muted(bool muted) { _muted = muted; }
+  int n_suppressed() const { return _suppressed; }
   const std::vector<InputError>& errors() const { return _errors; }
   const std::vector<std::string>& warnings() const { return _warnings; }
 
@@ -38,6 +42,8 @@ class Diagnostics {
 
  private:
   int _max_errors;
+  bool _muted = false;
+  int _suppressed = 0;
   std::vector<InputError> _errors;
   std::vector<std::string> _warnings;
 };

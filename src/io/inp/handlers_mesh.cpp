@@ -196,13 +196,13 @@ void handle_element(BuildState& s, const Keyword& kw) {
         continue;
       }
       if (info.cell) // a cell lists distinct nodes (a repeated midside node is a typing error)
-        for (std::size_t i = 0; i < nodes.size(); ++i)
-          for (std::size_t j = i + 1; j < nodes.size(); ++j)
-            if (nodes[i] == nodes[j])
+        for (std::size_t a = 0; a < nodes.size(); ++a)
+          for (std::size_t b = a + 1; b < nodes.size(); ++b)
+            if (nodes[a] == nodes[b])
               r.fail(ent, fmt::format("node {} is given twice (positions {} and {} of the {} "
                                       "nodes); each node of a {} element is a distinct node: "
                                       "check the connectivity",
-                                      s.model.label_of_key(node_keys[i]), i + 1, j + 1,
+                                      s.model.label_of_key(node_keys[a]), a + 1, b + 1,
                                       info.n_nodes, info.name));
       const ElemId id = mesh.n_elements();
       mesh.elem_labels.push_back(key);

@@ -84,8 +84,7 @@ std::string unquote(std::string_view v) {
 std::string read_file(const fs::path& path, std::string& out, std::uintmax_t limit) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st))
-    return "it does not exist; check the name and the directory";
+  if (ec || !fs::exists(st)) return "it does not exist; check the name and the directory";
   if (fs::is_directory(st)) return "it is a directory, not an input file; name a .inp file in it";
   if (!fs::is_regular_file(st))
     return "it is not a regular file (a device, FIFO or socket); give the path of a deck file";
@@ -126,9 +125,9 @@ class Lexer {
  private:
   Diagnostics& _diag;
   Deck _deck;
-  int _current = -1; ///< index of the keyword receiving data lines (spans
-                     ///< *INCLUDE boundaries)
-  bool _drop_data = false;        ///< after a keyword line in error: its data lines are dropped
+  int _current = -1;               ///< index of the keyword receiving data lines (spans
+                                   ///< *INCLUDE boundaries)
+  bool _drop_data = false;         ///< after a keyword line in error: its data lines are dropped
   std::vector<std::string> _stack; ///< the files being lexed, outermost first (cycle check)
   std::uintmax_t _bytes = 0;       ///< deck text read so far, all files
 
@@ -259,10 +258,11 @@ class Lexer {
     path = dir / p->value;
     const std::string why = read_file(path, text, kMaxDeckBytes - std::min(_bytes, kMaxDeckBytes));
     if (!why.empty()) {
-      _diag.error(at, fmt::format("INPUT={}", p->value),
-                  fmt::format("cannot read file '{}': {} (paths are relative to the directory of the file "
-                              "that contains this line)",
-                              path.lexically_normal().string(), why));
+      _diag.error(
+          at, fmt::format("INPUT={}", p->value),
+          fmt::format("cannot read file '{}': {} (paths are relative to the directory of the file "
+                      "that contains this line)",
+                      path.lexically_normal().string(), why));
       return false;
     }
     _bytes += text.size();

@@ -262,6 +262,14 @@ void check_materials(BuildState& s) {
 void finish_model_data(BuildState& s) {
   if (s.model_done) return;
   s.model_done = true;
+  // With errors already reported, the model is still bound (the steps refer to it) but its
+  // checks stay silent: elements without a section, a material without *ELASTIC, ... would only
+  // be false follow-ons of a definition reported in error.
+  struct Mute {
+    Diagnostics& d;
+    ~Mute() { d.set_muted(false); }
+  } mute{s.diag};
+  s.diag.set_muted(s.diag.n_errors() > 0);
   Model& m = s.model;
   if (s.recording) {
     s.error(s.recording->loc, fmt::format("part {}", s.recording->name),

@@ -101,7 +101,8 @@ TEST(ReaderLimits, AnIncludeCycleIsNamedOnce) {
   EXPECT_CONTAINS(e, "b.inp includes");
   EXPECT_EQ(n_lines(e), 1) << e; // no "node 1 defined twice" from reading a.inp again
   // the same file included twice in a row is no cycle
-  test::write_file(dir / "twice.inp", "*HEADING\nx\n*INCLUDE, INPUT=n.inp\n*INCLUDE, INPUT=n.inp\n");
+  test::write_file(dir / "twice.inp",
+                   "*HEADING\nx\n*INCLUDE, INPUT=n.inp\n*INCLUDE, INPUT=n.inp\n");
   test::write_file(dir / "n.inp", "** nothing but a comment\n");
   EXPECT_EQ(read_error(dir / "twice.inp"), "");
 }
