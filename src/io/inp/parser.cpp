@@ -4,6 +4,7 @@
 
 #include <array>
 #include <fmt/format.h>
+#include <unordered_map>
 
 namespace gapfem::inp {
 namespace {
@@ -135,9 +136,14 @@ std::span<const KeywordSpec> table() {
 }
 
 const KeywordSpec* find_spec(const std::string& key) {
-  for (const auto& spec : table())
-    if (canonical(spec.name.substr(1)) == key) return &spec;
-  return nullptr;
+  // canonical key -> spec, built once (a deck looks up every keyword line)
+  static const std::unordered_map<std::string, const KeywordSpec*> index = [] {
+    std::unordered_map<std::string, const KeywordSpec*> m;
+    for (const auto& spec : table()) m.emplace(canonical(spec.name.substr(1)), &spec);
+    return m;
+  }();
+  const auto it = index.find(key);
+  return it == index.end() ? nullptr : it->second;
 }
 
 bool accepts(const KeywordSpec& spec, const std::string& param_key) {
@@ -253,6 +259,46 @@ void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
 
 void dispatch(BuildState& s, Keyword& kw);
 
+/// After `kw` failed as a whole (an InputError left its handler, or the lexer reported its
+/// keyword line): the names it would have
+/// defined are remembered, so that their uses raise no false "is not defined", and the sub-options
+/// of a failed block keyword are skipped quietly instead of attaching to an earlier block.
+void note_failed_definition(BuildState& s, const Keyword& kw) {
+  auto name = [&](std::string_view param) -> std::string {
+    const Parameter* p = kw.find(param);
+    return p && p->has_value ? to_upper(trim(p->value)) : std::string();
+  };
+  auto add = [](std::unordered_set<std::string>& names, std::string n) {
+    if (!n.empty()) names.insert(std::move(n));
+  };
+  auto add_set = [&](std::string_view param) {
+    std::string n = name(param);
+    if (n.empty()) return;
+    const auto dot = n.find('.');
+    if (dot == std::string::npos || !s.instance_index.count(n.substr(0, dot))) n = s.set_name(n);
+    s.bad_sets.insert(std::move(n));
+  };
+  if (kw.key == "AMPLITUDE") add(s.bad_amplitudes, name("NAME"));
+  if (kw.key == "MATERIAL") add(s.bad_materials, name("NAME"));
+  if (kw.key == "PART") add(s.bad_parts, name("NAME"));
+  if (kw.key == "INSTANCE") add(s.bad_instances, name("NAME"));
+  if (kw.key == "NSET" || kw.key == "NODE") add_set("NSET");
+  if (kw.key == "ELSET" || kw.key == "ELEMENT") add_set("ELSET");
+  if (const KeywordSpec* spec = find_spec(kw.key);
+      spec && spec->opens != Parent::None && (s.parent == spec->opens || kw.failed))
+    s.parent = Parent::Unsupported;
+}
+
+/// Runs one keyword; an input error is recorded and the keyword's definitions are noted as failed.
+void run_keyword(BuildState& s, Keyword& kw) {
+  try {
+    dispatch(s, kw);
+  } catch (const InputError& e) {
+    s.diag.error(e);
+    note_failed_definition(s, kw);
+  }
+}
+
 /// *END INSTANCE: reads the part's keywords (and the instance's own) again in the instance's
 /// scope. Errors of a part are reported for its first instance only: a later instance whose part
 /// failed is not read again.
@@ -271,13 +317,7 @@ void expand_instance(BuildState& s) {
   s.scope = def.scope;
   s.parent = Parent::None;
   const std::size_t errors_before = static_cast<std::size_t>(s.diag.n_errors());
-  auto run = [&](Keyword* kw) {
-    try {
-      dispatch(s, *kw);
-    } catch (const InputError& e) {
-      s.diag.error(e);
-    }
-  };
+  auto run = [&](Keyword* kw) { run_keyword(s, *kw); };
   for (Keyword* kw : part.keywords) run(kw);
   part.failed = static_cast<std::size_t>(s.diag.n_errors()) > errors_before;
   for (Keyword* kw : def.keywords) run(kw);
@@ -287,6 +327,10 @@ void expand_instance(BuildState& s) {
 
 void dispatch(BuildState& s, Keyword& kw) {
   if (record_keyword(s, kw)) return; // inside *PART or *INSTANCE: read per instance
+  if (kw.failed) {                   // its keyword line was reported by the lexer
+    note_failed_definition(s, kw);
+    return;
+  }
   const KeywordSpec* spec = find_spec(kw.key);
   if (!spec) {
     // unknown keyword: the current block stays open (an ignored *PLASTIC keeps its *MATERIAL)
@@ -354,13 +398,7 @@ void parse_deck(Deck& deck, BuildState& s) {
     assembly |= kw.key == "ASSEMBLY" || kw.key == "INSTANCE";
   }
   s.transparent_parts = part && !assembly;
-  for (Keyword& kw : deck.keywords) {
-    try {
-      dispatch(s, kw);
-    } catch (const InputError& e) {
-      s.diag.error(e);
-    }
-  }
+  for (Keyword& kw : deck.keywords) run_keyword(s, kw);
   finish_deck(s);
 }
 
