@@ -8,7 +8,9 @@ gap force 0.5). With the default n = 578: 334,084 nodes, 1,002,252 equations, 40
 Used to time the output of a 1M-equation frame (job.dat with *NODE PRINT of every node,
 job.results.json and the ParaView frame), which the solve does not hide:
     bench/gen_output_1m.py -o out1m.inp && build/release/gapfem out1m.inp
-(the timing line "output" of the terminal summary).
+(the timing line "output" of the terminal summary). With --increments n the step has n fixed
+increments, each a frame of every node in job.results.json: summary.publication_seconds of that
+file is the cost of keeping it a complete document after every increment (docs/results.md).
 """
 import argparse
 
@@ -18,6 +20,9 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--n", type=int, default=578, help="nodes per side of the grid")
     ap.add_argument("--gaps-side", type=int, default=200, help="side of the patch with gaps")
+    ap.add_argument("--increments", type=int, default=1,
+                    help="fixed increments of the step (*STATIC, DIRECT): each one is a frame "
+                         "with the *NODE PRINT of every node, published to job.results.json")
     ap.add_argument("-o", "--output", default="out1m.inp")
     a = ap.parse_args()
     n, g = a.n, a.gaps_side
@@ -47,7 +52,10 @@ def main():
             f.write(f"{40_000_000 + k + 1}, {node}, {ground0 + k}\n")
         f.write("*GAP, ELSET=GAPS\n0.5, 0., 0., -1., 1.\n")
         f.write("*BOUNDARY\nGROUND, 1, 3\n")
-        f.write("*STEP\n*STATIC\n*CLOAD\nFREE, 3, -1.\n*NODE PRINT, NSET=FREE\nU, RF\n"
+        inc = 1.0 / a.increments
+        static = f"*STATIC, DIRECT\n{inc!r}, 1.\n" if a.increments > 1 else "*STATIC\n"
+        f.write(f"*STEP, INC={a.increments + 10}\n{static}*CLOAD\nFREE, 3, -1.\n"
+                "*NODE PRINT, NSET=FREE\nU, RF\n"
                 "*EL PRINT, ELSET=GAPS\nS, E\n*END STEP\n")
     print(f"nodes {n * n + len(patch)}, equations {3 * n * n}, gaps {len(patch)}")
 

@@ -167,6 +167,8 @@ void JsonWriter::append_tail(fmt::memory_buffer& b, const RunSummary& summary) c
   } else {
     b.append(std::string_view("null"));
   }
+  // time spent publishing the document after increments (part of "output")
+  number_field(b, "publication_seconds", _publish_seconds);
   b.append(std::string_view(",\"warnings\":["));
   for (std::size_t i = 0; i < summary.warnings.size(); ++i) {
     if (i) b.push_back(',');
@@ -194,15 +196,19 @@ void JsonWriter::increment(const IncrementInfo& info) {
 void JsonWriter::publish(std::string_view suffix) {
   if (_failed || !_out.is_open()) return;
   try {
+    const Stopwatch watch;
     _out.flush();
-    output::OutputFile doc;
-    doc.open(_path, output::OutputFile::Mode::Replace);
-    doc.append_file(_out.path());
-    doc.write(suffix);
-    doc.close();
+    _shadow.publish(_out.path(), std::filesystem::file_size(_out.path()), suffix);
+    _publish_seconds += watch.seconds();
   } catch (const AnalysisError&) {
     _failed = true; // the previous complete document stays; the first error is reported
+    _shadow.finish();
     throw;
+  } catch (const std::filesystem::filesystem_error& e) {
+    _failed = true;
+    _shadow.finish();
+    throw AnalysisError(
+        fmt::format("cannot write results file '{}': {}", _path.string(), e.code().message()));
   }
 }
 
@@ -226,6 +232,7 @@ void JsonWriter::end(const Model& model, const RunSummary& summary) {
   fmt::memory_buffer suffix;
   append_tail(suffix, summary);
   publish(std::string_view(suffix.data(), suffix.size()));
+  _shadow.finish();
   _out.close();
   std::error_code ec;
   std::filesystem::remove(part_path(), ec);

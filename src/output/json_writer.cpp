@@ -66,6 +66,8 @@ void JsonWriter::begin(const Model& model) {
   _failed = false;
   _has_last = false;
   _seen = RunStatistics{};
+  _shadow.begin(_path);
+  _publish_seconds = 0.0;
   _out.open(part_path());
   auto& b = _out.buffer();
   b.append(std::string_view("{\"schema\":\"gapfem.results/1\",\"job\":"));

@@ -2,13 +2,14 @@
 /// @file json_writer.hpp
 /// job.results.json, schema "gapfem.results/1" (docs/results.md). The document
 /// is streamed into job.results.json.part: each frame is formatted into a buffer and written in
-/// large chunks. After every converged increment (and each step's end) the part is copied with a
-/// closing tail into job.results.json.tmp, which is fsync'ed and renamed over job.results.json:
-/// the file is at every moment one complete JSON document (a kill -9 or a full disk leaves the
-/// last one). end() publishes the final document and removes the part.
+/// large chunks. After every converged increment (and each step's end) the part with a closing
+/// tail is published as job.results.json by output::ShadowDocument, at the cost of the bytes added
+/// since the last publication: the file is at every moment one complete JSON document (a kill -9
+/// or a full disk leaves the last one). end() publishes the final document and removes the part.
 #include "common/timer.hpp"
 #include "output/output_file.hpp"
 #include "output/results.hpp"
+#include "output/shadow_document.hpp"
 
 #include <array>
 #include <filesystem>
@@ -49,9 +50,11 @@ class JsonWriter : public ResultWriter {
 
   std::filesystem::path _path;
   std::string _job;
-  const Model* _model = nullptr; ///< the model of begin() (names of instance entities)
-  output::OutputFile _out;       ///< the document's body so far (job.results.json.part)
-  bool _failed = false;          ///< a write failed: the last published document stays
+  const Model* _model = nullptr;  ///< the model of begin() (names of instance entities)
+  output::OutputFile _out;        ///< the document's body so far (job.results.json.part)
+  output::ShadowDocument _shadow; ///< publishes body + tail as job.results.json
+  double _publish_seconds = 0.0;  ///< wall time of the publications so far
+  bool _failed = false;           ///< a write failed: the last published document stays
   Stopwatch _watch;
   RunStatistics _seen; ///< increments, attempts and iterations reported so far
   IncrementInfo _last; ///< the last converged increment

@@ -76,6 +76,23 @@ void OutputFile::open(const std::filesystem::path& path, Mode mode) {
   if (!_file) fail("cannot create");
 }
 
+void OutputFile::open_update(const std::filesystem::path& file, std::uintmax_t keep,
+                             const std::filesystem::path& shown) {
+  close();
+  _path = shown;
+  _staging = file;
+  _mode = Mode::Update;
+  _failed = false;
+  _errno = 0;
+  _buffer.clear();
+  _file = std::fopen(file.c_str(), "r+b");
+  if (!_file) _file = std::fopen(file.c_str(), "w+b");
+  if (!_file) fail("cannot create");
+  if (::ftruncate(fileno(_file), static_cast<off_t>(keep)) != 0 ||
+      std::fseek(_file, 0, SEEK_END) != 0)
+    fail("cannot write");
+}
+
 void OutputFile::fail(const char* what) {
   const int err = errno;
   _errno = err;
@@ -116,13 +133,27 @@ void OutputFile::write_bytes(const void* data, std::size_t n) {
 }
 
 void OutputFile::append_file(const std::filesystem::path& source) {
-  if (!_file) return;
+  append_file_range(source, 0, UINTMAX_MAX);
+}
+
+void OutputFile::append_file_range(const std::filesystem::path& source, std::uintmax_t from,
+                                   std::uintmax_t to) {
+  if (!_file || to <= from) return;
   drain();
   std::FILE* in = std::fopen(source.c_str(), "rb");
   if (!in) fail("cannot read the staged part of the");
+  if (from > 0 && std::fseek(in, static_cast<long>(from), SEEK_SET) != 0) {
+    std::fclose(in);
+    fail("cannot read the staged part of the");
+  }
   std::vector<char> chunk(kChunk);
+  std::uintmax_t left = to - from;
   std::size_t got = 0;
-  while ((got = std::fread(chunk.data(), 1, chunk.size(), in)) > 0) {
+  while (left > 0 &&
+         (got = std::fread(chunk.data(), 1,
+                           static_cast<std::size_t>(std::min<std::uintmax_t>(chunk.size(), left)),
+                           in)) > 0) {
+    left -= got;
     if (write_limited(chunk.data(), got, _file) != got) {
       std::fclose(in);
       fail("cannot write");
@@ -142,7 +173,7 @@ void OutputFile::close() {
   if (!_file) return;
   drain();
   if (std::fflush(_file) != 0) fail("cannot write");
-  if (_mode == Mode::Replace && ::fsync(fileno(_file)) != 0) fail("cannot write");
+  if (_mode != Mode::InPlace && ::fsync(fileno(_file)) != 0) fail("cannot write");
   const int rc = std::fclose(_file);
   _file = nullptr;
   if (rc != 0) fail("cannot close");

@@ -8,6 +8,7 @@
 #include "elements/element_kernel.hpp"
 #include "output/results.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fmt/compile.h>
@@ -29,7 +30,9 @@ namespace gapfem::output {
 /// once, later writes and close() do nothing, and a Replace file's partial copy is removed.
 class OutputFile {
  public:
-  enum class Mode { InPlace, Replace };
+  /// InPlace: written under its name; Replace: staged and renamed at close(); Update: an existing
+  /// file cut to a given length and appended to, fsync'ed at close() (ShadowDocument).
+  enum class Mode { InPlace, Replace, Update };
 
   OutputFile() = default;
   ~OutputFile();
@@ -38,6 +41,10 @@ class OutputFile {
 
   /// Create (truncate) `path` for writing (Replace: its staging copy).
   void open(const std::filesystem::path& path, Mode mode = Mode::InPlace);
+  /// Mode::Update: open `file` (created when missing) keeping its first `keep` bytes, to append
+  /// to them; errors name `shown`, the document the file stands for.
+  void open_update(const std::filesystem::path& file, std::uintmax_t keep,
+                   const std::filesystem::path& shown);
   bool is_open() const { return _file != nullptr; }
   bool failed() const { return _failed; }
   /// The errno of the failure (0 when none).
@@ -52,6 +59,9 @@ class OutputFile {
   void write_bytes(const void* data, std::size_t n);
   /// Append the whole content of another (flushed) file.
   void append_file(const std::filesystem::path& source);
+  /// Append bytes [from, to) of another (flushed) file.
+  void append_file_range(const std::filesystem::path& source, std::uintmax_t from,
+                         std::uintmax_t to);
   /// Hand the buffer to the operating system when it holds more than the chunk
   /// size.
   void maybe_flush() {
@@ -72,7 +82,7 @@ class OutputFile {
 
   std::FILE* _file = nullptr;
   std::filesystem::path _path;    ///< the final name
-  std::filesystem::path _staging; ///< Replace: the file written; InPlace: _path
+  std::filesystem::path _staging; ///< the file written (Replace: _path + ".tmp"; InPlace: _path)
   Mode _mode = Mode::InPlace;
   bool _failed = false;
   int _errno = 0;

@@ -23,8 +23,8 @@ struct WriterOptions {
 };
 
 /// The writers selected by `options`, in the order dat, json, vtu, sta,
-/// terminal (what reports an increment comes after what stores it). Files are opened in begin(); errors opening or writing them raise
-/// AnalysisError.
+/// terminal (what reports an increment comes after what stores it). Files are opened in begin();
+/// errors opening or writing them raise AnalysisError.
 std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);
 
 } // namespace gapfem

@@ -177,8 +177,11 @@ TEST(DurableResults, FullDiskKeepsTheLastCompleteFiles) {
     output::testing::limit_writes(budget);
     const JobResult r = run_job(o);
     output::testing::limit_writes(-1);
-    for (const auto& e : std::filesystem::directory_iterator(dir))
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
       EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+      EXPECT_NE(e.path().extension(), ".a") << e.path(); // the shadows of job.results.json
+      EXPECT_NE(e.path().extension(), ".b") << e.path();
+    }
     if (r.exit_code == kExitOk) {
       EXPECT_EQ(check_results(dir, every), n);
       continue;
