@@ -43,12 +43,13 @@ struct SolidSection {
 struct BeamSection {
   /// library shapes (docs/theory/structural.md §3.1); General: SECTION=GENERAL of *BEAM GENERAL
   /// SECTION (A, I11, I12, I22, J given directly)
-  enum class Shape { Rect, Circ, Pipe, Box, I, General, Hex };
+  enum class Shape { Rect, Circ, Pipe, Box, I, General, Hex, L, Trapezoid };
   std::string elset;
   int material = -1; ///< *BEAM SECTION; -1 for *BEAM GENERAL SECTION (constants below)
   Shape shape = Shape::Rect;
   /// RECT: a (local 1), b (local 2); CIRC: r; PIPE: r (outer), t; BOX: a, b, t1, t2, t3, t4;
-  /// I: l, h, b1, b2, t1, t2, t3; GENERAL: A, I11, I12, I22, J
+  /// I: l, h, b1, b2, t1, t2, t3; GENERAL: A, I11, I12, I22, J; HEX: r, t; L: a, b, t1, t2;
+  /// TRAPEZOID: a (bottom width), b (height), c (top width), d (origin above the bottom)
   std::vector<double> dims;
   Vec3 n1{0.0, 0.0, -1.0}; ///< approximate local 1-direction (Abaqus default (0,0,-1))
   bool n1_given = false;

@@ -1,5 +1,6 @@
 #include "elements/structural/beam_section.hpp"
 
+#include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -35,6 +36,10 @@ const char* shape_name(BeamSection::Shape s) {
     return "GENERAL";
   case BeamSection::Shape::Hex:
     return "HEX";
+  case BeamSection::Shape::L:
+    return "L";
+  case BeamSection::Shape::Trapezoid:
+    return "TRAPEZOID";
   }
   return "?";
 }
@@ -176,6 +181,64 @@ void hex(BeamSectionProperties& p, const Checker& c, const std::vector<double>& 
   p.torsion_radius = {tr, tr, tr, tr};
 }
 
+/// L: a (leg along axis 1, thickness t1 across it), b (leg along axis 2, thickness t2), the legs
+/// meeting at the outer corner; the origin is the centroid (Abaqus gives no offset for L). Thin
+/// walled like I: the two legs on their mid-lines, from the mid-line corner to the tips (the area
+/// a t1 + b t2 - t1 t2 is exact); open: J = sum(L t^3) / 3.
+void l_section(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
+  c.need(4, "a, b, t1, t2");
+  const double a = d[0], b = d[1], t1 = d[2], t2 = d[3];
+  if (!(t1 < b) || !(t2 < a))
+    c.fail(fmt::format(
+        "each leg must be thinner than the other leg is long (t1 = {} must be below b = {} and "
+        "t2 = {} below a = {})",
+        t1, b, t2, a));
+  const double la = a - 0.5 * t2, lb = b - 0.5 * t1; // mid-line lengths of the legs
+  const double area = t1 * la + t2 * lb;
+  // centroid from the outer corner (the corner of the mid-lines is at (t2/2, t1/2))
+  const double c1 = (t1 * la * (0.5 * t2 + 0.5 * la) + t2 * lb * 0.5 * t2) / area;
+  const double c2 = (t1 * la * 0.5 * t1 + t2 * lb * (0.5 * t1 + 0.5 * lb)) / area;
+  const P2 corner{0.5 * t2 - c1, 0.5 * t1 - c2};
+  add_wall(p, corner, {a - c1, corner[1]}, t1);
+  add_wall(p, corner, {corner[0], b - c2}, t2);
+  p.J = (la * t1 * t1 * t1 + lb * t2 * t2 * t2) / 3.0;
+  p.k = kShearThinWall;
+  // the leg tips and the outer corner, on the outer faces
+  p.n_points = 3;
+  p.points = {{{a - c1, -c2}, {-c1, -c2}, {-c1, b - c2}}};
+  p.torsion_radius = {t1, std::max(t1, t2), t2};
+}
+
+/// TRAPEZOID: a (bottom width), b (height), c (top width), d (the origin's height above the
+/// bottom), symmetric about axis 2. A solid polygon: A, Q and I exact; J from Prandtl's stress
+/// function (trapezoid_torsion_constant).
+void trapezoid(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
+  c.need(4, "a, b, c, d", 4);
+  const double a = d[0], b = d[1], top = d[2], off = d[3];
+  if (!(a > 0.0) || !(b > 0.0) || !(top >= 0.0))
+    c.fail(fmt::format("the widths a and c and the height b must be positive (c may be 0 for a "
+                       "triangle), not a = {}, b = {}, c = {}",
+                       a, b, top));
+  // corners counter-clockwise: bottom right, top right, top left, bottom left
+  const P2 v[4] = {{0.5 * a, -off}, {0.5 * top, b - off}, {-0.5 * top, b - off}, {-0.5 * a, -off}};
+  for (int i = 0; i < 4; ++i) { // polygon (Green's theorem) integrals
+    const P2 &p0 = v[i], &p1 = v[(i + 1) % 4];
+    const double x0 = p0[0], y0 = p0[1], x1 = p1[0], y1 = p1[1];
+    const double cr = x0 * y1 - x1 * y0;
+    p.A += 0.5 * cr;
+    p.Q1 += cr * (x0 + x1) / 6.0;
+    p.Q2 += cr * (y0 + y1) / 6.0;
+    p.I11 += cr * (y0 * y0 + y0 * y1 + y1 * y1) / 12.0;
+    p.I22 += cr * (x0 * x0 + x0 * x1 + x1 * x1) / 12.0;
+    p.I12 += cr * (x0 * y1 + 2.0 * x0 * y0 + 2.0 * x1 * y1 + x1 * y0) / 24.0;
+  }
+  p.J = trapezoid_torsion_constant(a, b, top);
+  p.k = kShearRect;
+  p.n_points = 4; // the corners (no torsional shear at a convex corner)
+  p.points = {{v[1], v[2], v[3], v[0]}};
+  p.torsion_radius = {0.0, 0.0, 0.0, 0.0};
+}
+
 void general(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d,
              bool planar) {
   c.need(2, "A, I11, I12, I22, J (A and I11 at least)");
@@ -214,6 +277,80 @@ double rectangle_torsion_constant(double a, double b) {
   return a * b * b * b / 3.0 * (1.0 - 192.0 / std::pow(pi, 5) * (b / a) * sum);
 }
 
+double trapezoid_torsion_constant(double a, double b, double c) {
+  // Prandtl: laplace(phi) = -2 in the section, phi = 0 on its boundary, J = 2 * integral(phi).
+  // Bilinear elements on the trapezoid mapped from the unit square (x2 = eta b, half width
+  // w(eta) = (a + (c - a) eta) / 2); J from two meshes, Richardson-extrapolated (error O(h^4)).
+  auto solve = [&](int n) {
+    const int nn = n + 1;
+    auto id = [&](int i, int j) { return j * nn + i; };
+    auto at = [&](double xi, double eta) -> P2 {
+      return {(2.0 * xi - 1.0) * 0.5 * (a + (c - a) * eta), eta * b};
+    };
+    std::vector<Eigen::Triplet<double>> trip;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(nn * nn);
+    const double g = 1.0 / std::sqrt(3.0);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int nodes[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+        P2 x[4];
+        const double s[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int k = 0; k < 4; ++k) x[k] = at((i + s[k][0]) / n, (j + s[k][1]) / n);
+        double ke[4][4] = {}, fe[4] = {};
+        for (double gr : {-g, g})
+          for (double gs : {-g, g}) {
+            const double r = gr, t = gs;
+            const double N[4] = {0.25 * (1 - r) * (1 - t), 0.25 * (1 + r) * (1 - t),
+                                 0.25 * (1 + r) * (1 + t), 0.25 * (1 - r) * (1 + t)};
+            const double dr[4] = {-0.25 * (1 - t), 0.25 * (1 - t), 0.25 * (1 + t), -0.25 * (1 + t)};
+            const double ds[4] = {-0.25 * (1 - r), -0.25 * (1 + r), 0.25 * (1 + r), 0.25 * (1 - r)};
+            double J11 = 0, J12 = 0, J21 = 0, J22 = 0;
+            for (int k = 0; k < 4; ++k) {
+              J11 += dr[k] * x[k][0];
+              J12 += dr[k] * x[k][1];
+              J21 += ds[k] * x[k][0];
+              J22 += ds[k] * x[k][1];
+            }
+            const double det = J11 * J22 - J12 * J21;
+            if (!(det > 0.0)) continue; // the collapsed apex of a triangle
+            double gx[4], gy[4];
+            for (int k = 0; k < 4; ++k) {
+              gx[k] = (J22 * dr[k] - J12 * ds[k]) / det;
+              gy[k] = (-J21 * dr[k] + J11 * ds[k]) / det;
+            }
+            for (int k = 0; k < 4; ++k) {
+              fe[k] += 2.0 * N[k] * det;
+              for (int l = 0; l < 4; ++l) ke[k][l] += (gx[k] * gx[l] + gy[k] * gy[l]) * det;
+            }
+          }
+        for (int k = 0; k < 4; ++k) {
+          f[nodes[k]] += fe[k];
+          for (int l = 0; l < 4; ++l) trip.emplace_back(nodes[k], nodes[l], ke[k][l]);
+        }
+      }
+    // phi = 0 on the boundary: unit rows for the boundary nodes
+    std::vector<char> boundary(static_cast<std::size_t>(nn * nn), 0);
+    for (int k = 0; k < nn; ++k)
+      boundary[id(k, 0)] = boundary[id(k, n)] = boundary[id(0, k)] = boundary[id(n, k)] = 1;
+    std::vector<Eigen::Triplet<double>> kept;
+    for (const auto& t : trip)
+      if (!boundary[t.row()] && !boundary[t.col()]) kept.push_back(t);
+    Eigen::VectorXd rhs = f;
+    for (int k = 0; k < nn * nn; ++k)
+      if (boundary[k]) {
+        kept.emplace_back(k, k, 1.0);
+        rhs[k] = 0.0;
+      }
+    Eigen::SparseMatrix<double> K(nn * nn, nn * nn);
+    K.setFromTriplets(kept.begin(), kept.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(K);
+    const Eigen::VectorXd phi = ldlt.solve(rhs);
+    return f.dot(phi); // f = integral(2 N): f . phi = 2 integral(phi) = J
+  };
+  const double coarse = solve(40), fine = solve(80);
+  return (4.0 * fine - coarse) / 3.0;
+}
+
 BeamSectionProperties beam_section_properties(const BeamSection& section, bool planar) {
   const Checker c(section);
   const auto& d = section.dims;
@@ -248,6 +385,12 @@ BeamSectionProperties beam_section_properties(const BeamSection& section, bool p
     break;
   case BeamSection::Shape::Hex:
     hex(p, c, d);
+    break;
+  case BeamSection::Shape::L:
+    l_section(p, c, d);
+    break;
+  case BeamSection::Shape::Trapezoid:
+    trapezoid(p, c, d);
     break;
   }
   if (!section.output_points.empty()) {

@@ -1,8 +1,8 @@
 #pragma once
 /// @file beam_section.hpp
 /// Geometric properties of the beam sections gapfem supports: the *BEAM SECTION library shapes
-/// RECT, CIRC, PIPE (solid/annulus, exact), BOX and I (thin-walled, integrated along the wall
-/// mid-lines as Abaqus does), and SECTION=GENERAL of *BEAM GENERAL SECTION; their shear correction
+/// RECT, CIRC, PIPE (solid/annulus, exact), TRAPEZOID (solid polygon), BOX, I, HEX and L
+/// (thin-walled, integrated along the wall mid-lines as Abaqus does), and SECTION=GENERAL of *BEAM GENERAL SECTION; their shear correction
 /// factors, and the section points used for stress output. All properties are about the section
 /// origin (the beam node), which need not be the centroid (the I section's is not).
 /// Formulas and sources: docs/theory/structural.md §3.3.
@@ -49,5 +49,10 @@ BeamSectionProperties beam_section_properties(const BeamSection& section, bool p
 
 /// Torsion constant of an a x b rectangle (exact St. Venant series, Timoshenko & Goodier §109).
 double rectangle_torsion_constant(double a, double b);
+
+/// Torsion constant of a symmetric trapezoid of bottom width a, height b and top width c (c = 0:
+/// an isosceles triangle): Prandtl's stress function by finite elements, extrapolated (relative
+/// error below 1e-5; tests/unit/elements/beam_section_test.cpp).
+double trapezoid_torsion_constant(double a, double b, double c);
 
 } // namespace gapfem

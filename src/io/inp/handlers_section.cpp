@@ -135,6 +135,9 @@ const ShapeSpec kShapes[] = {
     {"I", BeamSection::Shape::I, {"offset l", "height h", "b1", "b2", "t1", "t2", "t3"}, 1},
     {"GENERAL", BeamSection::Shape::General, {"A", "I11", "I12", "I22", "J"}, 5},
     {"HEX", BeamSection::Shape::Hex, {"outer radius r", "wall thickness t"}, 0},
+    {"L", BeamSection::Shape::L, {"width a", "height b", "t1", "t2"}, 0},
+    // c may be 0 (a triangle) and d anything: checked with the section's other rules
+    {"TRAPEZOID", BeamSection::Shape::Trapezoid, {"width a", "height b", "top width c", "d"}, 4},
 };
 
 std::string dim_list(const ShapeSpec& sp) {
@@ -158,8 +161,8 @@ void read_beam_geometry(BuildState& s, const Keyword& kw, BeamSection& sec, bool
       spec = &sp;
   if (spec == nullptr) {
     const std::string c = canonical(given);
-    const bool known = c == "L" || c == "TRAPEZOID" || c == "ARBITRARY" || c == "THICKPIPE" ||
-                       c == "ELBOW" || c == "MESHED" || c == "NONLINEARGENERAL";
+    const bool known = c == "ARBITRARY" || c == "THICKPIPE" || c == "ELBOW" || c == "MESHED" ||
+                       c == "NONLINEARGENERAL";
     throw InputError(kw.loc, fmt::format("SECTION={}", given),
                      fmt::format("{}gapfem's beam sections are {}",
                                  known ? "this section is not "

@@ -68,6 +68,46 @@ TEST(VerificationStructuralBeamSections, BoxIGeneralHexAndB32Cantilevers) {
   }
 }
 
+TEST(VerificationStructuralBeamSections, LAndTrapezoidCantilevers) {
+  DeckRun run("beam_sections_l_trapezoid.inp");
+  if (!run.ok()) return;
+  {
+    // L a = 80 (leg along 1, thickness t1 = 6), b = 120 (leg along 2, t2 = 5), origin at the
+    // centroid. Thin-walled: strips on the mid-lines from the corner (t2/2, t1/2): along 1 of
+    // length a - t2/2, along 2 of length b - t1/2. Tip Fx = 1e4 (at the centroid: no bending),
+    // Fy = 1000 (unsymmetric bending as the GENERAL section above, k = 0.44), torque 1e4
+    // (J = sum L t^3 / 3).
+    const double a = 80, b = 120, t1 = 6, t2 = 5, la = a - t2 / 2, lb = b - t1 / 2;
+    const double Ah = t1 * la, xh = t2 / 2 + la / 2, yh = t1 / 2;
+    const double Av = t2 * lb, xv = t2 / 2, yv = t1 / 2 + lb / 2;
+    const double A = Ah + Av, cx = (Ah * xh + Av * xv) / A, cy = (Ah * yh + Av * yv) / A;
+    const double I11 =
+        Ah * (yh - cy) * (yh - cy) + t2 * lb * lb * lb / 12 + Av * (yv - cy) * (yv - cy);
+    const double I22 =
+        t1 * la * la * la / 12 + Ah * (xh - cx) * (xh - cx) + Av * (xv - cx) * (xv - cx);
+    const double I12 = Ah * (xh - cx) * (yh - cy) + Av * (xv - cx) * (yv - cy);
+    const double det = I11 * I22 - I12 * I12, F = 1000.0,
+                 J = (la * t1 * t1 * t1 + lb * t2 * t2 * t2) / 3;
+    EXPECT_REL(run.U(5)[0], 10000 * L / (E * A));
+    EXPECT_REL(run.U(5)[1], F * I22 * L * L * L / (3 * E * det) + F * L / (0.44 * G * A));
+    EXPECT_REL(run.U(5)[2], F * I12 * L * L * L / (3 * E * det));
+    EXPECT_REL(run.UR(5)[0], 10000 * L / (G * J));
+  }
+  {
+    // TRAPEZOID a = 60 (bottom), b = 100, c = 20 (top), origin d = 20 above the bottom: the
+    // centroid lies b (a + 2c) / (3 (a + c)) above the bottom, ybar above the node, and
+    // Ic = b^3 (a^2 + 4ac + c^2) / (36 (a + c)). An axial force P at the node bends the beam
+    // as the I section's above; a tip Fy bends it about the centroid (k = 0.85).
+    const double a = 60, b = 100, c = 20, d = 20, A = 0.5 * (a + c) * b;
+    const double ybar = b * (a + 2 * c) / (3 * (a + c)) - d;
+    const double Ic = b * b * b * (a * a + 4 * a * c + c * c) / (36 * (a + c)), P = 10000.0;
+    EXPECT_REL(run.U(10)[0], P * L * (1 / (E * A) + ybar * ybar / (E * Ic)));
+    EXPECT_REL(run.U(10)[1], P * ybar * L * L / (2 * E * Ic));
+    EXPECT_REL(run.U(15)[1], 1000 * L * L * L / (3 * E * Ic) + 1000 * L / (0.85 * G * A));
+    EXPECT_REL(run.UR(15)[2], 1000 * L * L / (2 * E * Ic));
+  }
+}
+
 TEST(VerificationStructuralBeamSections, PlanarB21AndB22UnderUniformLoad) {
   DeckRun run("beam_planar_load.inp");
   if (!run.ok()) return;

@@ -161,8 +161,14 @@ TEST(BeamInput, BadSectionsAreOneClearError) {
   expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 2., 1., 1.\n\n1., 1.\n"),
                      "I11 I22 - I12^2 = -3 must be positive");
   expect_input_error(
-      deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,1,1\n"),
-      "SECTION=TRAPEZOID: this section is not available in gapfem");
+      deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=ARBITRARY\n1,1,1,1\n"),
+      "SECTION=ARBITRARY: this section is not available in gapfem");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=L\n1,1,1,0.5\n"),
+                     "SECTION=L: each leg must be thinner than the other leg is long (t1 = 1 "
+                     "must be below b = 1");
+  expect_input_error(
+      deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,-1,0.5\n"),
+      "SECTION=TRAPEZOID: the widths a and c and the height b must be positive");
 }
 
 TEST(BeamInput, MisplacedShearStiffnessAndBadLoadsAreErrors) {

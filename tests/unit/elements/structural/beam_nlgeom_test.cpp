@@ -312,5 +312,105 @@ TEST(StructuralBeamSections, BoxIAndGeneralProperties) {
   EXPECT_THROW(beam_section_properties(g, false), InputError);
 }
 
+/// Area, first and second moments of a simple polygon (counter-clockwise), about the origin.
+struct PolygonMoments {
+  double A = 0, Q1 = 0, Q2 = 0, I11 = 0, I22 = 0, I12 = 0;
+};
+PolygonMoments polygon(const std::vector<std::array<double, 2>>& v) {
+  // by triangles fanned from the origin, each with its exact moments (Gauss rule of degree 2
+  // on the mid-edge points is exact for quadratics)
+  PolygonMoments m;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto& p = v[i];
+    const auto& q = v[(i + 1) % v.size()];
+    const double area = 0.5 * (p[0] * q[1] - q[0] * p[1]);
+    const std::array<double, 2> mids[3] = {{0.5 * p[0], 0.5 * p[1]},
+                                           {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])},
+                                           {0.5 * q[0], 0.5 * q[1]}};
+    m.A += area;
+    for (const auto& x : mids) {
+      m.Q1 += area / 3 * x[0];
+      m.Q2 += area / 3 * x[1];
+      m.I11 += area / 3 * x[1] * x[1];
+      m.I22 += area / 3 * x[0] * x[0];
+      m.I12 += area / 3 * x[0] * x[1];
+    }
+  }
+  return m;
+}
+
+TEST(StructuralBeamSections, LSectionAboutItsCentroid) {
+  // thin legs: the mid-line (thin-walled) properties approach the solid L's as (t/L)^2
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> size(0.05, 0.2), thin(0.002, 0.004);
+  for (int trial = 0; trial < 20; ++trial) {
+    const double a = size(rng), b = size(rng), t1 = thin(rng), t2 = thin(rng);
+    BeamSection L;
+    L.shape = Shape::L;
+    L.dims = {a, b, t1, t2};
+    const auto p = beam_section_properties(L);
+    // the solid L with its outer corner at the origin: leg a along +1, leg b along +2
+    const auto m = polygon({{0, 0}, {a, 0}, {a, t1}, {t2, t1}, {t2, b}, {0, b}});
+    const double c1 = m.Q1 / m.A, c2 = m.Q2 / m.A;
+    EXPECT_NEAR(p.A, m.A, 1e-15);
+    EXPECT_NEAR(p.Q1, 0.0, 1e-15); // the origin is the centroid
+    EXPECT_NEAR(p.Q2, 0.0, 1e-15);
+    const double I11 = m.I11 - m.A * c2 * c2, I22 = m.I22 - m.A * c1 * c1;
+    const double I12 = m.I12 - m.A * c1 * c2;
+    const double tol = 3.0 * std::pow(std::max(t1, t2) / std::min(a, b), 2);
+    EXPECT_NEAR(p.I11 / I11, 1.0, tol);
+    EXPECT_NEAR(p.I22 / I22, 1.0, tol);
+    EXPECT_LT(p.I12, 0.0); // an L opening to +1, +2: the legs lie in the 2nd/4th quadrants
+    EXPECT_NEAR(p.I12 / I12, 1.0, tol);
+    EXPECT_NEAR(p.J, ((a - t2 / 2) * t1 * t1 * t1 + (b - t1 / 2) * t2 * t2 * t2) / 3, 1e-18);
+    ASSERT_EQ(p.n_points, 3);
+    EXPECT_NEAR(p.points[1][0], -c1, 1e-3 * a); // the outer corner
+    EXPECT_NEAR(p.points[1][1], -c2, 1e-3 * b);
+  }
+  BeamSection L;
+  L.shape = Shape::L;
+  L.dims = {0.1, 0.05, 0.06, 0.01}; // t1 >= b
+  EXPECT_THROW(beam_section_properties(L), InputError);
+}
+
+TEST(StructuralBeamSections, TrapezoidRectangleTriangleAndOffset) {
+  BeamSection t;
+  t.shape = Shape::Trapezoid;
+  t.dims = {0.3, 0.2, 0.3, 0.1}; // a rectangle 0.3 x 0.2 about its centre
+  auto p = beam_section_properties(t);
+  EXPECT_NEAR(p.A, 0.06, 1e-15);
+  EXPECT_NEAR(p.I11, 0.3 * 0.008 / 12, 1e-15);
+  EXPECT_NEAR(p.I22, 0.2 * 0.027 / 12, 1e-15);
+  EXPECT_NEAR(p.J / rectangle_torsion_constant(0.3, 0.2), 1.0, 1e-5);
+  // equilateral triangle of side s about its centroid: I = sqrt(3) s^4 / 96 and the exact
+  // Saint-Venant constant J = sqrt(3) s^4 / 80 (Timoshenko & Goodier §112)
+  const double s = 0.12, h = s * std::sqrt(3.0) / 2;
+  t.dims = {s, h, 0.0, h / 3};
+  p = beam_section_properties(t);
+  EXPECT_NEAR(p.Q2, 0.0, 1e-16);
+  EXPECT_NEAR(p.I11 / (std::sqrt(3.0) * std::pow(s, 4) / 96), 1.0, 1e-12);
+  EXPECT_NEAR(p.I22 / (std::sqrt(3.0) * std::pow(s, 4) / 96), 1.0, 1e-12);
+  EXPECT_NEAR(p.J / (std::sqrt(3.0) * std::pow(s, 4) / 80), 1.0, 1e-4);
+  // a general trapezoid with its origin d above the bottom: I11 = I_base - 2 d Q_base + d^2 A
+  const double a = 0.4, b = 0.25, c = 0.1, d = 0.05;
+  t.dims = {a, b, c, d};
+  p = beam_section_properties(t);
+  const double A = 0.5 * (a + c) * b, Qb = b * b * (a + 2 * c) / 6,
+               Ib = b * b * b * (a + 3 * c) / 12;
+  EXPECT_NEAR(p.A, A, 1e-15);
+  EXPECT_NEAR(p.Q2, Qb - d * A, 1e-15);
+  EXPECT_NEAR(p.I11, Ib - 2 * d * Qb + d * d * A, 1e-15);
+  EXPECT_NEAR(p.Q1, 0.0, 1e-16);
+  EXPECT_NEAR(p.I12, 0.0, 1e-16);
+  // J lies between the triangle's and the rectangle's of the same height (monotone in c)
+  EXPECT_GT(p.J, trapezoid_torsion_constant(a, b, 0.0));
+  EXPECT_LT(p.J, trapezoid_torsion_constant(a, b, a));
+  ASSERT_EQ(p.n_points, 4);
+  EXPECT_NEAR(p.points[0][1], b - d, 1e-15); // top corners first
+  EXPECT_NEAR(p.points[2][1], -d, 1e-15);
+  t.dims = {0.4, 0.0, 0.1, 0.0};
+  EXPECT_THROW(beam_section_properties(t), InputError);
+}
+
 } // namespace
 } // namespace gapfem::structural_test
