@@ -1,6 +1,7 @@
 #include "io/inp/diagnostics.hpp"
 
 #include <fmt/format.h>
+#include <map>
 
 namespace gapfem::inp {
 
@@ -25,10 +26,21 @@ void Diagnostics::warning(const SourceLocation& loc, const std::string& message)
 void Diagnostics::throw_if_errors() const {
   if (_errors.empty()) return;
   if (_errors.size() == 1) throw _errors.front();
+  // one error repeated for many entities (a mistake in a *GAP that every gap element shows) is
+  // listed kShown times, then counted
+  constexpr int kShown = 3;
+  std::map<std::pair<std::string, std::string>, int> total, listed;
+  for (const auto& e : _errors) ++total[{e.location().keyword, e.message()}];
   std::string list;
   for (const auto& e : _errors) {
+    const std::pair<std::string, std::string> key{e.location().keyword, e.message()};
+    int& n = listed[key];
+    if (n == kShown) continue;
     list += '\n';
     list += e.what();
+    if (++n == kShown && total[key] > kShown)
+      list += fmt::format("\n... and {} more errors with the same message ({}: {})",
+                          total[key] - kShown, key.first, key.second);
   }
   const bool capped = static_cast<int>(_errors.size()) >= _max_errors;
   std::string head =

@@ -135,6 +135,7 @@ void handle_assembly(BuildState& s, const Keyword& kw) {
   name_param(kw, "NAME", true); // the assembly's name is not used
   s.in_assembly = true;
   s.assembly_seen = true;
+  s.assembly_loc = kw.loc;
 }
 
 void handle_end_assembly(BuildState& s, const Keyword& kw) {
@@ -165,6 +166,7 @@ void handle_instance(BuildState& s, const Keyword& kw) {
     throw InputError(
         kw.loc, ent,
         fmt::format("instance {} is defined twice; give each instance its own name", name));
+  if (!s.parts.count(part) && s.bad_parts.count(part)) return; // reported at its *PART
   if (!s.parts.count(part))
     throw InputError(kw.loc, fmt::format("PART={}", part),
                      fmt::format("part {} is not defined; define it with *PART, NAME={} … *END "

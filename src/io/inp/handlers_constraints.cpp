@@ -104,8 +104,11 @@ void handle_equation(BuildState& s, const Keyword& kw) {
     try {
       while (static_cast<long long>(terms.size()) < n) {
         if (i >= lines.size())
-          head.fail("equation", fmt::format("the equation has {} terms but the data ends after {}",
-                                            n, terms.size()));
+          head.fail("equation",
+                    fmt::format("the equation has {} terms but the data ends after {}; make the "
+                                "first line the number of terms that follow (node, DOF, "
+                                "coefficient; up to four terms per line)",
+                                n, terms.size()));
         const DataLine& line = lines[i++];
         if (line.empty()) continue;
         const FieldReader r = s.reader(kw, line);
@@ -114,7 +117,11 @@ void handle_equation(BuildState& s, const Keyword& kw) {
                           "coefficient");
         for (std::size_t f = 0; f < r.size(); f += 3) {
           if (static_cast<long long>(terms.size()) == n)
-            r.fail("terms", fmt::format("the equation has {} terms; this line holds more", n));
+            r.fail("terms",
+                   fmt::format("the equation has {} terms; this line holds more. Raise the "
+                               "number of terms, or start the next equation with its "
+                               "own line of the number of terms",
+                               n));
           TermSpec t;
           t.nodes = nodes_by_label(s, r, f);
           t.dof = equation_dof(r, f + 1);

@@ -320,8 +320,11 @@ void handle_dload(BuildState& s, const Keyword& kw) {
   std::vector<DistributedLoad> loads;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    r.at_most(6, "element or element set, load label, magnitude, direction x, y, z");
     const std::string label = canonical(r.text(1));
+    if (label == "CENTRIF" || label == "ROTA" || label == "CORIO")
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "rotational body forces (CENTRIF, ROTA, CORIO) are not available in gapfem; apply "
+             "the centrifugal force as *CLOAD at the nodes or as BX/BY/BZ body forces");
     const bool hydro_label = label == "HPI" || label == "HPE";
     const bool pipe_label = label == "PI" || label == "PE" || hydro_label;
     const double mag = r.real(2, "magnitude");
@@ -332,6 +335,7 @@ void handle_dload(BuildState& s, const Keyword& kw) {
     d.amplitude = amplitude;
     d.loc = r.loc();
     if (label == "GRAV") {
+      r.at_most(6, "element or element set, GRAV, magnitude, direction x, y, z");
       const Vec3 v{r.real_or(3, 0.0, "direction x"), r.real_or(4, 0.0, "direction y"),
                    r.real_or(5, 0.0, "direction z")};
       const double len = std::hypot(v[0], v[1], v[2]);

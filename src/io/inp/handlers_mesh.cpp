@@ -21,6 +21,9 @@ struct Range {
 
 Range read_range(const FieldReader& r) {
   r.at_most(3, "first, last, increment");
+  if (r.text(1).empty())
+    r.fail("field 2 (last)", "with GENERATE each data line gives first, last and an optional "
+                             "increment; add the last label, or remove GENERATE to list labels");
   Range g{r.integer(0, "first"), r.integer_or(1, r.integer(0, "first"), "last"),
           r.integer_or(2, 1, "increment")};
   if (g.step <= 0)
@@ -163,14 +166,21 @@ void handle_element(BuildState& s, const Keyword& kw) {
       // nodes by number (in this part or the assembly) or qualified by an instance
       // (PART-1-1.12: gap elements between instances are written so by Abaqus/CAE)
       std::vector<Label> node_keys;
+      bool failed_instance = false;
       for (std::size_t f = 1; f < line->fields.size(); ++f) {
         if (line->fields[f].empty()) continue;
         const EntityRef ref = parse_reference(s, r, f);
+        failed_instance |= ref.failed;
+        if (ref.failed) continue;
         if (!ref.key)
           r.fail(fmt::format("field {}", f + 1),
                  fmt::format("'{}' is not a node number; list the element's nodes by number",
                              r.text(f)));
         node_keys.push_back(*ref.key);
+      }
+      if (failed_instance) { // a node of an instance in error (reported at its *INSTANCE)
+        s.bad_elements.insert(key);
+        continue;
       }
       if (static_cast<int>(node_keys.size()) != info.n_nodes)
         r.fail(ent,
@@ -217,6 +227,10 @@ void handle_element(BuildState& s, const Keyword& kw) {
       s.diag.error(e);
     }
   }
+  if (std::all_of(kw.data.begin(), kw.data.end(), [](const DataLine& d) { return d.empty(); }))
+    s.warn(kw.loc, fmt::format("TYPE={}: this *ELEMENT has no data lines and defines no elements; "
+                               "add a line per element (number, then its nodes) or remove it",
+                               info.name));
   if (!elset.empty()) add_to_elset(s, elset, added);
 }
 
@@ -231,6 +245,10 @@ static void handle_set(BuildState& s, const Keyword& kw) {
   if (kw.has("INSTANCE")) {
     const std::string inst = name_param(kw, "INSTANCE", true);
     const auto it = s.instance_index.find(inst);
+    if (it == s.instance_index.end() && s.bad_instances.count(inst)) {
+      s.bad_sets.insert(name); // the instance's *INSTANCE was in error (reported)
+      return;
+    }
     if (it == s.instance_index.end())
       throw InputError(kw.loc, fmt::format("INSTANCE={}", inst),
                        fmt::format("instance {} is not defined; define it with *INSTANCE, NAME={} "

@@ -213,8 +213,22 @@ void handle_output(BuildState& s, const Keyword& kw) {
   if (variable >= 0) s.scratch.preset_fields.emplace_back(s.current_field, variable == 1);
 }
 
+/// NSET= / ELSET= of *NODE OUTPUT / *ELEMENT OUTPUT must name a set (the frames hold the whole
+/// model either way).
+void check_output_set(BuildState& s, const Keyword& kw, bool nodes) {
+  const char* param = nodes ? "NSET" : "ELSET";
+  if (!kw.has(param)) return;
+  const std::string name = set_param(s, kw, param, true);
+  if (nodes ? find_nset(s, name) != nullptr : find_elset(s, name) != nullptr) return;
+  if (s.bad_sets.count(name)) return; // its definition failed (reported)
+  throw InputError(kw.loc, fmt::format("{}={}", param, name),
+                   fmt::format("this {} set is not defined; define it with *{} in the model data",
+                               nodes ? "node" : "element", param));
+}
+
 void handle_node_output(BuildState& s, const Keyword& kw) {
-  // NSET is accepted; the ParaView frames always hold the whole model
+  // NSET is checked; the ParaView frames always hold the whole model
+  check_output_set(s, kw, true);
   if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
   for (NodeVar v : read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList))
@@ -222,6 +236,7 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
 }
 
 void handle_element_output(BuildState& s, const Keyword& kw) {
+  check_output_set(s, kw, false);
   if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
   for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,

@@ -101,6 +101,11 @@ void handle_step(BuildState& s, const Keyword& kw) {
   st.loc = kw.loc;
   st.name = kw.has("NAME") ? std::string(trim(param_value(kw, "NAME", true)))
                            : fmt::format("Step-{}", st.number);
+  for (const Step& other : s.model.steps)
+    if (to_upper(other.name) == to_upper(st.name))
+      s.error(kw.loc, fmt::format("NAME={}", st.name),
+              fmt::format("step {} at {}:{} already has this name; give each step its own NAME",
+                          other.number, other.loc.file, other.loc.line));
   st.boundary = carried(prev ? prev->boundary : s.model_boundary);
   if (!prev) // non-zero model-data values (CalculiX dialect) are reached in the first step
     for (BoundaryEntry& b : st.boundary) b.propagated = b.value == 0.0;
@@ -171,8 +176,8 @@ void handle_end_step(BuildState& s, const Keyword& kw) {
 }
 
 void handle_static(BuildState& s, const Keyword& kw) {
+  set_procedure(s, kw, Procedure::Static); // first: a rejected option is no "missing procedure"
   reject_param(kw, "RIKS", "use load or displacement control in a general *STATIC step");
-  set_procedure(s, kw, Procedure::Static);
   s.step.inc.direct = kw.has("DIRECT");
   s.step.inc.steady_state = true;
   read_incrementation(s, kw, 4);

@@ -53,6 +53,9 @@ struct Keyword {
   std::int32_t file = 0;
   std::int32_t line = 0;
   SourceLocation loc; ///< file, line and display name of the keyword line
+  /// The keyword line itself is in error (reported by the lexer): the keyword is not run, only
+  /// the names it would define are noted, so that their uses raise no follow-on errors.
+  bool failed = false;
 
   /// The parameter with this name (compared canonically), or nullptr.
   const Parameter* find(std::string_view param) const;

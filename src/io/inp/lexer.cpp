@@ -112,6 +112,7 @@ class Lexer {
   Deck run(std::string_view text, const std::string& name, const fs::path& dir) {
     _deck.files.push_back(name);
     _stack.push_back(identity(name));
+    _shown.push_back(name);
     _bytes = text.size();
     lex_text(text, 0, dir, 0);
     if (_deck.keywords.empty() && _diag.n_errors() == 0)
@@ -129,6 +130,7 @@ class Lexer {
                                    ///< *INCLUDE boundaries)
   bool _drop_data = false;         ///< after a keyword line in error: its data lines are dropped
   std::vector<std::string> _stack; ///< the files being lexed, outermost first (cycle check)
+  std::vector<std::string> _shown; ///< the same files as the messages name them
   std::uintmax_t _bytes = 0;       ///< deck text read so far, all files
 
   /// A file's identity for the include-cycle check: its canonical path where it exists.
@@ -227,6 +229,15 @@ class Lexer {
           "keyword line without a keyword name; write e.g. *NODE, or start comments with **");
       return kw;
     }
+    if (std::count(text.begin(), text.end(), '"') % 2 != 0) {
+      _diag.error(kw.loc, "",
+                  "a double quote (\") on this keyword line is not closed; a quoted name ends with "
+                  "another \", as in NAME=\"Part 1\"");
+      kw.failed = true; // its parameters are read without the quotes, for their names only
+      std::string unquoted = text.substr(1);
+      std::erase(unquoted, '"');
+      tokens = split_quoted(unquoted);
+    }
     for (std::size_t t = 1; t < tokens.size(); ++t) {
       const std::string_view tok = trim(tokens[t]);
       if (tok.empty()) continue;
@@ -242,6 +253,12 @@ class Lexer {
       if (p.key.empty()) {
         _diag.error(kw.loc, "", fmt::format("parameter '{}' has no name; write NAME=value", tok));
         continue;
+      }
+      if (kw.find(p.key)) {
+        _diag.error(kw.loc, p.name,
+                    "this parameter is given twice on the keyword line; keep one of them");
+        kw.failed = true; // reported: the keyword is not run (its first value names what it
+        continue;         // would define)
       }
       kw.params.push_back(std::move(p));
     }
@@ -283,12 +300,14 @@ class Lexer {
     if (input && input->has_value && !input->value.empty()) {
       const std::string id = identity(dir / input->value);
       if (const auto it = std::find(_stack.begin(), _stack.end(), id); it != _stack.end()) {
+        const auto first = static_cast<std::size_t>(it - _stack.begin());
         std::string cycle;
-        for (auto f = it; f != _stack.end(); ++f) cycle += fmt::format("{} includes ", *f);
+        for (std::size_t f = first; f < _shown.size(); ++f)
+          cycle += fmt::format("{} includes ", _shown[f]);
         _diag.error(kw.loc, fmt::format("INPUT={}", input->value),
                     fmt::format("the include files form a cycle: {}{} again; remove this "
                                 "*INCLUDE",
-                                cycle, id));
+                                cycle, _shown[first]));
         return;
       }
     }
@@ -297,8 +316,10 @@ class Lexer {
     if (!open_relative(input, dir, kw.loc, path, text)) return;
     const int file = add_file(path);
     _stack.push_back(identity(path));
+    _shown.push_back(path.lexically_normal().string());
     lex_text(text, file, path.parent_path(), depth + 1);
     _stack.pop_back();
+    _shown.pop_back();
   }
 
   void read_data_file(const Parameter& p, const fs::path& dir) {

@@ -39,6 +39,10 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
   const std::string inst = to_upper(trim(std::string_view(t).substr(0, dot)));
   const std::string rest = std::string(trim(std::string_view(t).substr(dot + 1)));
   const auto it = s.instance_index.find(inst);
+  if (it == s.instance_index.end() && s.bad_instances.count(inst)) {
+    ref.failed = true;
+    return ref;
+  }
   if (it == s.instance_index.end())
     r.fail(fmt::format("'{}'", t),
            s.instance_index.empty()
@@ -60,6 +64,7 @@ std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size
   if (t.empty())
     r.fail(fmt::format("field {}", field + 1), "a node number or node set name is required here");
   const EntityRef ref = parse_reference(s, r, field);
+  if (ref.failed) return {};
   if (ref.key) {
     const NodeId n = s.model.mesh.find_node(*ref.key);
     if (n >= 0) return {n};
@@ -82,6 +87,7 @@ std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::s
     r.fail(fmt::format("field {}", field + 1),
            "an element number or element set name is required here");
   const EntityRef ref = parse_reference(s, r, field);
+  if (ref.failed) return {};
   if (ref.key) {
     const ElemId e = s.model.mesh.find_element(*ref.key);
     if (e >= 0) return {e};
@@ -124,6 +130,7 @@ int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param) {
   if (!kw.has(param)) return -1;
   const std::string name = name_param(kw, param, true);
   const auto it = s.amplitude_index.find(name);
+  if (it == s.amplitude_index.end() && s.bad_amplitudes.count(name)) return -1; // reported
   if (it == s.amplitude_index.end())
     throw InputError(
         kw.loc, fmt::format("{}={}", display_upper(param), name),

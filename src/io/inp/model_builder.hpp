@@ -61,6 +61,9 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
+  /// names that a keyword in error would have defined (note_failed_definition): amplitudes,
+  /// materials, parts and instances; uses of them raise no "is not defined"
+  std::unordered_set<std::string> bad_amplitudes, bad_materials, bad_parts, bad_instances;
   /// materials whose *ELASTIC (0) or *CONDUCTIVITY (1) was in error (reported): no follow-on
   /// "the material has none"
   std::set<std::pair<int, int>> bad_material_options;
@@ -143,6 +146,7 @@ struct BuildState {
   std::map<std::string, PartDef> parts;
   PartDef* recording = nullptr; ///< inside *PART ... *END PART
   bool in_assembly = false;     ///< inside *ASSEMBLY ... *END ASSEMBLY
+  SourceLocation assembly_loc;  ///< the *ASSEMBLY line
   /// The deck has *PART but no *ASSEMBLY and no *INSTANCE (a CalculiX-style deck): *PART and
   /// *END PART only mark a region of ordinary model data.
   bool transparent_parts = false;
@@ -218,6 +222,7 @@ PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<co
 struct EntityRef {
   std::optional<Label> key;
   std::string set;
+  bool failed = false; ///< qualified by an instance whose definition failed (reported there)
 };
 /// Reads a reference of the current scope: `12`, `SET-1`, or qualified by an instance,
 /// `PART-1-1.12` or `PART-1-1.SET-1` (the instance must exist). `what` names the field for errors.

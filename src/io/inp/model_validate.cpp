@@ -56,6 +56,7 @@ std::string elem_name(const BuildState& s, ElemId e) {
 int resolve_material(BuildState& s, const std::string& name, const SourceLocation& loc) {
   const auto it = s.material_index.find(name);
   if (it != s.material_index.end()) return it->second;
+  if (s.bad_materials.count(name)) return -1; // its *MATERIAL was in error (reported)
   s.error(loc, fmt::format("MATERIAL={}", name),
           fmt::format("material {} is not defined; define it with *MATERIAL, NAME={}", name, name));
   return -1;
@@ -173,9 +174,33 @@ void check_space(BuildState& s) {
 }
 
 /// Gap checks that need element types, coordinates and the model space.
+/// *GAP CONDUCTANCE / RADIATION / HEAT GENERATION act through the temperature DOFs of GAPUNIT and
+/// DGAP elements; on an element set of mechanical gaps only they would be ignored: say so.
+void check_gap_thermal_options(BuildState& s, const GapSection& gap,
+                               const std::vector<ElemId>& set) {
+  const std::pair<bool, const SourceLocation*> options[] = {
+      {gap.conductance.given || gap.conductance_pressure.given,
+       gap.conductance.given ? &gap.conductance.loc : &gap.conductance_pressure.loc},
+      {gap.radiation.given, &gap.radiation.loc},
+      {gap.heat_generation.given, &gap.heat_generation.loc}};
+  ElementType mechanical = ElementType::GAPUNI;
+  for (ElemId e : set) {
+    const ElementType t = s.model.mesh.elem_types[e];
+    if (t == ElementType::GAPUNIT || t == ElementType::DGAP) return;
+    if (element_info(t).family == ElementFamily::Gap) mechanical = t;
+  }
+  for (const auto& [given, loc] : options)
+    if (given && !set.empty())
+      s.warn(*loc, fmt::format("ELSET={} holds {} elements, which carry no temperature, so this "
+                               "option has no effect; use GAPUNIT or DGAP elements for heat "
+                               "transfer across the gap",
+                               gap.elset, element_info(mechanical).name));
+}
+
 void check_gap(BuildState& s, const GapSection& gap) {
   const auto* set = find_elset(s, gap.elset);
   if (!set) return;
+  check_gap_thermal_options(s, gap, *set);
   const Mesh& mesh = s.model.mesh;
   const double tol = 1e-12 * s.model.model_size();
   const bool two_d = s.model.space != ModelSpace::ThreeD;
@@ -281,7 +306,9 @@ void finish_model_data(BuildState& s) {
             "the instance has no *END INSTANCE; close it before *END ASSEMBLY");
     s.instance.open = false;
   }
-  if (s.in_assembly) s.error(SourceLocation{}, "", "the deck has *ASSEMBLY but no *END ASSEMBLY");
+  if (s.in_assembly)
+    s.error(s.assembly_loc, "",
+            "this *ASSEMBLY has no *END ASSEMBLY; close it before the first *STEP");
   for (const auto& [name, part] : s.parts) {
     if (part.instances == 0)
       s.warn(part.loc, fmt::format("part {} is never instanced (*INSTANCE, PART={}), so it is "

@@ -94,8 +94,19 @@ TEST(ReaderErrors, ListIsCappedAtFifty) {
   const InputError e = read_error(deck);
   const std::string text = e.what();
   EXPECT_CONTAINS(text, "at least 50 input errors (reading stopped there)");
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 50) << text;
+  // the same mistake on every line: three are listed, the rest counted
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 4) << text;
+  EXPECT_CONTAINS(text, "deck.inp:4: *NODE");
+  EXPECT_CONTAINS(text, "... and 47 more errors with the same message (*NODE: ");
   EXPECT_EQ(e.location().line, 2);
+}
+
+TEST(ReaderErrors, DifferentMistakesAreAllListed) {
+  std::string deck = "*NODE\n";
+  for (int i = 1; i <= 6; ++i) deck += std::to_string(i) + ", bad" + std::to_string(i) + "\n";
+  const std::string text = read_error(deck).what();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 6) << text;
+  EXPECT_EQ(text.find("more errors with the same message"), std::string::npos) << text;
 }
 
 TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {

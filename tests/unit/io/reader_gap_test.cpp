@@ -65,6 +65,19 @@ TEST(ReaderGap, DirectionOfSphericalGapIsIgnoredWithWarning) {
   EXPECT_EQ(test::count_warnings(m, "deck.inp:15: *GAP: ELSET=GS"), 1);
 }
 
+TEST(ReaderGap, ThermalOptionsOnMechanicalGapsAreRemarked) {
+  // GAPUNI carries no temperature: *GAP CONDUCTANCE / HEAT GENERATION on it have no effect
+  const Model m = read(deck("*GAP, ELSET=GU\n0.5, 0., -1., 0., 1.\n*GAP CONDUCTANCE\n10., 0.\n"
+                            "10., 1.\n*GAP HEAT GENERATION\n0.5\n"));
+  EXPECT_EQ(test::count_warnings(m, "holds GAPUNI elements, which carry no temperature"), 2);
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:13: *GAP CONDUCTANCE: ELSET=GU"), 1);
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:16: *GAP HEAT GENERATION: ELSET=GU"), 1);
+  // the same options on a GAPUNIT: no remark
+  const Model t = read("*NODE\n1, 0., 0., 0.\n2, 0., -1., 0.\n*ELEMENT, TYPE=GAPUNIT, ELSET=G\n"
+                       "1, 1, 2\n*GAP, ELSET=G\n0.5, 0., -1., 0., 1.\n*GAP HEAT GENERATION\n0.5\n");
+  EXPECT_EQ(test::count_warnings(t, "carry no temperature"), 0);
+}
+
 TEST(ReaderGap, CalculixPenaltyFields) {
   const Model m = read(deck("*GAP, ELSET=GU\n0.5, 0., -1., 0., , 1.E7\n"));
   EXPECT_TRUE(m.gap_sections[0].ccx_penalty);

@@ -54,6 +54,15 @@ TEST(ReaderMesh, NodeErrors) {
   EXPECT_CONTAINS(error_text("*NODE\n1, 1., 2., 3., 4.\n"), "at most 4 fields");
 }
 
+TEST(ReaderMesh, ElementWithoutDataLinesIsRemarked) {
+  const Model m = read(std::string(kBrick) + "*ELEMENT, TYPE=C3D8, ELSET=EMPTY\n");
+  EXPECT_EQ(test::count_warnings(
+                m, "deck.inp:16: *ELEMENT: TYPE=C3D8: this *ELEMENT has no data lines and defines "
+                   "no elements"),
+            1);
+  EXPECT_EQ(test::count_warnings(read(kBrick), "no data lines"), 0);
+}
+
 TEST(ReaderMesh, ElementsKeepLabelsTypesAndLocations) {
   const Model m = read(kBrick);
   ASSERT_EQ(m.mesh.n_elements(), 1);
