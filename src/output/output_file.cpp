@@ -140,6 +140,7 @@ void OutputFile::append_file_range(const std::filesystem::path& source, std::uin
                                    std::uintmax_t to) {
   if (!_file || to <= from) return;
   drain();
+  if (g_write_budget.load() < 0 && copy_in_kernel(source, from, to)) return;
   std::FILE* in = std::fopen(source.c_str(), "rb");
   if (!in) fail("cannot read the staged part of the");
   if (from > 0 && std::fseek(in, static_cast<long>(from), SEEK_SET) != 0) {
@@ -164,6 +165,36 @@ void OutputFile::append_file_range(const std::filesystem::path& source, std::uin
   if (bad) fail("cannot read the staged part of the");
 }
 
+bool OutputFile::copy_in_kernel(const std::filesystem::path& source, std::uintmax_t from,
+                                std::uintmax_t to) {
+  // copy_file_range: the bytes move inside the kernel (no round trip through this process)
+  if (std::fflush(_file) != 0) fail("cannot write");
+  const int in = ::open(source.c_str(), O_RDONLY);
+  if (in < 0) fail("cannot read the staged part of the");
+  auto off = static_cast<off_t>(from);
+  const int out = fileno(_file);
+  bool done = true;
+  while (static_cast<std::uintmax_t>(off) < to) {
+    const auto want = static_cast<std::size_t>(
+        std::min<std::uintmax_t>(to - static_cast<std::uintmax_t>(off), std::uintmax_t{1} << 30));
+    const ssize_t n = ::copy_file_range(in, &off, out, nullptr, want, 0);
+    if (n > 0) continue;
+    if (n == 0) break; // the end of the source
+    const int err = errno;
+    if (err == EXDEV || err == ENOSYS || err == EINVAL || err == EOPNOTSUPP) {
+      // not available here: the caller copies through a buffer (only if nothing was copied)
+      done = static_cast<std::uintmax_t>(off) != from;
+      if (!done) break;
+    }
+    ::close(in);
+    errno = err;
+    fail("cannot write");
+  }
+  ::close(in);
+  if (done && std::fseek(_file, 0, SEEK_END) != 0) fail("cannot write");
+  return done;
+}
+
 void OutputFile::flush() {
   drain();
   if (_file && std::fflush(_file) != 0) fail("cannot write");
@@ -173,7 +204,8 @@ void OutputFile::close() {
   if (!_file) return;
   drain();
   if (std::fflush(_file) != 0) fail("cannot write");
-  if (_mode != Mode::InPlace && ::fsync(fileno(_file)) != 0) fail("cannot write");
+  // fdatasync: the data and what is needed to read it back (the size), without the times
+  if (_mode != Mode::InPlace && ::fdatasync(fileno(_file)) != 0) fail("cannot write");
   const int rc = std::fclose(_file);
   _file = nullptr;
   if (rc != 0) fail("cannot close");

@@ -78,6 +78,8 @@ class OutputFile {
  private:
   void drain();
   void put(const void* data, std::size_t n);
+  /// append_file_range by copy_file_range; false (nothing copied) where that is not available.
+  bool copy_in_kernel(const std::filesystem::path& source, std::uintmax_t from, std::uintmax_t to);
   [[noreturn]] void fail(const char* what);
 
   std::FILE* _file = nullptr;
