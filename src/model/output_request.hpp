@@ -59,8 +59,15 @@ struct ElPrintRequest {
 /// *OUTPUT, FIELD with its *NODE OUTPUT / *ELEMENT OUTPUT: drives ParaView (VTU) frames.
 struct FieldOutputRequest {
   int frequency = 1; ///< every n-th increment; the last increment of a step is always written
-  std::vector<NodeVar> node_vars;
+  std::vector<NodeVar> node_vars; ///< every variable requested, on any set
   std::vector<ElemVar> elem_vars;
+  /// A variable of a *NODE OUTPUT / *ELEMENT OUTPUT line with NSET= / ELSET=: written on that
+  /// set only (NaN elsewhere) unless another line asks for it on the whole model.
+  std::vector<std::pair<NodeVar, std::vector<NodeId>>> node_sets;
+  std::vector<std::pair<ElemVar, std::vector<ElemId>>> elem_sets;
+  /// variables asked for on the whole model (no NSET= / ELSET=)
+  std::vector<NodeVar> node_vars_everywhere;
+  std::vector<ElemVar> elem_vars_everywhere;
   SourceLocation loc;
 };
 

@@ -104,6 +104,9 @@ struct Frame {
   std::vector<bool> node_print_due; ///< per Step::node_prints
   std::vector<bool> el_print_due;   ///< per Step::el_prints
   bool field_due = false;           ///< ParaView frame due
+  /// per Step::field_outputs: due in this frame (empty when the step has no *OUTPUT, FIELD:
+  /// the frame at the end of the step then holds every variable)
+  std::vector<bool> field_output_due;
 
   const ElementResult* element(ElemId e) const {
     if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0)

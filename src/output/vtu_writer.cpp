@@ -2,10 +2,12 @@
 
 #include "common/error.hpp"
 #include "model/model.hpp"
+#include "output/field_selection.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <system_error>
 
@@ -107,17 +109,6 @@ int vtk_node_from_abaqus(ElementType type, int vtk_index) {
 VtuWriter::VtuWriter(std::filesystem::path directory, std::string job)
     : _dir(std::move(directory)), _job(std::move(job)) {}
 
-/// The values at section point `k` of a block (averaged over the integration points), in the
-/// Voigt slots of element `e` of `target` (zeros in components the block does not have).
-static void add_side(const OutputBlock& block, int k, std::size_t e, std::vector<double>& target) {
-  std::vector<double> avg;
-  output::average_section_point(block, k, avg);
-  std::fill_n(target.begin() + 6 * e, 6, 0.0);
-  for (std::size_t c = 0; c < block.names.size(); ++c)
-    if (const int slot = output::voigt_slot(block.names[c]); slot >= 0)
-      target[6 * e + slot] = avg[c];
-}
-
 void VtuWriter::begin(const Model& model) {
   const Mesh& mesh = model.mesh;
   const auto ne = static_cast<std::size_t>(mesh.n_elements());
@@ -166,86 +157,58 @@ void VtuWriter::begin(const Model& model) {
   write_pvd();
 }
 
-void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
-  if (!frame.field_due) return;
-  const Mesh& mesh = model.mesh;
-  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
-  const auto ne = static_cast<std::size_t>(mesh.n_elements());
+namespace {
+
+/// The point arrays the frame's requests ask for (masked copies kept in `kept*`).
+std::vector<Array> node_arrays(const Model& model, const Frame& frame,
+                               const output::FieldSelection& sel,
+                               std::deque<std::vector<double>>& kept,
+                               std::deque<std::vector<Vec3>>& kept_vectors) {
+  const auto nn = static_cast<std::size_t>(model.mesh.n_nodes());
   const NodeResults& r = frame.nodes;
-
-  // Cell data: point averages of S, E, HFL in Voigt slots; gap status,
-  // clearance, pressure.
-  _S.assign(6 * ne, kNaN);
-  _E.assign(6 * ne, kNaN);
-  _HFL.assign(3 * ne, kNaN);
-  bool any_S = false, any_E = false, any_HFL = false, any_sides = false;
-  for (auto* side : {&_S_neg, &_S_pos, &_E_neg, &_E_pos}) side->assign(6 * ne, kNaN);
-  if (_has_gaps) {
-    _gap_status.assign(ne, -1);
-    _gap_clearance.assign(ne, kNaN);
-    _gap_pressure.assign(ne, kNaN);
-  }
-  for (const ElementResult& res : frame.elements) {
-    if (res.elem < 0 || static_cast<std::size_t>(res.elem) >= ne) continue;
-    const auto e = static_cast<std::size_t>(res.elem);
-    for (const OutputBlock& block : res.data.blocks) {
-      if (block.var == ElemVar::SF) continue;
-      if (block.section_points > 1 && (block.var == ElemVar::S || block.var == ElemVar::E) &&
-          element_info(mesh.elem_types[res.elem]).family == ElementFamily::Shell) {
-        const bool stress = block.var == ElemVar::S;
-        add_side(block, 0, e, stress ? _S_neg : _E_neg);
-        add_side(block, block.section_points - 1, e, stress ? _S_pos : _E_pos);
-        any_sides = true;
-      }
-      output::average_block(block, _avg);
-      for (std::size_t c = 0; c < block.names.size(); ++c) {
-        const std::string_view name = block.names[c];
-        if (block.var == ElemVar::HFL) {
-          if (name.size() == 4 && name.substr(0, 3) == "HFL" && name[3] >= '1' && name[3] <= '3') {
-            if (std::isnan(_HFL[3 * e])) std::fill_n(_HFL.begin() + 3 * e, 3, 0.0);
-            _HFL[3 * e + static_cast<std::size_t>(name[3] - '1')] = _avg[c];
-            any_HFL = true;
-          }
-          continue;
-        }
-        const int slot = output::voigt_slot(name);
-        if (slot < 0) continue;
-        auto& target = block.var == ElemVar::S ? _S : _E;
-        // An element that reports the tensor gets zeros in the components it
-        // does not have.
-        if (std::isnan(target[6 * e])) std::fill_n(target.begin() + 6 * e, 6, 0.0);
-        target[6 * e + slot] = _avg[c];
-        (block.var == ElemVar::S ? any_S : any_E) = true;
-      }
-    }
-    if (_has_gaps && res.data.gap) {
-      _gap_status[e] = static_cast<std::int32_t>(res.data.gap->status);
-      _gap_clearance[e] = res.data.gap->clearance;
-      _gap_pressure[e] = res.data.gap->pressure;
-    }
-  }
-
-  std::vector<Array> point_arrays;
-  auto vec_point = [&](std::string_view name, const std::vector<Vec3>& v) {
-    if (v.size() == nn)
-      point_arrays.push_back(Array{name, "Float64", 3, v.data(), nn * sizeof(Vec3), {}});
-  };
-  auto scalar_point = [&](std::string_view name, const std::vector<double>& v) {
-    if (v.size() == nn) point_arrays.push_back(make_array(name, "Float64", 1, v));
-  };
+  std::vector<Array> arrays;
   // ParaView warps and colours by global components: vectors at *TRANSFORM nodes go back from
-  // their local systems (v_global = Q^T v_local)
-  std::vector<Vec3> U = r.U, RF = r.RF, UR = r.UR, RM = r.RM;
-  for (const auto& entry : r.local_axes)
-    for (auto* v : {&U, &RF, &UR, &RM})
-      if (static_cast<std::size_t>(entry.first) < v->size())
-        (*v)[entry.first] = r.global(entry.first, (*v)[entry.first]);
-  vec_point("U", U);
-  vec_point("RF", RF);
-  if (r.any_rotation) {
-    vec_point("UR", UR);
-    vec_point("RM", RM);
+  // their local systems (v_global = Q^T v_local); NaN off the variable's node set
+  auto vec = [&](std::string_view name, NodeVar var, const std::vector<Vec3>& v) {
+    const std::vector<char>* mask = sel.nodes(var);
+    if (!mask || v.size() != nn) return;
+    std::vector<Vec3>& g = kept_vectors.emplace_back(v);
+    for (const auto& entry : r.local_axes)
+      if (static_cast<std::size_t>(entry.first) < g.size())
+        g[entry.first] = r.global(entry.first, g[entry.first]);
+    for (std::size_t n = 0; n < nn; ++n)
+      if (!(*mask)[n]) g[n] = Vec3{kNaN, kNaN, kNaN};
+    arrays.push_back(Array{name, "Float64", 3, g.data(), nn * sizeof(Vec3), {}});
+  };
+  auto scalar = [&](std::string_view name, NodeVar var, const std::vector<double>& v) {
+    const std::vector<char>* mask = sel.nodes(var);
+    if (!mask || v.size() != nn) return;
+    kept.push_back(output::FieldSelection::masked(v, 1, *mask));
+    arrays.push_back(make_array(name, "Float64", 1, kept.back()));
+  };
+  if (r.any_displacement || !r.any_temperature) {
+    vec("U", NodeVar::U, r.U);
+    vec("RF", NodeVar::RF, r.RF);
+    vec("CF", NodeVar::CF, r.CF);
   }
+  if (r.any_rotation) {
+    vec("UR", NodeVar::UR, r.UR);
+    vec("RM", NodeVar::RM, r.RM);
+    vec("CM", NodeVar::CM, r.CM);
+  }
+  if (!r.any_temperature) return arrays;
+  if (!r.nt_field.empty()) {
+    // a predefined field (stress analysis) is NT at the nodes of the elements that read it and
+    // NaN elsewhere (ground nodes of gaps have no temperature); it has no RFL
+    std::vector<double> nt = r.NT;
+    for (std::size_t n = 0; n < nt.size() && n < r.nt_field.size(); ++n)
+      if (!r.nt_field[n]) nt[n] = kNaN;
+    scalar("NT", NodeVar::NT, nt);
+    return arrays;
+  }
+  scalar("NT", NodeVar::NT, r.NT);
+  scalar("RFL", NodeVar::RFL, r.RFL);
+  scalar("CFL", NodeVar::CFL, r.CFL);
   // heat-transfer shells: NT12 … through the thickness; a node with fewer temperatures shows its
   // last one (a solid's single temperature), so colour maps stay continuous
   static const std::array<std::string, kMaxTemperaturePoints> kNtNames = [] {
@@ -254,31 +217,31 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
     return a;
   }();
   const int n_points = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
-  std::vector<std::vector<double>> nt_more(static_cast<std::size_t>(n_points - 1));
-  // a predefined field (stress analysis) is NT at the nodes of the elements that read it and NaN
-  // elsewhere (ground nodes of gaps have no temperature); it has no RFL
-  std::vector<double> nt_field;
-  if (r.any_temperature && !r.nt_field.empty()) {
-    nt_field = r.NT;
-    for (std::size_t n = 0; n < nt_field.size() && n < r.nt_field.size(); ++n)
-      if (!r.nt_field[n]) nt_field[n] = std::numeric_limits<double>::quiet_NaN();
-    scalar_point("NT", nt_field);
-  }
-  if (r.any_temperature && r.nt_field.empty()) {
-    scalar_point("NT", r.NT);
-    scalar_point("RFL", r.RFL);
-    for (int k = 1; k < n_points && r.NT_more.size() == nn * (n_points - 1); ++k) {
-      auto& v = nt_more[k - 1];
-      v.resize(nn);
-      for (std::size_t n = 0; n < nn; ++n) {
-        const int have = r.temperatures_at(static_cast<NodeId>(n));
-        const int j = std::min(k, have - 1);
-        v[n] = j <= 0 ? r.NT[n] : r.NT_more[(n_points - 1) * n + j - 1];
-      }
-      scalar_point(kNtNames[k], v);
+  for (int k = 1; k < n_points && r.NT_more.size() == nn * (n_points - 1); ++k) {
+    std::vector<double> v(nn);
+    for (std::size_t n = 0; n < nn; ++n) {
+      const int have = r.temperatures_at(static_cast<NodeId>(n));
+      const int j = std::min(k, have - 1);
+      v[n] = j <= 0 ? r.NT[n] : r.NT_more[(n_points - 1) * n + j - 1];
     }
+    scalar(kNtNames[k], NodeVar::NT, v);
   }
+  return arrays;
+}
 
+} // namespace
+
+void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
+  if (!frame.field_due) return;
+  const Mesh& mesh = model.mesh;
+  const auto nn = static_cast<std::size_t>(mesh.n_nodes());
+  const auto ne = static_cast<std::size_t>(mesh.n_elements());
+  const output::FieldSelection sel(model, step_index, frame);
+  _cells.collect(model, frame, _has_gaps);
+  // masked copies must outlive the arrays that point at them: deques keep their elements in place
+  std::deque<std::vector<double>> kept;
+  std::deque<std::vector<Vec3>> kept_vectors;
+  std::vector<Array> point_arrays = node_arrays(model, frame, sel, kept, kept_vectors);
   std::vector<Array> cell_arrays;
   if (_elem_local.empty()) {
     cell_arrays.push_back(make_array("element_label", "Int64", 1, mesh.elem_labels));
@@ -289,28 +252,32 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
     point_arrays.push_back(make_array("node_instance", "Int32", 1, _node_instance));
   }
   cell_arrays.push_back(make_array("element_type", "Int32", 1, _type_ids));
-  if (any_S) {
-    cell_arrays.push_back(make_array("S", "Float64", 6, _S));
-    cell_arrays.back().component_names = kVoigt;
-  }
-  if (any_E) {
-    cell_arrays.push_back(make_array("E", "Float64", 6, _E));
-    cell_arrays.back().component_names = kVoigt;
-  }
-  if (any_sides) { // shells: their SNEG and SPOS sides (section points 1 and n)
-    const std::pair<std::string_view, const std::vector<double>*> sides[] = {
-        {"S_SNEG", &_S_neg}, {"S_SPOS", &_S_pos}, {"E_SNEG", &_E_neg}, {"E_SPOS", &_E_pos}};
-    for (const auto& [name, v] : sides) {
-      cell_arrays.push_back(make_array(name, "Float64", 6, *v));
-      cell_arrays.back().component_names = kVoigt;
-    }
-  }
-  if (any_HFL) cell_arrays.push_back(make_array("HFL", "Float64", 3, _HFL));
+  // a requested variable on its element set (NaN elsewhere); nothing when not requested
+  auto cell = [&](std::string_view name, ElemVar var, bool any, const std::vector<double>& v,
+                  int width, std::string_view components = {}) {
+    const std::vector<char>* mask = sel.elements(var);
+    if (!any || !mask) return;
+    kept.push_back(output::FieldSelection::masked(v, static_cast<std::size_t>(width), *mask));
+    cell_arrays.push_back(make_array(name, "Float64", width, kept.back()));
+    cell_arrays.back().component_names = components;
+  };
+  cell("S", ElemVar::S, _cells.any_S, _cells.S, 6, kVoigt);
+  cell("E", ElemVar::E, _cells.any_E, _cells.E, 6, kVoigt);
+  // shells: their SNEG and SPOS sides (section points 1 and n)
+  cell("S_SNEG", ElemVar::S, _cells.any_sides, _cells.S_neg, 6, kVoigt);
+  cell("S_SPOS", ElemVar::S, _cells.any_sides, _cells.S_pos, 6, kVoigt);
+  cell("E_SNEG", ElemVar::E, _cells.any_sides, _cells.E_neg, 6, kVoigt);
+  cell("E_SPOS", ElemVar::E, _cells.any_sides, _cells.E_pos, 6, kVoigt);
+  cell("SF", ElemVar::SF, _cells.any_SF, _cells.SF, 6);
+  cell("SM", ElemVar::SF, _cells.any_SM, _cells.SM, 3);
+  cell("HFL", ElemVar::HFL, _cells.any_HFL, _cells.HFL, 3);
   if (_has_gaps) {
-    cell_arrays.push_back(make_array("gap_status", "Int32", 1, _gap_status));
-    cell_arrays.push_back(make_array("gap_clearance", "Float64", 1, _gap_clearance));
-    cell_arrays.push_back(make_array("gap_pressure", "Float64", 1, _gap_pressure));
+    cell_arrays.push_back(make_array("gap_status", "Int32", 1, _cells.gap_status));
+    cell_arrays.push_back(make_array("gap_clearance", "Float64", 1, _cells.gap_clearance));
+    cell_arrays.push_back(make_array("gap_pressure", "Float64", 1, _cells.gap_pressure));
   }
+  const bool has_U = std::any_of(point_arrays.begin(), point_arrays.end(),
+                                 [](const Array& a) { return a.name == "U"; });
   const Array points{"Points", "Float64", 3, mesh.coords.data(), nn * sizeof(Vec3), {}};
   const std::vector<Array> cells = {make_array("connectivity", "Int32", 1, _connectivity),
                                     make_array("offsets", "Int64", 1, _offsets),
@@ -334,8 +301,7 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  GAPFEM_VERSION, frame.step, frame.increment, frame.step_time, frame.total_time,
                  _type_legend, kByteOrder, frame.total_time, nn, ne);
-  b.append(std::string_view(point_arrays.empty() ? "      <PointData>\n"
-                                                 : "      <PointData Vectors=\"U\">\n"));
+  b.append(std::string_view(has_U ? "      <PointData Vectors=\"U\">\n" : "      <PointData>\n"));
   for (const auto& a : point_arrays) declare(b, a, offset);
   b.append(std::string_view("      </PointData>\n      <CellData Scalars=\"element_label\">\n"));
   for (const auto& a : cell_arrays) declare(b, a, offset);

@@ -5,6 +5,7 @@
 /// collection job.pvd listing them by total time.
 #include "output/output_file.hpp"
 #include "output/results.hpp"
+#include "output/vtu_cell_data.hpp"
 
 #include <filesystem>
 #include <string>
@@ -55,12 +56,7 @@ class VtuWriter : public ResultWriter {
   bool _has_gaps = false;
   std::string _type_legend; ///< " 6=C3D8 15=GAPUNI": the element_type ids present in the model
 
-  // per-frame cell data (reused)
-  std::vector<double> _S, _E, _HFL, _gap_clearance, _gap_pressure;
-  std::vector<double> _S_neg, _S_pos, _E_neg, _E_pos; ///< shells: SNEG, SPOS section points
-  std::vector<std::int32_t> _gap_status;
-  std::vector<double> _avg;
-  std::vector<double> _zeros;
+  output::VtuCellData _cells; ///< per-frame cell data (reused)
 };
 
 } // namespace gapfem

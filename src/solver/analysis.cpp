@@ -523,11 +523,13 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   if (step.field_outputs.empty()) {
     fr.field_due = last;
   } else {
-    for (const auto& r : step.field_outputs)
-      if (due(r.frequency)) {
+    for (const auto& r : step.field_outputs) {
+      fr.field_output_due.push_back(due(r.frequency));
+      if (fr.field_output_due.back()) {
         fr.field_due = true;
         field_elements |= !r.elem_vars.empty();
       }
+    }
   }
   any |= fr.field_due;
   if (!any) return;

@@ -213,39 +213,67 @@ void handle_output(BuildState& s, const Keyword& kw) {
   if (variable >= 0) s.scratch.preset_fields.emplace_back(s.current_field, variable == 1);
 }
 
-/// NSET= / ELSET= of *NODE OUTPUT / *ELEMENT OUTPUT must name a set (the frames hold the whole
-/// model either way).
-void check_output_set(BuildState& s, const Keyword& kw, bool nodes) {
-  const char* param = nodes ? "NSET" : "ELSET";
-  if (!kw.has(param)) return;
+/// The members of NSET= / ELSET= of *NODE OUTPUT / *ELEMENT OUTPUT (which must name a set), or
+/// nullptr when the line has none (the whole model) or its set's definition failed (`failed`).
+template <bool Nodes>
+const std::vector<std::int32_t>* output_set(BuildState& s, const Keyword& kw, bool& failed) {
+  const char* param = Nodes ? "NSET" : "ELSET";
+  failed = false;
+  if (!kw.has(param)) return nullptr;
   const std::string name = set_param(s, kw, param, true);
-  if (nodes ? find_nset(s, name) != nullptr : find_elset(s, name) != nullptr) return;
-  if (s.bad_sets.count(name)) return; // its definition failed (reported)
+  const auto* set = Nodes ? find_nset(s, name) : find_elset(s, name);
+  if (set) return set;
+  failed = s.bad_sets.count(name) > 0; // its definition failed (reported)
+  if (failed) return nullptr;
   throw InputError(kw.loc, fmt::format("{}={}", param, name),
                    fmt::format("this {} set is not defined; define it with *{} in the model data",
-                               nodes ? "node" : "element", param));
+                               Nodes ? "node" : "element", param));
+}
+
+/// Adds the variables of one *NODE OUTPUT / *ELEMENT OUTPUT line to its request, on its set.
+template <typename V>
+void add_field_vars(const std::vector<V>& vars, const std::vector<std::int32_t>* set,
+                    std::vector<V>& all, std::vector<V>& everywhere,
+                    std::vector<std::pair<V, std::vector<std::int32_t>>>& on_sets) {
+  for (V v : vars) {
+    add_unique(all, v);
+    if (!set) {
+      add_unique(everywhere, v);
+      continue;
+    }
+    auto it =
+        std::find_if(on_sets.begin(), on_sets.end(), [&](const auto& p) { return p.first == v; });
+    if (it == on_sets.end()) {
+      on_sets.emplace_back(v, *set);
+      continue;
+    }
+    it->second.insert(it->second.end(), set->begin(), set->end());
+    std::sort(it->second.begin(), it->second.end());
+    it->second.erase(std::unique(it->second.begin(), it->second.end()), it->second.end());
+  }
 }
 
 void handle_node_output(BuildState& s, const Keyword& kw) {
-  // NSET is checked; the ParaView frames always hold the whole model
-  check_output_set(s, kw, true);
-  if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  bool failed = false;
+  const auto* set = output_set<true>(s, kw, failed);
+  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
-  for (NodeVar v : read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList))
-    add_unique(req.node_vars, v);
+  add_field_vars(read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList), set, req.node_vars,
+                 req.node_vars_everywhere, req.node_sets);
 }
 
 void handle_element_output(BuildState& s, const Keyword& kw) {
-  check_output_set(s, kw, false);
-  if (s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  bool failed = false;
+  const auto* set = output_set<false>(s, kw, failed);
+  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
-  for (ElemVar v : read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
-                                      "a list of section points on *ELEMENT OUTPUT: the ParaView "
-                                      "frames hold each element's average over its points "
-                                      "and a shell's SNEG and SPOS sides (S_SNEG, S_SPOS); "
-                                      "print other section points with *EL PRINT (a data line of "
-                                      "section point numbers)"))
-    add_unique(req.elem_vars, v);
+  add_field_vars(read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
+                                    "a list of section points on *ELEMENT OUTPUT: the ParaView "
+                                    "frames hold each element's average over its points, a "
+                                    "shell's SNEG and SPOS sides (S_SNEG, S_SPOS) and a beam's "
+                                    "most stressed section point; print other section points "
+                                    "with *EL PRINT (a data line of section point numbers)"),
+                 set, req.elem_vars, req.elem_vars_everywhere, req.elem_sets);
 }
 
 void handle_file_output(BuildState& s, const Keyword& kw) {
@@ -278,20 +306,27 @@ void resolve_preset_outputs(BuildState& s) {
     FieldOutputRequest& req = st.field_outputs[index];
     // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for thermal procedures); ALL:
     // every variable gapfem can write for the procedure
+    auto node = [&](NodeVar v) {
+      add_unique(req.node_vars, v);
+      add_unique(req.node_vars_everywhere, v);
+    };
+    auto elem = [&](ElemVar v) {
+      add_unique(req.elem_vars, v);
+      add_unique(req.elem_vars_everywhere, v);
+    };
     if (mech) {
-      for (NodeVar v : {NodeVar::U, NodeVar::RF}) add_unique(req.node_vars, v);
-      for (ElemVar v : {ElemVar::S, ElemVar::E}) add_unique(req.elem_vars, v);
+      for (NodeVar v : {NodeVar::U, NodeVar::RF}) node(v);
+      for (ElemVar v : {ElemVar::S, ElemVar::E}) elem(v);
       if (all) {
-        for (NodeVar v : {NodeVar::UR, NodeVar::RM, NodeVar::CF, NodeVar::CM})
-          add_unique(req.node_vars, v);
-        add_unique(req.elem_vars, ElemVar::SF);
+        for (NodeVar v : {NodeVar::UR, NodeVar::RM, NodeVar::CF, NodeVar::CM}) node(v);
+        elem(ElemVar::SF);
       }
     }
     if (thermal) {
-      add_unique(req.node_vars, NodeVar::NT);
-      add_unique(req.elem_vars, ElemVar::HFL);
+      node(NodeVar::NT);
+      elem(ElemVar::HFL);
       if (all)
-        for (NodeVar v : {NodeVar::RFL, NodeVar::CFL}) add_unique(req.node_vars, v);
+        for (NodeVar v : {NodeVar::RFL, NodeVar::CFL}) node(v);
     }
   }
   // a field request without any variable writes nothing: drop it and say so

@@ -406,5 +406,70 @@ TEST(OutputVtu, PredefinedTemperatureIsReportedWhereElementsReadIt) {
   EXPECT_EQ(dat.find("          3      "), std::string::npos);
 }
 
+/// A B31 cantilever of 2 elements along x (RECT a = 10 along n1 = -z, b = 20 along n2 = +y) with a
+/// GAPUNI support under its tip (clearance 0.5, open under these loads), loaded by `loads`.
+std::string cantilever(const std::string& output, const std::string& loads) {
+  return "*NODE, NSET=ALLN\n1, 0, 0, 0\n2, 50, 0, 0\n3, 100, 0, 0\n4, 100, -1, 0\n"
+         "*NSET, NSET=TIP\n3\n*ELEMENT, TYPE=B31, ELSET=BEAM\n1, 1, 2\n2, 2, 3\n"
+         "*ELEMENT, TYPE=GAPUNI, ELSET=G\n3, 3, 4\n*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n"
+         "*BEAM SECTION, ELSET=BEAM, MATERIAL=M, SECTION=RECT\n10., 20.\n0., 0., -1.\n"
+         "*GAP, ELSET=G\n0.5, 0., -1., 0., 1.\n*BOUNDARY\n1, ENCASTRE\n4, 1, 3\n"
+         "*STEP\n*STATIC\n*CLOAD\n" +
+         loads + output + "*END STEP\n";
+}
+
+TEST(OutputVtu, FieldRequestsChooseTheArrays) {
+  // *NODE OUTPUT CF and *ELEMENT OUTPUT SF only: no U, RF, S or E in the frame, CF and SF/SM are
+  const JobResult r = test::run_deck(
+      cantilever("*OUTPUT, FIELD\n*NODE OUTPUT\nCF\n*ELEMENT OUTPUT\nSF\n", "3, 2, -10.\n"), true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_1.vtu");
+  for (const char* absent : {"U", "RF", "UR", "RM", "S", "E"})
+    EXPECT_EQ(v.arrays.count(absent), 0u) << absent;
+  ASSERT_EQ(v.arrays.count("CF"), 1u);
+  ASSERT_EQ(v.arrays.count("SF"), 1u);
+  ASSERT_EQ(v.arrays.count("SM"), 1u);
+  EXPECT_EQ(v.header.find("Vectors=\"U\""), std::string::npos); // no U to warp by
+  const auto cf = v.values<double>("CF");
+  EXPECT_DOUBLE_EQ(cf[3 * 2 + 1], -10.0); // node 3, y
+  EXPECT_DOUBLE_EQ(cf[3 * 1 + 1], 0.0);
+  // the tip moves 10 L^3 / (3 E I11) = 0.0025 < 0.5: the gap stays open and both elements carry
+  // the shear 10
+  const auto sf = v.values<double>("SF"), sm = v.values<double>("SM");
+  ASSERT_EQ(sf.size(), 6u * 3u);
+  ASSERT_EQ(sm.size(), 3u * 3u);
+  EXPECT_NEAR(std::abs(sf[6 * 0 + 1]), 10.0, 1e-9); // SF2: shear along n2 = +y
+  EXPECT_TRUE(std::isnan(sf[6 * 2]));               // the gap has no section forces
+  // gap arrays are always there
+  EXPECT_EQ(v.arrays.count("gap_status"), 1u);
+}
+
+TEST(OutputVtu, NodeOutputOnASetIsNaNElsewhere) {
+  const JobResult r = test::run_deck(
+      cantilever("*OUTPUT, FIELD\n*NODE OUTPUT, NSET=TIP\nU\n*NODE OUTPUT\nRF\n", "3, 2, -10.\n"),
+      true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_1.vtu");
+  const auto u = v.values<double>("U"), rf = v.values<double>("RF");
+  for (int n : {0, 1, 3}) EXPECT_TRUE(std::isnan(u[3 * n + 1])) << "node index " << n;
+  EXPECT_LT(u[3 * 2 + 1], 0.0);   // the tip moves down
+  EXPECT_NEAR(rf[1], 10.0, 1e-9); // RF everywhere: the root carries the load
+  EXPECT_FALSE(std::isnan(rf[3 * 1 + 1]));
+}
+
+TEST(OutputVtu, BeamStressIsTheExtremeFibre) {
+  // pure bending by a tip moment M = 1e5 about global y = n2: the section average of S11 is 0;
+  // the extreme fibre, a/2 from the axis along n1, carries S11 = M (a/2) / I22, I22 = b a^3 / 12
+  const JobResult r = test::run_deck(cantilever("", "3, 5, 1.e5\n"), true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_1.vtu");
+  const auto S = v.values<double>("S");
+  const double a = 10.0, b = 20.0, I22 = b * a * a * a / 12.0, sigma = 1e5 * (a / 2) / I22;
+  for (int e = 0; e < 2; ++e) EXPECT_NEAR(std::abs(S[6 * e]), sigma, 1e-6 * sigma) << e;
+  ASSERT_EQ(v.arrays.count("SM"), 1u); // SF and SM in the default frame too
+  const auto sm = v.values<double>("SM");
+  EXPECT_NEAR(std::abs(sm[3 * 0 + 1]), 1e5, 1e-6 * 1e5); // SM2: about n2
+}
+
 } // namespace
 } // namespace gapfem
