@@ -264,13 +264,27 @@ void JsonWriter::write_element(const Model& model, const ElementResult& res, boo
                  element_info(type).name);
   _components[static_cast<std::size_t>(type)].seen = true;
   const bool shell = element_info(type).family == ElementFamily::Shell;
+  const bool beam = element_info(type).family == ElementFamily::Beam;
   for (const OutputBlock& block : res.data.blocks) {
     output::average_block(block, _avg);
     b.push_back(',');
     key(b, elem_var_name(block.var));
     append_json_array(b, _avg);
     note_components(type, block);
-    if (!shell || block.section_points < 2) continue;
+    if (block.section_points < 2) continue;
+    if (beam) { // every section point, averaged over the integration points: the fibres
+      b.push_back(',');
+      key(b, fmt::format("{}_POINTS", elem_var_name(block.var)));
+      b.push_back('[');
+      for (int k = 0; k < block.section_points; ++k) {
+        if (k) b.push_back(',');
+        output::average_section_point(block, k, _avg);
+        append_json_array(b, _avg);
+      }
+      b.push_back(']');
+      continue;
+    }
+    if (!shell) continue;
     // a shell's SNEG and SPOS sides (section points 1 and n), averaged over its points
     for (const bool top : {false, true}) {
       output::average_section_point(block, top ? block.section_points - 1 : 0, _avg);

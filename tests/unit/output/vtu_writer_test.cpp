@@ -469,6 +469,12 @@ TEST(OutputVtu, BeamStressIsTheExtremeFibre) {
   ASSERT_EQ(v.arrays.count("SM"), 1u); // SF and SM in the default frame too
   const auto sm = v.values<double>("SM");
   EXPECT_NEAR(std::abs(sm[3 * 0 + 1]), 1e5, 1e-6 * 1e5); // SM2: about n2
+  // the JSON results list the beam's section points: the four corners, +/- sigma
+  const std::string json = read_file(test::test_dir() / "job.results.json");
+  const auto at = json.find("\"S_POINTS\":[[");
+  ASSERT_NE(at, std::string::npos) << json.substr(0, 2000);
+  const double s1 = std::stod(json.substr(at + 13));
+  EXPECT_NEAR(std::abs(s1), sigma, 1e-6 * sigma);
 }
 
 } // namespace
