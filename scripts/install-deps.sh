@@ -6,6 +6,7 @@ packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
           libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
           calculix-ccx python3 time
+          python3-vtk9  # tests read the ParaView frames back with VTK's own reader
           clang libclang-rt-14-dev llvm)  # clang: the sanitize build (ASan, UBSan, libFuzzer)
 missing=()
 for p in "${packages[@]}"; do

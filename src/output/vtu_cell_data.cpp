@@ -93,12 +93,11 @@ void VtuCellData::collect(const Model& model, const Frame& frame, bool has_gaps)
           continue;
         }
         if (block.var == ElemVar::SF) {
+          // (components an element does not have stay NaN: a beam has no SF4 … SF6)
           if (const int k = component(name, "SF", 6); k >= 0) {
-            if (std::isnan(SF[6 * e])) std::fill_n(SF.begin() + 6 * e, 6, 0.0);
             SF[6 * e + static_cast<std::size_t>(k)] = _avg[c];
             any_SF = true;
           } else if (const int m = component(name, "SM", 3); m >= 0) {
-            if (std::isnan(SM[3 * e])) std::fill_n(SM.begin() + 3 * e, 3, 0.0);
             SM[3 * e + static_cast<std::size_t>(m)] = _avg[c];
             any_SM = true;
           }
