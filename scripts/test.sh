@@ -11,4 +11,4 @@ bash scripts/install-deps.sh
 cmake --preset sanitize >/dev/null
 cmake --build --preset sanitize -j"$(nproc)"
 ctest --preset sanitize --timeout 900
-bash fuzz/run.sh "${GAPFEM_FUZZ_SECONDS:-60}"
+bash fuzz/run.sh "${GAPFEM_FUZZ_SECONDS:-30}"

@@ -7,13 +7,14 @@ namespace gapfem::output {
 FieldSelection::FieldSelection(const Model& model, int step_index, const Frame& frame) {
   const auto nn = static_cast<std::size_t>(model.mesh.n_nodes());
   const auto ne = static_cast<std::size_t>(model.mesh.n_elements());
-  const Step& step = model.steps[static_cast<std::size_t>(step_index)];
-  if (frame.field_output_due.empty()) { // no *OUTPUT, FIELD: all but the applied loads
+  const bool known_step = step_index >= 0 && step_index < static_cast<int>(model.steps.size());
+  if (frame.field_output_due.empty() || !known_step) { // no *OUTPUT, FIELD: all but the loads
     for (NodeVar v : {NodeVar::U, NodeVar::UR, NodeVar::RF, NodeVar::RM, NodeVar::NT, NodeVar::RFL})
       _node[static_cast<std::size_t>(v)].assign(nn, 1);
     for (auto& m : _elem) m.assign(ne, 1);
     return;
   }
+  const Step& step = model.steps[static_cast<std::size_t>(step_index)];
   for (std::size_t r = 0; r < step.field_outputs.size() && r < frame.field_output_due.size(); ++r) {
     if (!frame.field_output_due[r]) continue;
     const FieldOutputRequest& req = step.field_outputs[r];
