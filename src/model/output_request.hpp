@@ -56,6 +56,14 @@ struct ElPrintRequest {
   SourceLocation loc;
 };
 
+/// *MONITOR: one degree of freedom whose value the .sta file shows after converged increments.
+struct DofMonitor {
+  NodeId node = -1;
+  int dof = 0;       ///< Abaqus DOF number: 1-6, 11 (temperature)
+  int frequency = 1; ///< every n-th increment (and the last of each step)
+  SourceLocation loc;
+};
+
 /// *OUTPUT, FIELD with its *NODE OUTPUT / *ELEMENT OUTPUT: drives ParaView (VTU) frames.
 struct FieldOutputRequest {
   int frequency = 1; ///< every n-th increment; the last increment of a step is always written

@@ -100,6 +100,8 @@ struct Step {
   std::vector<NodePrintRequest> node_prints;
   std::vector<ElPrintRequest> el_prints;
   std::vector<FieldOutputRequest> field_outputs;
+  /// *MONITOR in effect in this step (given in it, in an earlier step or in the model data)
+  std::optional<DofMonitor> monitor;
 };
 
 } // namespace gapfem

@@ -122,6 +122,9 @@ struct IncrementInfo {
   /// Newton converged, but the temperature change exceeded DELTMX: the increment is repeated
   /// smaller (converged is then false)
   bool deltmx_exceeded = false;
+  /// *MONITOR: the monitored DOF's value after a converged increment (none when not due or the
+  /// node does not carry the DOF)
+  std::optional<double> monitor;
   /// max over fields of residual / time-averaged flux after each Newton iteration
   std::vector<double> residual_history;
 };

@@ -20,8 +20,10 @@ void StaWriter::begin(const Model& model) {
   auto out = std::back_inserter(_out.buffer());
   fmt::format_to(out, "{:<42}{}\n", fmt::format("gapfem {}", GAPFEM_VERSION), date);
   fmt::format_to(out, " SUMMARY OF JOB INFORMATION:\n");
-  fmt::format_to(out, " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF\n");
-  fmt::format_to(out, "               DISCON ITERS ITERS  TIME       TIME       TIME\n");
+  // Abaqus's columns; DOF MONITOR holds the *MONITOR value (blank without one)
+  fmt::format_to(out, " STEP  INC ATT SEVERE EQUIL TOTAL  TOTAL      STEP       INC OF     DOF\n");
+  fmt::format_to(out,
+                 "               DISCON ITERS ITERS  TIME       TIME       TIME       MONITOR\n");
   fmt::format_to(out, "               ITERS\n");
   _out.flush();
 }
@@ -41,11 +43,15 @@ void StaWriter::increment(const IncrementInfo& info) {
   // like Abaqus, a rejected attempt shows the times reached so far (the last converged
   // increment's), with the increment it tried in the last column: time never runs backwards
   const double back = info.converged ? 0.0 : info.dt;
+  const std::string inc = fmt::format("{:.5G}", info.dt);
   fmt::format_to(std::back_inserter(_out.buffer()),
-                 "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}\n", info.step, info.increment,
+                 "{:>4}{:>6}{:>4}{}{:>5}{:>6}{:>6}  {:<11}{:<11}{}", info.step, info.increment,
                  info.attempts, attempt_marker(info), severe, equil, info.iterations,
                  fmt::format("{:.5G}", info.total_time - back),
-                 fmt::format("{:.5G}", info.step_time - back), fmt::format("{:.5G}", info.dt));
+                 fmt::format("{:.5G}", info.step_time - back),
+                 info.monitor ? fmt::format("{:<11}", inc) : inc);
+  if (info.monitor) fmt::format_to(std::back_inserter(_out.buffer()), "{:.4E}", *info.monitor);
+  _out.buffer().push_back('\n');
   _out.flush();
 }
 

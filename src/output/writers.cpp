@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "output/dat_writer.hpp"
 #include "output/json_writer.hpp"
+#include "output/msg_writer.hpp"
 #include "output/sta_writer.hpp"
 #include "output/terminal_writer.hpp"
 #include "output/vtu_writer.hpp"
@@ -30,6 +31,7 @@ std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptio
     writers.push_back(std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
   if (options.vtu) writers.push_back(std::make_unique<VtuWriter>(dir, job));
   if (options.sta) writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
+  if (options.msg) writers.push_back(std::make_unique<MsgWriter>(dir / (job + ".msg")));
   if (options.terminal) writers.push_back(std::make_unique<TerminalWriter>());
   return writers;
 }

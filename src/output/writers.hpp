@@ -19,10 +19,11 @@ struct WriterOptions {
   bool sta = true;                 ///< status file, one line per increment attempt (job.sta)
   bool json = true;                ///< machine-readable results (job.results.json)
   bool vtu = true;                 ///< ParaView frames (job_<step>_<inc>.vtu, job.pvd)
+  bool msg = true;                 ///< message file: the whole log, iterations included (job.msg)
   bool terminal = false;           ///< also add a TerminalWriter (progress through gapfem::log)
 };
 
-/// The writers selected by `options`, in the order dat, json, vtu, sta,
+/// The writers selected by `options`, in the order dat, json, vtu, sta, msg,
 /// terminal (what reports an increment comes after what stores it). Files are opened in begin();
 /// errors opening or writing them raise AnalysisError.
 std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);

@@ -102,6 +102,8 @@ struct Analysis::Impl {
   Stabilization carried_stabilization;
   double carried_factor = 0.0;
   void write_frame(int index, StepProblem& prob, int increment, bool last, double dt);
+  /// The *MONITOR value after a converged increment, when due.
+  std::optional<double> monitor_value(const Step& step, int increment, bool last) const;
   /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of
   /// the boundary conditions given there.
   void to_local_systems(NodeResults& nr) const;
@@ -419,6 +421,7 @@ StepSummary Analysis::Impl::run_step(int index) {
       ++sum.increments;
       step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
       write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
+      info.monitor = monitor_value(step, ctrl.increment(), ctrl.finished());
       {
         ScopedTimer timer(&stats, TimeCategory::Output); // the JSON checkpoint is output time
         for (auto* w : writers) w->increment(info);
@@ -497,6 +500,18 @@ StepSummary Analysis::Impl::run_step(int index) {
   for (auto* w : writers) w->end_step(model, index, sum);
   st.total_time += ctrl.step_time();
   return sum;
+}
+
+std::optional<double> Analysis::Impl::monitor_value(const Step& step, int increment,
+                                                    bool last) const {
+  if (!step.monitor) return std::nullopt;
+  const DofMonitor& m = *step.monitor;
+  if (!last && (m.frequency <= 0 || increment % m.frequency != 0)) return std::nullopt;
+  DofType d{};
+  if (!dof_from_abaqus(m.dof, d)) return std::nullopt;
+  const LocalIndex s = disc.dofs().slot(m.node, d);
+  if (s < 0) return std::nullopt; // the node does not carry the DOF: a blank column
+  return st.u_start[static_cast<std::size_t>(s)];
 }
 
 void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last,

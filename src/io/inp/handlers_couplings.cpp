@@ -23,22 +23,6 @@ double norm(const Vec3& v) {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
-/// The single node named by a parameter value (a label, or a set holding one node).
-NodeId param_node(BuildState& s, const Keyword& kw, std::string_view param) {
-  const std::string value = param_value(kw, param, true);
-  DataLine line;
-  line.fields = {value};
-  line.file = kw.file;
-  line.line = kw.line;
-  const FieldReader r(line, kw.loc);
-  const std::vector<NodeId> nodes = resolve_nodes(s, r, 0);
-  if (nodes.size() != 1)
-    throw InputError(
-        kw.loc, fmt::format("{}={}", param, value),
-        fmt::format("the reference node must be one node; this set holds {}", nodes.size()));
-  return nodes[0];
-}
-
 /// DOF ranges of *KINEMATIC COUPLING / *KINEMATIC / *DISTRIBUTING data: first[, last]; blank
 /// first = all of 1-6.
 std::vector<int> dof_range(const FieldReader& r, std::size_t first_field) {

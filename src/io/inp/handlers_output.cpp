@@ -276,6 +276,21 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
                  set, req.elem_vars, req.elem_vars_everywhere, req.elem_sets);
 }
 
+void handle_monitor(BuildState& s, const Keyword& kw) {
+  DofMonitor m;
+  m.loc = kw.loc;
+  m.node = param_node(s, kw, "NODE");
+  const Parameter* dof = kw.find("DOF");
+  const auto d = dof && dof->has_value ? parse_integer(dof->value) : std::nullopt;
+  DofType type{};
+  if (!d || !dof_from_abaqus(static_cast<int>(*d), type))
+    throw InputError(kw.loc, fmt::format("DOF={}", dof ? dof->value : ""),
+                     "give the degree of freedom to monitor: DOF=1 … 6, or 11 (temperature)");
+  m.dof = static_cast<int>(*d);
+  m.frequency = frequency_param(kw);
+  (s.in_step ? s.step.monitor : s.model_monitor) = m;
+}
+
 void handle_file_output(BuildState& s, const Keyword& kw) {
   s.warn(kw.loc,
          fmt::format("{} (results-file output) is not written by gapfem and was ignored; use "

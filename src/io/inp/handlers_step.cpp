@@ -109,6 +109,7 @@ void handle_step(BuildState& s, const Keyword& kw) {
   st.boundary = carried(prev ? prev->boundary : s.model_boundary);
   if (!prev) // non-zero model-data values (CalculiX dialect) are reached in the first step
     for (BoundaryEntry& b : st.boundary) b.propagated = b.value == 0.0;
+  st.monitor = prev ? prev->monitor : s.model_monitor; // a *MONITOR stays until replaced
   if (prev) {
     st.controls = prev->controls; // *CONTROLS stay in effect until changed or reset
     st.cloads = carried(prev->cloads);

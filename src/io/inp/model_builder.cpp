@@ -126,6 +126,22 @@ const std::vector<NodeId>* find_nset(BuildState& s, const std::string& name) {
   return nullptr;
 }
 
+/// The single node named by a parameter value (a label, or a set holding one node).
+NodeId param_node(BuildState& s, const Keyword& kw, std::string_view param) {
+  const std::string value = param_value(kw, param, true);
+  DataLine line;
+  line.fields = {value};
+  line.file = kw.file;
+  line.line = kw.line;
+  const FieldReader r(line, kw.loc);
+  const std::vector<NodeId> nodes = resolve_nodes(s, r, 0);
+  if (nodes.size() != 1)
+    throw InputError(
+        kw.loc, fmt::format("{}={}", param, value),
+        fmt::format("{} names one node; this set holds {}", display_upper(param), nodes.size()));
+  return nodes[0];
+}
+
 int amplitude_param(BuildState& s, const Keyword& kw, std::string_view param) {
   if (!kw.has(param)) return -1;
   const std::string name = name_param(kw, param, true);

@@ -115,6 +115,7 @@ struct BuildState {
   std::vector<CouplingDef> couplings;
 
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
+  std::optional<DofMonitor> model_monitor;   ///< *MONITOR in model data (every step)
   bool model_boundary_value_warned = false;  ///< the non-zero model-data *BOUNDARY remark
   bool model_done = false;                   ///< finish_model_data() has run
   bool in_step = false;
@@ -230,6 +231,8 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
 /// Nodes named by a data field: a node label or an NSET name. Throws InputError naming the field
 /// when neither exists. Returns nothing (silently) for labels/sets whose definition already failed.
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
+/// The single node named by a parameter (REF NODE=, NODE=): a label or a set of one node.
+NodeId param_node(BuildState& s, const Keyword& kw, std::string_view param);
 /// Elements named by a data field: an element label or an ELSET name.
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field);
 /// Elements of an ELSET parameter value (upper-cased), or nullptr when the set does not exist.

@@ -121,7 +121,7 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*SECTION FILE", handle_print_control, W::Both, "*"},
   {"*FILE FORMAT", handle_print_control, W::Both, "*"},
   {"*FILE OUTPUT", handle_print_control, W::Both, "*"},
-  {"*MONITOR", handle_print_control, W::Both, "*"},
+  {"*MONITOR", handle_monitor, W::Both, "NODE|DOF|FREQUENCY|FREQ"},
   {"*PRINT", handle_print_control, W::Both, "*"},
   {"*DIAGNOSTICS", handle_print_control, W::Both, "*"},
   {"*EL FILE", handle_file_output, W::History, "*"},

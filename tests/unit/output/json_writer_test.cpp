@@ -297,14 +297,14 @@ TEST(OutputJson, FactoryWritesAllFiles) {
   opt.directory = dir;
   opt.job = "wt";
   auto writers = make_result_writers(opt);
-  ASSERT_EQ(writers.size(), 4u);
+  ASSERT_EQ(writers.size(), 5u); // dat, json, vtu, sta, msg
   for (auto& w : writers) w->begin(m);
   for (auto& w : writers) w->begin_step(m, 0);
   const Frame fr = make_frame(m, 1, 1.0, true);
   for (auto& w : writers) w->frame(m, 0, fr);
   for (auto& w : writers) w->end_step(m, 0, make_summary());
   for (auto& w : writers) w->end(m, make_run());
-  for (const char* name : {"wt.dat", "wt.sta", "wt.results.json", "wt.pvd", "wt_1_1.vtu"})
+  for (const char* name : {"wt.dat", "wt.sta", "wt.msg", "wt.results.json", "wt.pvd", "wt_1_1.vtu"})
     EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
   json parsed;
   EXPECT_NO_THROW(parsed = json::parse(read_file(dir / "wt.results.json")));

@@ -1,7 +1,13 @@
 // StaWriter: Abaqus status-file layout, "U" on attempts that were cut back,
 // final line, and flushing after every line.
+#include "common/log.hpp"
 #include "output/sta_writer.hpp"
+#include "test_util.hpp"
 #include "writer_fixture.hpp"
+
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
 
 namespace gapfem {
 namespace {
@@ -29,6 +35,45 @@ TEST(OutputSta, LinesPerAttemptAndCompletion) {
   EXPECT_EQ(lines[6], "   1     1   2     1     2     3  0.5        0.5        0.5");
   EXPECT_EQ(lines[7], "   1     2   1     1     2     3  1          1          0.5");
   EXPECT_EQ(lines.back(), " THE ANALYSIS HAS COMPLETED SUCCESSFULLY");
+}
+
+TEST(OutputSta, MonitorColumnShowsTheDofAfterEachConvergedIncrement) {
+  // *MONITOR, NODE=TIP, DOF=2 on a spring pulled in four increments: the DOF MONITOR column of
+  // each converged increment is u2 = F t / k, t the step time (k = 10, F = 4)
+  const std::string deck =
+      "*NODE, NSET=TIP\n1, 0, 0, 0\n*ELEMENT, TYPE=SPRING1, ELSET=S\n1, 1\n*SPRING, ELSET=S\n2\n"
+      "10.\n*BOUNDARY\n1, 1, 1\n1, 3, 3\n*MONITOR, NODE=TIP, DOF=2\n*STEP\n*STATIC, DIRECT\n"
+      "0.25, 1.\n*CLOAD\n1, 2, 4.\n*END STEP\n";
+  const JobResult r = test::run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const auto lines = read_lines(test::test_dir() / "job.sta");
+  ASSERT_GE(lines.size(), 9u);
+  EXPECT_NE(lines[2].find("INC OF     DOF"), std::string::npos) << lines[2];
+  EXPECT_NE(lines[3].find("TIME       MONITOR"), std::string::npos) << lines[3];
+  for (int i = 1; i <= 4; ++i) {
+    const std::string& row = lines[4 + static_cast<std::size_t>(i)];
+    EXPECT_EQ(row.substr(row.size() - 10), fmt::format("{:.4E}", 0.1 * i)) << row;
+  }
+}
+
+TEST(OutputMsg, TheMessageFileHoldsEveryIterationWhateverTheTerminalShows) {
+  // a quiet run (the terminal shows errors only): job.msg still has the iterations and increments
+  const std::string deck =
+      "*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n*ELEMENT, TYPE=GAPUNI, ELSET=G\n1, 1, 2\n"
+      "*GAP, ELSET=G\n0.1, 1., 0., 0., 1.\n*ELEMENT, TYPE=SPRING1, ELSET=S\n2, 2\n"
+      "*SPRING, ELSET=S\n1\n10.\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n*STEP\n*STATIC\n*CLOAD\n"
+      "2, 1, -5.\n*END STEP\n";
+  const JobResult r = test::run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  std::ifstream in(test::test_dir() / "job.msg");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string msg = ss.str();
+  EXPECT_NE(msg.find("STEP 1 Step-1 (STATIC)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("  iteration 1: residual/flux"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("increment 1 attempt 1: converged in"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("THE ANALYSIS HAS COMPLETED SUCCESSFULLY"), std::string::npos) << msg;
+  EXPECT_EQ(log::level(), log::Level::Info); // the terminal's level is restored after the run
 }
 
 TEST(OutputSta, EveryLineIsFlushedAtOnce) {
