@@ -2,10 +2,10 @@
 /// @file beam_section.hpp
 /// Geometric properties of the beam sections gapfem supports: the *BEAM SECTION library shapes
 /// RECT, CIRC, PIPE (solid/annulus, exact), TRAPEZOID (solid polygon), BOX, I, HEX and L
-/// (thin-walled, integrated along the wall mid-lines as Abaqus does), and SECTION=GENERAL of *BEAM GENERAL SECTION; their shear correction
-/// factors, and the section points used for stress output. All properties are about the section
-/// origin (the beam node), which need not be the centroid (the I section's is not).
-/// Formulas and sources: docs/theory/structural.md §3.3.
+/// (thin-walled, integrated along the wall mid-lines as Abaqus does), and SECTION=GENERAL of *BEAM
+/// GENERAL SECTION; their shear correction factors, and the section points used for stress output.
+/// All properties are about the section origin (the beam node), which need not be the centroid (the
+/// I section's is not). Formulas and sources: docs/theory/structural.md §3.3.
 #include "model/section.hpp"
 
 #include <array>
