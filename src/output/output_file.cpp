@@ -34,15 +34,14 @@ std::size_t write_limited(const void* data, std::size_t n, std::FILE* f) {
   return std::fwrite(data, 1, n, f);
 }
 
-/// fsync of a directory, so that a rename in it survives a power loss (best effort).
+} // namespace
+
 void sync_directory(const std::filesystem::path& dir) {
   const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
   if (fd < 0) return;
   ::fsync(fd);
   ::close(fd);
 }
-
-} // namespace
 
 namespace testing {
 void limit_writes(long long bytes) {

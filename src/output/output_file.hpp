@@ -91,6 +91,9 @@ class OutputFile {
   fmt::memory_buffer _buffer;
 };
 
+/// fsync of a directory, so that a rename in it survives a power loss (best effort).
+void sync_directory(const std::filesystem::path& dir);
+
 namespace testing {
 /// Fault injection for tests: after `bytes` more bytes, every result-file write fails with
 /// ENOSPC (as on a full disk); a negative value removes the limit.
