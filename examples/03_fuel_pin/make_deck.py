@@ -52,6 +52,8 @@ out += ["*GAP CONDUCTANCE, PRESSURE", f"{k_he / 0.01:.6g}, 0.", f"{k_he / 0.01 +
         "*STEP, INC=500", "*COUPLED TEMPERATURE-DISPLACEMENT, DELTMX=40.", "0.5, 60., 1.E-4, 5.",
         "*DFLUX, AMPLITUDE=POWER", "PELLET, BF, 450.",
         "*FILM", "CLAD_OUT, F2, 580., 30.",
+        # ParaView frames every second increment: the .pvd animates the gap closing
+        "*OUTPUT, FIELD, FREQUENCY=2", "*NODE OUTPUT", "U, NT", "*ELEMENT OUTPUT", "S, E, HFL",
         "*EL PRINT, ELSET=GAP", "S, E, HFL",
         "*NODE PRINT, NSET=AXIS, FREQUENCY=5", "NT",
         "*END STEP"]

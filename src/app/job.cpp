@@ -134,7 +134,7 @@ JobResult run_job(const JobOptions& given) {
     writers = make_result_writers(wo);
   } else if (!options.quiet) {
     WriterOptions wo;
-    wo.dat = wo.sta = wo.json = wo.vtu = wo.msg = false;
+    wo.dat = wo.sta = wo.json = wo.vtu = wo.msg = wo.frd = false;
     wo.terminal = true;
     writers = make_result_writers(wo);
   }

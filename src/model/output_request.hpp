@@ -79,4 +79,18 @@ struct FieldOutputRequest {
   SourceLocation loc;
 };
 
+/// *NODE FILE / *EL FILE: results written to job.frd, CalculiX's results format that its viewer
+/// cgx reads (docs/results.md, "The .frd file"). Element variables are written at the nodes,
+/// extrapolated and averaged (output/nodal_average.hpp).
+struct FileOutputRequest {
+  bool element = false; ///< *EL FILE (else *NODE FILE)
+  int frequency = 1;    ///< every n-th increment; the last increment of a step is always written
+  std::vector<NodeVar> node_vars;
+  std::vector<ElemVar> elem_vars;
+  std::string set;                   ///< NSET= / ELSET=; empty: the whole model
+  std::vector<std::int32_t> members; ///< the set's nodes or elements (empty with no set)
+  bool global = false; ///< *NODE FILE, GLOBAL=YES: global components at *TRANSFORM nodes
+  SourceLocation loc;
+};
+
 } // namespace gapfem

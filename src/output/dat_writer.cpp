@@ -468,7 +468,12 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
   if (!first || first->names.empty()) return;
   const std::size_t nc = first->names.size();
   const bool at_points = request.position == ElPosition::IntegrationPoints;
-  const std::string_view type_name = element_info(model.mesh.elem_types[group[0]]).name;
+  const ElementTypeInfo& info = element_info(model.mesh.elem_types[group[0]]);
+  const std::string_view type_name = info.name;
+  const bool nodal =
+      request.position == ElPosition::Averaged && var != ElemVar::SF && info.cell &&
+      (info.family == ElementFamily::Continuum || info.family == ElementFamily::HeatTransfer);
+  if (nodal) return write_nodal_table(model, frame, request, group, var, *first);
 
   auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
@@ -484,8 +489,8 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
                    "TYPE {} {}\n",
                    type_name, position_text(request.position));
   if (request.position == ElPosition::Averaged)
-    fmt::format_to(out, " (AVERAGED AT NODES IS NOT AVAILABLE: ELEMENT CENTROID VALUES ARE "
-                        "PRINTED INSTEAD)\n");
+    fmt::format_to(out, " (VALUES AT THE NODES ARE AVERAGED FOR CONTINUUM AND HEAT TRANSFER "
+                        "ELEMENTS ONLY: ELEMENT CENTROID VALUES ARE PRINTED)\n");
   const bool sections = first->section_points > 1;
   if (sections) {
     fmt::format_to(out, "\n    ELEMENT  {} SEC FOOT-   ", at_points ? "PT" : "  ");
@@ -534,15 +539,22 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     if (request.totals_only) buf.resize(mark);
     _out.maybe_flush();
   }
+  write_column_summary(model, request, nc, "ELEMENT");
+}
+
+void DatWriter::write_column_summary(const Model& model, const ElPrintRequest& request,
+                                     std::size_t nc, std::string_view entity) {
+  auto& buf = _out.buffer();
+  auto out = std::back_inserter(buf);
   if (request.summary) {
     fmt::format_to(out, "\n MAXIMUM               ");
     for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _max[c]);
-    fmt::format_to(out, "\n ELEMENT               ");
+    fmt::format_to(out, "\n {:<22}", entity);
     for (std::size_t c = 0; c < nc; ++c)
       fmt::format_to(out, "{:>12}", model.label_of_key(_max_at[c]));
     fmt::format_to(out, "\n\n MINIMUM               ");
     for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _min[c]);
-    fmt::format_to(out, "\n ELEMENT               ");
+    fmt::format_to(out, "\n {:<22}", entity);
     for (std::size_t c = 0; c < nc; ++c)
       fmt::format_to(out, "{:>12}", model.label_of_key(_min_at[c]));
     buf.push_back('\n');
@@ -552,6 +564,58 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     for (std::size_t c = 0; c < nc; ++c) append_e12(buf, _total[c]);
     buf.push_back('\n');
   }
+}
+
+void DatWriter::write_nodal_table(const Model& model, const Frame& frame,
+                                  const ElPrintRequest& request, std::span<const ElemId> group,
+                                  ElemVar var, const OutputBlock& first) {
+  std::vector<char> mask(static_cast<std::size_t>(model.mesh.n_elements()), 0);
+  for (ElemId e : group) mask[static_cast<std::size_t>(e)] = 1;
+  const output::NodalField f = _averager.average(model, frame, var, &mask);
+  const std::size_t nc = first.names.size();
+  std::vector<int> slot(nc);
+  for (std::size_t c = 0; c < nc; ++c) slot[c] = output::nodal_slot(first.names[c], f.width);
+  std::vector<NodeId> nodes;
+  for (NodeId n = 0; n < model.mesh.n_nodes(); ++n)
+    if (f.count[static_cast<std::size_t>(n)] > 0) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end(), [&](NodeId a, NodeId b) {
+    return model.mesh.node_labels[a] < model.mesh.node_labels[b];
+  });
+  auto& buf = _out.buffer();
+  auto out = std::back_inserter(buf);
+  const std::string_view type_name = element_info(model.mesh.elem_types[group[0]]).name;
+  if (!request.elset.empty())
+    fmt::format_to(out,
+                   "\n\n THE FOLLOWING TABLE IS PRINTED AVERAGED AT THE NODES FOR ELEMENT "
+                   "TYPE {} AND ELEMENT SET {}\n",
+                   type_name, upper(request.elset));
+  else
+    fmt::format_to(out,
+                   "\n\n THE FOLLOWING TABLE IS PRINTED FOR ALL ELEMENTS WITH TYPE {} "
+                   "AVERAGED AT THE NODES\n",
+                   type_name);
+  fmt::format_to(out, "\n       NODE FOOT-       ");
+  for (auto name : first.names) fmt::format_to(out, "{:<12}", name);
+  while (buf.size() && buf[buf.size() - 1] == ' ') buf.resize(buf.size() - 1);
+  buf.append(std::string_view("\n            NOTE\n\n"));
+  reset_summary(_max, _min, _total, _max_at, _min_at, nc);
+  for (NodeId n : nodes) {
+    const EntityLabel label = model.node_label(n);
+    const std::size_t mark = buf.size();
+    fmt::format_to(out, "{:>12}           ", label);
+    for (std::size_t c = 0; c < nc; ++c) {
+      const double v =
+          slot[c] < 0 ? 0.0
+                      : f.values[static_cast<std::size_t>(n) * static_cast<std::size_t>(f.width) +
+                                 static_cast<std::size_t>(slot[c])];
+      append_e12(buf, v);
+      track(c, v, label.key, _max, _min, _total, _max_at, _min_at);
+    }
+    buf.push_back('\n');
+    if (request.totals_only) buf.resize(mark);
+    _out.maybe_flush();
+  }
+  write_column_summary(model, request, nc, "NODE");
 }
 
 void DatWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {

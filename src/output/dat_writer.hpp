@@ -3,6 +3,7 @@
 /// job.dat: Abaqus-style printed tables for *NODE PRINT and *EL PRINT, a
 /// self-check block after every step and an analysis summary at the end
 /// (docs/results.md describes the layout).
+#include "output/nodal_average.hpp"
 #include "output/output_file.hpp"
 #include "output/results.hpp"
 
@@ -39,6 +40,13 @@ class DatWriter : public ResultWriter {
                             const std::vector<ElemId>& elements);
   void write_element_table(const Model& model, const Frame& frame, const ElPrintRequest& request,
                            std::span<const ElemId> group, ElemVar var);
+  /// POSITION=AVERAGED AT NODES on continuum and heat-transfer elements: one row per node of the
+  /// group, the values extrapolated and averaged over the group's elements (nodal_average.hpp).
+  void write_nodal_table(const Model& model, const Frame& frame, const ElPrintRequest& request,
+                         std::span<const ElemId> group, ElemVar var, const OutputBlock& first);
+  /// MAXIMUM / MINIMUM rows (with the ELEMENT or NODE at which they occur) and TOTAL of a table.
+  void write_column_summary(const Model& model, const ElPrintRequest& request, std::size_t nc,
+                            std::string_view entity);
   /// The rows of a block with section points (shells, beams): PT and SEC columns.
   void write_section_rows(const OutputBlock& block, const ElPrintRequest& request, bool shell,
                           const EntityLabel& label, std::size_t ncols, bool at_points);
@@ -57,6 +65,7 @@ class DatWriter : public ResultWriter {
   std::vector<double> _avg;               ///< scratch: point averages
   std::vector<double> _max, _min, _total; ///< scratch: column summaries
   std::vector<Label> _max_at, _min_at;
+  output::NodalAverager _averager;
 };
 
 } // namespace gapfem

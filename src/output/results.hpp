@@ -107,6 +107,7 @@ struct Frame {
   /// per Step::field_outputs: due in this frame (empty when the step has no *OUTPUT, FIELD:
   /// the frame at the end of the step then holds every variable)
   std::vector<bool> field_output_due;
+  std::vector<bool> file_output_due; ///< per Step::file_outputs (job.frd)
 
   const ElementResult* element(ElemId e) const {
     if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0)

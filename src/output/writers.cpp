@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "output/dat_writer.hpp"
+#include "output/frd_writer.hpp"
 #include "output/json_writer.hpp"
 #include "output/msg_writer.hpp"
 #include "output/sta_writer.hpp"
@@ -17,7 +18,7 @@ std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptio
   std::vector<std::unique_ptr<ResultWriter>> writers;
   const std::filesystem::path dir = options.directory.empty() ? "." : options.directory;
   const std::string job = options.job.empty() ? "job" : options.job;
-  if (options.dat || options.sta || options.json || options.vtu) {
+  if (options.dat || options.sta || options.json || options.vtu || options.frd) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec)
@@ -30,6 +31,7 @@ std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptio
   if (options.json)
     writers.push_back(std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
   if (options.vtu) writers.push_back(std::make_unique<VtuWriter>(dir, job));
+  if (options.frd) writers.push_back(std::make_unique<FrdWriter>(dir / (job + ".frd"), job));
   if (options.sta) writers.push_back(std::make_unique<StaWriter>(dir / (job + ".sta")));
   if (options.msg) writers.push_back(std::make_unique<MsgWriter>(dir / (job + ".msg")));
   if (options.terminal) writers.push_back(std::make_unique<TerminalWriter>());

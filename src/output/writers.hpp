@@ -1,7 +1,7 @@
 #pragma once
 /// @file writers.hpp
-/// The set of result writers of a job: job.dat, job.sta, job.results.json and
-/// ParaView files (docs/results.md), created together from WriterOptions.
+/// The set of result writers of a job: job.dat, job.sta, job.results.json,
+/// ParaView files and job.frd (docs/results.md), created together from WriterOptions.
 #include "output/results.hpp"
 
 #include <filesystem>
@@ -19,11 +19,12 @@ struct WriterOptions {
   bool sta = true;                 ///< status file, one line per increment attempt (job.sta)
   bool json = true;                ///< machine-readable results (job.results.json)
   bool vtu = true;                 ///< ParaView frames (job_<step>_<inc>.vtu, job.pvd)
+  bool frd = true;                 ///< *NODE FILE / *EL FILE results for cgx (job.frd), when asked
   bool msg = true;                 ///< message file: the whole log, iterations included (job.msg)
   bool terminal = false;           ///< also add a TerminalWriter (progress through gapfem::log)
 };
 
-/// The writers selected by `options`, in the order dat, json, vtu, sta, msg,
+/// The writers selected by `options`, in the order dat, json, vtu, frd, sta, msg,
 /// terminal (what reports an increment comes after what stores it). Files are opened in begin();
 /// errors opening or writing them raise AnalysisError.
 std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);

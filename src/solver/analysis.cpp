@@ -547,6 +547,10 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
     }
   }
   any |= fr.field_due;
+  for (const auto& r : step.file_outputs) {
+    fr.file_output_due.push_back(due(r.frequency));
+    any |= fr.file_output_due.back();
+  }
   if (!any) return;
   ScopedTimer timer(&stats, TimeCategory::Output);
 
@@ -614,6 +618,14 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
       std::fill(need.begin(), need.end(), 1);
     else
       for (ElemId e : r.elements) need[e] = 1;
+  }
+  for (std::size_t k = 0; k < step.file_outputs.size(); ++k) {
+    const auto& r = step.file_outputs[k];
+    if (!fr.file_output_due[k] || !r.element) continue;
+    if (r.set.empty())
+      std::fill(need.begin(), need.end(), 1);
+    else
+      for (ElemId e : r.members) need[e] = 1;
   }
   fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
   const FieldView fields = prob.fields();

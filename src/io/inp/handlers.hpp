@@ -132,8 +132,9 @@ void handle_el_print(BuildState& s, const Keyword& kw);
 void handle_output(BuildState& s, const Keyword& kw);
 void handle_node_output(BuildState& s, const Keyword& kw);
 void handle_element_output(BuildState& s, const Keyword& kw);
-/// *NODE FILE / *EL FILE (results-file output): ignored with a warning.
-void handle_file_output(BuildState& s, const Keyword& kw);
+/// *NODE FILE / *EL FILE: results written to job.frd (CalculiX's format, for cgx).
+void handle_node_file(BuildState& s, const Keyword& kw);
+void handle_el_file(BuildState& s, const Keyword& kw);
 void handle_monitor(BuildState& s, const Keyword& kw);
 /// *ENERGY PRINT, *CONTACT PRINT, *FILE FORMAT, *MONITOR, *PREPRINT and the other print and
 /// results-file controls: accepted with one note per keyword (they do not change the analysis).

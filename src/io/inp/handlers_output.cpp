@@ -146,11 +146,9 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
   totals_param(kw, req);
   const int pos =
       enum_param(kw, "POSITION", {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES"}, 0);
-  if (pos == 2)
-    throw InputError(kw.loc, "POSITION=AVERAGED AT NODES",
-                     "nodal averaging of element output is not supported in the .dat file; use "
-                     "INTEGRATION POINTS or CENTROIDAL");
-  req.position = pos == 0 ? ElPosition::IntegrationPoints : ElPosition::Centroidal;
+  req.position = pos == 0   ? ElPosition::IntegrationPoints
+                 : pos == 1 ? ElPosition::Centroidal
+                            : ElPosition::Averaged;
   req.elset = set_param(s, kw, "ELSET", false);
   if (req.elset.empty()) {
     req.elements.resize(static_cast<std::size_t>(s.model.mesh.n_elements()));
@@ -291,11 +289,72 @@ void handle_monitor(BuildState& s, const Keyword& kw) {
   (s.in_step ? s.step.monitor : s.model_monitor) = m;
 }
 
-void handle_file_output(BuildState& s, const Keyword& kw) {
-  s.warn(kw.loc,
-         fmt::format("{} (results-file output) is not written by gapfem and was ignored; use "
-                     "*OUTPUT, FIELD for ParaView frames or *NODE PRINT / *EL PRINT for tables",
-                     kw.name));
+namespace {
+
+/// The parameters *NODE FILE and *EL FILE share: frequency, CalculiX's OUTPUT=2D|3D, TOTALS.
+FileOutputRequest file_request(BuildState& s, const Keyword& kw, bool element) {
+  FileOutputRequest req;
+  req.element = element;
+  req.loc = kw.loc;
+  req.frequency = frequency_param(kw);
+  if (enum_param(kw, "OUTPUT", {"2D", "3D"}, 0) == 1 && !s.noted_keywords.insert("FRD3D").second)
+    s.warn(kw.loc, "OUTPUT=3D: job.frd holds plane, axisymmetric, shell and beam elements as "
+                   "they are in the deck (CalculiX's OUTPUT=2D); cgx shows them as such");
+  if (kw.has("TOTALS"))
+    s.warn(kw.loc, fmt::format("TOTALS on {} has no meaning in job.frd and was ignored; "
+                               "column totals are printed by *NODE PRINT / *EL PRINT, TOTALS=YES",
+                               kw.name));
+  return req;
+}
+
+} // namespace
+
+void handle_node_file(BuildState& s, const Keyword& kw) {
+  FileOutputRequest req = file_request(s, kw, false);
+  req.global = yes_no_param(kw, "GLOBAL", false);
+  bool failed = false;
+  if (const auto* set = output_set<true>(s, kw, failed)) {
+    req.set = set_param(s, kw, "NSET", true);
+    req.members = *set;
+  }
+  if (failed) return;
+  req.node_vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
+  if (req.node_vars.empty())
+    throw InputError(
+        kw.loc, "",
+        fmt::format("no output variables are listed; add a data line such as U, RF (known: {})",
+                    kNodeVarList));
+  s.scratch.node_file_given = true;
+  s.step.file_outputs.push_back(std::move(req));
+}
+
+void handle_el_file(BuildState& s, const Keyword& kw) {
+  FileOutputRequest req = file_request(s, kw, true);
+  const int pos = enum_param(kw, "POSITION",
+                             {"AVERAGED AT NODES", "NODES", "INTEGRATION POINTS", "CENTROIDAL"}, 0);
+  if (pos >= 2)
+    s.warn(kw.loc, fmt::format("POSITION={}: job.frd holds element output at the nodes only, so "
+                               "it is written extrapolated and averaged at the nodes (Abaqus's "
+                               "POSITION=AVERAGED AT NODES); *EL PRINT prints it at the points",
+                               pos == 2 ? "INTEGRATION POINTS" : "CENTROIDAL"));
+  bool failed = false;
+  if (const auto* set = output_set<false>(s, kw, failed)) {
+    req.set = set_param(s, kw, "ELSET", true);
+    req.members = *set;
+  }
+  if (failed) return;
+  req.elem_vars = read_vars<ElemVar>(s, kw, elem_var, true, "S, E, HFL");
+  for (ElemVar v : req.elem_vars)
+    if (v == ElemVar::SF)
+      throw InputError(kw.loc, "variable SF",
+                       "section forces are not written to job.frd (it holds values at the nodes); "
+                       "print them with *EL PRINT or write them to ParaView with *ELEMENT OUTPUT");
+  if (req.elem_vars.empty())
+    throw InputError(kw.loc, "",
+                     "no output variables are listed; add a data line such as S, E (known: S, E, "
+                     "HFL)");
+  s.scratch.el_file_given = true;
+  s.step.file_outputs.push_back(std::move(req));
 }
 
 void handle_print_control(BuildState& s, const Keyword& kw) {

@@ -162,6 +162,9 @@ void close_step(BuildState& s) {
     if (!s.scratch.node_print_given) st.node_prints = prev.node_prints;
     if (!s.scratch.el_print_given) st.el_prints = prev.el_prints;
     if (!s.scratch.field_given) st.field_outputs = prev.field_outputs;
+    for (const FileOutputRequest& r : prev.file_outputs)
+      if (!(r.element ? s.scratch.el_file_given : s.scratch.node_file_given))
+        st.file_outputs.push_back(r);
   }
   s.model.steps.push_back(std::move(st));
   s.step = Step{};

@@ -46,6 +46,7 @@ struct StepScratch {
   bool amplitude_given = false; ///< *STEP, AMPLITUDE= was given
   bool transient = false;       ///< transient heat transfer / coupled procedure
   bool node_print_given = false, el_print_given = false, field_given = false;
+  bool node_file_given = false, el_file_given = false; ///< *NODE FILE / *EL FILE in this step
   /// Field-output requests of this step that asked for VARIABLE=PRESELECT or ALL (index, all?).
   std::vector<std::pair<int, bool>> preset_fields;
 };

@@ -109,7 +109,7 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|FREQ|VARIABLE|NUMBER INTERVAL|TIME INTERVAL|FREQUENCYF"},
   {"*NODE OUTPUT", handle_node_output, W::History, "NSET", kOutput},
   {"*ELEMENT OUTPUT", handle_element_output, W::History, "ELSET|DIRECTIONS|POSITION", kOutput},
-  {"*NODE FILE", handle_file_output, W::History, "*"},
+  {"*NODE FILE", handle_node_file, W::History, "NSET|FREQUENCY|FREQ|GLOBAL|FREQUENCYF|OUTPUT|TOTALS"},
   {"*ENERGY OUTPUT", handle_output_suboption, W::History, "*", kOutput},
   {"*CONTACT OUTPUT", handle_output_suboption, W::History, "*", kOutput},
   // print and results-file controls: accepted with a note
@@ -124,7 +124,7 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*MONITOR", handle_monitor, W::Both, "NODE|DOF|FREQUENCY|FREQ"},
   {"*PRINT", handle_print_control, W::Both, "*"},
   {"*DIAGNOSTICS", handle_print_control, W::Both, "*"},
-  {"*EL FILE", handle_file_output, W::History, "*"},
+  {"*EL FILE", handle_el_file, W::History, "ELSET|FREQUENCY|FREQ|POSITION|GLOBAL|FREQUENCYF|OUTPUT|TOTALS"},
 }};
 // clang-format on
 

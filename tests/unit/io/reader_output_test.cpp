@@ -62,8 +62,8 @@ TEST(ReaderOutput, ElPrint) {
   EXPECT_EQ(ep[1].position, ElPosition::IntegrationPoints);
   EXPECT_EQ(ep[1].elements.size(), 1u);
 
-  EXPECT_CONTAINS(error_text(step("*EL PRINT, POSITION=AVERAGED AT NODES\nS\n")),
-                  "deck.inp:13: *EL PRINT: POSITION=AVERAGED AT NODES: nodal averaging");
+  EXPECT_EQ(read(step("*EL PRINT, POSITION=AVERAGED AT NODES\nS\n")).steps[0].el_prints[0].position,
+            ElPosition::Averaged);
   EXPECT_CONTAINS(error_text(step("*EL PRINT\nS, PEEQ\n")),
                   "deck.inp:14: *EL PRINT: variable PEEQ");
   EXPECT_CONTAINS(error_text(step("*EL PRINT, ELSET=X\nS\n")),
@@ -113,12 +113,26 @@ TEST(ReaderOutput, HistoryOutputIsIgnoredWithOneWarning) {
   EXPECT_EQ(test::count_warnings(two, "history output is not written"), 1);
 }
 
-TEST(ReaderOutput, ResultsFileOutputIsIgnoredWithWarning) {
-  const Model m = read(step("*NODE FILE, FREQUENCY=1\nU\n*EL FILE\nS\n"));
-  EXPECT_EQ(test::count_warnings(m, "deck.inp:13: *NODE FILE: *NODE FILE (results-file output)"),
-            1);
-  EXPECT_EQ(test::count_warnings(m, "deck.inp:15: *EL FILE"), 1);
+TEST(ReaderOutput, ResultsFileRequestsForTheFrdFile) {
+  const Model m =
+      read(step("*NODE FILE, FREQUENCY=2, NSET=ALL\nU, RF\n*EL FILE, POSITION=CENTROIDAL\n"
+                "S, E11\n"));
+  ASSERT_EQ(m.steps[0].file_outputs.size(), 2u);
+  const FileOutputRequest& n = m.steps[0].file_outputs[0];
+  EXPECT_FALSE(n.element);
+  EXPECT_EQ(n.frequency, 2);
+  EXPECT_EQ(n.set, "ALL");
+  EXPECT_EQ(n.node_vars, (std::vector<NodeVar>{NodeVar::U, NodeVar::RF}));
+  const FileOutputRequest& e = m.steps[0].file_outputs[1];
+  EXPECT_TRUE(e.element);
+  EXPECT_TRUE(e.set.empty());
+  EXPECT_EQ(e.elem_vars, (std::vector<ElemVar>{ElemVar::S, ElemVar::E}));
+  // the frd holds nodal values only: CENTROIDAL is told it is written averaged at the nodes
+  EXPECT_EQ(test::count_warnings(m, "deck.inp:15: *EL FILE: POSITION=CENTROIDAL"), 1);
   EXPECT_TRUE(m.steps[0].node_prints.empty());
+  EXPECT_CONTAINS(error_text(step("*NODE FILE\nU, SXX\n")), "output variable SXX");
+  EXPECT_CONTAINS(error_text(step("*EL FILE\nSF\n")), "section forces are not written to job.frd");
+  EXPECT_CONTAINS(error_text(step("*NODE FILE\n")), "no output variables are listed");
 }
 
 TEST(ReaderOutput, OutputErrors) {
