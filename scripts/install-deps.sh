@@ -7,6 +7,10 @@ packages=(build-essential cmake ninja-build pkg-config
           libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
           calculix-ccx python3 time
           python3-vtk9  # tests read the ParaView frames back with VTK's own reader
+          xvfb xauth libgl1-mesa-dri  # ... and render the README picture offscreen
+          calculix-cgx  # a test reads job.frd with CalculiX's viewer in batch mode
+          libjs-chart.js  # embedded into job.report.html by the build
+          chromium  # a test renders job.report.html headless and checks the plots are drawn
           clang libclang-rt-14-dev llvm)  # clang: the sanitize build (ASan, UBSan, libFuzzer)
 missing=()
 for p in "${packages[@]}"; do

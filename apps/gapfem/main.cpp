@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
   app.add_flag("--ignore-unknown", options.ignore_unknown,
                "report unknown keywords and parameters as warnings instead of errors");
   app.add_flag("--no-vtu", no_vtu, "do not write ParaView files");
+  app.add_option("--report-gaps", options.report_gaps,
+                 "gaps job.report.html plots: element labels or element sets, comma separated "
+                 "(default: the most loaded)")
+      ->delimiter(',');
   app.add_flag("-q,--quiet", options.quiet, "no progress lines on the terminal");
   app.add_flag("-v,--verbose", options.verbose,
                "debug messages: every Newton iteration and the linear solver's decisions");

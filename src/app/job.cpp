@@ -130,11 +130,12 @@ JobResult run_job(const JobOptions& given) {
     wo.directory = dir;
     wo.job = job;
     wo.vtu = options.write_vtu;
+    wo.report_gaps = options.report_gaps;
     wo.terminal = !options.quiet;
     writers = make_result_writers(wo);
   } else if (!options.quiet) {
     WriterOptions wo;
-    wo.dat = wo.sta = wo.json = wo.vtu = wo.msg = wo.frd = false;
+    wo.dat = wo.sta = wo.json = wo.vtu = wo.msg = wo.frd = wo.report = false;
     wo.terminal = true;
     writers = make_result_writers(wo);
   }

@@ -19,6 +19,8 @@ struct JobOptions {
   bool ignore_unknown = false;      ///< unknown keywords/parameters become warnings
   bool write_files = true;          ///< .dat, .sta, .results.json, ParaView
   bool write_vtu = true;
+  /// --report-gaps: the gaps job.report.html plots (labels or element sets; empty: most loaded)
+  std::vector<std::string> report_gaps;
   bool quiet = false;      ///< no terminal progress
   bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
   bool keep_frames = true; ///< keep every output frame in JobResult (tests)

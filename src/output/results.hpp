@@ -116,6 +116,14 @@ struct Frame {
   }
 };
 
+/// One gap's state after a converged increment (IncrementInfo::gaps).
+struct GapSample {
+  ElemId elem = -1;
+  float force = 0.0f;     ///< normal force (compressive positive)
+  float clearance = 0.0f; ///< h
+  ContactStatus status = ContactStatus::Open;
+};
+
 struct IncrementInfo {
   int step = 0, increment = 0, attempts = 0, iterations = 0, severe_discontinuities = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
@@ -128,6 +136,10 @@ struct IncrementInfo {
   std::optional<double> monitor;
   /// max over fields of residual / time-averaged flux after each Newton iteration
   std::vector<double> residual_history;
+  /// After a converged increment of a model with gaps, when a writer wants_gap_samples(): the
+  /// gaps that are closed (closed, stick or slip) and every gap's state (else -1 and empty).
+  int gaps_closed = -1;
+  std::vector<GapSample> gaps;
 };
 
 struct StepSummary {
@@ -155,6 +167,8 @@ struct RunSummary {
 class ResultWriter {
  public:
   virtual ~ResultWriter() = default;
+  /// Does the writer read IncrementInfo::gaps (one sample per gap and converged increment)?
+  virtual bool wants_gap_samples() const { return false; }
   virtual void begin(const Model& model) {}
   virtual void begin_step(const Model& model, int step_index) {}
   virtual void increment(const IncrementInfo& info) {}

@@ -20,11 +20,13 @@ struct WriterOptions {
   bool json = true;                ///< machine-readable results (job.results.json)
   bool vtu = true;                 ///< ParaView frames (job_<step>_<inc>.vtu, job.pvd)
   bool frd = true;                 ///< *NODE FILE / *EL FILE results for cgx (job.frd), when asked
-  bool msg = true;                 ///< message file: the whole log, iterations included (job.msg)
-  bool terminal = false;           ///< also add a TerminalWriter (progress through gapfem::log)
+  bool report = true;              ///< the run report with plots (job.report.html)
+  std::vector<std::string> report_gaps; ///< --report-gaps: gap labels or sets to plot
+  bool msg = true;       ///< message file: the whole log, iterations included (job.msg)
+  bool terminal = false; ///< also add a TerminalWriter (progress through gapfem::log)
 };
 
-/// The writers selected by `options`, in the order dat, json, vtu, frd, sta, msg,
+/// The writers selected by `options`, in the order dat, json, vtu, frd, report, sta, msg,
 /// terminal (what reports an increment comes after what stores it). Files are opened in begin();
 /// errors opening or writing them raise AnalysisError.
 std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptions& options);

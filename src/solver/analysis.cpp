@@ -96,6 +96,9 @@ struct Analysis::Impl {
   bool supported_at_last_converged(StepProblem& prob, double t0);
   /// Largest |damping force| of the gaps at the current state (0 when no gap has damping).
   double damping_peak(StepProblem& prob);
+  /// IncrementInfo::gaps and gaps_closed from the committed state, for writers that want them.
+  void gap_samples(StepProblem& prob, IncrementInfo& info);
+  bool want_gap_samples = false;
   double step_damping_peak = 0.0;
   /// Automatic stabilization: M* (built once), and what CONTINUE=YES hands to the next step.
   std::shared_ptr<const std::vector<double>> unit_mass;
@@ -120,6 +123,7 @@ const std::vector<StepSummary>& Analysis::step_summaries() const {
 
 RunSummary Analysis::run() {
   Impl& m = *_impl;
+  for (auto* w : m.writers) m.want_gap_samples |= w->wants_gap_samples();
   for (auto* w : m.writers) w->begin(m.model);
   RunSummary run;
   for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
@@ -422,6 +426,7 @@ StepSummary Analysis::Impl::run_step(int index) {
       step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
       write_frame(index, prob, ctrl.increment(), ctrl.finished(), dt);
       info.monitor = monitor_value(step, ctrl.increment(), ctrl.finished());
+      if (want_gap_samples && disc.has_gaps()) gap_samples(prob, info);
       {
         ScopedTimer timer(&stats, TimeCategory::Output); // the JSON checkpoint is output time
         for (auto* w : writers) w->increment(info);
@@ -653,6 +658,24 @@ double Analysis::Impl::damping_peak(StepProblem& prob) {
     }
   }
   return peak;
+}
+
+void Analysis::Impl::gap_samples(StepProblem& prob, IncrementInfo& info) {
+  ScopedTimer timer(&stats, TimeCategory::Output);
+  ElementRecovery rec;
+  const FieldView fields = prob.fields();
+  int closed = 0;
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (!rec.gap) continue;
+      info.gaps.push_back({b.elements[i], static_cast<float>(rec.gap->normal_force),
+                           static_cast<float>(rec.gap->clearance), rec.gap->status});
+      closed += rec.gap->status != ContactStatus::Open;
+    }
+  }
+  info.gaps_closed = closed;
 }
 
 StepChecks Analysis::Impl::checks(StepProblem& prob) {

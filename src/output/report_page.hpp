@@ -1,0 +1,26 @@
+#pragma once
+/// @file report_page.hpp
+/// The HTML of job.report.html (report_writer.hpp): the page with Chart.js inlined, the run data as
+/// one JSON object, the step self-check table and the warnings. The page's script draws the plots
+/// on load (no animation) and records on <body> how many charts it drew and how many canvases
+/// hold paint (data-charts, data-painted), which the browser test reads.
+#include "output/results.hpp"
+
+#include <fmt/format.h>
+#include <string>
+#include <vector>
+
+namespace gapfem::output {
+
+struct ReportContent {
+  std::string job;
+  std::string data_json; ///< gaps, contact_set, attempts, time_split, wall_seconds
+  const RunSummary* run = nullptr;
+  const std::vector<StepSummary>* steps = nullptr;
+  bool has_gaps = false;
+  bool named_gaps = false;
+};
+
+void write_report_page(fmt::memory_buffer& out, const ReportContent& content);
+
+} // namespace gapfem::output
