@@ -1,6 +1,7 @@
 // Mesh keywords: *HEADING, *PREPRINT, *NODE, *ELEMENT, *NSET, *ELSET, *SURFACE.
 #include "io/inp/handlers.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace gapfem::inp {
@@ -276,13 +277,44 @@ static void handle_set(BuildState& s, const Keyword& kw) {
     const FieldReader r = s.reader(kw, line);
     if (generate) {
       const Range g = read_range(r);
-      for (long long l = g.first; l <= g.last; l += g.step) {
-        const std::int32_t id = find(l);
-        if (id >= 0)
-          members.push_back(id);
-        else if (!bad(l) && missing++ == 0)
-          first_missing = l;
+      const long long count = (g.last - g.first) / g.step + 1;
+      const Mesh& mesh = s.model.mesh;
+      const auto& labels = Nodes ? mesh.node_labels : mesh.elem_labels;
+      if (count <= static_cast<long long>(labels.size())) {
+        for (long long l = g.first; l <= g.last; l += g.step) {
+          const std::int32_t id = find(l);
+          if (id >= 0)
+            members.push_back(id);
+          else if (!bad(l) && missing++ == 0)
+            first_missing = l;
+        }
+        return;
       }
+      // a range longer than the model has entities (a typo such as 1, 15056603): look at the
+      // entities instead of every number of the range, so the cost stays that of the model
+      auto in_range = [&](Label key) {
+        if (key_instance(key) != s.scope.instance) return false;
+        const long long l = key_local(key);
+        return l >= g.first && l <= g.last && (l - g.first) % g.step == 0;
+      };
+      std::vector<std::pair<long long, std::int32_t>> found;
+      for (std::size_t id = 0; id < labels.size(); ++id)
+        if (in_range(labels[id]))
+          found.emplace_back(key_local(labels[id]), static_cast<std::int32_t>(id));
+      std::sort(found.begin(), found.end());
+      long long n_bad = 0;
+      for (Label key : Nodes ? s.bad_nodes : s.bad_elements) n_bad += in_range(key);
+      const long long absent = count - static_cast<long long>(found.size()) - n_bad;
+      if (absent > 0) {
+        if (missing == 0) // the first number of the range neither defined nor in error
+          for (long long l = g.first; l <= g.last; l += g.step)
+            if (find(l) < 0 && !bad(l)) {
+              first_missing = l;
+              break;
+            }
+        missing += absent;
+      }
+      for (const auto& [label, id] : found) members.push_back(id);
       return;
     }
     for (std::size_t f = 0; f < line.fields.size(); ++f) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <set>
 
 namespace gapfem {
@@ -286,6 +287,41 @@ TEST(ReaderSyntax, GenerateWithAndWithoutIncrement) {
   // labels in the range that do not exist are left out with one warning
   EXPECT_EQ(labels(m, m.nsets.at("GAPPY")), (std::vector<Label>{1, 3, 5, 7, 8}));
   EXPECT_EQ(test::count_warnings(m, "left out"), 1);
+}
+
+TEST(ReaderSyntax, LongGenerateRangesAgainstTheirDefinition) {
+  // A range longer than the model has nodes is resolved from the nodes (so a typo such as
+  // 1, 15056603 costs the model's size, not the range's): random ranges, short and long, give the
+  // members and the count of missing numbers the definition (every number of the range, in order)
+  // gives.
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> label(1, 400), first(1, 60), step(1, 7);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::set<Label> defined;
+    while (defined.size() < 30) defined.insert(label(rng));
+    std::string deck = "*NODE\n";
+    for (Label l : defined) deck += std::to_string(l) + "\n";
+    const long long f = first(rng), st = step(rng);
+    const long long last = trial % 2 ? f + st * (rng() % 10) : f + st * 2000000 + rng() % 3;
+    deck += "*NSET, NSET=R, GENERATE\n" + std::to_string(f) + ", " + std::to_string(last) + ", " +
+            std::to_string(st) + "\n";
+    std::vector<Label> expected;
+    long long missing = 0, first_missing = 0;
+    for (long long l = f; l <= last; l += st)
+      if (defined.count(l))
+        expected.push_back(l);
+      else if (missing++ == 0)
+        first_missing = l;
+    const Model m = read(deck);
+    SCOPED_TRACE(deck.substr(deck.rfind('*')));
+    EXPECT_EQ(labels(m, m.nsets.at("R")), expected);
+    if (missing)
+      EXPECT_EQ(test::count_warnings(m, std::to_string(missing) +
+                                            " node number(s) of the GENERATE "
+                                            "ranges of set R are not defined (the first is " +
+                                            std::to_string(first_missing) + ")"),
+                1);
+  }
 }
 
 TEST(ReaderSyntax, GenerateBadRangesAreErrors) {
