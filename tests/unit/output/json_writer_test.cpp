@@ -297,7 +297,8 @@ TEST(OutputJson, FactoryWritesAllFiles) {
   opt.directory = dir;
   opt.job = "wt";
   auto writers = make_result_writers(opt);
-  ASSERT_EQ(writers.size(), 7u); // dat, json, vtu, frd (nothing without *NODE FILE), report, sta, msg
+  ASSERT_EQ(writers.size(),
+            7u); // dat, json, vtu, frd (nothing without *NODE FILE), report, sta, msg
   for (auto& w : writers) w->begin(m);
   for (auto& w : writers) w->begin_step(m, 0);
   const Frame fr = make_frame(m, 1, 1.0, true);
