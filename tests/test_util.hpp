@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <sstream>
 #include <string>
 
 namespace gapfem::test {
@@ -18,6 +19,14 @@ inline std::filesystem::path test_dir() {
                               (std::string(info->test_suite_name()) + "." + info->name());
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+/// The whole content of a file ("" when it cannot be read).
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 inline std::filesystem::path write_deck(const std::string& text, const std::string& name = "job") {

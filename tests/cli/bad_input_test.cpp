@@ -10,14 +10,9 @@
 
 namespace {
 
-namespace fs = std::filesystem;
+using gapfem::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+namespace fs = std::filesystem;
 
 } // namespace
 

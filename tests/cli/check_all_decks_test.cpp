@@ -11,14 +11,9 @@
 namespace gapfem {
 namespace {
 
-namespace fs = std::filesystem;
+using gapfem::test::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+namespace fs = std::filesystem;
 
 TEST(CheckEveryDeck, TestDecksPass) {
   int decks = 0;

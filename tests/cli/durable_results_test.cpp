@@ -19,6 +19,8 @@ using namespace gapfem;
 
 namespace {
 
+using gapfem::test::slurp;
+
 /// A spring with a gap pushed in `n` fixed increments; *NODE PRINT every `every` increments and
 /// field output (VTU) every `every` increments.
 std::string stepping_deck(int n, int every) {
@@ -53,13 +55,6 @@ U
 *END STEP
 )",
                      n, n + 10, 1.0 / n, every, every);
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 /// Increments the .sta reports converged (step 1).

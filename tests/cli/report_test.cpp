@@ -11,14 +11,9 @@
 namespace gapfem {
 namespace {
 
-using nlohmann::json;
+using gapfem::test::slurp;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using nlohmann::json;
 
 json page_data(const std::string& html) {
   const std::string mark = "const DATA = ";

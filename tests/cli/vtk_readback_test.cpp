@@ -13,14 +13,9 @@
 namespace gapfem {
 namespace {
 
-using nlohmann::json;
+using gapfem::test::slurp;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using nlohmann::json;
 
 /// VTK's view of a .vtu (vtk_dump.py), or nullopt with the reason when VTK is not available.
 std::optional<json> vtk_view(const std::filesystem::path& vtu, std::string& why) {

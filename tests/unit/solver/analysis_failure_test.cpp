@@ -17,6 +17,8 @@ using namespace gapfem;
 
 namespace {
 
+using gapfem::test::slurp;
+
 const char* kDeck = R"(*HEADING
 spring and gap, three fixed increments
 *NODE
@@ -57,13 +59,6 @@ class FailingWriter final : public ResultWriter {
  private:
   int _increment;
 };
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 } // namespace
 
