@@ -61,6 +61,12 @@ int main(int argc, char** argv) {
                  "reuse a factorisation across Newton iterations and increments: auto (when the "
                  "measured times say it pays), always, never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_flag("--restart", options.restart,
+               "continue this job from the last restart record in its job.res (*RESTART, WRITE); a "
+               "restart deck also needs the --oldjob it ran with");
+  app.add_option("--oldjob", options.oldjob,
+                 "the job a deck with *RESTART, READ continues (Abaqus's oldjob=): a job name or "
+                 "the path of its .res file");
   app.set_version_flag("--version", std::string("gapfem ") + GAPFEM_VERSION);
   try {
     app.parse(argc, argv);

@@ -8,7 +8,9 @@
 #include "output/output_file.hpp"
 #include "output/writers.hpp"
 #include "solver/analysis.hpp"
+#include "solver/restart_file.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <fmt/format.h>
@@ -31,6 +33,60 @@ class MemoryWriter final : public ResultWriter {
   bool _keep;
 };
 
+/// "step 1 increments 2, 4; step 2 increments 1" (the records of a restart file).
+std::string available_records(const RestartIndex& idx) {
+  std::string out;
+  int step = -1;
+  for (const RestartRecordInfo& r : idx.records) {
+    if (r.step != step) {
+      out += fmt::format(
+          "{}step {} increment{} {}", out.empty() ? "" : "; ", r.step,
+          std::count_if(idx.records.begin(), idx.records.end(),
+                        [&](const RestartRecordInfo& o) { return o.step == r.step; }) > 1
+              ? "s"
+              : "",
+          r.increment);
+      step = r.step;
+    } else {
+      out += fmt::format(", {}", r.increment);
+    }
+  }
+  return out.empty() ? "none" : out;
+}
+
+/// The restart file --oldjob names: a .res path, or a job name looked up in the working
+/// directory and then in the output directory.
+std::filesystem::path oldjob_file(const std::string& oldjob, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  fs::path p(oldjob);
+  if (p.extension() != ".res") p += ".res";
+  std::error_code ec;
+  if (fs::exists(p, ec) || p.has_parent_path()) return p;
+  return dir / p;
+}
+
+/// The record a *RESTART, READ asks for (InputError at the keyword naming what there is).
+RestartRecordInfo choose_record(const RestartIndex& idx, const RestartRead& req,
+                                const std::filesystem::path& file) {
+  const std::string have =
+      fmt::format("'{}' holds restart data for {}", file.string(), available_records(idx));
+  if (idx.records.empty())
+    throw InputError(req.loc, "READ",
+                     fmt::format("'{}' holds no complete restart record (the old job stopped "
+                                 "before its first *RESTART, WRITE point)",
+                                 file.string()));
+  if (req.step == 0) return idx.records.back();
+  const RestartRecordInfo* found = nullptr;
+  for (const RestartRecordInfo& r : idx.records)
+    if (r.step == req.step && (req.increment == 0 || r.increment == req.increment)) found = &r;
+  if (!found)
+    throw InputError(req.loc,
+                     req.increment ? fmt::format("STEP={}, INC={}", req.step, req.increment)
+                                   : fmt::format("STEP={}", req.step),
+                     fmt::format("there is no such restart point: {}", have));
+  return *found;
+}
+
 } // namespace
 
 const Frame* JobResult::step_end(int step) const {
@@ -50,6 +106,45 @@ std::filesystem::path resolve_deck(const std::filesystem::path& deck) {
   inp += ".inp";
   return std::filesystem::exists(inp, ec) ? inp : deck;
 }
+
+namespace {
+/// --restart: the last complete record of the job's own restart file.
+AnalysisOptions::Resume own_restart_point(const Model& model, const std::filesystem::path& deck,
+                                          const std::filesystem::path& dir,
+                                          const std::string& job) {
+  const SourceLocation at{deck.string(), 0, {}};
+  AnalysisOptions::Resume r;
+  r.file = dir / (job + ".res");
+  RestartIndex idx;
+  try {
+    idx = read_restart_index(r.file);
+  } catch (const RestartDataError& e) {
+    throw InputError(at, "--restart",
+                     fmt::format("{}; --restart needs the restart file a *RESTART, WRITE of this "
+                                 "job wrote (run without --restart to start afresh)",
+                                 e.what()));
+  }
+  if (idx.records.empty())
+    throw InputError(at, "--restart",
+                     fmt::format("'{}' holds no complete restart record (the job stopped before "
+                                 "its first *RESTART, WRITE point); run without --restart",
+                                 r.file.string()));
+  if (idx.header.job != job)
+    throw InputError(at, "--restart",
+                     fmt::format("'{}' was written by job '{}', not '{}'", r.file.string(),
+                                 idx.header.job, job));
+  r.record = idx.records.back();
+  r.fingerprint = idx.header.fingerprint;
+  r.files = {dir, job};
+  if (r.record.step_index >= static_cast<int>(model.steps.size()))
+    throw InputError(at, "--restart",
+                     fmt::format("the restart point is in step {}, but the deck has {} step(s)",
+                                 r.record.step, model.steps.size()));
+  log::info("Restarting job {} at step {} increment {} (total time {:.6g})", job, r.record.step,
+            r.record.increment, r.record.total_time);
+  return r;
+}
+} // namespace
 
 void require_steps(const Model& model, const std::filesystem::path& deck) {
   if (!model.steps.empty()) return;
@@ -108,12 +203,38 @@ JobResult run_job(const JobOptions& given) {
   };
 
   std::shared_ptr<Model> model;
+  std::optional<AnalysisOptions::Resume> resume;
   try {
     ReadOptions ro;
     ro.ignore_unknown = options.ignore_unknown;
+    if (!options.oldjob.empty())
+      ro.restart_base = [&](const RestartRead& req) {
+        const std::filesystem::path file = oldjob_file(options.oldjob, dir);
+        RestartIndex idx;
+        try {
+          idx = read_restart_index(file);
+        } catch (const RestartDataError& e) {
+          throw InputError(req.loc, "READ",
+                           fmt::format("--oldjob {}: {}", options.oldjob, e.what()));
+        }
+        AnalysisOptions::Resume r;
+        r.file = file;
+        r.record = choose_record(idx, req, file);
+        r.fingerprint = idx.header.fingerprint;
+        r.end_step = req.end_step;
+        r.files = {file.has_parent_path() ? file.parent_path() : ".", idx.header.job};
+        resume = r;
+        return ReadOptions::RestartBase{idx.header.deck, r.record.step_index + 1};
+      };
     model = std::make_shared<Model>(read_deck(options.deck, ro));
     model->job_name = job;
     require_steps(*model, options.deck);
+    if (!options.oldjob.empty() && !model->restart_read)
+      throw InputError(SourceLocation{options.deck.string(), 0, {}}, "--oldjob",
+                       "the deck has no *RESTART, READ, so there is nothing to continue; add "
+                       "*RESTART, READ (with STEP= and INC= of the restart point) or run without "
+                       "--oldjob");
+    if (options.restart) resume = own_restart_point(*model, options.deck, dir, job);
     if (options.write_files) prepare_output(dir, job);
   } catch (const InputError& e) {
     result.exit_code = kExitInputError;
@@ -147,6 +268,13 @@ JobResult run_job(const JobOptions& given) {
   try {
     AnalysisOptions aopt;
     aopt.factor_reuse = options.factor_reuse;
+    if (options.write_files) {
+      aopt.restart_file = dir / (job + ".res");
+      std::error_code ec;
+      aopt.restart_header.deck = std::filesystem::absolute(options.deck, ec).string();
+      aopt.restart_header.job = job;
+    }
+    aopt.resume = resume;
     // GAPFEM_FACTOR_REUSE=always|never overrides (used to run whole test suites both ways)
     if (const char* env = std::getenv("GAPFEM_FACTOR_REUSE")) {
       const std::string v(env);
@@ -163,6 +291,10 @@ JobResult run_job(const JobOptions& given) {
     result.exit_code = kExitInputError;
     result.error = e.what();
     log::error("{}", e.what());
+  } catch (const RestartDataError& e) {
+    result.exit_code = kExitInputError;
+    result.error = fmt::format("restart: {}", e.what());
+    log::error("{}", result.error);
   } catch (const AnalysisError& e) {
     result.exit_code = kExitNoConvergence;
     result.error = e.what();

@@ -25,6 +25,11 @@ struct JobOptions {
   bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
   bool keep_frames = true; ///< keep every output frame in JobResult (tests)
   FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
+  /// --restart: continue this job from the last complete record of its job.res (docs/restart.md)
+  bool restart = false;
+  /// --oldjob: the job a deck with *RESTART, READ continues (a job name, found in the working or
+  /// the output directory, or the path of its .res file)
+  std::string oldjob;
 };
 
 /// Exit statuses of gapfem (docs/conventions.md).

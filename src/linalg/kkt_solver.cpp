@@ -29,6 +29,16 @@ bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb
 KktSolver::KktSolver() = default;
 KktSolver::~KktSolver() = default;
 
+void KktSolver::forget_factor() {
+  _umfpack_ready = false;
+  _active = nullptr;
+  _factored.clear();
+  _frows.clear();
+  _fR.clear();
+  _frow_of.clear();
+  _t_factor = _t_solve = 0.0;
+}
+
 void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _pattern = std::move(pattern);
   _cholmod_ready = _umfpack_ready = false;

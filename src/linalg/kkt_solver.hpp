@@ -58,6 +58,10 @@ class KktSolver {
   ~KktSolver();
   /// Symbolic analysis for a pattern (once per step).
   void analyze(std::shared_ptr<const SparsityPattern> pattern);
+  /// Drop the factor (and the unsymmetric solver's value-dependent analysis): the next solve
+  /// factorises afresh, exactly as a new solver would. A restart point calls it, so that a
+  /// restarted run repeats the uninterrupted one (docs/restart.md).
+  void forget_factor();
   /// Solve; K may be modified in place (augmented). du has n entries, dl one per constraint row.
   /// Throws SingularSystem when M is singular (a rigid-body mode).
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,

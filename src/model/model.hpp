@@ -85,6 +85,8 @@ struct Model {
   PhysicalConstants constants;
 
   std::vector<Step> steps;
+  /// *RESTART, READ: the steps before `restart_read->step` come from the old job's deck
+  std::optional<RestartRead> restart_read;
   std::vector<std::string> warnings; ///< non-fatal input remarks, listed at the end of the run
 
   /// Deck location of an element's definition line.

@@ -64,6 +64,23 @@ struct DofMonitor {
   SourceLocation loc;
 };
 
+/// *RESTART, WRITE: when a step writes restart records into job.res (docs/restart.md).
+struct RestartWrite {
+  int frequency = 0;       ///< every n-th increment (and the last of the step)
+  int number_interval = 0; ///< at n evenly spaced step times (the first increment at or past each)
+  bool overlay = false;    ///< keep only the latest record
+  SourceLocation loc;
+  bool on() const { return frequency > 0 || number_interval > 0; }
+};
+
+/// *RESTART, READ: the deck continues an earlier job (gapfem deck.inp --oldjob OLD).
+struct RestartRead {
+  int step = 0;          ///< STEP= (0: the last step with restart data)
+  int increment = 0;     ///< INC= (0: the last increment of that step with restart data)
+  bool end_step = false; ///< END STEP: the step ends at the restart point
+  SourceLocation loc;
+};
+
 /// *OUTPUT, FIELD with its *NODE OUTPUT / *ELEMENT OUTPUT: drives ParaView (VTU) frames.
 struct FieldOutputRequest {
   int frequency = 1; ///< every n-th increment; the last increment of a step is always written

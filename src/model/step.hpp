@@ -103,6 +103,8 @@ struct Step {
   std::vector<FileOutputRequest> file_outputs; ///< *NODE FILE / *EL FILE (job.frd)
   /// *MONITOR in effect in this step (given in it, in an earlier step or in the model data)
   std::optional<DofMonitor> monitor;
+  /// *RESTART, WRITE in effect in this step (given in it, in an earlier step or the model data)
+  RestartWrite restart;
 };
 
 } // namespace gapfem

@@ -72,8 +72,8 @@ NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) 
   };
   auto scalar = [&](const std::vector<double>& v, const std::vector<double>& more,
                     std::string_view nm) {
-    static const TemperatureNames nt("NT"), rfl("RFL"), cfl("CFL");
-    const auto& names = nm == "NT" ? nt : nm == "RFL" ? rfl : cfl;
+    static const TemperatureNames nt_names("NT"), rfl("RFL"), cfl("CFL");
+    const auto& names = nm == "NT" ? nt_names : nm == "RFL" ? rfl : cfl;
     c.scalar = &v;
     c.more = &more;
     c.n = std::clamp(r.temperature_points, 1, kMaxTemperaturePoints);
@@ -221,7 +221,12 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   if (step.nlgeom) fmt::format_to(out, "{:>10}LARGE DISPLACEMENT THEORY (NLGEOM)\n", "");
   if (step.procedure != Procedure::Static)
     fmt::format_to(out, "{:>10}{}\n", "", inc.steady_state ? "STEADY STATE" : "TRANSIENT");
+  prepare_step(model, step_index);
+  _out.flush();
+}
 
+void DatWriter::prepare_step(const Model& model, int step_index) {
+  const Step& step = model.steps[step_index];
   _node_lists.clear();
   for (const auto& req : step.node_prints)
     _node_lists.push_back(output::request_nodes_by_label(model, req.nset, req.nodes));
@@ -229,7 +234,30 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   for (const auto& req : step.el_prints)
     _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
   _printed_increment = -1;
-  _out.flush();
+}
+
+void DatWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_out.position()));
+  a.pod(_printed_increment);
+  a.pod(_printed_dt);
+  const std::vector<char> node(_printed_node.begin(), _printed_node.end()),
+      el(_printed_el.begin(), _printed_el.end());
+  a.vec(node);
+  a.vec(el);
+}
+
+void DatWriter::resume(const Model& model, int step_index, ArchiveReader& a,
+                       const ResumeFiles& from) {
+  const auto keep = a.get<std::uint64_t>();
+  _out.open_resumed(_path, from.file(".dat"), keep);
+  prepare_step(model, step_index);
+  a.pod(_printed_increment);
+  a.pod(_printed_dt);
+  std::vector<char> node, el;
+  a.vec(node);
+  a.vec(el);
+  _printed_node.assign(node.begin(), node.end());
+  _printed_el.assign(el.begin(), el.end());
 }
 
 void DatWriter::increment(const IncrementInfo&) {

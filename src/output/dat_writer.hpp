@@ -24,6 +24,10 @@ class DatWriter : public ResultWriter {
   void frame(const Model& model, int step_index, const Frame& frame) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "dat"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
   /// The step runs with fixed time increments: *STATIC, DIRECT, and transient heat transfer or
   /// coupled steps without DELTMX (the rule of fixed_transient_increments,
@@ -32,6 +36,8 @@ class DatWriter : public ResultWriter {
   static bool fixed_increments(const Step& step);
 
  private:
+  /// The print lists of a step's requests.
+  void prepare_step(const Model& model, int step_index);
   void write_increment_header(const Model& model, int step_index, const Frame& frame,
                               bool repeated);
   void write_node_table(const Model& model, const Frame& frame, const NodePrintRequest& request,

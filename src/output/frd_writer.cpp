@@ -97,6 +97,25 @@ long long FrdWriter::node_number(NodeId n) const {
   return _flat ? static_cast<long long>(_model->mesh.node_labels[n]) : n + 1LL;
 }
 
+void FrdWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_out.position()));
+  a.pod(_datasets);
+  a.pod(_frames);
+}
+
+void FrdWriter::resume(const Model& model, int, ArchiveReader& a, const ResumeFiles& from) {
+  const auto keep = a.get<std::uint64_t>();
+  a.pod(_datasets);
+  a.pod(_frames);
+  if (keep == 0) { // the job wrote no .frd so far
+    begin(model);
+    return;
+  }
+  _model = &model;
+  _flat = model.instances.empty();
+  _out.open_resumed(_path, from.file(".frd"), keep);
+}
+
 void FrdWriter::begin(const Model& model) {
   const bool wanted = std::any_of(model.steps.begin(), model.steps.end(),
                                   [](const Step& s) { return !s.file_outputs.empty(); });

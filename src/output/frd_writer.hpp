@@ -29,6 +29,10 @@ class FrdWriter : public ResultWriter {
   void begin(const Model& model) override;
   void frame(const Model& model, int step_index, const Frame& frame) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "frd"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
  private:
   struct Block;

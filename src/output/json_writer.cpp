@@ -89,10 +89,78 @@ void JsonWriter::begin(const Model& model) {
   _first_step = true;
   _step_open = false;
   _components.assign(all_element_types().size(), TypeComponents{});
+  prepare_model(model);
+  checkpoint();
+}
+
+void JsonWriter::prepare_model(const Model& model) {
   _node_mark.assign(model.mesh.n_nodes(), 0);
   _elem_mark.assign(model.mesh.n_elements(), 0);
   _all_nodes = output::request_nodes_by_label(model, {}, {});
-  checkpoint();
+}
+
+void JsonWriter::prepare_step(const Model& model, int step_index) {
+  const Step& step = model.steps[step_index];
+  _node_lists.clear();
+  for (const auto& req : step.node_prints)
+    _node_lists.push_back(output::request_nodes_by_label(model, req.nset, req.nodes));
+  _elem_lists.clear();
+  for (const auto& req : step.el_prints)
+    _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
+}
+
+void JsonWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_failed ? 0 : _out.position()));
+  a.pod(_seen);
+  a.pod(_has_last);
+  a.pod(_last.step);
+  a.pod(_last.increment);
+  a.pod(_last.step_time);
+  a.pod(_last.total_time);
+  a.pod(_step_open);
+  a.pod(_first_step);
+  a.pod(_first_frame);
+  a.pod(_open_step_number);
+  a.pod(_last_increment);
+  a.pod(_publish_seconds);
+  a.pod(static_cast<std::uint64_t>(_components.size()));
+  for (const TypeComponents& c : _components) {
+    a.pod(c.seen);
+    for (const auto& names : c.names) a.strings(names);
+  }
+}
+
+void JsonWriter::resume(const Model& model, int step_index, ArchiveReader& a,
+                        const ResumeFiles& from) {
+  _model = &model;
+  _watch = Stopwatch();
+  _failed = false;
+  const auto keep = a.get<std::uint64_t>();
+  // The published document begins with the body as it was at the restart point (a checkpoint
+  // only ever appends to the body): its first `keep` bytes are the body to continue.
+  _out.open_resumed(part_path(), from.file(".results.json"), keep);
+  _shadow.begin(_path);
+  a.pod(_seen);
+  a.pod(_has_last);
+  a.pod(_last.step);
+  a.pod(_last.increment);
+  a.pod(_last.step_time);
+  a.pod(_last.total_time);
+  a.pod(_step_open);
+  a.pod(_first_step);
+  a.pod(_first_frame);
+  a.pod(_open_step_number);
+  a.pod(_last_increment);
+  a.pod(_publish_seconds);
+  _components.resize(a.get<std::uint64_t>());
+  for (TypeComponents& c : _components) {
+    a.pod(c.seen);
+    for (auto& names : c.names) a.strings(names);
+  }
+  if (_components.size() != all_element_types().size())
+    throw RestartDataError("the restart record's JSON state is of another gapfem version");
+  prepare_model(model);
+  prepare_step(model, step_index);
 }
 
 void JsonWriter::begin_step(const Model& model, int step_index) {
@@ -106,12 +174,7 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   b.append(std::string_view(",\"procedure\":"));
   append_json_string(b, procedure_name(step.procedure));
   b.append(std::string_view(",\"frames\":["));
-  _node_lists.clear();
-  for (const auto& req : step.node_prints)
-    _node_lists.push_back(output::request_nodes_by_label(model, req.nset, req.nodes));
-  _elem_lists.clear();
-  for (const auto& req : step.el_prints)
-    _elem_lists.push_back(output::request_elements_by_type(model, req.elset, req.elements));
+  prepare_step(model, step_index);
   _step_open = true;
   _first_frame = true;
   _open_step_number = step.number;

@@ -30,6 +30,10 @@ class JsonWriter : public ResultWriter {
   void frame(const Model& model, int step_index, const Frame& frame) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "json"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
  private:
   void write_node(const Model& model, const NodeResults& r, NodeId n, bool& first);
@@ -43,6 +47,10 @@ class JsonWriter : public ResultWriter {
   void append_tail(fmt::memory_buffer& b, const RunSummary& summary) const;
   /// Publishes the document so far, closed by a tail marking the run as not completed.
   void checkpoint();
+  /// The print lists of a step's requests.
+  void prepare_step(const Model& model, int step_index);
+  /// What begin() and resume() share: the scratch marks and the list of all nodes.
+  void prepare_model(const Model& model);
   /// Copies the part and `suffix` into the staging file and renames it over the final name.
   void publish(std::string_view suffix);
   std::filesystem::path part_path() const;

@@ -33,7 +33,20 @@ void MsgWriter::begin(const Model& model) {
   _out.open(_path);
   line(fmt::format("gapfem {}: message file of job {}", GAPFEM_VERSION, model.job_name));
   for (const auto& w : model.warnings) line("warning: " + w);
-  // tee the log: everything into the file, the terminal's share onwards
+  tee_log();
+}
+
+void MsgWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_failed ? 0 : _out.position()));
+}
+
+void MsgWriter::resume(const Model&, int, ArchiveReader& a, const ResumeFiles& from) {
+  _out.open_resumed(_path, from.file(".msg"), a.get<std::uint64_t>());
+  tee_log();
+}
+
+void MsgWriter::tee_log() {
+  // everything into the file, the terminal's share onwards
   _terminal_level = log::level();
   log::Sink previous = log::set_sink(nullptr);
   _previous = previous;

@@ -24,10 +24,16 @@ class MsgWriter : public ResultWriter {
   void increment(const IncrementInfo& info) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "msg"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
  private:
   void line(std::string_view text);
   void restore();
+  /// Tee the log into the file (everything) and the terminal (its share).
+  void tee_log();
 
   std::filesystem::path _path;
   output::OutputFile _out;

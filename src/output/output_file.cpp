@@ -92,6 +92,31 @@ void OutputFile::open_update(const std::filesystem::path& file, std::uintmax_t k
     fail("cannot write");
 }
 
+void OutputFile::open_resumed(const std::filesystem::path& path,
+                              const std::filesystem::path& source, std::uintmax_t keep) {
+  std::error_code ec;
+  const std::uintmax_t have = std::filesystem::file_size(source, ec);
+  if (ec || have < keep)
+    throw AnalysisError(fmt::format("the results file '{}' of the restarted job is {} than when "
+                                    "its restart data was written, so it cannot be continued; "
+                                    "run the analysis from its start",
+                                    source.string(), ec ? "missing or unreadable" : "shorter"));
+  if (path == source || std::filesystem::equivalent(path, source, ec)) {
+    open_update(path, keep, path);
+    return;
+  }
+  open(path);
+  append_file_range(source, 0, keep);
+}
+
+std::uintmax_t OutputFile::position() {
+  if (!_file) return 0;
+  drain();
+  if (std::fflush(_file) != 0) fail("cannot write");
+  const long at = std::ftell(_file);
+  return at < 0 ? 0 : static_cast<std::uintmax_t>(at);
+}
+
 void OutputFile::fail(const char* what) {
   const int err = errno;
   _errno = err;

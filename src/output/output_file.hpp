@@ -45,6 +45,13 @@ class OutputFile {
   /// to them; errors name `shown`, the document the file stands for.
   void open_update(const std::filesystem::path& file, std::uintmax_t keep,
                    const std::filesystem::path& shown);
+  /// Restart (docs/restart.md): continue `path` after its first `keep` bytes. When `source` (the
+  /// same file of the job that wrote the restart data) is another file, `path` is created with
+  /// the first `keep` bytes of `source`.
+  void open_resumed(const std::filesystem::path& path, const std::filesystem::path& source,
+                    std::uintmax_t keep);
+  /// Bytes in the file so far, the buffer included (it is written out first).
+  std::uintmax_t position();
   bool is_open() const { return _file != nullptr; }
   bool failed() const { return _failed; }
   /// The errno of the failure (0 when none).

@@ -63,6 +63,60 @@ void ReportWriter::begin(const Model& model) {
   }
 }
 
+void ReportWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_attempts.size()));
+  for (const Attempt& t : _attempts) {
+    a.pod(t.step);
+    a.pod(t.increment);
+    a.pod(t.attempt);
+    a.pod(t.total_time);
+    a.pod(t.converged);
+    a.vec(t.residuals);
+  }
+  a.vec(_contact_set);
+  a.pod(static_cast<std::uint64_t>(_steps.size()));
+  for (const StepSummary& s : _steps) save(a, s);
+  a.vec(_gap_ids);
+  for (const History& h : _histories) {
+    a.vec(h.time);
+    a.vec(h.force);
+    a.vec(h.clearance);
+    a.vec(h.status);
+    a.pod(h.peak);
+  }
+  a.vec(_kept);
+  a.pod(_samples);
+  a.pod(_pruned);
+}
+
+void ReportWriter::resume(const Model& model, int, ArchiveReader& a, const ResumeFiles&) {
+  begin(model);
+  _attempts.resize(a.get<std::uint64_t>());
+  for (Attempt& t : _attempts) {
+    a.pod(t.step);
+    a.pod(t.increment);
+    a.pod(t.attempt);
+    a.pod(t.total_time);
+    a.pod(t.converged);
+    a.vec(t.residuals);
+  }
+  a.vec(_contact_set);
+  _steps.resize(a.get<std::uint64_t>());
+  for (StepSummary& s : _steps) load(a, s);
+  a.vec(_gap_ids);
+  _histories.resize(_gap_ids.size());
+  for (History& h : _histories) {
+    a.vec(h.time);
+    a.vec(h.force);
+    a.vec(h.clearance);
+    a.vec(h.status);
+    a.pod(h.peak);
+  }
+  a.vec(_kept);
+  a.pod(_samples);
+  a.pod(_pruned);
+}
+
 void ReportWriter::increment(const IncrementInfo& info) {
   _attempts.push_back({info.step, info.increment, info.attempts, info.total_time, info.converged,
                        info.residual_history});

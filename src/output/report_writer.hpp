@@ -24,6 +24,10 @@ class ReportWriter : public ResultWriter {
   void increment(const IncrementInfo& info) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "report"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
   /// How many gaps the page plots when the user names none.
   static constexpr int kMostLoaded = 6;

@@ -3,11 +3,13 @@
 /// What the analysis hands to the result writers: frames (the committed state at an output point),
 /// step summaries with self-checks, and the run summary. Writers format; they never compute
 /// physics.
+#include "common/archive.hpp"
 #include "common/timer.hpp"
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
 
 #include <bit>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -154,6 +156,30 @@ struct StepSummary {
   StepChecks checks;
 };
 
+/// A step summary in a restart record.
+inline void save(ArchiveWriter& a, const StepSummary& s) {
+  a.pod(s.step);
+  a.str(s.name);
+  a.str(s.procedure);
+  a.pod(s.converged);
+  a.str(s.failure);
+  a.pod(s.increments);
+  a.pod(s.attempts);
+  a.pod(s.iterations);
+  a.pod(s.checks);
+}
+inline void load(ArchiveReader& a, StepSummary& s) {
+  a.pod(s.step);
+  a.str(s.name);
+  a.str(s.procedure);
+  a.pod(s.converged);
+  a.str(s.failure);
+  a.pod(s.increments);
+  a.pod(s.attempts);
+  a.pod(s.iterations);
+  a.pod(s.checks);
+}
+
 struct RunSummary {
   bool completed = true;
   std::string failure;
@@ -161,6 +187,16 @@ struct RunSummary {
   RunStatistics stats;
   std::vector<std::string> warnings;
   long peak_memory_kb = 0;
+};
+
+/// A restarted job's result files (docs/restart.md): those of the job that wrote the restart
+/// data, cut (the same job) or copied (a new job) up to the restart point, then continued.
+struct ResumeFiles {
+  std::filesystem::path directory;
+  std::string job;
+  std::filesystem::path file(std::string_view suffix) const {
+    return directory / (job + std::string(suffix));
+  }
 };
 
 /// Receives the committed state at output points. Implementations: .dat, .sta, JSON, VTU.
@@ -175,6 +211,18 @@ class ResultWriter {
   virtual void frame(const Model& model, int step_index, const Frame& frame) {}
   virtual void end_step(const Model& model, int step_index, const StepSummary& summary) {}
   virtual void end(const Model& model, const RunSummary& summary) {}
+
+  /// Restart (docs/restart.md). The name of the writer's state in a restart record; empty: the
+  /// writer keeps no state (it is simply begun again).
+  virtual std::string_view restart_key() const { return {}; }
+  /// Save what resume() needs to continue the files from this point (after an increment()).
+  virtual void save_state(ArchiveWriter&) {}
+  /// Instead of begin(): continue in step `step_index` from a state save_state() wrote in the
+  /// job `from`.
+  virtual void resume(const Model& model, int step_index, ArchiveReader& state,
+                      const ResumeFiles& from) {
+    begin(model);
+  }
 };
 
 } // namespace gapfem

@@ -28,6 +28,14 @@ void StaWriter::begin(const Model& model) {
   _out.flush();
 }
 
+void StaWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_out.position()));
+}
+
+void StaWriter::resume(const Model&, int, ArchiveReader& a, const ResumeFiles& from) {
+  _out.open_resumed(_path, from.file(".sta"), a.get<std::uint64_t>());
+}
+
 char StaWriter::attempt_marker(const IncrementInfo& info) {
   // Abaqus marks an attempt that did not converge (and was cut back) with "U" after ATT. An
   // attempt that converged but changed a temperature by more than DELTMX is repeated smaller

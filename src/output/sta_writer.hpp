@@ -18,6 +18,10 @@ class StaWriter : public ResultWriter {
   void begin(const Model& model) override;
   void increment(const IncrementInfo& info) override;
   void end(const Model& model, const RunSummary& summary) override;
+  std::string_view restart_key() const override { return "sta"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
   /// The character after the attempt number: ' ' converged, 'U' not converged (cut back, as in
   /// Abaqus), 'D' converged but repeated smaller because a temperature changed by more than DELTMX.

@@ -110,9 +110,46 @@ VtuWriter::VtuWriter(std::filesystem::path directory, std::string job)
     : _dir(std::move(directory)), _job(std::move(job)) {}
 
 void VtuWriter::begin(const Model& model) {
+  _entries.clear();
+  build_topology(model);
+  write_pvd();
+}
+
+void VtuWriter::save_state(ArchiveWriter& a) {
+  a.pod(static_cast<std::uint64_t>(_entries.size()));
+  for (const PvdEntry& e : _entries) {
+    a.pod(e.time);
+    a.str(e.file);
+  }
+}
+
+void VtuWriter::resume(const Model& model, int, ArchiveReader& a, const ResumeFiles& from) {
+  build_topology(model);
+  _entries.resize(a.get<std::uint64_t>());
+  const bool same = from.job == _job && std::filesystem::equivalent(from.directory, _dir);
+  for (PvdEntry& e : _entries) {
+    a.pod(e.time);
+    a.str(e.file);
+    if (same) continue;
+    // a new job: its own copies of the earlier frames (linked when the file system can)
+    const std::filesystem::path source = from.directory / e.file;
+    if (e.file.rfind(from.job, 0) == 0) e.file = _job + e.file.substr(from.job.size());
+    const std::filesystem::path target = _dir / e.file;
+    std::error_code ec;
+    std::filesystem::remove(target, ec);
+    std::filesystem::create_hard_link(source, target, ec);
+    if (ec) std::filesystem::copy_file(source, target, ec);
+    if (ec)
+      throw AnalysisError(fmt::format("cannot copy the ParaView frame '{}' of the restarted job "
+                                      "to '{}': {}",
+                                      source.string(), target.string(), ec.message()));
+  }
+  write_pvd();
+}
+
+void VtuWriter::build_topology(const Model& model) {
   const Mesh& mesh = model.mesh;
   const auto ne = static_cast<std::size_t>(mesh.n_elements());
-  _entries.clear();
   _connectivity.clear();
   _connectivity.reserve(mesh.conn.size());
   _offsets.resize(ne);
@@ -154,7 +191,6 @@ void VtuWriter::begin(const Model& model) {
   for (std::size_t t = 0; t < present.size(); ++t)
     if (present[t])
       _type_legend += fmt::format(" {}={}", t, element_info(static_cast<ElementType>(t)).name);
-  write_pvd();
 }
 
 namespace {

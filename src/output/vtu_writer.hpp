@@ -32,6 +32,10 @@ class VtuWriter : public ResultWriter {
 
   void begin(const Model& model) override;
   void frame(const Model& model, int step_index, const Frame& frame) override;
+  std::string_view restart_key() const override { return "vtu"; }
+  void save_state(ArchiveWriter& out) override;
+  void resume(const Model& model, int step_index, ArchiveReader& state,
+              const ResumeFiles& from) override;
 
  private:
   struct PvdEntry {
@@ -39,6 +43,8 @@ class VtuWriter : public ResultWriter {
     std::string file;
   };
   void write_pvd();
+  /// Cells and labels of the model (once).
+  void build_topology(const Model& model);
 
   std::filesystem::path _dir;
   std::string _job;

@@ -5,8 +5,11 @@
 /// self-checks; carries the committed state, load history and contact status between steps.
 #include "linalg/factor_reuse.hpp"
 #include "output/results.hpp"
+#include "solver/restart_file.hpp"
 
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +20,19 @@ struct Model;
 struct AnalysisOptions {
   int threads = 0;                              ///< 0: default_thread_count()
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
+  /// Restart (docs/restart.md): where the records of steps with *RESTART, WRITE go (job.res;
+  /// empty: none are written) and the header naming the deck (the fingerprint is filled in).
+  std::filesystem::path restart_file;
+  RestartHeader restart_header;
+  /// Continue from a restart record instead of starting from the beginning.
+  struct Resume {
+    std::filesystem::path file; ///< the restart file holding the record
+    RestartRecordInfo record;
+    std::uint64_t fingerprint = 0; ///< the model fingerprint in that file's header
+    bool end_step = false;         ///< *RESTART, READ, END STEP: the step ends at the record
+    ResumeFiles files;             ///< the result files to continue
+  };
+  std::optional<Resume> resume;
 };
 
 /// What `gapfem check` reports: the model as the analysis sees it before solving.

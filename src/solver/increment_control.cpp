@@ -27,6 +27,22 @@ IncrementController::IncrementController(const Incrementation& inc, int max_incr
   _dt = std::min(_dt, _max);
 }
 
+void IncrementController::save(ArchiveWriter& a) const {
+  a.pod(_t);
+  a.pod(_dt);
+  a.pod(_increment);
+  a.pod(_attempt);
+  a.pod(_easy_streak);
+}
+
+void IncrementController::restore(ArchiveReader& a) {
+  a.pod(_t);
+  a.pod(_dt);
+  a.pod(_increment);
+  a.pod(_attempt);
+  a.pod(_easy_streak);
+}
+
 double IncrementController::next() const {
   const double remaining = _period - _t;
   double dt = std::min(_dt, remaining);

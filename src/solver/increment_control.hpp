@@ -6,6 +6,7 @@
 /// 10, never exceed the maximum, stop below the minimum or after 5 attempts of one increment.
 /// DIRECT: fixed increments, no cut-backs. Transient heat transfer: DELTMX limits the increment
 /// (accept()'s suggested ratio, retry_smaller(); the rule is in thermal_step.hpp).
+#include "common/archive.hpp"
 #include "model/step.hpp"
 
 #include <string>
@@ -46,6 +47,9 @@ class IncrementController {
   /// the caller then accepts the attempt as it is.
   bool retry_smaller(double factor);
   const std::string& failure() const { return _failure; }
+  /// Restart: the state after a converged increment.
+  void save(ArchiveWriter& a) const;
+  void restore(ArchiveReader& a);
 
  private:
   double _period, _dt, _min, _max;

@@ -286,6 +286,12 @@ void StepLoads::set_shrink_allowance(ElemId e, double v) {
     if (i.elem == e) i.allowance = v;
 }
 
+double StepLoads::shrink_allowance(ElemId e) const {
+  for (const Interf& i : _interf)
+    if (i.elem == e) return i.allowance;
+  return 0.0;
+}
+
 void StepLoads::finish(double t_end, std::span<const double> reaction, const ConstraintSet& rows,
                        LoadHistory& h) const {
   h.local_reaction.clear();

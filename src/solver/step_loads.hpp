@@ -68,6 +68,8 @@ class StepLoads {
   void interference(double step_time, Discretization& disc) const;
   /// SHRINK allowances need the clearance at the step start: set v for element e.
   void set_shrink_allowance(ElemId e, double v);
+  /// The allowance set for element e (0 when none).
+  double shrink_allowance(ElemId e) const;
   const std::vector<ElemId>& shrink_elements() const { return _shrink_elems; }
 
   /// Record the end-of-step values (call after the last increment); `rows` holds the

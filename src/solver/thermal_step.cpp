@@ -73,6 +73,20 @@ HeatBalance::HeatBalance(bool active, bool transient, std::span<const double> u_
   if (_active && _transient) _u_begin.assign(u_step_start.begin(), u_step_start.end());
 }
 
+void HeatBalance::save(ArchiveWriter& a) const {
+  a.vec(_u_begin);
+  a.pod(_reaction);
+  a.pod(_applied);
+  a.pod(_scale);
+}
+
+void HeatBalance::restore(ArchiveReader& a) {
+  a.vec(_u_begin);
+  a.pod(_reaction);
+  a.pod(_applied);
+  a.pod(_scale);
+}
+
 void HeatBalance::add_increment(const DofMap& dofs, double dt, std::span<const double> reaction,
                                 std::span<const double> f_ext) {
   if (!_active || !_transient) return;

@@ -3,6 +3,7 @@
 /// What the analysis needs for heat transfer and coupled temperature-displacement steps, kept out
 /// of analysis.cpp: procedure/element compatibility, initial temperatures, the DELTMX control of
 /// transient increments and the heat balance of a step. Theory: docs/theory/thermal.md.
+#include "common/archive.hpp"
 #include "fem/discretization.hpp"
 #include "fem/dof_map.hpp"
 #include "output/results.hpp"
@@ -60,6 +61,9 @@ class HeatBalance {
   /// `active`: the step is a heat transfer or coupled step of a model with temperature DOFs.
   HeatBalance(bool active, bool transient, std::span<const double> u_step_start);
   bool active() const { return _active; }
+  /// Restart: the sums so far.
+  void save(ArchiveWriter& a) const;
+  void restore(ArchiveReader& a);
   /// A converged (committed) increment of size dt with its reactions and external loads per slot.
   void add_increment(const DofMap& dofs, double dt, std::span<const double> reaction,
                      std::span<const double> f_ext);

@@ -81,7 +81,7 @@ void handle_coupled(BuildState& s, const Keyword& kw);
 void handle_change_friction(BuildState& s, const Keyword& kw);
 /// *CONTROLS (handlers_controls.cpp)
 void handle_controls(BuildState& s, const Keyword& kw);
-/// *RESTART: only "no restart data" (FREQUENCY=0) is accepted (handlers_controls.cpp)
+/// *RESTART, WRITE (restart records) and READ (a restart deck) (handlers_controls.cpp)
 void handle_restart(BuildState& s, const Keyword& kw);
 /// Closes an open step at the end of the deck or at a *STEP without *END STEP.
 void close_step(BuildState& s);

@@ -164,17 +164,63 @@ void handle_controls(BuildState& s, const Keyword& kw) {
 }
 
 void handle_restart(BuildState& s, const Keyword& kw) {
-  // Abaqus/CAE writes "*Restart, write, frequency=0" (no restart data) into every step
-  if (kw.has("READ"))
-    throw InputError(kw.loc, "READ",
-                     "gapfem cannot restart from Abaqus restart files; run the analysis from its "
-                     "first step");
-  const auto frequency = int_param(kw, "FREQUENCY");
-  const auto interval = int_param(kw, "NUMBER INTERVAL");
-  if ((frequency && *frequency == 0) || (interval && *interval == 0)) return; // no restart data
-  throw InputError(kw.loc, kw.has("WRITE") ? "WRITE" : "",
-                   "gapfem does not write restart data; use FREQUENCY=0 (as Abaqus/CAE writes "
-                   "when no restart is requested) or remove *RESTART");
+  const bool read = kw.has("READ"), write = kw.has("WRITE");
+  if (read == write)
+    throw InputError(kw.loc, "",
+                     "give WRITE (write restart data, in model or history data) or "
+                     "READ (continue an earlier job, first in a restart deck)");
+  auto positive = [&](std::string_view name) -> std::optional<int> {
+    const auto v = int_param(kw, name);
+    if (v && (*v < 0 || *v > 1000000000))
+      throw InputError(kw.loc, fmt::format("{}={}", name, *v),
+                       "give a whole number from 0 up (0: none)");
+    return v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
+  };
+  if (read) {
+    for (const char* p : {"FREQUENCY", "NUMBER INTERVAL", "OVERLAY", "TIME MARKS"})
+      if (kw.has(p))
+        throw InputError(kw.loc, p,
+                         "belongs to *RESTART, WRITE; *RESTART, READ takes STEP, INC "
+                         "and END STEP");
+    if (s.in_step)
+      throw InputError(kw.loc, "READ",
+                       "*RESTART, READ comes before the first *STEP of a restart deck (the steps "
+                       "after it are the new ones)");
+    RestartRead r;
+    r.step = positive("STEP").value_or(0);
+    r.increment = positive("INC").value_or(0);
+    r.end_step = kw.has("END STEP");
+    r.loc = kw.loc;
+    if (s.model.restart_read)
+      throw InputError(kw.loc, "READ",
+                       "a deck continues one earlier job: give *RESTART, READ once");
+    s.model.restart_read = r;
+    return;
+  }
+  for (const char* p : {"STEP", "INC", "END STEP"})
+    if (kw.has(p))
+      throw InputError(kw.loc, p,
+                       "belongs to *RESTART, READ; *RESTART, WRITE takes FREQUENCY or "
+                       "NUMBER INTERVAL, OVERLAY and TIME MARKS");
+  RestartWrite w;
+  w.loc = kw.loc;
+  const auto frequency = positive("FREQUENCY");
+  const auto interval = positive("NUMBER INTERVAL");
+  if (frequency && interval)
+    throw InputError(kw.loc, "NUMBER INTERVAL",
+                     "give FREQUENCY (every n-th increment) or NUMBER INTERVAL (n times per step), "
+                     "not both");
+  if (interval)
+    w.number_interval = *interval;
+  else
+    w.frequency = frequency.value_or(1); // Abaqus/Standard's default
+  w.overlay = kw.has("OVERLAY");
+  if (kw.has("TIME MARKS") && yes_no_param(kw, "TIME MARKS", false))
+    throw InputError(kw.loc, "TIME MARKS=YES",
+                     "gapfem writes NUMBER INTERVAL restart data at the first increment that "
+                     "reaches each interval and does not shorten increments to end exactly on "
+                     "it; use TIME MARKS=NO");
+  (s.in_step ? s.step.restart : s.model_restart) = w;
 }
 
 } // namespace gapfem::inp

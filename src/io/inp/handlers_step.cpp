@@ -110,6 +110,7 @@ void handle_step(BuildState& s, const Keyword& kw) {
   if (!prev) // non-zero model-data values (CalculiX dialect) are reached in the first step
     for (BoundaryEntry& b : st.boundary) b.propagated = b.value == 0.0;
   st.monitor = prev ? prev->monitor : s.model_monitor; // a *MONITOR stays until replaced
+  st.restart = prev ? prev->restart : s.model_restart; // so does *RESTART, WRITE
   if (prev) {
     st.controls = prev->controls; // *CONTROLS stay in effect until changed or reset
     st.cloads = carried(prev->cloads);

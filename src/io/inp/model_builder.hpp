@@ -117,6 +117,7 @@ struct BuildState {
 
   std::vector<BoundaryEntry> model_boundary; ///< *BOUNDARY in model data
   std::optional<DofMonitor> model_monitor;   ///< *MONITOR in model data (every step)
+  RestartWrite model_restart;                ///< *RESTART, WRITE in model data
   bool model_boundary_value_warned = false;  ///< the non-zero model-data *BOUNDARY remark
   bool model_done = false;                   ///< finish_model_data() has run
   bool in_step = false;

@@ -350,8 +350,9 @@ void dispatch(BuildState& s, Keyword& kw) {
   }
   kw.name = std::string(spec->name);
   kw.loc.keyword = kw.name;
+  // (a restart deck's *RESTART, READ follows the old deck's last step: reader.cpp)
   if (s.model_done && !s.in_step && spec->handler != handle_step &&
-      spec->handler != handle_end_step) {
+      spec->handler != handle_end_step && !(spec->handler == handle_restart && kw.has("READ"))) {
     s.error(kw.loc, "",
             fmt::format("{} after *END STEP; after the first *STEP every keyword belongs inside a "
                         "step (between *STEP and *END STEP)",

@@ -4,8 +4,76 @@
 #include "io/inp/lexer.hpp"
 #include "io/inp/parser.hpp"
 
+#include <algorithm>
+#include <fmt/format.h>
+
 namespace gapfem {
 namespace {
+
+/// The *RESTART, READ of a deck (nullptr: none).
+const inp::Keyword* restart_read(const inp::Deck& deck) {
+  for (const inp::Keyword& kw : deck.keywords)
+    if (kw.key == "RESTART" && kw.has("READ")) return &kw;
+  return nullptr;
+}
+
+/// STEP= / INC= of a READ line as far as they are plain numbers (the handler checks them).
+int loose_int(const inp::Keyword& kw, std::string_view param) {
+  const auto v = kw.value(param);
+  if (!v) return 0;
+  try {
+    return std::max(0, std::stoi(*v));
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+/// A restart deck after the old job's deck cut after its first `steps` steps: one deck whose files
+/// are the old deck's, then the restart deck's (*HEADING of the restart deck dropped).
+inp::Deck splice_restart(inp::Deck old_deck, int steps, inp::Deck deck) {
+  int ended = 0;
+  std::size_t keep = old_deck.keywords.size();
+  for (std::size_t k = 0; k < old_deck.keywords.size(); ++k)
+    if (old_deck.keywords[k].key == "ENDSTEP" && ++ended == steps) {
+      keep = k + 1;
+      break;
+    }
+  old_deck.keywords.resize(keep);
+  const auto shift = static_cast<std::int32_t>(old_deck.files.size());
+  for (auto& f : deck.files) old_deck.files.push_back(std::move(f));
+  for (inp::Keyword& kw : deck.keywords) {
+    if (kw.key == "HEADING") continue;
+    kw.file += shift;
+    for (auto& line : kw.data) line.file += shift;
+    old_deck.keywords.push_back(std::move(kw));
+  }
+  return old_deck;
+}
+
+/// Follows a restart deck's *RESTART, READ to the deck of the job it continues.
+inp::Deck with_restart_base(inp::Deck deck, const ReadOptions& opts, inp::Diagnostics& diag) {
+  const inp::Keyword* kw = restart_read(deck);
+  if (!kw) return deck;
+  if (!opts.restart_base)
+    throw InputError(kw->loc, "READ",
+                     "this deck continues an earlier job: run it as gapfem deck.inp --oldjob "
+                     "OLDJOB (Abaqus's oldjob=), OLDJOB being the job whose *RESTART, WRITE "
+                     "wrote OLDJOB.res");
+  RestartRead request;
+  request.step = loose_int(*kw, "STEP");
+  request.increment = loose_int(*kw, "INC");
+  request.end_step = kw->has("END STEP");
+  request.loc = kw->loc;
+  const ReadOptions::RestartBase base = opts.restart_base(request);
+  inp::Deck old_deck = inp::lex_file(base.deck, diag);
+  if (restart_read(old_deck))
+    throw InputError(
+        kw->loc, "READ",
+        fmt::format("the old job's deck '{}' is itself a restart deck; gapfem continues "
+                    "a job only from one that ran from the beginning",
+                    base.deck.string()));
+  return splice_restart(std::move(old_deck), base.steps, std::move(deck));
+}
 
 Model build(inp::Deck deck, const ReadOptions& opts, inp::Diagnostics& diag) {
   inp::BuildState state(opts, diag);
@@ -25,7 +93,7 @@ Model build(inp::Deck deck, const ReadOptions& opts, inp::Diagnostics& diag) {
 Model read_deck(const std::filesystem::path& deck, const ReadOptions& opts) {
   inp::Diagnostics diag;
   try {
-    inp::Deck lexed = inp::lex_file(deck, diag);
+    inp::Deck lexed = with_restart_base(inp::lex_file(deck, diag), opts, diag);
     return build(std::move(lexed), opts, diag);
   } catch (const inp::TooManyErrors&) {
     diag.throw_if_errors();
@@ -37,7 +105,7 @@ Model read_deck_string(std::string_view text, const std::string& name, const Rea
                        const std::filesystem::path& base_dir) {
   inp::Diagnostics diag;
   try {
-    inp::Deck lexed = inp::lex_string(text, name, base_dir, diag);
+    inp::Deck lexed = with_restart_base(inp::lex_string(text, name, base_dir, diag), opts, diag);
     return build(std::move(lexed), opts, diag);
   } catch (const inp::TooManyErrors&) {
     diag.throw_if_errors();

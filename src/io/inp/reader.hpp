@@ -5,6 +5,7 @@
 #include "model/model.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -15,6 +16,15 @@ struct ReadOptions {
   /// Unknown keywords and unknown parameters become warnings (appended to Model::warnings with
   /// file:line) instead of input errors.
   bool ignore_unknown = false;
+  /// A restart deck (*RESTART, READ; docs/restart.md) continues an earlier job, whose deck holds
+  /// the model data and the steps before the restart point. Called with the READ request, returns
+  /// that deck and the number of its steps to keep; throws InputError when there is no such job.
+  /// Empty: a deck with *RESTART, READ is an input error.
+  struct RestartBase {
+    std::filesystem::path deck;
+    int steps = 0;
+  };
+  std::function<RestartBase(const RestartRead& request)> restart_base;
 };
 
 /// Reads `deck` (following *INCLUDE and INPUT= files relative to the file that names them) and

@@ -1,0 +1,314 @@
+#include "solver/analysis_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gapfem {
+
+void Analysis::Impl::to_local_systems(NodeResults& nr) const {
+  if (model.transforms.empty()) return;
+  const ConstraintSet& rows = disc.constraints();
+  auto rotate = [](const std::array<double, 9>& Q, Vec3& v) {
+    const Vec3 g = v;
+    for (int i = 0; i < 3; ++i) v[i] = Q[3 * i] * g[0] + Q[3 * i + 1] * g[1] + Q[3 * i + 2] * g[2];
+  };
+  for (NodeId n = 0; n < static_cast<NodeId>(model.node_transform.size()); ++n) {
+    const auto Q = model.node_axes(n);
+    if (!Q) continue;
+    nr.local_axes[n] = *Q;
+    for (auto* v : {&nr.U, &nr.UR, &nr.CF, &nr.CM}) rotate(*Q, (*v)[n]);
+    for (int d = 1; d <= 6; ++d) {
+      const int r = rows.bc_row(n, d);
+      const double reaction = r >= 0 && rows.active(r) ? -rows.mult_committed[r] : 0.0;
+      (d <= 3 ? nr.RF[n][d - 1] : nr.RM[n][d - 4]) = reaction;
+    }
+  }
+}
+
+std::optional<double> Analysis::Impl::monitor_value(const Step& step, int increment,
+                                                    bool last) const {
+  if (!step.monitor) return std::nullopt;
+  const DofMonitor& m = *step.monitor;
+  if (!last && (m.frequency <= 0 || increment % m.frequency != 0)) return std::nullopt;
+  DofType d{};
+  if (!dof_from_abaqus(m.dof, d)) return std::nullopt;
+  const LocalIndex s = disc.dofs().slot(m.node, d);
+  if (s < 0) return std::nullopt; // the node does not carry the DOF: a blank column
+  return st.u_start[static_cast<std::size_t>(s)];
+}
+
+void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt,
+                                 bool repeat) {
+  const Step& step = model.steps[index];
+  // `repeat`: the increment's regular output is already written (a step ended by *RESTART, READ,
+  // END STEP); only what is due because it is now the last one follows.
+  auto due = [&](int freq) {
+    if (freq <= 0) return false;
+    const bool regular = increment % freq == 0;
+    return repeat ? !regular : (regular || last);
+  };
+  Frame fr;
+  fr.step = step.number;
+  fr.increment = increment;
+  fr.step_time = prob.context().step_time;
+  fr.total_time = prob.context().total_time;
+  fr.dt = dt;
+  fr.last_in_step = last;
+  bool any = last;
+  for (const auto& r : step.node_prints) {
+    fr.node_print_due.push_back(due(r.frequency));
+    any |= fr.node_print_due.back();
+  }
+  for (const auto& r : step.el_prints) {
+    fr.el_print_due.push_back(due(r.frequency));
+    any |= fr.el_print_due.back();
+  }
+  bool field_elements = false;
+  if (step.field_outputs.empty()) {
+    fr.field_due = last;
+  } else {
+    for (const auto& r : step.field_outputs) {
+      fr.field_output_due.push_back(due(r.frequency));
+      if (fr.field_output_due.back()) {
+        fr.field_due = true;
+        field_elements |= !r.elem_vars.empty();
+      }
+    }
+  }
+  any |= fr.field_due;
+  for (const auto& r : step.file_outputs) {
+    fr.file_output_due.push_back(due(r.frequency));
+    any |= fr.file_output_due.back();
+  }
+  if (!any) return;
+  ScopedTimer timer(&stats, TimeCategory::Output);
+
+  const DofMap& dofs = disc.dofs();
+  const NodeId nn = model.mesh.n_nodes();
+  NodeResults& nr = fr.nodes;
+  nr.U.assign(nn, Vec3{});
+  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
+  nr.NT.assign(nn, 0.0);
+  nr.RFL = nr.CFL = nr.NT;
+  nr.temperature_points = std::max(1, dofs.max_temperature_points());
+  const std::size_t more = static_cast<std::size_t>(nr.temperature_points - 1);
+  nr.NT_more.assign(more * static_cast<std::size_t>(nn), 0.0);
+  nr.RFL_more = nr.CFL_more = nr.NT_more;
+  nr.dof_mask.resize(nn);
+  const std::vector<double> reaction = prob.reactions();
+  const std::vector<double> cload = prob.concentrated_loads();
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const NodeId n = dofs.slot_node(s);
+    const int d = static_cast<int>(dofs.slot_dof(s));
+    const double u = st.u_start[s];
+    if (d < 3) {
+      nr.U[n][d] = u;
+      nr.RF[n][d] = reaction[s];
+      nr.CF[n][d] = cload[s];
+      nr.any_displacement = true;
+    } else if (d < 6) {
+      nr.UR[n][d - 3] = u;
+      nr.RM[n][d - 3] = reaction[s];
+      nr.CM[n][d - 3] = cload[s];
+      nr.any_rotation = true;
+    } else if (d == static_cast<int>(DofType::NT)) {
+      nr.NT[n] = u;
+      nr.RFL[n] = reaction[s];
+      nr.CFL[n] = cload[s];
+      nr.any_temperature = true;
+    } else { // DOF 12 … through a heat-transfer shell's thickness
+      const std::size_t k = more * static_cast<std::size_t>(n) +
+                            static_cast<std::size_t>(temperature_index(dofs.slot_dof(s)) - 1);
+      nr.NT_more[k] = u;
+      nr.RFL_more[k] = reaction[s];
+      nr.CFL_more[k] = cload[s];
+    }
+  }
+  for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);
+  to_local_systems(nr);
+  // Stress analyses report the predefined temperature field as NT.
+  if (!nr.any_temperature && disc.has_temperature_field()) {
+    nr.NT = st.T_start;
+    nr.any_temperature = true;
+    nr.nt_field.assign(static_cast<std::size_t>(nn), 0);
+    for (const auto& b : disc.blocks())
+      if (b.uses_temperature)
+        for (ElemId e : b.elements)
+          for (NodeId n : model.mesh.element_nodes(e)) nr.nt_field[n] = 1;
+  }
+
+  // Elements needed by the due requests (every element at the last frame).
+  const ElemId ne = model.mesh.n_elements();
+  std::vector<char> need(static_cast<std::size_t>(ne), last || field_elements ? 1 : 0);
+  for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
+    if (!fr.el_print_due[k]) continue;
+    const auto& r = step.el_prints[k];
+    if (r.elset.empty())
+      std::fill(need.begin(), need.end(), 1);
+    else
+      for (ElemId e : r.elements) need[e] = 1;
+  }
+  for (std::size_t k = 0; k < step.file_outputs.size(); ++k) {
+    const auto& r = step.file_outputs[k];
+    if (!fr.file_output_due[k] || !r.element) continue;
+    if (r.set.empty())
+      std::fill(need.begin(), need.end(), 1);
+    else
+      for (ElemId e : r.members) need[e] = 1;
+  }
+  fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
+  const FieldView fields = prob.fields();
+  for (ElemId e = 0; e < ne; ++e) {
+    if (!need[e]) continue;
+    fr.element_slot[e] = static_cast<std::int32_t>(fr.elements.size());
+    fr.elements.push_back({e, {}});
+    assembler.recover(e, fields, prob.context(), fr.elements.back().data);
+  }
+  for (auto* w : writers) w->frame(model, index, fr);
+}
+
+double Analysis::Impl::damping_peak(StepProblem& prob) {
+  bool any = false;
+  for (const GapSection& g : model.gap_sections) any |= g.damping.given;
+  if (!any) return 0.0;
+  double peak = 0.0;
+  ElementRecovery rec;
+  const FieldView fields = prob.fields();
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (rec.gap) peak = std::max(peak, std::abs(rec.gap->damping_force));
+    }
+  }
+  return peak;
+}
+
+void Analysis::Impl::gap_samples(StepProblem& prob, IncrementInfo& info) {
+  ScopedTimer timer(&stats, TimeCategory::Output);
+  ElementRecovery rec;
+  const FieldView fields = prob.fields();
+  int closed = 0;
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (!rec.gap) continue;
+      info.gaps.push_back({b.elements[i], static_cast<float>(rec.gap->normal_force),
+                           static_cast<float>(rec.gap->clearance), rec.gap->status});
+      closed += rec.gap->status != ContactStatus::Open;
+    }
+  }
+  info.gaps_closed = closed;
+}
+
+StepChecks Analysis::Impl::checks(StepProblem& prob) {
+  StepChecks c;
+  const FieldView fields = prob.fields();
+  ElementRecovery rec;
+  for (auto& b : disc.blocks()) c.hourglass |= b.kernel->has_artificial_energy();
+  if (c.hourglass) // ALLAE and, to judge it, ALLSE of every continuum element
+    for (auto& b : disc.blocks()) {
+      const ElementTypeInfo& info = element_info(b.type);
+      if (info.family != ElementFamily::Continuum || !info.displacement) continue;
+      for (std::size_t i = 0; i < b.size(); ++i) {
+        assembler.recover(b.elements[i], fields, prob.context(), rec);
+        c.allae += rec.artificial_energy.value_or(0.0);
+        c.allse += rec.strain_energy.value_or(0.0);
+      }
+    }
+  for (auto& b : disc.blocks()) {
+    if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement)
+      continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      if (!rec.gap) continue;
+      const GapRecord& g = *rec.gap;
+      ++c.n_gaps;
+      const Label label = model.element_label(b.elements[i]).key;
+      switch (g.status) {
+      case ContactStatus::Open:
+        ++c.n_open;
+        break;
+      case ContactStatus::Closed:
+        ++c.n_closed;
+        break;
+      case ContactStatus::Stick:
+        ++c.n_stick;
+        break;
+      case ContactStatus::Slip:
+        ++c.n_slip;
+        break;
+      }
+      const double allowance = b.interference.empty() ? 0.0 : b.interference[i];
+      const double pen = -(g.clearance + allowance);
+      if (g.status != ContactStatus::Open && pen > c.max_penetration) {
+        c.max_penetration = pen;
+        c.max_penetration_elem = label;
+      }
+      if (g.status != ContactStatus::Open && -g.normal_force > c.max_tensile_force) {
+        c.max_tensile_force = -g.normal_force;
+        c.max_tensile_elem = label;
+      }
+      c.max_damping_force = std::max(c.max_damping_force, std::abs(g.damping_force));
+    }
+  }
+  // Equilibrium: reactions + applied loads + forces of springs to ground.
+  const DofMap& dofs = disc.dofs();
+  const std::vector<double> reaction = prob.reactions();
+  double scale = 0.0;
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const int d = static_cast<int>(dofs.slot_dof(s));
+    if (d >= 3) continue;
+    c.reaction_sum[d] += reaction[s];
+    c.applied_sum[d] += st.f_ext[s];
+    scale += std::abs(reaction[s]) + std::abs(st.f_ext[s]);
+  }
+  // reactions of boundary conditions in local systems: -lambda along each held local axis
+  const ConstraintSet& rows = disc.constraints();
+  for (NodeId n = 0; n < static_cast<NodeId>(model.node_transform.size()); ++n) {
+    const auto Q = model.node_axes(n);
+    if (!Q) continue;
+    for (int d = 0; d < 3; ++d) {
+      const int row = rows.bc_row(n, d + 1);
+      if (row < 0 || !rows.active(row)) continue;
+      const double R = -rows.mult_trial[row];
+      for (int j = 0; j < 3; ++j) c.reaction_sum[j] += R * (*Q)[3 * d + j];
+      scale += std::abs(R);
+    }
+  }
+  std::array<double, 3> ground{};
+  // the stabilization's viscous forces hold the model like springs to ground
+  const auto fstab = prob.stabilization_forces();
+  for (std::size_t k = 0; k < fstab.size(); ++k) {
+    const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
+    if (d >= 3 || fstab[k] == 0.0) continue;
+    ground[d] += fstab[k];
+    scale += std::abs(fstab[k]);
+  }
+  std::vector<double> r;
+  std::vector<LocalIndex> slots;
+  for (auto& b : disc.blocks()) {
+    if (b.type != ElementType::SPRING1) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.element_residual(b.elements[i], fields, prob.context(), r, slots);
+      for (std::size_t k = 0; k < r.size(); ++k) {
+        const int d = static_cast<int>(dofs.slot_dof(slots[k]));
+        if (d < 3) {
+          ground[d] += r[k];
+          scale += std::abs(r[k]);
+        }
+      }
+    }
+  }
+  double err2 = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    const double e = c.reaction_sum[d] + c.applied_sum[d] - ground[d];
+    err2 += e * e;
+  }
+  c.equilibrium_error = std::sqrt(err2);
+  c.force_scale = scale;
+  return c;
+}
+
+} // namespace gapfem
