@@ -6,6 +6,7 @@ packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
           libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
           calculix-ccx python3 time
+          gfortran  # gapfem --user compiles Abaqus UEL sources (and the tests' UEL)
           python3-vtk9  # tests read the ParaView frames back with VTK's own reader
           xvfb xauth libgl1-mesa-dri  # ... and render the README picture offscreen
           calculix-cgx  # a test reads job.frd with CalculiX's viewer in batch mode

@@ -19,6 +19,9 @@ int check_main(int argc, char** argv) {
   app.add_flag("--ignore-unknown", options.ignore_unknown,
                "report unknown keywords and parameters as warnings instead of errors");
   app.add_flag("-q,--quiet", options.quiet, "print errors only");
+  app.add_option(
+      "--user", options.user_code,
+      "the user subroutine of the deck's user elements, compiled and loaded as for a run");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -61,6 +64,10 @@ int main(int argc, char** argv) {
                  "reuse a factorisation across Newton iterations and increments: auto (when the "
                  "measured times say it pays), always, never")
       ->check(CLI::IsMember({"auto", "always", "never"}));
+  app.add_option("--user", options.user_code,
+                 "the user subroutine of the deck's user elements (Abaqus's user=): a UEL in "
+                 "Fortran (.f, .for, .f90) or C (.c), a gapfem element plugin in C++ (.cpp), or a "
+                 "compiled .so; sources are compiled with gfortran, gcc or g++");
   app.add_flag("--restart", options.restart,
                "continue this job from the last restart record in its job.res (*RESTART, WRITE); a "
                "restart deck also needs the --oldjob it ran with");

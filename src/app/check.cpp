@@ -1,6 +1,7 @@
 // gapfem check: validate a deck and summarise the model without solving (check.hpp).
 #include "app/check.hpp"
 
+#include "app/user_code.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/inp/reader.hpp"
@@ -9,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <map>
+#include <unistd.h>
 
 namespace gapfem {
 
@@ -64,6 +66,11 @@ CheckResult check_job(const JobOptions& given) {
     ro.ignore_unknown = options.ignore_unknown;
     Model model = read_deck(options.deck, ro);
     require_steps(model, options.deck);
+    if (!options.user_code.empty()) // compiled and loaded as for a run (its errors are the run's)
+      model.user_code =
+          load_user_code(options.user_code,
+                         std::filesystem::temp_directory_path() /
+                             fmt::format("gapfem-check-{}.scratch", static_cast<long>(getpid())));
     Analysis analysis(model, {});
     const ModelCheck c = analysis.check();
     result.summary = summary_of(model, c, options.deck.string());

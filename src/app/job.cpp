@@ -1,6 +1,7 @@
 #include "app/job.hpp"
 
 #include "app/check.hpp"
+#include "app/user_code.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/inp/reader.hpp"
@@ -236,6 +237,8 @@ JobResult run_job(const JobOptions& given) {
                        "--oldjob");
     if (options.restart) resume = own_restart_point(*model, options.deck, dir, job);
     if (options.write_files) prepare_output(dir, job);
+    if (!options.user_code.empty())
+      model->user_code = load_user_code(options.user_code, dir / (job + ".scratch"));
   } catch (const InputError& e) {
     result.exit_code = kExitInputError;
     result.error = e.what();

@@ -30,6 +30,9 @@ struct JobOptions {
   /// --oldjob: the job a deck with *RESTART, READ continues (a job name, found in the working or
   /// the output directory, or the path of its .res file)
   std::string oldjob;
+  /// --user: the user's element code (a UEL in Fortran or C, a C++ element plugin, or a compiled
+  /// .so), compiled in the job's scratch folder and loaded before the analysis
+  std::filesystem::path user_code;
 };
 
 /// Exit statuses of gapfem (docs/conventions.md).

@@ -19,6 +19,7 @@
 #include "model/step.hpp"
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -43,6 +44,9 @@ struct StepContext {
   ModelSpace space = ModelSpace::ThreeD;
   double model_size = 1.0; ///< bounding-box diagonal, for tolerances
   int step_index = 0;      ///< 0-based index of the current step in Model::steps
+  int step_number = 1;     ///< the step's number (KSTEP of a UEL)
+  int increment = 1;       ///< the increment being solved, 1-based (KINC of a UEL)
+  bool direct = false;     ///< fixed incrementation (*STATIC, DIRECT and the like)
   /// *STEP, UNSYMM=NO: the assembler keeps only the symmetric part of every element tangent (and
   /// the constraint rows as their own columns), so the symmetric solver is used throughout
   bool symmetric_only = false;
@@ -96,6 +100,10 @@ struct ElementOutput {
 
   int status_changes = 0;   ///< contact status flips decided in this evaluation
   bool unsymmetric = false; ///< tangent is not symmetric (friction slip, coupled terms)
+  /// The ratio of a new to the current time increment the element asks for (a UEL's PNEWDT):
+  /// below 1 the increment is abandoned and tried again that much smaller; above 1 it bounds the
+  /// growth of the next one. Infinity: no request.
+  double dt_ratio = std::numeric_limits<double>::infinity();
 
   void add_constraint(int slot, double value, std::span<const double> coeff) {
     const auto n = residual.size();
@@ -171,7 +179,8 @@ class ElementKernel {
  public:
   virtual ~ElementKernel() = default;
   virtual ElementType type() const = 0;
-  int n_nodes() const { return element_info(type()).n_nodes; }
+  /// Nodes per element: the type's; the deck's own types (USER, SUBSTRUCTURE) override it.
+  virtual int n_nodes() const { return element_info(type()).n_nodes; }
   /// DOFs carried at local node `local_node` (in the order they appear in u and residual).
   virtual std::span<const DofType> node_dofs(int local_node) const = 0;
   int n_dofs() const {
@@ -231,6 +240,8 @@ struct KernelContext {
   ElementType type;
   PropertyRef property;
   std::span<const ElemId> elements; ///< the block's elements, for per-element precomputation
+  /// USER / SUBSTRUCTURE: which of the deck's types (Mesh::elem_variant); -1 otherwise
+  std::int32_t variant = -1;
 };
 
 /// Element type + property → kernel; InputError for unsupported combinations.
@@ -241,5 +252,7 @@ std::unique_ptr<ElementKernel> make_continuum_kernel(const KernelContext& ctx);
 std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx);
 std::unique_ptr<ElementKernel> make_gap_kernel(const KernelContext& ctx);
 std::unique_ptr<ElementKernel> make_heat_kernel(const KernelContext& ctx);
+std::unique_ptr<ElementKernel> make_user_kernel(const KernelContext& ctx);
+std::unique_ptr<ElementKernel> make_substructure_kernel(const KernelContext& ctx);
 
 } // namespace gapfem

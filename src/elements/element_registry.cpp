@@ -37,6 +37,10 @@ std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
     return make_gap_kernel(ctx);
   case ElementFamily::HeatTransfer:
     return make_heat_kernel(ctx);
+  case ElementFamily::User:
+    return make_user_kernel(ctx);
+  case ElementFamily::Substructure:
+    return make_substructure_kernel(ctx);
   }
   throw InternalError("unknown element family");
 }

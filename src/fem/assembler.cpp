@@ -123,6 +123,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           target->add_block(eqs, eqs, out.tangent);
         }
         res.unsymmetric |= out.unsymmetric;
+        res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
         if (out.status_changes) {
           res.status_changes += out.status_changes;
           res.changed.push_back(block->elements[i]);
@@ -178,6 +179,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;
+    total.dt_ratio = std::min(total.dt_ratio, p.dt_ratio);
     for (int f = 0; f < kNumFields; ++f) {
       total.flux_sum[f] += p.flux_sum[f];
       total.flux_count[f] += p.flux_count[f];

@@ -7,6 +7,7 @@
 #include "linalg/csr_matrix.hpp"
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct AssemblyResult {
   std::array<long, kNumFields> flux_count{};
   std::vector<ElemId> changed; ///< elements whose contact status changed in this evaluation
   double gap_seconds = 0.0;    ///< wall time spent on gap-element blocks (the "gap work")
+  /// the smallest ElementOutput::dt_ratio of the evaluation (infinity: no element asked)
+  double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
 /// A distributed load with its magnitude evaluated at the current time.

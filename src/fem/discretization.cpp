@@ -15,18 +15,20 @@ Discretization::Discretization(const Model& model) : _model(model) {
   const Mesh& mesh = model.mesh;
   const ElemId ne = mesh.n_elements();
   // Group elements by (type, property), keeping deck order within a block.
-  std::map<std::tuple<int, int, int>, int> block_of;
+  std::map<std::tuple<int, int, int, int>, int> block_of;
   _elem_block.assign(static_cast<std::size_t>(ne), -1);
   _elem_index.assign(static_cast<std::size_t>(ne), -1);
   for (ElemId e = 0; e < ne; ++e) {
     const PropertyRef prop =
         model.element_property.empty() ? PropertyRef{} : model.element_property[e];
-    const auto key = std::make_tuple(static_cast<int>(mesh.elem_types[e]),
-                                     static_cast<int>(prop.kind), static_cast<int>(prop.index));
+    const auto key =
+        std::make_tuple(static_cast<int>(mesh.elem_types[e]), static_cast<int>(mesh.variant(e)),
+                        static_cast<int>(prop.kind), static_cast<int>(prop.index));
     auto [it, inserted] = block_of.try_emplace(key, static_cast<int>(_blocks.size()));
     if (inserted) {
       _blocks.emplace_back();
       _blocks.back().type = mesh.elem_types[e];
+      _blocks.back().variant = mesh.variant(e);
       _blocks.back().property = prop;
     }
     auto& b = _blocks[it->second];
@@ -37,7 +39,7 @@ Discretization::Discretization(const Model& model) : _model(model) {
   // Kernels and DOF masks.
   std::vector<DofMask> masks(static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (auto& b : _blocks) {
-    b.kernel = make_element_kernel(KernelContext{model, b.type, b.property, b.elements});
+    b.kernel = make_element_kernel(KernelContext{model, b.type, b.property, b.elements, b.variant});
     const ElementKernel& k = *b.kernel;
     b.n_nodes = k.n_nodes();
     b.n_dofs = k.n_dofs();
@@ -102,11 +104,11 @@ Discretization::Discretization(const Model& model) : _model(model) {
         std::string nodes;
         for (NodeId n : model.mesh.element_nodes(b.elements[i]))
           nodes += (nodes.empty() ? "" : ", ") + model.node_label(n).str();
-        problems.push_back(
-            InputError(model.element_location(b.elements[i]),
-                       fmt::format("element {} ({})", in.label, element_info(b.type).name),
-                       fmt::format("{} (nodes {})", msg, nodes))
-                .what());
+        problems.push_back(InputError(model.element_location(b.elements[i]),
+                                      fmt::format("element {} ({})", in.label,
+                                                  model.element_type_name(b.elements[i])),
+                                      fmt::format("{} (nodes {})", msg, nodes))
+                               .what());
         if (problems.size() >= 50) break;
         continue;
       }

@@ -16,6 +16,7 @@ struct Model;
 
 struct ElementBlock {
   ElementType type{};
+  std::int32_t variant = -1; ///< USER / SUBSTRUCTURE: the deck's type (Mesh::elem_variant)
   PropertyRef property;
   std::unique_ptr<ElementKernel> kernel;
   std::vector<ElemId> elements;

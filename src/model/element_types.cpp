@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 95> kInfo = {{
+constexpr std::array<ElementTypeInfo, 97> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -154,6 +154,9 @@ constexpr std::array<ElementTypeInfo, 95> kInfo = {{
     {ElementType::S4T, "S4T", 4, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad4},
     {ElementType::S4RT, "S4RT", 4, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad4},
     {ElementType::S8RT, "S8RT", 8, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad8},
+    // the DOFs of these are the deck's (Model::element_fields)
+    {ElementType::USER, "U", 0, F::User, S::Any, P::None, false, false},
+    {ElementType::SUBSTRUCTURE, "Z", 0, F::Substructure, S::Any, P::None, false, false},
 }};
 } // namespace
 
@@ -177,7 +180,7 @@ std::optional<ElementType> element_type_from_name(std::string_view name) {
     if (!std::isspace(static_cast<unsigned char>(c)))
       upper.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
   for (const auto& info : kInfo)
-    if (info.name == upper) return info.type;
+    if (info.name == upper && info.n_nodes > 0) return info.type;
   return std::nullopt;
 }
 

@@ -117,6 +117,11 @@ enum class ElementType : std::uint8_t {
   S4T,
   S4RT,
   S8RT,
+  // elements the deck defines: user elements U1, U2, … (*USER ELEMENT) and substructures Z1, …
+  // (*SUBSTRUCTURE GENERATE); their nodes, DOFs and names come from the model
+  // (Mesh::elem_variant, Model::user_elements / Model::substructures)
+  USER,
+  SUBSTRUCTURE,
 };
 
 enum class ElementFamily : std::uint8_t {
@@ -126,7 +131,9 @@ enum class ElementFamily : std::uint8_t {
   Continuum,
   Gap,
   HeatTransfer,
-  Shell
+  Shell,
+  User,        ///< *USER ELEMENT (linear matrix or UEL)
+  Substructure ///< a reduced linear part (Zn)
 };
 
 /// Which model space an element type requires.
@@ -141,7 +148,7 @@ enum class PlaneKind : std::uint8_t { None, PlaneStress, PlaneStrain, Axisymmetr
 struct ElementTypeInfo {
   ElementType type;
   std::string_view name;
-  int n_nodes;
+  int n_nodes; ///< 0 for USER and SUBSTRUCTURE: their node count is the model's (per variant)
   ElementFamily family;
   SpaceRequirement space;
   PlaneKind plane;

@@ -59,9 +59,17 @@ struct Mesh {
       0}; ///< element e has nodes conn[conn_offset[e] .. conn_offset[e+1])
   std::vector<NodeId> conn;
   std::vector<SourceRef> elem_src; ///< where each element was defined (*ELEMENT data line)
+  /// Per element, which deck-defined type a USER or SUBSTRUCTURE element is (index into
+  /// Model::user_elements / Model::substructures; -1 for the library types). Empty while the
+  /// model has no such element.
+  std::vector<std::int32_t> elem_variant;
   std::unordered_map<Label, ElemId> elem_index;
 
   std::int32_t n_nodes() const { return static_cast<std::int32_t>(node_labels.size()); }
+  /// The deck-defined type of element e (see elem_variant), -1 for a library type.
+  std::int32_t variant(ElemId e) const {
+    return elem_variant.empty() ? -1 : elem_variant[static_cast<std::size_t>(e)];
+  }
   std::int32_t n_elements() const { return static_cast<std::int32_t>(elem_labels.size()); }
 
   /// Internal index of a node key, or -1.

@@ -103,3 +103,25 @@ double Model::model_size() const {
 }
 
 } // namespace gapfem
+
+namespace gapfem {
+
+std::string_view Model::element_type_name(ElemId e) const {
+  const ElementType t = mesh.elem_types[static_cast<std::size_t>(e)];
+  const std::int32_t v = mesh.variant(e);
+  if (t == ElementType::USER && v >= 0 && v < static_cast<std::int32_t>(user_elements.size()))
+    return user_elements[static_cast<std::size_t>(v)].name;
+  return element_info(t).name;
+}
+
+Model::ElementFields Model::element_fields(ElemId e) const {
+  const ElementType t = mesh.elem_types[static_cast<std::size_t>(e)];
+  const std::int32_t v = mesh.variant(e);
+  ElementFields f{element_info(t).displacement, element_info(t).temperature};
+  if (t == ElementType::USER && v >= 0 && v < static_cast<std::int32_t>(user_elements.size()))
+    for (const auto& node : user_elements[static_cast<std::size_t>(v)].node_dofs)
+      for (int d : node) (d <= 6 ? f.displacement : f.temperature) = true;
+  return f;
+}
+
+} // namespace gapfem

@@ -8,9 +8,11 @@
 #include "model/mesh.hpp"
 #include "model/section.hpp"
 #include "model/step.hpp"
+#include "model/user_element.hpp"
 
 #include <fmt/format.h>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +44,8 @@ struct PhysicalConstants {
   SourceLocation loc;
 };
 
+class UserCode;
+
 struct Model {
   std::string heading;
   std::string job_name;
@@ -65,6 +69,13 @@ struct Model {
   std::vector<SpringSection> spring_sections;
   std::vector<GapSection> gap_sections;
   std::vector<PropertyRef> element_property; ///< per element
+  /// *USER ELEMENT definitions (Mesh::elem_variant of a USER element indexes them) and the
+  /// *UEL PROPERTY records (PropertyRef::Kind::User indexes them)
+  std::vector<UserElementType> user_elements;
+  std::vector<UelProperty> uel_properties;
+  /// The compiled user subroutines (`gapfem --user`): set by the job before the analysis; null
+  /// when none were given.
+  std::shared_ptr<const UserCode> user_code;
 
   std::vector<Amplitude> amplitudes;
   /// Linear constraints (*EQUATION, *MPC, couplings, *TIE), one row each.
@@ -94,6 +105,14 @@ struct Model {
   /// Part instances of an assembly deck (upper-case names); key_instance(k) = index + 1.
   std::vector<std::string> instances;
 
+  /// The element type as the deck names it: "C3D8", or "U1" / "Z2" for the deck's own types.
+  std::string_view element_type_name(ElemId e) const;
+  /// Which fields an element carries: its type's, or for the deck's own types the DOFs the deck
+  /// gives them (displacements or rotations 1-6; temperatures 11 …).
+  struct ElementFields {
+    bool displacement = false, temperature = false;
+  };
+  ElementFields element_fields(ElemId e) const;
   EntityLabel node_label(NodeId n) const { return {mesh.node_labels[n], &instances}; }
   EntityLabel element_label(ElemId e) const { return {mesh.elem_labels[e], &instances}; }
   EntityLabel label_of_key(Label key) const { return {key, &instances}; }

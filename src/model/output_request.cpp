@@ -18,12 +18,13 @@ constexpr std::array<std::pair<std::string_view, NodeVar>, 9> kNodeVars = {{
 }};
 // SM (section moments) reads as SF: gapfem's SF table of beams and shells holds the section
 // forces and the moments (SM1…) side by side
-constexpr std::array<std::pair<std::string_view, ElemVar>, 5> kElemVars = {{
+constexpr std::array<std::pair<std::string_view, ElemVar>, 6> kElemVars = {{
     {"S", ElemVar::S},
     {"E", ElemVar::E},
     {"SF", ElemVar::SF},
     {"HFL", ElemVar::HFL},
     {"SM", ElemVar::SF},
+    {"NFORC", ElemVar::NFORC},
 }};
 } // namespace
 

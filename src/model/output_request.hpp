@@ -17,7 +17,11 @@ enum class ElemVar : std::uint8_t {
   E,   ///< strain (gaps: E11 clearance, E12/E13 accumulated slip)
   SF,  ///< section forces and moments (beams), axial force (trusses), spring force
   HFL, ///< heat flux (gaps: HFL1 across the gap)
+  /// element nodal forces (user elements, substructures): per element node, the force the element
+  /// exerts on it (its internal force vector), one component per DOF (NFORC1 … NFORC6, NFORC11 …)
+  NFORC,
 };
+inline constexpr std::size_t kNumElemVars = 5;
 
 std::optional<NodeVar> node_var_from_name(std::string_view name);
 std::optional<ElemVar> elem_var_from_name(std::string_view name);

@@ -192,7 +192,7 @@ struct GapSection {
 
 /// Which property record an element uses.
 struct PropertyRef {
-  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap, Shell };
+  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap, Shell, User, Substructure };
   Kind kind = Kind::None;
   std::int32_t index = -1;
   friend bool operator==(const PropertyRef&, const PropertyRef&) = default;

@@ -423,7 +423,9 @@ void DatWriter::write_element_tables(const Model& model, const Frame& frame,
   std::size_t begin = 0;
   while (begin < elements.size()) {
     std::size_t end = begin + 1;
-    while (end < elements.size() && types[elements[end]] == types[elements[begin]]) ++end;
+    while (end < elements.size() && types[elements[end]] == types[elements[begin]] &&
+           model.mesh.variant(elements[end]) == model.mesh.variant(elements[begin]))
+      ++end;
     const std::span<const ElemId> group(elements.data() + begin, end - begin);
     for (ElemVar var : request.vars) write_element_table(model, frame, request, group, var);
     begin = end;
@@ -497,7 +499,7 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
   const std::size_t nc = first->names.size();
   const bool at_points = request.position == ElPosition::IntegrationPoints;
   const ElementTypeInfo& info = element_info(model.mesh.elem_types[group[0]]);
-  const std::string_view type_name = info.name;
+  const std::string_view type_name = model.element_type_name(group[0]);
   const bool nodal =
       request.position == ElPosition::Averaged && var != ElemVar::SF && info.cell &&
       (info.family == ElementFamily::Continuum || info.family == ElementFamily::HeatTransfer);
@@ -611,7 +613,7 @@ void DatWriter::write_nodal_table(const Model& model, const Frame& frame,
   });
   auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
-  const std::string_view type_name = element_info(model.mesh.elem_types[group[0]]).name;
+  const std::string_view type_name = model.element_type_name(group[0]);
   if (!request.elset.empty())
     fmt::format_to(out,
                    "\n\n THE FOLLOWING TABLE IS PRINTED AVERAGED AT THE NODES FOR ELEMENT "

@@ -117,12 +117,11 @@ void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
 void JsonWriter::append_tail(fmt::memory_buffer& b, const RunSummary& summary) const {
   b.append(std::string_view("],\n\"element_types\":{"));
   bool first_type = true;
-  for (std::size_t t = 0; t < _components.size(); ++t) {
-    const auto& tc = _components[t];
+  for (const auto& [type, tc] : _components) {
     if (!tc.seen) continue;
     if (!first_type) b.push_back(',');
     first_type = false;
-    fmt::format_to(fmt::appender(b), "\"{}\":{{", element_info(static_cast<ElementType>(t)).name);
+    fmt::format_to(fmt::appender(b), "\"{}\":{{", type.second);
     bool first_var = true;
     for (std::size_t v = 0; v < tc.names.size(); ++v) {
       if (tc.names[v].empty()) continue;

@@ -88,7 +88,7 @@ void JsonWriter::begin(const Model& model) {
   b.append(std::string_view(",\"steps\":["));
   _first_step = true;
   _step_open = false;
-  _components.assign(all_element_types().size(), TypeComponents{});
+  _components.clear();
   prepare_model(model);
   checkpoint();
 }
@@ -124,7 +124,9 @@ void JsonWriter::save_state(ArchiveWriter& a) {
   a.pod(_last_increment);
   a.pod(_publish_seconds);
   a.pod(static_cast<std::uint64_t>(_components.size()));
-  for (const TypeComponents& c : _components) {
+  for (const auto& [k, c] : _components) {
+    a.pod(k.first);
+    a.str(k.second);
     a.pod(c.seen);
     for (const auto& names : c.names) a.strings(names);
   }
@@ -152,13 +154,13 @@ void JsonWriter::resume(const Model& model, int step_index, ArchiveReader& a,
   a.pod(_open_step_number);
   a.pod(_last_increment);
   a.pod(_publish_seconds);
-  _components.resize(a.get<std::uint64_t>());
-  for (TypeComponents& c : _components) {
+  _components.clear();
+  for (auto n = a.get<std::uint64_t>(); n > 0; --n) {
+    const auto t = a.get<int>();
+    TypeComponents& c = _components[{t, a.str()}];
     a.pod(c.seen);
     for (auto& names : c.names) a.strings(names);
   }
-  if (_components.size() != all_element_types().size())
-    throw RestartDataError("the restart record's JSON state is of another gapfem version");
   prepare_model(model);
   prepare_step(model, step_index);
 }
@@ -310,12 +312,11 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
   b.push_back('}');
 }
 
-void JsonWriter::note_components(ElementType type, const OutputBlock& block) {
-  auto& tc = _components[static_cast<std::size_t>(type)];
-  auto& names = tc.names[static_cast<std::size_t>(block.var)];
+JsonWriter::TypeComponents& JsonWriter::components(const Model& model, ElemId e) {
+  const auto type = static_cast<int>(model.mesh.elem_types[e]);
+  TypeComponents& tc = _components[{type, std::string(model.element_type_name(e))}];
   tc.seen = true;
-  if (!names.empty() || block.names.empty()) return;
-  for (auto nm : block.names) names.emplace_back(nm);
+  return tc;
 }
 
 void JsonWriter::write_element(const Model& model, const ElementResult& res, bool& first) {
@@ -324,16 +325,28 @@ void JsonWriter::write_element(const Model& model, const ElementResult& res, boo
   first = false;
   const ElementType type = model.mesh.elem_types[res.elem];
   fmt::format_to(fmt::appender(b), "\"{}\":{{\"type\":\"{}\"", model.element_label(res.elem),
-                 element_info(type).name);
-  _components[static_cast<std::size_t>(type)].seen = true;
+                 model.element_type_name(res.elem));
+  TypeComponents& tc = components(model, res.elem);
   const bool shell = element_info(type).family == ElementFamily::Shell;
   const bool beam = element_info(type).family == ElementFamily::Beam;
   for (const OutputBlock& block : res.data.blocks) {
-    output::average_block(block, _avg);
+    auto& names = tc.names[static_cast<std::size_t>(block.var)];
+    if (names.empty())
+      for (auto nm : block.names) names.emplace_back(nm);
     b.push_back(',');
     key(b, elem_var_name(block.var));
+    if (block.var == ElemVar::NFORC) { // per element node: one row each
+      const std::size_t nc = block.names.size();
+      b.push_back('[');
+      for (int p = 0; p < block.n_points; ++p) {
+        if (p) b.push_back(',');
+        append_json_array(b, std::span<const double>(block.values).subspan(p * nc, nc));
+      }
+      b.push_back(']');
+      continue;
+    }
+    output::average_block(block, _avg);
     append_json_array(b, _avg);
-    note_components(type, block);
     if (block.section_points < 2) continue;
     if (beam) { // every section point, averaged over the integration points: the fibres
       b.push_back(',');

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,6 @@ class JsonWriter : public ResultWriter {
   /// Copies the part and `suffix` into the staging file and renames it over the final name.
   void publish(std::string_view suffix);
   std::filesystem::path part_path() const;
-  void note_components(ElementType type, const OutputBlock& block);
 
   std::filesystem::path _path;
   std::string _job;
@@ -86,10 +86,12 @@ class JsonWriter : public ResultWriter {
 
   /// Component names seen per element type and variable (for "element_types").
   struct TypeComponents {
-    std::array<std::vector<std::string>, 4> names; ///< indexed by ElemVar
+    std::array<std::vector<std::string>, kNumElemVars> names; ///< indexed by ElemVar
     bool seen = false;
   };
-  std::vector<TypeComponents> _components; ///< indexed by ElementType
+  /// by (ElementType, type name): the library types in their order, then the deck's U1, Z1 …
+  std::map<std::pair<int, std::string>, TypeComponents> _components;
+  TypeComponents& components(const Model& model, ElemId e);
 };
 
 } // namespace gapfem

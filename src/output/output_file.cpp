@@ -480,6 +480,8 @@ std::vector<ElemId> request_elements_by_type(const Model& model, const std::stri
   const auto& labels = model.mesh.elem_labels;
   std::sort(out.begin(), out.end(), [&](ElemId a, ElemId b) {
     if (types[a] != types[b]) return types[a] < types[b];
+    if (model.mesh.variant(a) != model.mesh.variant(b))
+      return model.mesh.variant(a) < model.mesh.variant(b);
     return labels[a] < labels[b];
   });
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -88,7 +88,8 @@ int vtk_cell_type(ElementType type, int n_nodes) {
   case 2:
     return 3; // VTK_LINE (springs, gaps)
   default:
-    return 0;
+    // the deck's own types (user elements, substructures) have no shape: their nodes
+    return info.n_nodes == 0 && n_nodes > 0 ? 2 : 0; // VTK_POLY_VERTEX
   }
 }
 
@@ -176,7 +177,9 @@ void VtuWriter::build_topology(const Model& model) {
     const ElementType type = mesh.elem_types[e];
     const auto nodes = mesh.element_nodes(static_cast<ElemId>(e));
     // Extra nodes beyond the element's own (e.g. a beam orientation node) are not drawn.
-    const int n = std::min(static_cast<int>(nodes.size()), element_info(type).n_nodes);
+    const int own = element_info(type).n_nodes; // 0: the deck's own types, all their nodes
+    const int n =
+        own > 0 ? std::min(static_cast<int>(nodes.size()), own) : static_cast<int>(nodes.size());
     const int cell = vtk_cell_type(type, n);
     FE_CHECK(cell != 0, fmt::format("no VTK cell for element {} ({} with {} nodes)",
                                     mesh.elem_labels[e], element_info(type).name, n));

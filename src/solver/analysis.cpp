@@ -254,6 +254,8 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   base.model_size = model.model_size();
   base.constants = &model.constants;
   base.step_index = r.index;
+  base.step_number = step.number;
+  base.direct = step.inc.direct;
   base.symmetric_only = step.symmetric_only;
   r.prob = std::make_unique<StepProblem>(disc, assembler, loads, st, base, r.pattern);
   StepProblem& prob = *r.prob;
@@ -334,7 +336,7 @@ void Analysis::Impl::increment_loop(StepRun& r) {
     }
     const double t0 = ctrl.step_time();
     const double dt = ctrl.next();
-    prob.begin_increment(t0, dt);
+    prob.begin_increment(t0, dt, ctrl.increment() + 1);
     NewtonResult res;
     // A failure no smaller increment can cure (the linear solver out of memory, an output file
     // that cannot be written) ends the step like a convergence failure, so the result files are
@@ -366,14 +368,15 @@ void Analysis::Impl::increment_loop(StepRun& r) {
     info.dt = dt;
     info.converged = res.converged;
     info.residual_history = res.residual_history;
-    // Transient heat transfer: DELTMX bounds the temperature change of an increment.
-    double growth = 0.0;
+    // Transient heat transfer: DELTMX bounds the temperature change of an increment; an element's
+    // PNEWDT > 1 bounds the growth of the next.
+    double growth = std::isfinite(res.dt_ratio) && res.dt_ratio > 0.0 ? res.dt_ratio : 0.0;
     bool redo = false;
     if (res.converged && r.base.transient && step.inc.deltmx > 0.0) {
       const double dT =
           max_free_temperature_change(disc.dofs(), r.loads->equations(), st.u, st.u_start);
       const TemperatureAccuracy acc = deltmx_rule(dT, step.inc.deltmx, r.rules.deltmx_cutback);
-      growth = acc.ratio;
+      if (acc.ratio > 0.0) growth = growth > 0.0 ? std::min(growth, acc.ratio) : acc.ratio;
       redo = acc.redo && ctrl.retry_smaller(acc.ratio);
       if (redo)
         log::progress("  increment {} attempt {}: temperature change {:.4g} exceeds DELTMX {:.4g}; "
@@ -458,7 +461,7 @@ bool Analysis::Impl::reject_attempt(StepRun& r, const NewtonResult& res, const I
     prob.set_stabilization(unit_mass, 2.0 * prob.stabilization_factor());
   log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
                 r.last_problem);
-  if (!r.ctrl->reject()) {
+  if (!r.ctrl->reject(res.cause == FailureCause::Requested ? res.dt_ratio : 0.0)) {
     r.sum.converged = false;
     r.sum.failure = r.ctrl->failure() + ". " + r.attempts_log.summary();
     return false;

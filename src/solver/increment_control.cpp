@@ -81,7 +81,7 @@ bool IncrementController::retry_smaller(double factor) {
   return true;
 }
 
-bool IncrementController::reject() {
+bool IncrementController::reject(double ratio) {
   ++_attempt;
   _easy_streak = 0;
   if (_direct) {
@@ -95,7 +95,7 @@ bool IncrementController::reject() {
                            _attempt, _increment + 1, _dt);
     return false;
   }
-  const double smaller = _dt * _rules.cutback;
+  const double smaller = ratio > 0.0 && ratio < 1.0 ? next() * ratio : _dt * _rules.cutback;
   if (smaller < _min * (1.0 - 1e-12)) {
     _failure =
         fmt::format("the time increment required ({:.4g}) is less than the minimum ({:.4g}); "

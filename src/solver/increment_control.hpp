@@ -40,7 +40,9 @@ class IncrementController {
   /// The attempt converged: advance time, choose the next size.
   void accept(int equilibrium_iterations, double suggested_ratio = 0.0);
   /// The attempt failed: returns false (and sets failure()) when no further cut-back is allowed.
-  bool reject();
+  /// `ratio` in (0, 1): the next attempt is that fraction of this one (an element's request)
+  /// instead of the cut-back factor.
+  bool reject(double ratio = 0.0);
   /// The attempt converged but violated a time-integration accuracy limit (DELTMX): try it again
   /// with `factor` (< 1) times the attempted size. Returns false, changing nothing, when that is
   /// not possible (DIRECT, already at the minimum, or the attempts of the increment are used up);

@@ -31,6 +31,17 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
   // and none at convergence. An evaluation that changes status is transitional and may carry
   // forces no converged state has (a stick predicted after a slip reversal carries k_s e, far
   // beyond mu N); counted in the scale they would let a large residual pass as small.
+  // an element that asks for a smaller increment ends the attempt at once (Abaqus's PNEWDT < 1)
+  auto requested_cutback = [&] {
+    res.dt_ratio = std::min(res.dt_ratio, ev.dt_ratio);
+    if (!(ev.dt_ratio < 1.0)) return false;
+    res.reason = fmt::format("an element asked for a {:.3g} times smaller time increment (PNEWDT "
+                             "of its user subroutine)",
+                             ev.dt_ratio);
+    res.cause = FailureCause::Requested;
+    return true;
+  };
+  if (requested_cutback()) return res;
   std::array<double, kNumFields> flux{};
   if (ev.status_changes == 0) flux = ev.flux;
   if (p.rhs().empty() && p.constraints().n_rows() == 0) {
@@ -85,6 +96,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
       res.cause = FailureCause::Element;
       return res;
     }
+    if (requested_cutback()) return res;
     if (ev.status_changes == 0)
       for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
     if (ev.status_changes > 0) {
@@ -153,6 +165,7 @@ NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const Newto
         res.cause = FailureCause::Element;
         return res;
       }
+      if (requested_cutback()) return res;
       equilibrium_iterations = 0;
       increases = 0;
       previous_ratio = std::numeric_limits<double>::infinity();

@@ -55,7 +55,8 @@ enum class FailureCause : std::uint8_t {
   Augmentation, ///< augmented Lagrange did not reach its tolerance
   Diverging,    ///< the residual grows
   Iterations,   ///< too many equilibrium iterations
-  NonFinite     ///< the residual is not finite
+  NonFinite,    ///< the residual is not finite
+  Requested     ///< an element asked for a smaller increment (a UEL's PNEWDT < 1)
 };
 
 struct NewtonResult {
@@ -70,6 +71,9 @@ struct NewtonResult {
   std::vector<double> residual_history; ///< worst residual/flux ratio after each iteration
   bool singular = false;
   std::vector<LocalIndex> singular_equations;
+  /// The elements' time-increment request over the attempt's evaluations (ElementOutput::
+  /// dt_ratio): the cut-back ratio of a Requested failure, the growth bound of a converged one
+  double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
 NewtonResult solve_increment(NonlinearProblem& problem, KktSolver& solver, const NewtonControls& c,

@@ -7,6 +7,7 @@
 #include "linalg/csr_matrix.hpp"
 
 #include <array>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct Evaluation {
   int status_changes = 0;
   std::vector<ElemId> changed; ///< elements whose contact status changed
   bool symmetric = true;
+  /// the elements' time-increment request (AssemblyResult::dt_ratio); infinity: none
+  double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
 class NonlinearProblem {

@@ -18,7 +18,8 @@ void StepProblem::set_unsymmetric_loads(bool on) {
   _unsymmetric_loads = on;
 }
 
-void StepProblem::begin_increment(double t0, double dt) {
+void StepProblem::begin_increment(double t0, double dt, int increment) {
+  _ctx.increment = increment;
   _ctx.dt = dt;
   _ctx.step_time = t0 + dt;
   _ctx.total_time = _s.total_time + t0 + dt;
@@ -96,6 +97,7 @@ Evaluation StepProblem::evaluate() {
   ev.status_changes = ar.status_changes;
   ev.changed = std::move(ar.changed);
   ev.symmetric = !ar.unsymmetric && !follower;
+  ev.dt_ratio = ar.dt_ratio;
   const DofMap& dofs = _disc.dofs();
   const EquationMap& eqm = _loads.equations();
   for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {

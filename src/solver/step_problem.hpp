@@ -35,7 +35,7 @@ class StepProblem final : public NonlinearProblem {
 
   /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
   /// values, temperatures and interference at t0 + dt.
-  void begin_increment(double t0, double dt);
+  void begin_increment(double t0, double dt, int increment = 0);
   /// Accept the trial state (and add the increment's energies to ALLIE and ALLSD).
   void commit();
   /// Keep the unsymmetric stiffness of follower loads (*STEP, UNSYMM=YES).

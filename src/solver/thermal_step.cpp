@@ -14,7 +14,7 @@ void check_step_procedures(const Model& model) {
   for (const Step& s : model.steps) {
     if (s.procedure == Procedure::CoupledTempDisp) continue;
     for (ElemId e = 0; e < mesh.n_elements(); ++e) {
-      const ElementTypeInfo& info = element_info(mesh.elem_types[e]);
+      const Model::ElementFields info = model.element_fields(e);
       std::string why;
       if (s.procedure == Procedure::Static && info.temperature)
         why = "has temperature DOFs and cannot be used in a *STATIC step; use *COUPLED "
@@ -24,7 +24,8 @@ void check_step_procedures(const Model& model) {
               "TEMPERATURE-DISPLACEMENT, or a heat-transfer (DC…) element type";
       if (!why.empty())
         throw InputError(s.loc, fmt::format("step {}", s.number),
-                         fmt::format("element {} ({}) {}", model.element_label(e), info.name, why));
+                         fmt::format("element {} ({}) {}", model.element_label(e),
+                                     model.element_type_name(e), why));
     }
   }
 }

@@ -43,6 +43,13 @@ void handle_initial_conditions(BuildState& s, const Keyword& kw);
 void handle_physical_constants(BuildState& s, const Keyword& kw);
 ///@}
 
+/// @name *USER ELEMENT, *MATRIX, *UEL PROPERTY (handlers_user.cpp)
+///@{
+void handle_user_element(BuildState& s, const Keyword& kw);
+void handle_matrix(BuildState& s, const Keyword& kw);
+void handle_uel_property(BuildState& s, const Keyword& kw);
+///@}
+
 /// @name *SOLID SECTION, *BEAM SECTION, *SPRING (handlers_section.cpp)
 ///@{
 void handle_solid_section(BuildState& s, const Keyword& kw);

@@ -111,16 +111,34 @@ void handle_element(BuildState& s, const Keyword& kw) {
   check_outside_parts(s, kw, "elements");
   const std::string elset = set_param(s, kw, "ELSET", false);
   std::optional<ElementType> type;
+  std::int32_t variant = -1; // a user element type of the deck
+  int n_nodes = 0;
   try {
     const std::string tname = param_value(kw, "TYPE", true);
     type = element_type_from_name(tname);
+    const std::string upper = to_upper(trim(tname));
+    if (!type && upper.size() > 1 && upper[0] == 'U' && parse_integer(upper.substr(1))) {
+      const auto& defs = s.model.user_elements;
+      const auto it = std::find_if(defs.begin(), defs.end(),
+                                   [&](const UserElementType& t) { return t.name == upper; });
+      if (it == defs.end())
+        throw InputError(kw.loc, fmt::format("TYPE={}", upper),
+                         fmt::format("user element type {} is not defined; define it with *USER "
+                                     "ELEMENT, TYPE={} before its elements",
+                                     upper, upper));
+      type = ElementType::USER;
+      variant = static_cast<std::int32_t>(it - defs.begin());
+      n_nodes = it->n_nodes;
+    }
     if (!type) {
       std::string known;
       for (const auto& info : all_element_types())
-        known += (known.empty() ? "" : ", ") + std::string(info.name);
+        if (info.n_nodes > 0) known += (known.empty() ? "" : ", ") + std::string(info.name);
       throw InputError(
           kw.loc, fmt::format("TYPE={}", to_upper(tname)),
-          fmt::format("gapfem does not know this element type; supported types: {}", known));
+          fmt::format("gapfem does not know this element type; supported types: {}, and user "
+                      "elements Un (*USER ELEMENT)",
+                      known));
     }
   } catch (const InputError& e) {
     // remember the labels so that later references do not raise follow-up errors
@@ -131,6 +149,9 @@ void handle_element(BuildState& s, const Keyword& kw) {
     throw;
   }
   const ElementTypeInfo& info = element_info(*type);
+  if (variant < 0) n_nodes = info.n_nodes;
+  const std::string_view type_name =
+      variant < 0 ? info.name : std::string_view(s.model.user_elements[variant].name);
   Mesh& mesh = s.model.mesh;
   std::vector<ElemId> added;
   for (std::size_t i = 0; i < kw.data.size(); ++i) {
@@ -140,9 +161,9 @@ void handle_element(BuildState& s, const Keyword& kw) {
     // (copied only when it is continued: most element lines are complete)
     const DataLine* line = &kw.data[i];
     DataLine joined;
-    if (line->trailing_comma && static_cast<int>(line->fields.size()) < info.n_nodes + 1) {
+    if (line->trailing_comma && static_cast<int>(line->fields.size()) < n_nodes + 1) {
       joined = *line;
-      while (joined.trailing_comma && static_cast<int>(joined.fields.size()) < info.n_nodes + 1 &&
+      while (joined.trailing_comma && static_cast<int>(joined.fields.size()) < n_nodes + 1 &&
              i + 1 < kw.data.size()) {
         ++i;
         const DataLine& next = kw.data[i];
@@ -183,11 +204,11 @@ void handle_element(BuildState& s, const Keyword& kw) {
         s.bad_elements.insert(key);
         continue;
       }
-      if (static_cast<int>(node_keys.size()) != info.n_nodes)
+      if (static_cast<int>(node_keys.size()) != n_nodes)
         r.fail(ent,
                fmt::format("{} needs {} nodes but {} are given; list exactly {} node numbers after "
                            "the element number (continue on the next line after a trailing comma)",
-                           info.name, info.n_nodes, node_keys.size(), info.n_nodes));
+                           type_name, n_nodes, node_keys.size(), n_nodes));
       std::vector<NodeId> nodes;
       bool skip = false;
       for (Label nk : node_keys) {
@@ -213,11 +234,15 @@ void handle_element(BuildState& s, const Keyword& kw) {
               r.fail(ent, fmt::format("node {} is given twice (positions {} and {} of the {} "
                                       "nodes); each node of a {} element is a distinct node: "
                                       "check the connectivity",
-                                      s.model.label_of_key(node_keys[a]), a + 1, b + 1,
-                                      info.n_nodes, info.name));
+                                      s.model.label_of_key(node_keys[a]), a + 1, b + 1, n_nodes,
+                                      type_name));
       const ElemId id = mesh.n_elements();
       mesh.elem_labels.push_back(key);
       mesh.elem_types.push_back(*type);
+      if (variant >= 0 || !mesh.elem_variant.empty()) {
+        mesh.elem_variant.resize(static_cast<std::size_t>(id), -1);
+        mesh.elem_variant.push_back(variant);
+      }
       mesh.conn.insert(mesh.conn.end(), nodes.begin(), nodes.end());
       mesh.conn_offset.push_back(static_cast<std::int64_t>(mesh.conn.size()));
       mesh.elem_src.push_back(first_line);
@@ -231,7 +256,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
   if (std::all_of(kw.data.begin(), kw.data.end(), [](const DataLine& d) { return d.empty(); }))
     s.warn(kw.loc, fmt::format("TYPE={}: this *ELEMENT has no data lines and defines no elements; "
                                "add a line per element (number, then its nodes) or remove it",
-                               info.name));
+                               type_name));
   if (!elset.empty()) add_to_elset(s, elset, added);
 }
 

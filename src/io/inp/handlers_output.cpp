@@ -41,7 +41,7 @@ void add_unique(std::vector<T>& list, T v) {
 }
 
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
-constexpr const char* kElemVarList = "S, E, SF (with SM), HFL";
+constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC";
 
 /// A data line of positive integers only (a list of section points), else nullopt.
 std::optional<std::vector<int>> number_line(const DataLine& line) {
@@ -265,13 +265,19 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
   const auto* set = output_set<false>(s, kw, failed);
   if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) return;
   auto& req = s.step.field_outputs[s.current_field];
-  add_field_vars(read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
-                                    "a list of section points on *ELEMENT OUTPUT: the ParaView "
-                                    "frames hold each element's average over its points, a "
-                                    "shell's SNEG and SPOS sides (S_SNEG, S_SPOS) and a beam's "
-                                    "most stressed section point; print other section points "
-                                    "with *EL PRINT (a data line of section point numbers)"),
-                 set, req.elem_vars, req.elem_vars_everywhere, req.elem_sets);
+  std::vector<ElemVar> vars =
+      read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
+                         "a list of section points on *ELEMENT OUTPUT: the ParaView "
+                         "frames hold each element's average over its points, a "
+                         "shell's SNEG and SPOS sides (S_SNEG, S_SPOS) and a beam's "
+                         "most stressed section point; print other section points "
+                         "with *EL PRINT (a data line of section point numbers)");
+  if (const auto it = std::find(vars.begin(), vars.end(), ElemVar::NFORC); it != vars.end()) {
+    s.warn(kw.loc, "NFORC (element nodal forces) is not written to the ParaView frames; print it "
+                   "with *EL PRINT (job.dat and job.results.json)");
+    vars.erase(it);
+  }
+  add_field_vars(std::move(vars), set, req.elem_vars, req.elem_vars_everywhere, req.elem_sets);
 }
 
 void handle_monitor(BuildState& s, const Keyword& kw) {
@@ -345,10 +351,14 @@ void handle_el_file(BuildState& s, const Keyword& kw) {
   if (failed) return;
   req.elem_vars = read_vars<ElemVar>(s, kw, elem_var, true, "S, E, HFL");
   for (ElemVar v : req.elem_vars)
-    if (v == ElemVar::SF)
-      throw InputError(kw.loc, "variable SF",
-                       "section forces are not written to job.frd (it holds values at the nodes); "
-                       "print them with *EL PRINT or write them to ParaView with *ELEMENT OUTPUT");
+    if (v == ElemVar::SF || v == ElemVar::NFORC)
+      throw InputError(kw.loc, fmt::format("variable {}", elem_var_name(v)),
+                       v == ElemVar::SF
+                           ? "section forces are not written to job.frd (it holds values at the "
+                             "nodes); print them with *EL PRINT or write them to ParaView with "
+                             "*ELEMENT OUTPUT"
+                           : "element nodal forces are not written to job.frd; print them with "
+                             "*EL PRINT (job.dat and job.results.json)");
   if (req.elem_vars.empty())
     throw InputError(kw.loc, "",
                      "no output variables are listed; add a data line such as S, E (known: S, E, "

@@ -14,7 +14,7 @@ namespace {
 /// Keywords whose data lines may come from another file via INPUT=.
 bool takes_input_file(std::string_view key) {
   return key == "NODE" || key == "ELEMENT" || key == "NSET" || key == "ELSET" ||
-         key == "AMPLITUDE" || key == "EQUATION";
+         key == "AMPLITUDE" || key == "EQUATION" || key == "MATRIX" || key == "MATRIXINPUT";
 }
 
 constexpr int kMaxIncludeDepth = 16;

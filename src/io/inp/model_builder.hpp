@@ -35,6 +35,7 @@ enum class Parent : std::uint8_t {
   Coupling,
   BeamSection,
   ShellSection,
+  UserElement, ///< *USER ELEMENT: its *MATRIX follow
   /// after an unsupported block keyword (*SURFACE INTERACTION): its sub-options are skipped
   /// quietly (the block was reported), never attached to an earlier block
   Unsupported
@@ -95,6 +96,10 @@ struct BuildState {
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;
+  /// the *USER ELEMENT being read (its *MATRIX follow), and whether it is a part's definition
+  /// read again for a later instance (its *MATRIX were read with the first)
+  int current_user_element = -1;
+  bool user_element_replayed = false;
 
   /// Constraints whose rows need the complete model data (the model space, the nodes' final
   /// coordinates): built at the end of the model data, ties first (ADJUST moves slave nodes).

@@ -24,6 +24,10 @@ const char* keyword_of(Kind k) {
     return "*SPRING";
   case Kind::Gap:
     return "*GAP";
+  case Kind::User:
+    return "*UEL PROPERTY";
+  case Kind::Substructure:
+    return "*SUBSTRUCTURE PROPERTY";
   default:
     return "?";
   }
@@ -44,13 +48,16 @@ Kind kind_for(ElementFamily f) {
     return Kind::Spring;
   case ElementFamily::Gap:
     return Kind::Gap;
+  case ElementFamily::User:
+    return Kind::User;
+  case ElementFamily::Substructure:
+    return Kind::Substructure;
   }
   return Kind::None;
 }
 
 std::string elem_name(const BuildState& s, ElemId e) {
-  return fmt::format("element {} ({})", s.model.element_label(e),
-                     element_info(s.model.mesh.elem_types[e]).name);
+  return fmt::format("element {} ({})", s.model.element_label(e), s.model.element_type_name(e));
 }
 
 int resolve_material(BuildState& s, const std::string& name, const SourceLocation& loc) {
@@ -248,6 +255,67 @@ void check_gap(BuildState& s, const GapSection& gap) {
   }
 }
 
+/// *UEL PROPERTY: every element of the set is of one user element type, and the data lines hold
+/// its PROPERTIES reals and I PROPERTIES integers.
+void check_uel_property(BuildState& s, UelProperty& p) {
+  const auto* set = find_elset(s, p.elset);
+  if (!set || set->empty()) return;
+  const Mesh& mesh = s.model.mesh;
+  for (ElemId e : *set)
+    if (mesh.elem_types[e] != ElementType::USER) return; // reported by bind_property()
+  const std::int32_t v = mesh.variant(set->front());
+  for (ElemId e : *set)
+    if (mesh.variant(e) != v) {
+      s.error(p.loc, elem_name(s, e),
+              fmt::format("ELSET {} mixes user element types ({} and {}); give each type its own "
+                          "*UEL PROPERTY",
+                          p.elset, s.model.element_type_name(set->front()),
+                          s.model.element_type_name(e)));
+      return;
+    }
+  const UserElementType& t = s.model.user_elements[static_cast<std::size_t>(v)];
+  p.type = v;
+  const std::vector<double> values = std::move(p.properties);
+  p.properties.clear();
+  const auto want = static_cast<std::size_t>(t.n_properties + t.n_int_properties);
+  if (t.linear && !values.empty()) {
+    s.error(p.loc, fmt::format("ELSET={}", p.elset),
+            fmt::format("{} is a LINEAR user element, defined by its *MATRIX alone: its *UEL "
+                        "PROPERTY takes no data lines",
+                        t.name));
+    return;
+  }
+  if (values.size() != want) {
+    s.error(p.loc, fmt::format("ELSET={}", p.elset),
+            fmt::format("{} takes {} real and {} integer properties (PROPERTIES= and I PROPERTIES= "
+                        "of its *USER ELEMENT), {} values in all, 8 per line, reals first; {} are "
+                        "given",
+                        t.name, t.n_properties, t.n_int_properties, want, values.size()));
+    return;
+  }
+  p.properties.assign(values.begin(), values.begin() + t.n_properties);
+  for (std::size_t k = static_cast<std::size_t>(t.n_properties); k < values.size(); ++k) {
+    const double x = values[k];
+    if (x != std::floor(x) || std::abs(x) > 2147483647.0) {
+      s.error(p.loc, fmt::format("ELSET={}", p.elset),
+              fmt::format("value {} is integer property {} of {} (after its {} real properties), "
+                          "but {} is not a whole number",
+                          k + 1, k + 1 - t.n_properties, t.name, t.n_properties, x));
+      return;
+    }
+    p.int_properties.push_back(static_cast<int>(x));
+  }
+}
+
+/// User element types: a LINEAR type needs its stiffness.
+void check_user_types(BuildState& s) {
+  for (const UserElementType& t : s.model.user_elements)
+    if (t.linear && t.stiffness.empty())
+      s.error(t.loc, fmt::format("TYPE={}", t.name),
+              "a LINEAR user element needs its stiffness: add *MATRIX, TYPE=STIFFNESS after the "
+              "*USER ELEMENT data lines");
+}
+
 /// Material options needed by the elements that use each material.
 void check_materials(BuildState& s) {
   std::map<std::pair<int, int>, bool> reported; // (material, 0 elastic / 1 conductivity)
@@ -358,11 +426,24 @@ void finish_model_data(BuildState& s) {
     for (std::size_t i = 0; i < m.gap_sections.size(); ++i)
       bind_property(s, Kind::Gap, static_cast<int>(i), m.gap_sections[i].elset,
                     m.gap_sections[i].loc, owner);
+    for (std::size_t i = 0; i < m.uel_properties.size(); ++i) {
+      bind_property(s, Kind::User, static_cast<int>(i), m.uel_properties[i].elset,
+                    m.uel_properties[i].loc, owner);
+      check_uel_property(s, m.uel_properties[i]);
+    }
+    check_user_types(s);
 
     // elements without a property: one error per element type (naming the first element)
     std::map<ElementType, std::pair<ElemId, int>> missing;
+    // (user elements without properties: LINEAR ones and those with no PROPS and JPROPS)
+    auto needs_property = [&](ElemId e) {
+      if (m.mesh.elem_types[e] == ElementType::SUBSTRUCTURE) return false;
+      if (m.mesh.elem_types[e] != ElementType::USER) return true;
+      const UserElementType& t = m.user_elements[static_cast<std::size_t>(m.mesh.variant(e))];
+      return !t.linear && t.n_properties + t.n_int_properties > 0;
+    };
     for (ElemId e = 0; e < m.mesh.n_elements(); ++e)
-      if (m.element_property[e].kind == Kind::None && owner[e].empty()) {
+      if (m.element_property[e].kind == Kind::None && owner[e].empty() && needs_property(e)) {
         auto& [first, count] = missing.try_emplace(m.mesh.elem_types[e], e, 0).first->second;
         (void)first;
         ++count;
@@ -370,10 +451,12 @@ void finish_model_data(BuildState& s) {
     for (const auto& [type, fc] : missing) {
       const auto [e, count] = fc;
       const ElementTypeInfo& info = element_info(type);
+      const std::string_view name = m.element_type_name(e);
       s.error(m.element_location(e), elem_name(s, e),
-              fmt::format("this element has no section: add it to the ELSET of a {}{}",
+              fmt::format("this element has no {}: add it to the ELSET of a {}{}",
+                          type == ElementType::USER ? "properties" : "section",
                           keyword_of(kind_for(info.family)),
-                          count > 1 ? fmt::format(" ({} {} elements have none)", count, info.name)
+                          count > 1 ? fmt::format(" ({} {} elements have none)", count, name)
                                     : std::string()));
     }
 

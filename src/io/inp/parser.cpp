@@ -19,12 +19,13 @@ constexpr unsigned kFriction = bit(Parent::Gap) | bit(Parent::ChangeFriction);
 constexpr unsigned kCoupling = bit(Parent::Coupling);
 constexpr unsigned kBeam = bit(Parent::BeamSection);
 constexpr unsigned kSection = kBeam | bit(Parent::ShellSection);
+constexpr unsigned kUserElement = bit(Parent::UserElement);
 
 using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 105> kTable = {{
+constexpr std::array<KeywordSpec, 120> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -58,6 +59,9 @@ constexpr std::array<KeywordSpec, 105> kTable = {{
   {"*SHELL GENERAL SECTION", handle_shell_general_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|DENSITY|ZERO|USER|DEPENDENCIES|UNSYMM", 0, P::ShellSection},
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
+  {"*USER ELEMENT", handle_user_element, W::Model, "TYPE|NODES|COORDINATES|LINEAR|PROPERTIES|I PROPERTIES|VARIABLES|UNSYMM|FILE|OLD ELEMENT|STEP|INCREMENT|INTEGRATION|TENSOR", 0, P::UserElement},
+  {"*MATRIX", handle_matrix, W::Model, "TYPE|INPUT", kUserElement},
+  {"*UEL PROPERTY", handle_uel_property, W::Model, "ELSET|MATERIAL|ORIENTATION|ALPHA|BETA"},
   {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
   {"*INITIAL CONDITIONS", handle_initial_conditions, W::Model, "TYPE"},
   {"*PHYSICAL CONSTANTS", handle_physical_constants, W::Model, "*"},
@@ -163,6 +167,8 @@ std::string parent_names(unsigned parents) {
   if (parents == kGap) return "*GAP (it defines a property of the gap elements above it)";
   if (parents == kOutput) return "*OUTPUT inside a step";
   if (parents == kCoupling) return "*COUPLING (it defines the coupling above it)";
+  if (parents == kUserElement)
+    return "*USER ELEMENT, LINEAR (it gives the matrix of the user element type above it)";
   if (parents == kBeam)
     return "*BEAM SECTION or *BEAM GENERAL SECTION (it defines a property of the section above it)";
   if (parents == kSection)

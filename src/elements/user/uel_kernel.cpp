@@ -1,0 +1,221 @@
+#include "elements/user/uel_kernel.hpp"
+
+#include "elements/user/user_code.hpp"
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+
+namespace gapfem {
+namespace {
+
+/// What PNEWDT holds before a call (Abaqus: "a large value").
+constexpr double kNoRequest = 1.0e36;
+
+/// LFLAGS(1), the procedure type.
+int procedure_code(const StepContext& ctx) {
+  switch (ctx.procedure) {
+  case Procedure::Static:
+    return ctx.direct ? 2 : 1;
+  case Procedure::HeatTransfer:
+    return ctx.transient ? 32 : 31;
+  case Procedure::CoupledTempDisp:
+    return ctx.transient ? 72 : 71;
+  }
+  return 1;
+}
+
+/// The first entry of `v` that is not finite, or -1.
+int first_non_finite(std::span<const double> v) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i])) return static_cast<int>(i);
+  return -1;
+}
+
+} // namespace
+
+UelKernel::UelKernel(const UserElementType& type, const UelProperty* properties,
+                     std::shared_ptr<const UserCode> code, bool temperatures)
+    : _type(type), _dofs(type.node_dofs), _code(std::move(code)), _temperatures(temperatures) {
+  if (properties) {
+    _props = properties->properties;
+    _jprops = properties->int_properties;
+  }
+  _props.resize(std::max<std::size_t>(_props.size(), 1), 0.0); // Fortran arrays of size >= 1
+  _jprops.resize(std::max<std::size_t>(_jprops.size(), 1), 0);
+}
+
+double UelKernel::call(const ElementInput& in, std::span<double> residual,
+                       std::span<double> tangent) const {
+  const StepContext& ctx = *in.ctx;
+  const bool probe = ctx.increment == 0; // a step-start evaluation, not an increment
+  int ndofel = _dofs.n_dofs(), nnode = _dofs.n_nodes(), mcrd = _type.n_coords;
+  int nsvars = _type.n_variables;
+  const auto n = static_cast<std::size_t>(ndofel);
+  // every call of an attempt starts from the start of the increment
+  std::copy(in.state_start.begin(), in.state_start.end(), in.state.begin());
+  double* svars = in.state.data();
+  double* energy = in.state.data() + nsvars;
+  std::vector<double> coords(static_cast<std::size_t>(mcrd) * nnode), du(n), rhs(n, 0.0),
+      amatrx(n * n, 0.0), zeros(n, 0.0);
+  for (int a = 0; a < nnode; ++a)
+    for (int i = 0; i < mcrd; ++i) coords[a * mcrd + i] = in.X[a][i];
+  for (std::size_t i = 0; i < n; ++i) du[i] = in.u[i] - in.u_start[i];
+  double pnewdt = kNoRequest;
+  const auto label = static_cast<std::int64_t>(in.label.local());
+  std::array<char, 512> message{};
+  const std::shared_ptr<const UserCode>& code = _code;
+  if (code->plugin()) {
+    gapfem_element_call c{};
+    c.abi_version = GAPFEM_PLUGIN_ABI_VERSION;
+    c.type = _type.number;
+    c.element = label;
+    c.n_nodes = nnode;
+    c.n_coords = mcrd;
+    c.n_dofs = ndofel;
+    c.n_state = nsvars;
+    c.n_properties = _type.n_properties;
+    c.n_int_properties = _type.n_int_properties;
+    c.coords = coords.data();
+    c.u = in.u.data();
+    c.du = du.data();
+    c.properties = _props.data();
+    c.int_properties = _jprops.data();
+    c.state_start = in.state_start.data();
+    c.state = svars;
+    c.energy = energy;
+    c.step_time = ctx.step_time - ctx.dt;
+    c.total_time = ctx.total_time - ctx.dt;
+    c.dt = ctx.dt;
+    c.period = ctx.step_period;
+    c.step = ctx.step_number;
+    c.increment = ctx.increment;
+    c.procedure = procedure_code(ctx);
+    c.nlgeom = ctx.nlgeom ? 1 : 0;
+    c.residual = residual.data();
+    c.tangent = amatrx.data();
+    c.pnewdt = &pnewdt;
+    c.message = message.data();
+    c.message_size = static_cast<std::int32_t>(message.size());
+    int status = 0;
+    {
+      const std::lock_guard lock(code->mutex());
+      status = code->plugin()(&c);
+    }
+    if (status != 0) {
+      message.back() = '\0';
+      throw AnalysisError(fmt::format("element {} ({}): the element plugin ({}) failed: {}",
+                                      in.label, _type.name, code->source(),
+                                      message[0] ? message.data() : "no message"));
+    }
+    // the plugin's tangent is row-major already
+    if (!tangent.empty()) std::copy(amatrx.begin(), amatrx.end(), tangent.begin());
+  } else {
+    int nrhs = 1, mlvarx = ndofel, jtype = _type.number, kstep = ctx.step_number,
+        kinc = ctx.increment, jelem = static_cast<int>(label), ndload = 0, mdload = 1, npredf = 1,
+        nprops = _type.n_properties, njprop = _type.n_int_properties;
+    std::array<int, 1> jdltyp{};
+    std::array<double, 1> adlmag{}, ddlmag{};
+    std::array<double, 3> params{};
+    // outside an increment (the step's stiffness probes, dt = 0) only the stiffness is asked for
+    std::array<int, 7> lflags{procedure_code(ctx), ctx.nlgeom ? 1 : 0, probe ? 2 : 1, 0, 0, 0, 1};
+    // TIME: step and total time at the start of the increment
+    std::array<double, 2> time{ctx.step_time - ctx.dt, ctx.total_time - ctx.dt};
+    double dtime = ctx.dt, period = ctx.step_period;
+    // PREDEF(2, NPREDF, NNODE): the temperature at the end of the increment and its increment
+    std::vector<double> predef(2 * static_cast<std::size_t>(nnode), 0.0);
+    if (!in.temperature.empty())
+      for (int a = 0; a < nnode; ++a) {
+        predef[2 * a] = in.temperature[a];
+        predef[2 * a + 1] =
+            in.temperature[a] -
+            (in.temperature_start.empty() ? in.temperature[a] : in.temperature_start[a]);
+      }
+    std::vector<double> u(in.u.begin(), in.u.end());
+    {
+      const std::lock_guard lock(code->mutex());
+      code->uel()(rhs.data(), amatrx.data(), svars, energy, &ndofel, &nrhs, &nsvars,
+                  const_cast<double*>(_props.data()), &nprops, coords.data(), &mcrd, &nnode,
+                  u.data(), du.data(), zeros.data(), zeros.data(), &jtype, time.data(), &dtime,
+                  &kstep, &kinc, &jelem, params.data(), &ndload, jdltyp.data(), adlmag.data(),
+                  predef.data(), &npredf, lflags.data(), &mlvarx, ddlmag.data(), &mdload, &pnewdt,
+                  const_cast<int*>(_jprops.data()), &njprop, &period);
+    }
+    // RHS = external - internal: gapfem's residual is its negative; AMATRX(i, j) is column-major
+    for (std::size_t i = 0; i < n; ++i) residual[i] = -rhs[i];
+    if (!tangent.empty())
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) tangent[i * n + j] = amatrx[i + j * n];
+  }
+  auto bad = [&](const char* what, std::span<const double> v) {
+    const int k = first_non_finite(v);
+    if (k < 0) return;
+    if (probe) { // a UEL may divide by DTIME: a probe that fails contributes nothing
+      std::fill(residual.begin(), residual.end(), 0.0);
+      std::fill(tangent.begin(), tangent.end(), 0.0);
+      std::copy(in.state_start.begin(), in.state_start.end(), in.state.begin());
+      return;
+    }
+    throw AnalysisError(fmt::format(
+        "element {} ({}): the user {} ({}) returned {}({}) = {} {}; a user element must return "
+        "finite numbers: check it for an uninitialised variable or a division by zero",
+        in.label, _type.name, code->uel() ? "subroutine UEL" : "element plugin", code->source(),
+        what, k + 1, v[static_cast<std::size_t>(k)],
+        fmt::format("in step {}, increment {}", ctx.step_number, ctx.increment)));
+  };
+  bad(code->uel() ? "RHS" : "residual", residual);
+  if (!tangent.empty()) bad(code->uel() ? "AMATRX" : "tangent", tangent);
+  bad("SVARS", std::span<const double>(svars, static_cast<std::size_t>(nsvars)));
+  bad("ENERGY", std::span<const double>(energy, 8));
+  if (probe) return kNoRequest;
+  if (std::isnan(pnewdt) || pnewdt <= 0.0)
+    throw AnalysisError(fmt::format("element {} ({}): the user code ({}) set PNEWDT to {}; set it "
+                                    "below 1 to ask for a smaller increment, above 1 for a larger "
+                                    "one, or leave it",
+                                    in.label, _type.name, code->source(), pnewdt));
+  return pnewdt;
+}
+
+void UelKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
+  const double pnewdt =
+      call(in, out.residual, out.want_tangent ? out.tangent : std::span<double>{});
+  if (out.want_tangent && !_type.unsymmetric) {
+    // without UNSYMM Abaqus uses the symmetric part of AMATRX
+    const auto n = static_cast<std::size_t>(_dofs.n_dofs());
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const double m = 0.5 * (out.tangent[i * n + j] + out.tangent[j * n + i]);
+        out.tangent[i * n + j] = out.tangent[j * n + i] = m;
+      }
+  }
+  out.unsymmetric = _type.unsymmetric;
+  if (pnewdt < kNoRequest) out.dt_ratio = pnewdt;
+  // the internal force, for output at the converged state (NFORC) without another call
+  std::copy(out.residual.begin(), out.residual.end(),
+            in.state.begin() + _type.n_variables + kEnergies);
+}
+
+void UelKernel::recover(const ElementInput& in, ElementRecovery& out) const {
+  const auto f = in.state_start.subspan(static_cast<std::size_t>(_type.n_variables) + kEnergies,
+                                        static_cast<std::size_t>(_dofs.n_dofs()));
+  add_nodal_forces(_dofs, f, out);
+  out.strain_energy = in.state_start[static_cast<std::size_t>(_type.n_variables) + 1];
+}
+
+std::unique_ptr<ElementKernel> make_uel_kernel(const Model& model, const UserElementType& type,
+                                               const UelProperty* properties) {
+  if (!model.user_code || (!model.user_code->uel() && !model.user_code->plugin()))
+    throw InputError(type.loc, fmt::format("TYPE={}", type.name),
+                     fmt::format("{} is a user element computed by a user subroutine (it is not "
+                                 "LINEAR), but no user code was given; run gapfem --user uel.f "
+                                 "deck.inp (a UEL in Fortran or C, a gapfem element plugin in "
+                                 "C++, or a compiled .so)",
+                                 type.name));
+  bool temperatures = model.has_initial_temperature;
+  for (const Step& s : model.steps) temperatures |= !s.temperatures.empty();
+  return std::make_unique<UelKernel>(type, properties, model.user_code, temperatures);
+}
+
+} // namespace gapfem

@@ -1,0 +1,55 @@
+#pragma once
+/// @file uel_kernel.hpp
+/// Nonlinear user elements: the kernel calls the user's code, an Abaqus UEL subroutine or a gapfem
+/// element plugin, with Abaqus's meanings (docs/user-elements.md). The element's history holds the
+/// UEL's SVARS and ENERGY as committed/trial state, so every call of an increment attempt starts
+/// from the values at the start of the increment and a cut-back discards the attempt exactly.
+#include "elements/user/user_kernel_common.hpp"
+#include "model/user_element.hpp"
+
+#include <memory>
+
+namespace gapfem {
+
+class UserCode;
+struct Model;
+
+class UelKernel final : public ElementKernel {
+ public:
+  UelKernel(const UserElementType& type, const UelProperty* properties,
+            std::shared_ptr<const UserCode> code, bool temperatures);
+
+  ElementType type() const override { return ElementType::USER; }
+  int n_nodes() const override { return _dofs.n_nodes(); }
+  std::span<const DofType> node_dofs(int local_node) const override {
+    return _dofs.node(local_node);
+  }
+  static constexpr int kEnergies = 8; ///< Abaqus's ENERGY array
+  /// SVARS, the ENERGY values, then the internal force of the last call (for NFORC).
+  int n_state() const override { return _type.n_variables + kEnergies + _dofs.n_dofs(); }
+  bool uses_temperature_field() const override { return _temperatures; }
+  void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
+  /// NFORC (the internal force at the converged state) and, as ALLSE, ENERGY(2) (elastic strain
+  /// energy).
+  void recover(const ElementInput& in, ElementRecovery& out) const override;
+
+ private:
+  /// Calls the code at the trial state: residual (gapfem's sign) and, when wanted, the tangent
+  /// (row-major); writes the trial SVARS and ENERGY; returns the PNEWDT request.
+  double call(const ElementInput& in, std::span<double> residual, std::span<double> tangent) const;
+
+  UserElementType _type;
+  NodeDofTable _dofs;
+  std::vector<double> _props;
+  std::vector<int> _jprops;
+  std::shared_ptr<const UserCode> _code;
+  bool _temperatures;
+};
+
+/// The kernel of a user element type that is not LINEAR: InputError when no user code was given
+/// (gapfem --user) or the code has neither a UEL nor a plugin entry.
+std::unique_ptr<ElementKernel> make_uel_kernel(const Model& model, const UserElementType& type,
+                                               const UelProperty* properties);
+
+} // namespace gapfem
