@@ -256,6 +256,9 @@ JobResult run_job(const JobOptions& given) {
     wo.vtu = options.write_vtu;
     wo.report_gaps = options.report_gaps;
     wo.terminal = !options.quiet;
+    wo.substructure_recovery =
+        std::any_of(model->steps.begin(), model->steps.end(),
+                    [](const Step& s) { return !s.recover_substructures.empty(); });
     writers = make_result_writers(wo);
   } else if (!options.quiet) {
     WriterOptions wo;
@@ -271,7 +274,9 @@ JobResult run_job(const JobOptions& given) {
   try {
     AnalysisOptions aopt;
     aopt.factor_reuse = options.factor_reuse;
+    aopt.restart_header.job = job;
     if (options.write_files) {
+      aopt.output_dir = dir;
       aopt.restart_file = dir / (job + ".res");
       std::error_code ec;
       aopt.restart_header.deck = std::filesystem::absolute(options.deck, ec).string();

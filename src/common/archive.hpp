@@ -15,6 +15,15 @@
 
 namespace gapfem {
 
+/// The 64-bit FNV-1a hash (checksums of restart records and substructure files, fingerprints).
+inline std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
 /// Restart data that cannot be used (truncated, of another version or another model).
 class RestartDataError : public Error {
  public:

@@ -176,6 +176,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   // Linear constraints: constraint forces and their rows, after the elements' rows.
   _disc.constraints().assemble(fields.u, f_int, C, _disc.constraint_multiplier_offset(), dofs,
                                total.flux_sum, total.flux_count);
+  // stiffness matrices of the model as a whole (*MATRIX ASSEMBLE)
+  _disc.matrix_terms().assemble(fields.u, f_int, K, dofs, total.flux_sum, total.flux_count);
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;
@@ -279,6 +281,7 @@ std::vector<double> Assembler::diagonal_stiffness(const FieldView& fields, const
     }
     b.state_trial = state_backup; // evaluation must not leave trial history behind
   }
+  _disc.matrix_terms().add_diagonal(diag);
   return diag;
 }
 

@@ -58,8 +58,15 @@ Discretization::Discretization(const Model& model) : _model(model) {
   for (const LinearConstraint& c : model.constraints)
     for (const ConstraintTerm& t : c.terms)
       if (t.activates) masks[t.node] |= dof_bit(t.dof);
+  // so do the matrices of *MATRIX ASSEMBLE
+  for (const MatrixTerm& t : model.matrix_terms) {
+    DofType r{}, c{};
+    if (dof_from_abaqus(t.row_dof, r)) masks[t.row_node] |= dof_bit(r);
+    if (dof_from_abaqus(t.col_dof, c)) masks[t.col_node] |= dof_bit(c);
+  }
   _dofs = DofMap(std::move(masks));
   _constraints = ConstraintSet(model, _dofs);
+  _matrix_terms = MatrixTerms(model, _dofs);
   // Gather lists and storage.
   for (std::size_t bi = 0; bi < _blocks.size(); ++bi) {
     auto& b = _blocks[bi];
@@ -130,6 +137,7 @@ void Discretization::set_equations(const EquationMap& eqmap,
     for (std::size_t k = 0; k < b.slots.size(); ++k) b.eqs[k] = eqmap.slot_eq[b.slots[k]];
   }
   _constraints.set_equations(_model, eqmap, local_bcs);
+  _matrix_terms.set_equations(eqmap);
 }
 
 void Discretization::reset_trial() {

@@ -6,6 +6,7 @@
 #include "elements/element_kernel.hpp"
 #include "fem/constraint_set.hpp"
 #include "fem/dof_map.hpp"
+#include "fem/matrix_terms.hpp"
 
 #include <memory>
 #include <vector>
@@ -56,6 +57,8 @@ class Discretization {
   std::int64_t constraint_multiplier_offset() const { return _n_mult; }
   ConstraintSet& constraints() { return _constraints; }
   const ConstraintSet& constraints() const { return _constraints; }
+  /// *MATRIX ASSEMBLE stiffness terms (empty when the model has none).
+  const MatrixTerms& matrix_terms() const { return _matrix_terms; }
   bool has_gaps() const { return _has_gaps; }
   bool has_temperature_field() const { return _uses_temperature_field; }
 
@@ -74,6 +77,7 @@ class Discretization {
   const Model& _model;
   DofMap _dofs;
   ConstraintSet _constraints;
+  MatrixTerms _matrix_terms;
   std::vector<ElementBlock> _blocks;
   std::vector<int> _elem_block;
   std::vector<LocalIndex> _elem_index;

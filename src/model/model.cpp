@@ -14,6 +14,8 @@ std::string_view procedure_name(Procedure p) {
     return "HEAT TRANSFER";
   case Procedure::CoupledTempDisp:
     return "COUPLED TEMPERATURE-DISPLACEMENT";
+  case Procedure::SubstructureGenerate:
+    return "SUBSTRUCTURE GENERATE";
   }
   return "?";
 }
@@ -111,6 +113,9 @@ std::string_view Model::element_type_name(ElemId e) const {
   const std::int32_t v = mesh.variant(e);
   if (t == ElementType::USER && v >= 0 && v < static_cast<std::int32_t>(user_elements.size()))
     return user_elements[static_cast<std::size_t>(v)].name;
+  if (t == ElementType::SUBSTRUCTURE && v >= 0 &&
+      v < static_cast<std::int32_t>(substructures.size()))
+    return substructures[static_cast<std::size_t>(v)].name;
   return element_info(t).name;
 }
 
@@ -120,6 +125,10 @@ Model::ElementFields Model::element_fields(ElemId e) const {
   ElementFields f{element_info(t).displacement, element_info(t).temperature};
   if (t == ElementType::USER && v >= 0 && v < static_cast<std::int32_t>(user_elements.size()))
     for (const auto& node : user_elements[static_cast<std::size_t>(v)].node_dofs)
+      for (int d : node) (d <= 6 ? f.displacement : f.temperature) = true;
+  if (t == ElementType::SUBSTRUCTURE && v >= 0 &&
+      v < static_cast<std::int32_t>(substructures.size()))
+    for (const auto& node : substructures[static_cast<std::size_t>(v)].node_dofs)
       for (int d : node) (d <= 6 ? f.displacement : f.temperature) = true;
   return f;
 }

@@ -76,6 +76,13 @@ struct Model {
   /// The compiled user subroutines (`gapfem --user`): set by the job before the analysis; null
   /// when none were given.
   std::shared_ptr<const UserCode> user_code;
+  /// Substructure types used by Zn elements (Mesh::elem_variant indexes them) and their placing
+  /// (*SUBSTRUCTURE PROPERTY; PropertyRef::Kind::Substructure indexes them)
+  std::vector<SubstructureType> substructures;
+  std::vector<SubstructureProperty> substructure_properties;
+  /// *MATRIX INPUT matrices, and the stiffness terms *MATRIX ASSEMBLE adds to the model
+  std::vector<MatrixInput> matrix_inputs;
+  std::vector<MatrixTerm> matrix_terms;
 
   std::vector<Amplitude> amplitudes;
   /// Linear constraints (*EQUATION, *MPC, couplings, *TIE), one row each.

@@ -6,6 +6,7 @@
 #include "model/loads.hpp"
 #include "model/output_request.hpp"
 #include "model/section.hpp"
+#include "model/substructure.hpp"
 
 #include <array>
 #include <optional>
@@ -14,8 +15,17 @@
 
 namespace gapfem {
 
-enum class Procedure : std::uint8_t { Static, HeatTransfer, CoupledTempDisp };
+enum class Procedure : std::uint8_t {
+  Static,
+  HeatTransfer,
+  CoupledTempDisp,
+  SubstructureGenerate ///< *SUBSTRUCTURE GENERATE: a linear reduction, no increments
+};
 std::string_view procedure_name(Procedure p);
+/// Does the procedure solve for temperatures (heat transfer, coupled temperature-displacement)?
+constexpr bool is_thermal(Procedure p) {
+  return p == Procedure::HeatTransfer || p == Procedure::CoupledTempDisp;
+}
 
 /// Time incrementation of *STATIC, *HEAT TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT.
 struct Incrementation {
@@ -105,6 +115,10 @@ struct Step {
   std::optional<DofMonitor> monitor;
   /// *RESTART, WRITE in effect in this step (given in it, in an earlier step or the model data)
   RestartWrite restart;
+  /// *SUBSTRUCTURE GENERATE (procedure SubstructureGenerate)
+  std::optional<SubstructureGeneration> generation;
+  /// *SUBSTRUCTURE PATH: the substructure (Zn) elements whose internal results are recovered
+  std::vector<ElemId> recover_substructures;
 };
 
 } // namespace gapfem

@@ -168,7 +168,7 @@ bool DatWriter::fixed_increments(const Step& step) {
   // runs with fixed increments of the initial size (fixed_transient_increments in
   // solver/thermal_step.hpp; docs/theory/thermal.md).
   return step.inc.direct ||
-         (step.procedure != Procedure::Static && !step.inc.steady_state && step.inc.deltmx <= 0.0);
+         (is_thermal(step.procedure) && !step.inc.steady_state && step.inc.deltmx <= 0.0);
 }
 
 DatWriter::DatWriter(std::filesystem::path path) : _path(std::move(path)) {}
@@ -219,7 +219,7 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   fmt::format_to(out, "{:>10}TIME PERIOD IS {:>38.4E}\n", "", inc.period);
   fmt::format_to(out, "{:>10}MAXIMUM NUMBER OF INCREMENTS {:>24}\n", "", step.max_increments);
   if (step.nlgeom) fmt::format_to(out, "{:>10}LARGE DISPLACEMENT THEORY (NLGEOM)\n", "");
-  if (step.procedure != Procedure::Static)
+  if (is_thermal(step.procedure))
     fmt::format_to(out, "{:>10}{}\n", "", inc.steady_state ? "STEADY STATE" : "TRANSIENT");
   prepare_step(model, step_index);
   _out.flush();

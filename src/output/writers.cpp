@@ -7,6 +7,7 @@
 #include "output/msg_writer.hpp"
 #include "output/report_writer.hpp"
 #include "output/sta_writer.hpp"
+#include "output/substructure_recovery.hpp"
 #include "output/terminal_writer.hpp"
 #include "output/vtu_writer.hpp"
 
@@ -33,6 +34,8 @@ std::vector<std::unique_ptr<ResultWriter>> make_result_writers(const WriterOptio
     writers.push_back(std::make_unique<JsonWriter>(dir / (job + ".results.json"), job));
   if (options.vtu) writers.push_back(std::make_unique<VtuWriter>(dir, job));
   if (options.frd) writers.push_back(std::make_unique<FrdWriter>(dir / (job + ".frd"), job));
+  if (options.json && options.substructure_recovery) // *SUBSTRUCTURE PATH
+    writers.push_back(std::make_unique<SubstructureRecoveryWriter>(dir, job));
   if (options.report)
     writers.push_back(
         std::make_unique<ReportWriter>(dir / (job + ".report.html"), job, options.report_gaps));

@@ -22,7 +22,10 @@ struct WriterOptions {
   bool frd = true;                 ///< *NODE FILE / *EL FILE results for cgx (job.frd), when asked
   bool report = true;              ///< the run report with plots (job.report.html)
   std::vector<std::string> report_gaps; ///< --report-gaps: gap labels or sets to plot
-  bool msg = true;       ///< message file: the whole log, iterations included (job.msg)
+  bool msg = true; ///< message file: the whole log, iterations included (job.msg)
+  /// the recovered insides of used substructures (<job>_<Zn>_<element>.results.json), for a model
+  /// whose steps ask for them with *SUBSTRUCTURE PATH
+  bool substructure_recovery = false;
   bool terminal = false; ///< also add a TerminalWriter (progress through gapfem::log)
 };
 

@@ -163,6 +163,7 @@ std::shared_ptr<const SparsityPattern> Analysis::Impl::step_pattern(const StepLo
   const ConstraintSet& cs = disc.constraints();
   for (int r = 0; r < cs.n_rows(); ++r)
     if (cs.active(r)) lists.push_back(cs.row_eqs(r));
+  for (const auto& pair : disc.matrix_terms().equation_pairs()) lists.push_back(pair);
   return build_pattern(loads.equations().n_eq(), lists);
 }
 
@@ -228,6 +229,12 @@ StepSummary Analysis::Impl::run_step(int index) {
     r.ended_at_restart = resume->where.end_step && !r.ctrl->finished();
     resume.reset();
   }
+  if (r.step->procedure == Procedure::SubstructureGenerate) {
+    generate_substructure(r); // no increments: the reduction of the stiffness at the step start
+    r.sum.converged = true;
+    for (auto* w : writers) w->end_step(model, r.index, r.sum);
+    return r.sum;
+  }
   increment_loop(r);
   return finish_step(r);
 }
@@ -248,7 +255,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   StepContext& base = r.base;
   base.procedure = step.procedure;
   base.nlgeom = step.nlgeom;
-  base.transient = !step.inc.steady_state && step.procedure != Procedure::Static;
+  base.transient = !step.inc.steady_state && is_thermal(step.procedure);
   base.step_period = loads.period();
   base.space = model.space;
   base.model_size = model.model_size();
@@ -305,8 +312,8 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   r.rules = increment_rules(step.controls);
   if (fixed_transient_increments(step)) r.rules.growth = r.rules.shrink = 1.0;
   r.ctrl = std::make_unique<IncrementController>(step.inc, step.max_increments, r.rules);
-  r.heat = std::make_unique<HeatBalance>(
-      has_temperature_dofs && step.procedure != Procedure::Static, base.transient, r.u_step_start);
+  r.heat = std::make_unique<HeatBalance>(has_temperature_dofs && is_thermal(step.procedure),
+                                         base.transient, r.u_step_start);
   r.controls = newton_controls(step.controls, options.factor_reuse);
   step_damping_peak = 0.0;
   if (from) {

@@ -33,6 +33,8 @@ struct AnalysisOptions {
     ResumeFiles files;             ///< the result files to continue
   };
   std::optional<Resume> resume;
+  /// Where a *SUBSTRUCTURE GENERATE step writes its library file (empty: nowhere; tests)
+  std::filesystem::path output_dir;
 };
 
 /// What `gapfem check` reports: the model as the analysis sees it before solving.
@@ -52,6 +54,11 @@ struct ModelCheck {
   std::vector<GapInfo> gaps;
   LocalIndex dofs = 0; ///< active nodal DOFs
 };
+
+class Discretization;
+/// A fingerprint of a model as the analysis sees it (mesh, elements, DOFs, history sizes,
+/// constraint rows, steps): restart records and substructure files fit only the model it names.
+std::uint64_t model_fingerprint(const Model& model, const Discretization& disc);
 
 class Analysis {
  public:

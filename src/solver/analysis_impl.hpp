@@ -95,6 +95,9 @@ struct Analysis::Impl {
   std::shared_ptr<const SparsityPattern> step_pattern(const StepLoads& loads);
   /// Gap counts by type and status at the reference configuration (gapfem check).
   void initial_gap_status(ModelCheck& c);
+  /// *SUBSTRUCTURE GENERATE (substructure_generate.cpp): reduce the stiffness onto the retained
+  /// DOFs and write the substructure library file.
+  void generate_substructure(StepRun& r);
   /// Is the stiffness at the committed state (step time t0) non-singular? Used to tell a limit
   /// point or crushed element (singular only in the increment) from a missing support.
   bool supported_at_last_converged(StepProblem& prob, double t0);

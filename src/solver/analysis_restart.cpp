@@ -75,6 +75,10 @@ void load_history(ArchiveReader& in, LoadHistory& h) {
 } // namespace
 
 std::uint64_t Analysis::Impl::fingerprint() const {
+  return model_fingerprint(model, disc);
+}
+
+std::uint64_t model_fingerprint(const Model& model, const Discretization& disc) {
   ArchiveWriter a;
   const Mesh& mesh = model.mesh;
   a.vec(mesh.node_labels);

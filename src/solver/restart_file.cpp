@@ -9,14 +9,6 @@
 
 namespace gapfem {
 
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h) {
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
 namespace {
 
 constexpr std::string_view kMagic = "GAPFEM-RESTART\n";

@@ -14,9 +14,6 @@
 
 namespace gapfem {
 
-/// The 64-bit FNV-1a hash (records' checksums, the model fingerprint).
-std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull);
-
 struct RestartHeader {
   std::string deck; ///< absolute path of the deck that wrote the file
   std::string job;

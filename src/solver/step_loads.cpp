@@ -86,7 +86,7 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     // a temperature on a node of stress/displacement elements only: CalculiX gives every element
     // temperatures in thermal steps, Abaqus only the heat-transfer and coupled types
     const bool thermal =
-        _step.procedure != Procedure::Static && example.find(" DOF 11 ") != std::string::npos;
+        is_thermal(_step.procedure) && example.find(" DOF 11 ") != std::string::npos;
     const std::string msg = fmt::format(
         "step {}: {} boundary condition(s) refer to DOFs that no element at the node has, e.g. {}; "
         "they have no effect{}",

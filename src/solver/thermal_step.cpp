@@ -16,7 +16,7 @@ void check_step_procedures(const Model& model) {
     for (ElemId e = 0; e < mesh.n_elements(); ++e) {
       const Model::ElementFields info = model.element_fields(e);
       std::string why;
-      if (s.procedure == Procedure::Static && info.temperature)
+      if (!is_thermal(s.procedure) && info.temperature)
         why = "has temperature DOFs and cannot be used in a *STATIC step; use *COUPLED "
               "TEMPERATURE-DISPLACEMENT, or the stress/displacement element type";
       else if (s.procedure == Procedure::HeatTransfer && info.displacement)
@@ -41,7 +41,7 @@ void set_initial_temperatures(const Model& model, const DofMap& dofs, std::span<
 }
 
 bool fixed_transient_increments(const Step& step) {
-  return step.procedure != Procedure::Static && !step.inc.steady_state && step.inc.deltmx <= 0.0;
+  return is_thermal(step.procedure) && !step.inc.steady_state && step.inc.deltmx <= 0.0;
 }
 
 double max_free_temperature_change(const DofMap& dofs, const EquationMap& eqs,

@@ -101,13 +101,15 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
   if (_base.shape != GapShape::Uni)
     for (const FrictionLaw& f : _friction) _penalty_friction |= !f.lagrange();
   // Characteristic length per element: mean diameter of the non-gap elements at its nodes, else
-  // the distance between its nodes, else 1e-3 of the model size.
+  // the distance between its nodes, else 1e-3 of the model size. A substructure spans a whole
+  // part, so its diameter says nothing of the mesh at the node: it does not count.
   _lc.assign(ctx.elements.size(), 0.0);
   std::unordered_map<NodeId, std::vector<ElemId>> attached;
   for (ElemId e : ctx.elements)
     for (NodeId n : model.mesh.element_nodes(e)) attached[n];
   for (ElemId e = 0; e < model.mesh.n_elements(); ++e) {
-    if (element_info(model.mesh.elem_types[e]).family == ElementFamily::Gap) continue;
+    const ElementFamily family = element_info(model.mesh.elem_types[e]).family;
+    if (family == ElementFamily::Gap || family == ElementFamily::Substructure) continue;
     for (NodeId n : model.mesh.element_nodes(e)) {
       auto it = attached.find(n);
       if (it != attached.end()) it->second.push_back(e);

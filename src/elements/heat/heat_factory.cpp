@@ -15,9 +15,8 @@ HeatMaterial heat_material_for(const KernelContext& ctx, const Material& materia
                                  element_info(ctx.type).name, material.name));
   if (hm.has_capacity()) return hm;
   const auto transient =
-      std::find_if(ctx.model.steps.begin(), ctx.model.steps.end(), [](const Step& s) {
-        return s.procedure != Procedure::Static && !s.inc.steady_state;
-      });
+      std::find_if(ctx.model.steps.begin(), ctx.model.steps.end(),
+                   [](const Step& s) { return is_thermal(s.procedure) && !s.inc.steady_state; });
   if (transient != ctx.model.steps.end())
     throw InputError(material.loc, fmt::format("material {}", material.name),
                      fmt::format("step {} is a transient {} step, which needs the heat capacity of "

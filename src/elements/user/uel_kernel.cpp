@@ -23,6 +23,8 @@ int procedure_code(const StepContext& ctx) {
     return ctx.transient ? 32 : 31;
   case Procedure::CoupledTempDisp:
     return ctx.transient ? 72 : 71;
+  case Procedure::SubstructureGenerate: // the stiffness of a linear step
+    return 1;
   }
   return 1;
 }

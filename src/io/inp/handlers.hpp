@@ -43,6 +43,19 @@ void handle_initial_conditions(BuildState& s, const Keyword& kw);
 void handle_physical_constants(BuildState& s, const Keyword& kw);
 ///@}
 
+/// @name *MATRIX INPUT, *MATRIX ASSEMBLE, substructures (handlers_substructure.cpp)
+///@{
+void handle_matrix_input(BuildState& s, const Keyword& kw);
+void handle_matrix_assemble(BuildState& s, const Keyword& kw);
+void handle_substructure_generate(BuildState& s, const Keyword& kw);
+void handle_retained_nodal_dofs(BuildState& s, const Keyword& kw);
+void handle_substructure_property(BuildState& s, const Keyword& kw);
+void handle_substructure_path(BuildState& s, const Keyword& kw);
+/// The substructure type TYPE=Zn of an *ELEMENT keyword: its library (FILE=, or the one library
+/// in the deck's folder that holds it) read into Model::substructures; its index there.
+std::int32_t load_substructure_type(BuildState& s, const Keyword& kw, const std::string& type);
+///@}
+
 /// @name *USER ELEMENT, *MATRIX, *UEL PROPERTY (handlers_user.cpp)
 ///@{
 void handle_user_element(BuildState& s, const Keyword& kw);
@@ -82,6 +95,8 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw);
 ///@{
 void handle_step(BuildState& s, const Keyword& kw);
 void handle_end_step(BuildState& s, const Keyword& kw);
+/// The step's procedure (InputError when it has one already).
+void set_procedure(BuildState& s, const Keyword& kw, Procedure p);
 void handle_static(BuildState& s, const Keyword& kw);
 void handle_heat_transfer(BuildState& s, const Keyword& kw);
 void handle_coupled(BuildState& s, const Keyword& kw);

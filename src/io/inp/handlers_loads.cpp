@@ -657,10 +657,10 @@ void check_predefined_temperatures(BuildState& s) {
   // predefined temperature. A *STATIC step has no node with DOF 11 (thermal_step.hpp), so its
   // *TEMPERATURE is not checked.
   const Step& st = s.step;
-  if (st.procedure == Procedure::Static || st.temperatures.empty()) return;
+  if (!is_thermal(st.procedure) || st.temperatures.empty()) return;
   // Entries carried over from an earlier heat transfer or coupled step were reported there.
   const Step* prev = s.model.steps.empty() ? nullptr : &s.model.steps.back();
-  const bool prev_checked = prev && prev->procedure != Procedure::Static;
+  const bool prev_checked = prev && is_thermal(prev->procedure);
   const Mesh& mesh = s.model.mesh;
   std::vector<ElemId> carrier(static_cast<std::size_t>(mesh.n_nodes()), -1);
   for (ElemId e = 0; e < mesh.n_elements(); ++e)

@@ -117,6 +117,13 @@ void handle_element(BuildState& s, const Keyword& kw) {
     const std::string tname = param_value(kw, "TYPE", true);
     type = element_type_from_name(tname);
     const std::string upper = to_upper(trim(tname));
+    if (!type && upper.size() > 1 && upper[0] == 'Z' && parse_integer(upper.substr(1))) {
+      variant = load_substructure_type(s, kw, upper);
+      type = ElementType::SUBSTRUCTURE;
+      n_nodes = static_cast<int>(s.model.substructures[variant].node_labels.size());
+    }
+    if (kw.has("FILE") && type != ElementType::SUBSTRUCTURE)
+      throw InputError(kw.loc, "FILE", "FILE= names the library of a substructure (TYPE=Zn)");
     if (!type && upper.size() > 1 && upper[0] == 'U' && parse_integer(upper.substr(1))) {
       const auto& defs = s.model.user_elements;
       const auto it = std::find_if(defs.begin(), defs.end(),
@@ -136,8 +143,8 @@ void handle_element(BuildState& s, const Keyword& kw) {
         if (info.n_nodes > 0) known += (known.empty() ? "" : ", ") + std::string(info.name);
       throw InputError(
           kw.loc, fmt::format("TYPE={}", to_upper(tname)),
-          fmt::format("gapfem does not know this element type; supported types: {}, and user "
-                      "elements Un (*USER ELEMENT)",
+          fmt::format("gapfem does not know this element type; supported types: {}, user "
+                      "elements Un (*USER ELEMENT) and substructures Zn",
                       known));
     }
   } catch (const InputError& e) {
@@ -150,8 +157,10 @@ void handle_element(BuildState& s, const Keyword& kw) {
   }
   const ElementTypeInfo& info = element_info(*type);
   if (variant < 0) n_nodes = info.n_nodes;
-  const std::string_view type_name =
-      variant < 0 ? info.name : std::string_view(s.model.user_elements[variant].name);
+  const std::string_view type_name = variant < 0 ? info.name
+                                     : *type == ElementType::SUBSTRUCTURE
+                                         ? std::string_view(s.model.substructures[variant].name)
+                                         : std::string_view(s.model.user_elements[variant].name);
   Mesh& mesh = s.model.mesh;
   std::vector<ElemId> added;
   for (std::size_t i = 0; i < kw.data.size(); ++i) {
@@ -266,6 +275,7 @@ template <bool Nodes>
 static void handle_set(BuildState& s, const Keyword& kw) {
   const std::string name = set_param(s, kw, Nodes ? "NSET" : "ELSET", true);
   const bool generate = kw.has("GENERATE");
+  if (kw.has("UNSORTED")) s.unsorted_sets.insert(name);
   // INSTANCE= (assembly level): the members are numbers and sets of that instance
   const BuildState::Scope outer = s.scope;
   if (kw.has("INSTANCE")) {

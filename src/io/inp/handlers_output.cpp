@@ -385,7 +385,7 @@ void handle_output_suboption(BuildState& s, const Keyword& kw) {
 void resolve_preset_outputs(BuildState& s) {
   Step& st = s.step;
   const bool mech = st.procedure != Procedure::HeatTransfer;
-  const bool thermal = st.procedure != Procedure::Static;
+  const bool thermal = is_thermal(st.procedure);
   for (auto [index, all] : s.scratch.preset_fields) {
     FieldOutputRequest& req = st.field_outputs[index];
     // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for thermal procedures); ALL:

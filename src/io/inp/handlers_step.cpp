@@ -16,16 +16,6 @@ std::vector<T> carried(const std::vector<T>& prev) {
   return out;
 }
 
-void set_procedure(BuildState& s, const Keyword& kw, Procedure p) {
-  if (s.scratch.procedure_given)
-    throw InputError(kw.loc, fmt::format("step {}", s.step.number),
-                     fmt::format("a step has exactly one procedure and this step already has *{}; "
-                                 "start a new *STEP for this procedure",
-                                 procedure_name(s.step.procedure)));
-  s.scratch.procedure_given = true;
-  s.step.procedure = p;
-}
-
 /// initial, period, min, max (0 or blank = default; a blank period is 1).
 void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_fields) {
   Incrementation& inc = s.step.inc;
@@ -80,6 +70,16 @@ void read_thermal_procedure(BuildState& s, const Keyword& kw) {
 }
 
 } // namespace
+
+void set_procedure(BuildState& s, const Keyword& kw, Procedure p) {
+  if (s.scratch.procedure_given)
+    throw InputError(kw.loc, fmt::format("step {}", s.step.number),
+                     fmt::format("a step has exactly one procedure and this step already has *{}; "
+                                 "start a new *STEP for this procedure",
+                                 procedure_name(s.step.procedure)));
+  s.scratch.procedure_given = true;
+  s.step.procedure = p;
+}
 
 void handle_step(BuildState& s, const Keyword& kw) {
   if (s.in_step) {

@@ -63,6 +63,8 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
+  /// node and element sets defined with UNSORTED (gapfem keeps every set sorted)
+  std::unordered_set<std::string> unsorted_sets;
   /// names that a keyword in error would have defined (note_failed_definition): amplitudes,
   /// materials, parts and instances; uses of them raise no "is not defined"
   std::unordered_set<std::string> bad_amplitudes, bad_materials, bad_parts, bad_instances;

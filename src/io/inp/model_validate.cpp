@@ -307,6 +307,54 @@ void check_uel_property(BuildState& s, UelProperty& p) {
   }
 }
 
+/// Zn elements: their nodes lie where the substructure's retained nodes go (x = R X + t, within
+/// POSITION TOL), and a rotated or reflected substructure retains whole vectors at each node.
+void check_substructure_placement(BuildState& s) {
+  const Model& m = s.model;
+  for (ElemId e = 0; e < m.mesh.n_elements(); ++e) {
+    if (m.mesh.elem_types[e] != ElementType::SUBSTRUCTURE) continue;
+    const PropertyRef ref = m.element_property[e];
+    if (ref.kind != Kind::Substructure) continue; // reported
+    const SubstructureProperty& p = m.substructure_properties[ref.index];
+    const SubstructureType& t = m.substructures[m.mesh.variant(e)];
+    const double tol = p.position_tolerance >= 0 ? p.position_tolerance : 1e-4 * t.size;
+    const auto nodes = m.mesh.element_nodes(e);
+    const bool identity = p.rotation == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    for (std::size_t a = 0; a < nodes.size(); ++a) {
+      Vec3 x = p.translation;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) x[i] += p.rotation[i * 3 + j] * t.coords[a][j];
+      const Vec3& y = m.mesh.coords[nodes[a]];
+      const double d = std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
+      if (tol > 0 && d > tol) {
+        s.error(m.element_location(e), elem_name(s, e),
+                fmt::format("node {} (position {} of the element) lies {:.4g} from where {} puts "
+                            "its retained node {} ({:.6g}, {:.6g}, {:.6g}); the usage nodes must "
+                            "match the generation's retained nodes in their order (SORTED: "
+                            "ascending labels), placed by *SUBSTRUCTURE PROPERTY (at {}); or "
+                            "raise POSITION TOL",
+                            m.node_label(nodes[a]), a + 1, d, t.name, t.node_labels[a], x[0], x[1],
+                            x[2], p.loc.str()));
+        break;
+      }
+      if (identity) continue;
+      for (int group = 0; group < 2; ++group) {
+        int count = 0;
+        for (int dof : t.node_dofs[a]) count += dof > 3 * group && dof <= 3 * group + 3;
+        if (count != 0 && count != 3) {
+          s.error(p.loc, elem_name(s, e),
+                  fmt::format("{} retains only some of the {} at its node {} (position {}), so "
+                              "it cannot be rotated or reflected; retain DOFs {}-{} there, or "
+                              "place it by translation only",
+                              t.name, group ? "rotations" : "translations", t.node_labels[a], a + 1,
+                              3 * group + 1, 3 * group + 3));
+          return;
+        }
+      }
+    }
+  }
+}
+
 /// User element types: a LINEAR type needs its stiffness.
 void check_user_types(BuildState& s) {
   for (const UserElementType& t : s.model.user_elements)
@@ -432,12 +480,15 @@ void finish_model_data(BuildState& s) {
       check_uel_property(s, m.uel_properties[i]);
     }
     check_user_types(s);
+    for (std::size_t i = 0; i < m.substructure_properties.size(); ++i)
+      bind_property(s, Kind::Substructure, static_cast<int>(i), m.substructure_properties[i].elset,
+                    m.substructure_properties[i].loc, owner);
+    check_substructure_placement(s);
 
     // elements without a property: one error per element type (naming the first element)
     std::map<ElementType, std::pair<ElemId, int>> missing;
     // (user elements without properties: LINEAR ones and those with no PROPS and JPROPS)
     auto needs_property = [&](ElemId e) {
-      if (m.mesh.elem_types[e] == ElementType::SUBSTRUCTURE) return false;
       if (m.mesh.elem_types[e] != ElementType::USER) return true;
       const UserElementType& t = m.user_elements[static_cast<std::size_t>(m.mesh.variant(e))];
       return !t.linear && t.n_properties + t.n_int_properties > 0;
@@ -454,7 +505,9 @@ void finish_model_data(BuildState& s) {
       const std::string_view name = m.element_type_name(e);
       s.error(m.element_location(e), elem_name(s, e),
               fmt::format("this element has no {}: add it to the ELSET of a {}{}",
-                          type == ElementType::USER ? "properties" : "section",
+                          type == ElementType::USER           ? "properties"
+                          : type == ElementType::SUBSTRUCTURE ? "placement"
+                                                              : "section",
                           keyword_of(kind_for(info.family)),
                           count > 1 ? fmt::format(" ({} {} elements have none)", count, name)
                                     : std::string()));

@@ -1,0 +1,130 @@
+#include "model/substructure_file.hpp"
+
+#include "common/archive.hpp"
+
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+namespace gapfem {
+namespace {
+
+constexpr std::string_view kMagic = "GAPFEM-SUBSTRUCTURE\n";
+constexpr std::uint32_t kVersion = 1;
+
+void lists(ArchiveWriter& a, const std::vector<std::vector<int>>& v) {
+  a.pod(static_cast<std::uint64_t>(v.size()));
+  for (const auto& l : v) a.vec(l);
+}
+
+void lists(ArchiveReader& a, std::vector<std::vector<int>>& v) {
+  v.resize(static_cast<std::size_t>(a.get<std::uint64_t>()));
+  for (auto& l : v) a.vec(l);
+}
+
+} // namespace
+
+void write_substructure_file(const std::filesystem::path& file, const SubstructureLibrary& lib) {
+  ArchiveWriter a;
+  const SubstructureType& t = lib.type;
+  a.str(t.name);
+  a.str(lib.deck);
+  a.str(lib.job);
+  a.pod(lib.fingerprint);
+  a.vec(t.node_labels);
+  a.vec(t.coords);
+  lists(a, t.node_dofs);
+  a.pod(t.size);
+  a.vec(t.stiffness);
+  a.pod(static_cast<std::uint8_t>(lib.has_recovery ? 1 : 0));
+  if (lib.has_recovery) {
+    const SubstructureRecovery& r = lib.recovery;
+    a.vec(r.internal_node);
+    a.vec(r.internal_dof);
+    a.vec(r.ii_ptr);
+    a.vec(r.ii_col);
+    a.vec(r.ii_val);
+    a.vec(r.ir_ptr);
+    a.vec(r.ir_col);
+    a.vec(r.ir_val);
+  }
+  const std::string body = a.take();
+  ArchiveWriter head;
+  head.bytes(kMagic.data(), kMagic.size());
+  head.pod(kVersion);
+  head.pod(fnv1a(body));
+  // written aside and renamed: a run killed while writing leaves the old library (if any) intact
+  const std::filesystem::path tmp = file.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(head.data().data(), static_cast<std::streamsize>(head.data().size()));
+    out.write(body.data(), static_cast<std::streamsize>(body.size()));
+    if (!out) throw SubstructureFileError(fmt::format("cannot write '{}'", tmp.string()));
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, file, ec);
+  if (ec)
+    throw SubstructureFileError(fmt::format("cannot write '{}': {}", file.string(), ec.message()));
+}
+
+SubstructureLibrary read_substructure_file(const std::filesystem::path& file, bool recovery) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw SubstructureFileError(fmt::format("cannot read '{}'", file.string()));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string data = ss.str();
+  if (data.compare(0, kMagic.size(), kMagic) != 0)
+    throw SubstructureFileError(
+        fmt::format("'{}' is not a gapfem substructure file (gapfem cannot read Abaqus's .sim or "
+                    ".sup substructure libraries; generate the substructure with gapfem)",
+                    file.string()));
+  SubstructureLibrary lib;
+  try {
+    ArchiveReader head(std::string_view(data).substr(kMagic.size()));
+    if (head.get<std::uint32_t>() != kVersion)
+      throw SubstructureFileError(fmt::format("'{}' was written by another version of gapfem; "
+                                              "generate the substructure again",
+                                              file.string()));
+    const auto sum = head.get<std::uint64_t>();
+    const std::string_view body =
+        std::string_view(data).substr(kMagic.size() + sizeof(std::uint32_t) + sizeof(sum));
+    if (fnv1a(body) != sum)
+      throw SubstructureFileError(fmt::format("'{}' is damaged (its checksum does not match); "
+                                              "generate the substructure again",
+                                              file.string()));
+    ArchiveReader a(body);
+    SubstructureType& t = lib.type;
+    a.str(t.name);
+    a.str(lib.deck);
+    a.str(lib.job);
+    a.pod(lib.fingerprint);
+    a.vec(t.node_labels);
+    a.vec(t.coords);
+    lists(a, t.node_dofs);
+    a.pod(t.size);
+    a.vec(t.stiffness);
+    t.file = file.string();
+    const auto n = static_cast<std::size_t>(t.n_dofs());
+    if (t.coords.size() != t.node_labels.size() || t.node_dofs.size() != t.node_labels.size() ||
+        t.stiffness.size() != n * n)
+      throw SubstructureFileError(fmt::format("'{}' is inconsistent", file.string()));
+    lib.has_recovery = a.get<std::uint8_t>() != 0;
+    if (recovery && lib.has_recovery) {
+      SubstructureRecovery& r = lib.recovery;
+      a.vec(r.internal_node);
+      a.vec(r.internal_dof);
+      a.vec(r.ii_ptr);
+      a.vec(r.ii_col);
+      a.vec(r.ii_val);
+      a.vec(r.ir_ptr);
+      a.vec(r.ir_col);
+      a.vec(r.ir_val);
+    }
+  } catch (const RestartDataError&) {
+    throw SubstructureFileError(
+        fmt::format("'{}' ends early (damaged); generate the substructure again", file.string()));
+  }
+  return lib;
+}
+
+} // namespace gapfem
