@@ -128,6 +128,13 @@ void handle_element(BuildState& s, const Keyword& kw) {
       const auto& defs = s.model.user_elements;
       const auto it = std::find_if(defs.begin(), defs.end(),
                                    [&](const UserElementType& t) { return t.name == upper; });
+      if (it == defs.end() && s.bad_user_types.count(upper)) { // its definition was reported
+        for (const auto& d : kw.data)
+          if (!d.fields.empty())
+            if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
+        if (!elset.empty()) s.bad_sets.insert(elset);
+        return;
+      }
       if (it == defs.end())
         throw InputError(kw.loc, fmt::format("TYPE={}", upper),
                          fmt::format("user element type {} is not defined; define it with *USER "

@@ -67,7 +67,8 @@ struct BuildState {
   std::unordered_set<std::string> unsorted_sets;
   /// names that a keyword in error would have defined (note_failed_definition): amplitudes,
   /// materials, parts and instances; uses of them raise no "is not defined"
-  std::unordered_set<std::string> bad_amplitudes, bad_materials, bad_parts, bad_instances;
+  std::unordered_set<std::string> bad_amplitudes, bad_materials, bad_parts, bad_instances,
+      bad_user_types;
   /// materials whose *ELASTIC (0) or *CONDUCTIVITY (1) was in error (reported): no follow-on
   /// "the material has none"
   std::set<std::pair<int, int>> bad_material_options;

@@ -293,6 +293,7 @@ void note_failed_definition(BuildState& s, const Keyword& kw) {
   if (kw.key == "MATERIAL") add(s.bad_materials, name("NAME"));
   if (kw.key == "PART") add(s.bad_parts, name("NAME"));
   if (kw.key == "INSTANCE") add(s.bad_instances, name("NAME"));
+  if (kw.key == "USERELEMENT") add(s.bad_user_types, name("TYPE"));
   if (kw.key == "NSET" || kw.key == "NODE") add_set("NSET");
   if (kw.key == "ELSET" || kw.key == "ELEMENT") add_set("ELSET");
   if (const KeywordSpec* spec = find_spec(kw.key);
