@@ -26,7 +26,7 @@ std::string size_text(std::size_t bytes) {
 std::string summary_of(const Model& model, const ModelCheck& c, const std::string& deck) {
   std::string s = fmt::format("gapfem check: {}\n", deck);
   std::map<std::string_view, int> by_type;
-  for (ElementType t : model.mesh.elem_types) ++by_type[element_info(t).name];
+  for (ElemId e = 0; e < model.mesh.n_elements(); ++e) ++by_type[model.element_type_name(e)];
   std::string types;
   for (const auto& [name, n] : by_type)
     types += fmt::format("{}{} {}", types.empty() ? "" : ", ", name, n);

@@ -30,8 +30,8 @@ class UelKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return _temperatures; }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
-  /// NFORC (the internal force at the converged state) and, as ALLSE, ENERGY(2) (elastic strain
-  /// energy).
+  /// NFORC (the internal force at the converged state) and ENERGY(2), the elastic strain energy
+  /// (reported where the output reports strain energies).
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 
  private:

@@ -43,7 +43,10 @@ bool part_keyword(const std::string& key) {
                                          "COUPLING",
                                          "KINEMATIC",
                                          "DISTRIBUTING",
-                                         "TRANSFORM"};
+                                         "TRANSFORM",
+                                         "USERELEMENT",
+                                         "MATRIX",
+                                         "UELPROPERTY"};
   for (const char* k : kAllowed)
     if (key == k) return true;
   return false;

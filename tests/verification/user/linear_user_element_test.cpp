@@ -290,3 +290,49 @@ NFORC
   EXPECT_NE(dat.find("NFORC1      NFORC2"), std::string::npos);
   EXPECT_NE(dat.find("FOR ELEMENT TYPE U2 AND ELEMENT SET B"), std::string::npos);
 }
+
+// Abaqus/CAE's layout: the user element type, its matrix and its elements inside a part that is
+// instanced twice (the type is defined once; each instance has its elements).
+TEST(LinearUserElement, InsideAPartInstancedTwice) {
+  const JobResult r = run_deck(R"(*Heading
+user springs in a part, two instances
+*Part, name=Spring
+*Node
+1, 0., 0., 0.
+2, 1., 0., 0.
+*User Element, Type=U1, Nodes=2, Linear
+1
+*Matrix, Type=Stiffness
+1000.,
+-1000., 1000.
+*Element, type=U1, elset=S
+1, 1, 2
+*End Part
+*Assembly, name=A
+*Instance, name=I1, part=Spring
+*End Instance
+*Instance, name=I2, part=Spring
+0., 1., 0.
+*End Instance
+*Nset, nset=Fix, instance=I1
+1
+*Nset, nset=Fix2, instance=I2
+1
+*End Assembly
+*Boundary
+Fix, 1, 1
+Fix2, 1, 1
+*Step
+*Static
+*Cload
+I1.2, 1, 10.
+I2.2, 1, 20.
+*End Step
+)");
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  ASSERT_EQ(r.model->user_elements.size(), 1u);
+  const Frame& f = last_frame(r);
+  const Mesh& mesh = r.model->mesh;
+  EXPECT_NEAR(f.nodes.U[mesh.find_node(make_key(1, 2))][0], 0.01, 1e-15);
+  EXPECT_NEAR(f.nodes.U[mesh.find_node(make_key(2, 2))][0], 0.02, 1e-15);
+}
