@@ -157,6 +157,12 @@ void close_step(BuildState& s) {
       s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");
   check_predefined_temperatures(s);
   resolve_preset_outputs(s);
+  if (st.nlgeom && !s.model.substructures.empty() &&
+      (s.model.steps.empty() || !s.model.steps.back().nlgeom)) // once: NLGEOM stays on
+    s.warn(st.loc, fmt::format("step {} has NLGEOM, but gapfem's substructures respond linearly "
+                               "(small rotations): a substructure that rotates much is not "
+                               "followed; the rest of the model is geometrically nonlinear",
+                               st.number));
   // output requests carry over from the previous step unless this step gives its own
   if (!s.model.steps.empty()) {
     const Step& prev = s.model.steps.back();
