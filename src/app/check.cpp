@@ -4,6 +4,7 @@
 #include "app/user_code.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/memory.hpp"
 #include "io/inp/reader.hpp"
 #include "model/model.hpp"
 #include "solver/analysis.hpp"
@@ -15,13 +16,6 @@
 namespace gapfem {
 
 namespace {
-
-std::string size_text(std::size_t bytes) {
-  const double b = static_cast<double>(bytes);
-  if (b < 1024.0 * 1024.0) return fmt::format("{:.1f} KiB", b / 1024.0);
-  if (b < 1024.0 * 1024.0 * 1024.0) return fmt::format("{:.1f} MiB", b / (1024.0 * 1024.0));
-  return fmt::format("{:.2f} GiB", b / (1024.0 * 1024.0 * 1024.0));
-}
 
 std::string summary_of(const Model& model, const ModelCheck& c, const std::string& deck) {
   std::string s = fmt::format("gapfem check: {}\n", deck);
@@ -46,7 +40,7 @@ std::string summary_of(const Model& model, const ModelCheck& c, const std::strin
     s += fmt::format("    step {}{} ({}): {} equations, {} constraint rows, factor of K about {} "
                      "(CHOLMOD's symbolic analysis)\n",
                      st.number, st.name.empty() ? "" : " " + st.name, st.procedure, st.equations,
-                     st.constraint_rows, size_text(st.factor_bytes));
+                     st.constraint_rows, memory_size_text(static_cast<double>(st.factor_bytes)));
   if (!model.warnings.empty()) {
     s += fmt::format("  {} warning(s):\n", model.warnings.size());
     for (const auto& w : model.warnings) s += fmt::format("    {}\n", w);

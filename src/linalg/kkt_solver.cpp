@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/memory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +50,19 @@ void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _frow_of.clear();
 }
 
+void KktSolver::check_memory(std::size_t factor_bytes) const {
+  const auto available = available_memory_bytes();
+  // the factor plus CHOLMOD's workspace and the copies the solve keeps: 1.25 x the factor
+  const double need = 1.25 * static_cast<double>(factor_bytes);
+  if (!available || need <= static_cast<double>(*available)) return;
+  throw AnalysisError(fmt::format(
+      "the factor of this step's {} equations needs about {} (CHOLMOD's symbolic analysis) but "
+      "only {} of memory are available; nothing was factorised. Use a coarser mesh, reduce a "
+      "linear part to a substructure (docs/substructures.md), or run on a machine with more "
+      "memory",
+      _pattern->n, memory_size_text(need), memory_size_text(static_cast<double>(*available))));
+}
+
 void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
   Stopwatch watch;
@@ -58,6 +72,7 @@ void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* sta
     if (!_cholmod_ready) {
       _cholmod->analyze(*_pattern);
       _cholmod_ready = true;
+      check_memory(_cholmod->factor_bytes());
     }
     try {
       _cholmod->factorize(M);

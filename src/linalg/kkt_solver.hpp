@@ -56,6 +56,9 @@ class KktSolver {
  public:
   KktSolver();
   ~KktSolver();
+  /// AnalysisError when a factor of `factor_bytes` (the symbolic analysis's prediction) cannot
+  /// fit in the memory left (common/memory.hpp), before anything is factorised.
+  void check_memory(std::size_t factor_bytes) const;
   /// Symbolic analysis for a pattern (once per step).
   void analyze(std::shared_ptr<const SparsityPattern> pattern);
   /// Drop the factor (and the unsymmetric solver's value-dependent analysis): the next solve
