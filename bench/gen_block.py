@@ -41,6 +41,8 @@ def main():
     ap.add_argument("--nlgeom", choices=["yes", "no"], default=None,
                     help="NLGEOM on the step (default: yes with gaps, no without)")
     ap.add_argument("--inc", type=float, default=0.1, help="initial increment (fraction of step)")
+    ap.add_argument("--max-inc", type=float, default=None,
+                    help="maximum increment (fraction of step); 0.1 makes at least 10 increments")
     ap.add_argument("--print-gaps", action="store_true", help="*EL PRINT of the gap elements")
     ap.add_argument("-o", "--output", default="-")
     a = ap.parse_args()
@@ -52,6 +54,8 @@ def main():
     def nid(i, j, k):
         return 1 + i + (nx + 1) * (j + (ny + 1) * k)
 
+    # *STATIC: initial increment, period[, minimum, maximum]
+    static_line = f"{a.inc:.6g}, 1." + (f", , {a.max_inc:.6g}" if a.max_inc else "")
     n_block = (nx + 1) * (ny + 1) * (nz + 1)
     w("*HEADING\n")
     w(f"Quarter block {nx}x{ny}x{nz} C3D8 {'fixed base' if a.no_gaps else 'on a GAPUNI foundation'}\n")
@@ -129,13 +133,13 @@ def main():
         w("BASE, 3, 3\n")
     else:
         w("GROUND, 1, 3\n")
-    w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{a.inc:.6g}, 1.\n")
+    w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{static_line}\n")
     w(f"*DSLOAD\nSTOP, P, {a.pressure:.9g}\n")
     if a.shear is not None:
         # step 2: the x = 0 face is released (its reaction ramps off) and a lateral traction is
         # added; friction at the closed gaps, loaded by step 1, now holds the block
         w("*NODE PRINT, NSET=GROUND, TOTALS=YES\nRF\n*END STEP\n")
-        w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{a.inc:.6g}, 1.\n")
+        w(f"*STEP{', NLGEOM' if nlgeom else ''}, INC=1000\n*STATIC\n{static_line}\n")
         w("*BOUNDARY, OP=NEW\nYSYM, 2, 2\nGROUND, 1, 3\n")
         w("*CLOAD\n")
         hx, hy = a.length / nx, a.length / ny

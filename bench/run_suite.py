@@ -11,6 +11,9 @@ Cases (generators in this directory):
   agree-11k-ccx       the penalty block made 1e7 times stiffer than the gaps, so that the gap forces
                       do not depend on the C3D8 formulation (gapfem's is Abaqus's B-bar element,
                       ccx's is fully integrated: ~1% apart in reactions): closed sets must be equal
+  inc10-<size>[-ccx]  the block with a maximum increment of 0.1 (at least 10 increments): the
+                      family of issue 16, with the limit ratio (wall time / one factorisation of
+                      the model's stiffness, timed by `gapfem check --time-factorization`)
   block-50k-friction  the 50k block with Coulomb friction (mu = 0.3): pressure, then a lateral load
   slab-10k            a flat slab, 212,807 equations and 10,201 gaps (exact contact)
   slab-1M             a flat slab, 1.09M equations and 40,401 gaps (exact contact)
@@ -49,6 +52,13 @@ CASES = [
     ("stack-150k", "medium", "gen_thermal_stack.py", "--nx 60 --nz 4 --layers 10", False),
     ("block-50k-friction", "medium", "gen_block.py", "--nx 25 --nz 24 --friction 0.3 --shear 2.8",
      False),
+    # the family of issue 16: at least 10 increments (maximum increment 0.1 of the step)
+    ("inc10-11k", "small", "gen_block.py", "--nx 15 --nz 14 --max-inc 0.1", False),
+    ("inc10-11k-ccx", "small", "gen_block.py", "--nx 15 --nz 14 --max-inc 0.1 --penalty 1e7", True),
+    ("inc10-50k", "medium", "gen_block.py", "--nx 25 --nz 24 --max-inc 0.1", False),
+    ("inc10-50k-ccx", "medium", "gen_block.py", "--nx 25 --nz 24 --max-inc 0.1 --penalty 1e7",
+     True),
+    ("inc10-200k", "large", "gen_block.py", "--nx 40 --nz 39 --max-inc 0.1", False),
     ("block-200k", "large", "gen_block.py", "--nx 40 --nz 39", False),
     ("slab-10k", "large", "gen_block.py", "--nx 100 --nz 6 --length 10 --height 0.4", False),
     ("block-200k-ccx", "large", "gen_block.py", "--nx 40 --nz 39 --penalty 1e7", True),
@@ -143,6 +153,15 @@ def main():
         except (OSError, KeyError, ValueError):
             pass
         print(f"   gapfem: exit {rc}, {wall:.2f} s, {mem:.0f} MB", file=sys.stderr, flush=True)
+        # the limit ratio's unit: one CHOLMOD factorisation of the model's stiffness, on its own
+        p = subprocess.run([os.path.abspath(a.gapfem), "check", "--time-factorization",
+                            "job.inp"], cwd=d, capture_output=True, text=True)
+        f1 = re.search(r"one factorisation of step 1's stiffness \(CHOLMOD, reference state\): "
+                       r"([0-9.]+) s", p.stdout + p.stderr)
+        if f1:
+            row["factor1"] = float(f1.group(1))
+            print(f"   one factorisation: {row['factor1']:.3f} s, limit ratio "
+                  f"{wall / row['factor1']:.1f}", file=sys.stderr, flush=True)
         if with_ccx and a.ccx and neq is not None and neq <= a.ccx_max_eq:
             cd = os.path.join(d, "ccx")
             os.makedirs(cd, exist_ok=True)
@@ -175,8 +194,9 @@ def main():
         return " / ".join(f"{s.get(k, 0):.2f}" for k, _ in keys)
 
     hdr = ("| case | equations | gaps | gapfem s | peak MB | incr | iter | fact | solves | "
-           "asm / fact / solve / gap / out s | ccx s | ccx MB | ccx / gapfem | agreement |")
-    lines = [hdr, "|" + "---|" * 14]
+           "asm / fact / solve / gap / out s | one factorisation s | limit ratio | ccx s | ccx MB | "
+           "ccx / gapfem | agreement |")
+    lines = [hdr, "|" + "---|" * 16]
     for r in rows:
         ratio = agree = ""
         if "ccx_wall" in r:
@@ -193,6 +213,8 @@ def main():
             f"| {r['case']}{status} | {r['eq']} | {r['gaps']} | {r['wall']:.2f} | {r['mem']:.0f} | "
             f"{r.get('inc', '')} | {r.get('it', '')} | {r.get('fact', '')} | {r.get('solves', '')} | "
             f"{fmt_split(r.get('split'))} | "
+            f"{'%.3f' % r['factor1'] if 'factor1' in r else ''} | "
+            f"{'%.1f' % (r['wall'] / r['factor1']) if 'factor1' in r else ''} | "
             f"{'%.2f' % r['ccx_wall'] if 'ccx_wall' in r else ''} | "
             f"{'%.0f' % r['ccx_mem'] if 'ccx_mem' in r else ''} | {ratio} | {agree} |")
     table = "\n".join(lines)

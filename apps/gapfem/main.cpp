@@ -22,6 +22,9 @@ int check_main(int argc, char** argv) {
   app.add_option(
       "--user", options.user_code,
       "the user subroutine of the deck's user elements, compiled and loaded as for a run");
+  app.add_flag("--time-factorization", options.time_factorization,
+               "also factorise step 1's stiffness once and print the time (the unit of "
+               "docs/performance.md's limit ratio)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -41,6 +41,11 @@ std::string summary_of(const Model& model, const ModelCheck& c, const std::strin
                      "(CHOLMOD's symbolic analysis)\n",
                      st.number, st.name.empty() ? "" : " " + st.name, st.procedure, st.equations,
                      st.constraint_rows, memory_size_text(static_cast<double>(st.factor_bytes)));
+  for (const auto& st : c.steps)
+    if (st.factor_seconds > 0)
+      s += fmt::format("  one factorisation of step {}'s stiffness (CHOLMOD, reference state): "
+                       "{:.3f} s\n",
+                       st.number, st.factor_seconds);
   if (!model.warnings.empty()) {
     s += fmt::format("  {} warning(s):\n", model.warnings.size());
     for (const auto& w : model.warnings) s += fmt::format("    {}\n", w);
@@ -66,7 +71,7 @@ CheckResult check_job(const JobOptions& given) {
                          std::filesystem::temp_directory_path() /
                              fmt::format("gapfem-check-{}.scratch", static_cast<long>(getpid())));
     Analysis analysis(model, {});
-    const ModelCheck c = analysis.check();
+    const ModelCheck c = analysis.check(options.time_factorization);
     result.summary = summary_of(model, c, options.deck.string());
     if (!options.quiet)
       log::info("{}", std::string_view(result.summary).substr(0, result.summary.size() - 1));

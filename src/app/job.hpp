@@ -33,6 +33,8 @@ struct JobOptions {
   /// --user: the user's element code (a UEL in Fortran or C, a C++ element plugin, or a compiled
   /// .so), compiled in the job's scratch folder and loaded before the analysis
   std::filesystem::path user_code;
+  /// `gapfem check --time-factorization`: also time one factorisation of step 1's stiffness
+  bool time_factorization = false;
 };
 
 /// Exit statuses of gapfem (docs/conventions.md).

@@ -45,6 +45,9 @@ struct ModelCheck {
     LocalIndex equations = 0;
     int constraint_rows = 0; ///< active linear-constraint rows (*EQUATION, ties, couplings …)
     std::size_t factor_bytes = 0; ///< CHOLMOD's symbolic estimate of the factor of K
+    /// check(true), step 1: wall time of one CHOLMOD factorisation of K at the reference state
+    /// (the best of two), the unit of the limit ratio (docs/performance.md)
+    double factor_seconds = 0.0;
   };
   struct GapInfo {
     std::string type;
@@ -70,7 +73,7 @@ class Analysis {
   const std::vector<StepSummary>& step_summaries() const;
   /// Everything up to solving (element checks, procedures, each step's loads, equations and
   /// symbolic factorisation) without solving; throws InputError as run() would.
-  ModelCheck check();
+  ModelCheck check(bool time_factorization = false);
 
  private:
   struct Impl;
