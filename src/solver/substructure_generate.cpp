@@ -132,6 +132,12 @@ void Analysis::Impl::generate_substructure(StepRun& r) {
     part.internal_eq.push_back(eq);
   }
   const auto nR = part.retained_eq.size(), nI = part.internal_eq.size();
+  if (nR > 16384) // Abaqus's limit too: the reduced stiffness is dense
+    throw InputError(g.retained_loc, what,
+                     fmt::format("{} DOFs are retained; a substructure retains at most 16,384 (its "
+                                 "reduced stiffness is a dense matrix): retain fewer, or split the "
+                                 "part into several substructures",
+                                 nR));
   log::progress("  substructure {}: {} retained DOFs at {} nodes, {} internal DOFs", g.type, nR,
                 t.node_labels.size(), nI);
 

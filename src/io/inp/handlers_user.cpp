@@ -116,36 +116,34 @@ void handle_user_element(BuildState& s, const Keyword& kw) {
   t.loc = kw.loc;
   t.linear = kw.has("LINEAR");
   t.unsymmetric = kw.has("UNSYMM");
-  auto count = [&](std::string_view p, long long def, long long min) {
+  // (bounds far beyond any real element keep a typing error from asking for gigabytes)
+  auto count = [&](std::string_view p, long long def, long long min, long long max) {
     const long long v = int_param(kw, p).value_or(def);
-    if (v < min || v > 100000000)
+    if (v < min || v > max)
       throw InputError(kw.loc, fmt::format("{}={}", p, v),
-                       fmt::format("give a whole number from {} up", min));
+                       fmt::format("give a whole number from {} to {}", min, max));
     return static_cast<int>(v);
   };
   if (!kw.has("NODES"))
     throw InputError(kw.loc, fmt::format("TYPE={}", type),
                      "NODES= is missing: give the number of nodes of each element");
-  t.n_nodes = count("NODES", 0, 1);
+  t.n_nodes = count("NODES", 0, 1, 10000);
   if (t.linear)
     for (const char* p : {"PROPERTIES", "I PROPERTIES", "VARIABLES"})
       if (kw.has(p))
         throw InputError(kw.loc, p,
                          "a LINEAR user element is defined by its *MATRIX alone; remove this "
                          "parameter, or remove LINEAR to call the UEL subroutine");
-  t.n_properties = count("PROPERTIES", 0, 0);
-  t.n_int_properties = count("I PROPERTIES", 0, 0);
-  t.n_variables = t.linear ? 0 : count("VARIABLES", 1, 1);
+  t.n_properties = count("PROPERTIES", 0, 0, 100000);
+  t.n_int_properties = count("I PROPERTIES", 0, 0, 100000);
+  t.n_variables = t.linear ? 0 : count("VARIABLES", 1, 1, 1000000);
   t.node_dofs = read_node_dofs(s, kw, t.n_nodes, type);
   // COORDS holds max(COORDINATES, the largest active DOF up to 3) values per node
   int largest = 0;
   for (const auto& d : t.node_dofs)
     for (int x : d)
       if (x <= 3) largest = std::max(largest, x);
-  t.n_coords = std::max(count("COORDINATES", 1, 1), largest);
-  if (t.n_coords > 3)
-    throw InputError(kw.loc, fmt::format("COORDINATES={}", t.n_coords),
-                     "a node has at most 3 coordinates");
+  t.n_coords = std::max(count("COORDINATES", 1, 1, 3), largest);
   s.model.user_elements.push_back(std::move(t));
   s.current_user_element = static_cast<int>(s.model.user_elements.size()) - 1;
   s.user_element_replayed = false;
