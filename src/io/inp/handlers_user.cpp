@@ -9,6 +9,11 @@
 namespace gapfem::inp {
 namespace {
 
+/// UELMAT (a user element with an Abaqus material) is an input error wherever it is asked for.
+constexpr const char* kNoUelmat =
+    "user elements with an Abaqus material (UELMAT) are not supported; define the material "
+    "behaviour inside UEL from its PROPS";
+
 /// The DOF numbers of fields first.. of a line (each known to gapfem, none twice).
 std::vector<int> read_dofs(const FieldReader& r, std::size_t first) {
   std::vector<int> dofs;
@@ -86,10 +91,7 @@ void handle_user_element(BuildState& s, const Keyword& kw) {
                        "gapfem does not read user-element matrices from an Abaqus results file "
                        "(.fil); give NODES=, LINEAR and the matrix with *MATRIX, TYPE=STIFFNESS");
   for (const char* p : {"INTEGRATION", "TENSOR"})
-    if (kw.has(p))
-      throw InputError(kw.loc, p,
-                       "user elements with an Abaqus material (UELMAT) are not supported; define "
-                       "the material behaviour inside UEL from its PROPS");
+    if (kw.has(p)) throw InputError(kw.loc, p, kNoUelmat);
   const auto number = type.size() > 1 && type[0] == 'U'
                           ? parse_integer(std::string_view(type).substr(1))
                           : std::nullopt;
@@ -193,10 +195,7 @@ void handle_uel_property(BuildState& s, const Keyword& kw) {
   p.elset = set_param(s, kw, "ELSET", true);
   p.loc = kw.loc;
   for (const char* m : {"MATERIAL", "ORIENTATION"})
-    if (kw.has(m))
-      throw InputError(kw.loc, m,
-                       "user elements with an Abaqus material (UELMAT) are not supported; define "
-                       "the material behaviour inside UEL from its PROPS");
+    if (kw.has(m)) throw InputError(kw.loc, m, kNoUelmat);
   for (const char* d : {"ALPHA", "BETA"})
     if (kw.has(d))
       s.warn(kw.loc, fmt::format("{}= (Rayleigh damping of linear user elements) acts only in "
