@@ -25,7 +25,7 @@ int default_thread_count() {
 Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
-      _thread_f(static_cast<std::size_t>(_threads)), _thread_K(static_cast<std::size_t>(_threads)) {
+      _thread_f(static_cast<std::size_t>(_threads)) {
 }
 
 namespace {
@@ -72,10 +72,14 @@ void symmetrize(ElementOutput& out, int nd) {
 } // namespace
 
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
-                                   std::span<double> f_int, CsrMatrix* K, ConstraintBlock* C) {
+                                   std::span<double> f_int, MatrixInserter* K,
+                                   ConstraintBlock* C) {
   const DofMap& dofs = _disc.dofs();
   std::fill(f_int.begin(), f_int.end(), 0.0);
-  if (K) K->set_zero();
+  if (K) {
+    K->set_zero();
+    K->open(_threads);
+  }
   if (C) C->clear();
   AssemblyResult total;
   std::vector<AssemblyResult> partial(static_cast<std::size_t>(_threads));
@@ -88,13 +92,6 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     for (int t = 0; t < _threads; ++t) {
       _thread_constraints[t].clear();
       if (multi) _thread_f[t].assign(f_int.size(), 0.0);
-      // threads other than the first scatter into private copies of the matrix values, merged in a
-      // fixed order below: the assembled matrix is bitwise reproducible
-      if (multi && K && t > 0) {
-        if (!_thread_K[t] || _thread_K[t]->pattern_ptr() != K->pattern_ptr())
-          _thread_K[t] = std::make_unique<CsrMatrix>(K->pattern_ptr());
-        _thread_K[t]->set_zero();
-      }
     }
     parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
       ElementGather& g = _scratch[t];
@@ -117,10 +114,10 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
             ++res.flux_count[fld];
           }
         }
+        // each thread writes its own lane of the inserter (merged in lane order by close())
         if (K) {
           const auto eqs = block->element_eqs(i);
-          CsrMatrix* target = (multi && t > 0) ? _thread_K[t].get() : K;
-          target->add_block(eqs, eqs, out.tangent);
+          K->add(multi ? t : 0, eqs, eqs, out.tangent);
         }
         res.unsymmetric |= out.unsymmetric;
         res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
@@ -144,12 +141,6 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     if (multi) {
       for (int t = 0; t < _threads; ++t)
         for (std::size_t s = 0; s < f_int.size(); ++s) f_int[s] += _thread_f[t][s];
-      if (K)
-        for (int t = 1; t < _threads; ++t) {
-          auto dst = K->values();
-          const auto src = _thread_K[t]->values();
-          for (std::size_t k = 0; k < dst.size(); ++k) dst[k] += src[k];
-        }
     }
     if (C)
       for (int t = 0; t < _threads; ++t) {
@@ -178,6 +169,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
                                total.flux_sum, total.flux_count);
   // stiffness matrices of the model as a whole (*MATRIX ASSEMBLE)
   _disc.matrix_terms().assemble(fields.u, f_int, K, dofs, total.flux_sum, total.flux_count);
+  if (K) K->close();
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;
@@ -192,10 +184,11 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
 }
 
 void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
-                               const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K,
-                               bool symmetrize) {
+                               const StepContext& ctx, std::span<double> f_ext,
+                               MatrixInserter* K, bool symmetrize) {
   ElementGather& g = _scratch[0];
   std::vector<double> fe, Ke;
+  if (K) K->open(1);
   for (const ActiveLoad& al : loads) {
     const auto [bi, idx] = _disc.locate(al.load->elem);
     ElementBlock& block = _disc.blocks()[bi];
@@ -216,10 +209,11 @@ void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldVie
             Ke[i * nd + j] = Ke[j * nd + i] = m;
           }
       if (any)
-        K->add_block(block.element_eqs(static_cast<std::size_t>(idx)),
-                     block.element_eqs(static_cast<std::size_t>(idx)), Ke);
+        K->add(0, block.element_eqs(static_cast<std::size_t>(idx)),
+               block.element_eqs(static_cast<std::size_t>(idx)), Ke);
     }
   }
+  if (K) K->close();
 }
 
 void Assembler::element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,

@@ -4,7 +4,7 @@
 /// constraint rows into global storage. Threaded over element chunks with per-thread scratch.
 #include "fem/element_gather.hpp"
 #include "linalg/constraint_block.hpp"
-#include "linalg/csr_matrix.hpp"
+#include "linalg/matrix_inserter.hpp"
 
 #include <array>
 #include <limits>
@@ -36,14 +36,14 @@ class Assembler {
   explicit Assembler(Discretization& disc, int threads = 1);
   int threads() const { return _threads; }
 
-  /// Internal forces per slot (f_int, overwritten), tangent over equations (if K, overwritten) and
-  /// active constraint rows (if C, overwritten).
+  /// Internal forces per slot (f_int, overwritten), tangent over equations (if K: zeroed, then
+  /// written through one inserter lane per thread) and active constraint rows (if C, overwritten).
   AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
-                          CsrMatrix* K, ConstraintBlock* C);
+                          MatrixInserter* K, ConstraintBlock* C);
   /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
   /// loads add -df/du to K if given (only its symmetric part when `symmetrize`).
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
-                      const StepContext& ctx, std::span<double> f_ext, CsrMatrix* K,
+                      const StepContext& ctx, std::span<double> f_ext, MatrixInserter* K,
                       bool symmetrize = true);
   /// Residual of one element at the given state (no tangent); out has n_dofs entries.
   void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
@@ -65,7 +65,6 @@ class Assembler {
   std::vector<ElementGather> _scratch;
   std::vector<ConstraintBlock> _thread_constraints;
   std::vector<std::vector<double>> _thread_f;
-  std::vector<std::unique_ptr<CsrMatrix>> _thread_K; ///< private matrix values of threads 1..n-1
 };
 
 /// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads, 2).

@@ -29,6 +29,7 @@ EquationMap EquationMap::build(std::span<const std::uint8_t> prescribed) {
       m.slot_eq[s] = static_cast<LocalIndex>(m.eq_slot.size());
       m.eq_slot.push_back(static_cast<LocalIndex>(s));
     }
+  m.n_owned = m.n_eq();
   return m;
 }
 

@@ -43,12 +43,23 @@ class DofMap {
   int _max_temperature_points = 0;
 };
 
-/// The equation numbering of one step.
+/// The equation numbering of one step, on one process. Equations [0, n_owned) are owned by this
+/// process; [n_owned, n_eq()) are ghosts, owned by another process and present because a local
+/// element touches them (a distributed backend sums their rows into their owner's). Owned
+/// equations are numbered globally from first_global on, ghosts by ghost_global. A serial run owns
+/// every equation and has no ghosts, so its global numbers are its local ones.
 struct EquationMap {
   std::vector<LocalIndex> slot_eq; ///< per slot: equation or -1 (prescribed)
   std::vector<LocalIndex> eq_slot; ///< per equation: its slot
+  LocalIndex n_owned = 0;          ///< owned equations come first
+  GlobalIndex first_global = 0;    ///< global number of equation 0
+  std::vector<GlobalIndex> ghost_global; ///< per ghost (equation n_owned + k): its global number
   LocalIndex n_eq() const { return static_cast<LocalIndex>(eq_slot.size()); }
-  /// Number the free slots (prescribed[s] == true → -1) in slot order.
+  bool owned(LocalIndex eq) const { return eq < n_owned; }
+  GlobalIndex global(LocalIndex eq) const {
+    return eq < n_owned ? first_global + eq : ghost_global[static_cast<std::size_t>(eq - n_owned)];
+  }
+  /// Number the free slots (prescribed[s] == true → -1) in slot order, all owned (serial).
   static EquationMap build(std::span<const std::uint8_t> prescribed);
 };
 

@@ -23,7 +23,7 @@ void MatrixTerms::set_equations(const EquationMap& eqmap) {
     _eqs[k] = {eqmap.slot_eq[_row[k]], eqmap.slot_eq[_col[k]]};
 }
 
-void MatrixTerms::assemble(std::span<const double> u, std::span<double> f_int, CsrMatrix* K,
+void MatrixTerms::assemble(std::span<const double> u, std::span<double> f_int, MatrixInserter* K,
                            const DofMap& dofs, std::array<double, kNumFields>& flux_sum,
                            std::array<long, kNumFields>& flux_count) const {
   for (std::size_t k = 0; k < _value.size(); ++k) {
@@ -34,7 +34,8 @@ void MatrixTerms::assemble(std::span<const double> u, std::span<double> f_int, C
       flux_sum[fld] += std::abs(f);
       ++flux_count[fld];
     }
-    if (K && _eqs[k][0] >= 0 && _eqs[k][1] >= 0) K->add(_eqs[k][0], _eqs[k][1], _value[k]);
+    if (K && _eqs[k][0] >= 0 && _eqs[k][1] >= 0)
+      K->add(0, {&_eqs[k][0], 1}, {&_eqs[k][1], 1}, {&_value[k], 1});
   }
 }
 

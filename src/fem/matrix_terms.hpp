@@ -3,7 +3,7 @@
 /// Stiffness terms added to the model as a whole, not by elements: the matrices of *MATRIX
 /// ASSEMBLE (a reduced model from another code). Constant: internal forces K u and tangent K.
 #include "fem/dof_map.hpp"
-#include "linalg/csr_matrix.hpp"
+#include "linalg/matrix_inserter.hpp"
 
 #include <array>
 #include <span>
@@ -21,8 +21,9 @@ class MatrixTerms {
   bool empty() const { return _value.empty(); }
   /// Equation numbers of a step (terms on prescribed DOFs still give forces, not stiffness).
   void set_equations(const EquationMap& eqmap);
-  /// f_int += K u (per slot) with its flux, K(eq, eq) += the terms on free equations.
-  void assemble(std::span<const double> u, std::span<double> f_int, CsrMatrix* K,
+  /// f_int += K u (per slot) with its flux, K(eq, eq) += the terms on free equations
+  /// (lane 0 of the inserter).
+  void assemble(std::span<const double> u, std::span<double> f_int, MatrixInserter* K,
                 const DofMap& dofs, std::array<double, kNumFields>& flux_sum,
                 std::array<long, kNumFields>& flux_count) const;
   /// |diagonal terms| added per slot.

@@ -27,6 +27,14 @@ bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb
 }
 } // namespace
 
+std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend) {
+  switch (backend) {
+  case SolverBackend::Cholmod:
+    return std::make_unique<KktSolver>();
+  }
+  throw std::logic_error("unknown solver backend");
+}
+
 KktSolver::KktSolver() = default;
 KktSolver::~KktSolver() = default;
 

@@ -23,9 +23,7 @@
 /// makes the step a modified-Newton step (the residual is always the true one, so the converged
 /// answer is the same). Whether reuse pays is decided from the measured factorisation and solve
 /// times.
-#include "common/timer.hpp"
-#include "linalg/constraint_block.hpp"
-#include "linalg/factor_reuse.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "linalg/linear_solver.hpp"
 
 #include <memory>
@@ -33,43 +31,25 @@
 
 namespace gapfem {
 
-struct KktOptions {
-  double augmentation = 100.0;       ///< R_i = augmentation x stiffness at the row's DOFs
-  double constraint_tolerance = 0.0; ///< stop the multiplier iteration when |C du + g| below this
-  int max_iterations = 200;
-  FactorReuse reuse = FactorReuse::Auto;
-  bool force_fresh = false; ///< factorise the current matrix (the caller saw slow convergence)
-  double max_drift = 1e-3;  ///< reuse only if |K - K_F|_ij <= max_drift sqrt(|K_F,ii K_F,jj|)
-};
-
-struct KktStatistics {
-  int schur_iterations = 0;
-  int solves = 0;
-  bool used_unsymmetric = false;
-  bool reused_factor = false; ///< no factorisation was done for this system
-  bool stale_factor = false;  ///< ... and the factor was of a different matrix (modified Newton)
-  int changed_rows = 0;       ///< constraint rows that differ from the factored ones
-  double constraint_residual = 0.0;
-};
-
-class KktSolver {
+class KktSolver final : public ConstrainedSolver {
  public:
   KktSolver();
-  ~KktSolver();
+  ~KktSolver() override;
+  std::string_view name() const override { return "cholmod"; }
   /// AnalysisError when a factor of `factor_bytes` (the symbolic analysis's prediction) cannot
   /// fit in the memory left (common/memory.hpp), before anything is factorised.
   void check_memory(std::size_t factor_bytes) const;
   /// Symbolic analysis for a pattern (once per step).
-  void analyze(std::shared_ptr<const SparsityPattern> pattern);
+  void analyze(std::shared_ptr<const SparsityPattern> pattern) override;
   /// Drop the factor (and the unsymmetric solver's value-dependent analysis): the next solve
   /// factorises afresh, exactly as a new solver would. A restart point calls it, so that a
   /// restarted run repeats the uninterrupted one (docs/restart.md).
-  void forget_factor();
+  void forget_factor() override;
   /// Solve; K may be modified in place (augmented). du has n entries, dl one per constraint row.
   /// Throws SingularSystem when M is singular (a rigid-body mode).
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                       std::span<double> du, std::span<double> dl, bool symmetric,
-                      const KktOptions& options, RunStatistics* stats = nullptr);
+                      const KktOptions& options, RunStatistics* stats = nullptr) override;
 
  private:
   struct SchurResult {

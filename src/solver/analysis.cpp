@@ -68,7 +68,8 @@ const std::vector<StepSummary>& Analysis::step_summaries() const {
 
 Analysis::Impl::Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
     : model(m), writers(std::move(w)), disc(m),
-      assembler(disc, o.threads > 0 ? o.threads : default_thread_count()), options(std::move(o)) {
+      assembler(disc, o.threads > 0 ? o.threads : default_thread_count()),
+      solver(make_constrained_solver(o.solver)), options(std::move(o)) {
   const LocalIndex ns = disc.dofs().n_slots();
   st.u.assign(static_cast<std::size_t>(ns), 0.0);
   set_initial_temperatures(m, disc.dofs(), st.u);
@@ -147,7 +148,7 @@ bool Analysis::Impl::supported_at_last_converged(StepProblem& prob, double t0) {
         dl(static_cast<std::size_t>(prob.constraints().n_rows()));
     KktOptions opt;
     opt.force_fresh = true;
-    kkt.solve(prob.matrix(), prob.rhs(), prob.constraints(), du, dl, ev.symmetric, opt, &stats);
+    solver->solve(prob.matrix(), prob.rhs(), prob.constraints(), du, dl, ev.symmetric, opt, &stats);
   } catch (const SingularSystem&) {
     return false;
   } catch (const ConvergenceFailure&) {
@@ -280,7 +281,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
     solver_warnings.insert(solver_warnings.end(), loads.warnings().begin(), loads.warnings().end());
   disc.set_equations(loads.equations(), loads.local_bcs());
   r.pattern = step_pattern(loads);
-  kkt.analyze(r.pattern);
+  solver->analyze(r.pattern);
 
   StepContext& base = r.base;
   base.procedure = step.procedure;
@@ -379,7 +380,7 @@ void Analysis::Impl::increment_loop(StepRun& r) {
     // that cannot be written) ends the step like a convergence failure, so the result files are
     // complete up to the last converged increment.
     try {
-      res = solve_increment(prob, kkt, r.controls, r.flux, &stats);
+      res = solve_increment(prob, *solver, r.controls, r.flux, &stats);
     } catch (const AnalysisError& e) {
       r.sum.converged = false;
       r.sum.failure = e.what();

@@ -3,7 +3,7 @@
 /// Runs all steps of a model: per step the equation numbering, sparsity pattern and symbolic
 /// factorisation, the increment loop (Newton + automatic incrementation), output frames and the
 /// self-checks; carries the committed state, load history and contact status between steps.
-#include "linalg/factor_reuse.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "output/results.hpp"
 #include "solver/restart_file.hpp"
 
@@ -20,6 +20,7 @@ struct Model;
 struct AnalysisOptions {
   int threads = 0;                              ///< 0: default_thread_count()
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
+  SolverBackend solver = SolverBackend::Cholmod; ///< the constrained-system solver's backend
   /// Restart (docs/restart.md): where the records of steps with *RESTART, WRITE go (job.res;
   /// empty: none are written) and the header naming the deck (the fingerprint is filled in).
   std::filesystem::path restart_file;

@@ -7,7 +7,7 @@
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
 #include "fem/discretization.hpp"
-#include "linalg/kkt_solver.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "model/model.hpp"
 #include "solver/analysis.hpp"
 #include "solver/diagnostics.hpp"
@@ -64,7 +64,7 @@ struct Analysis::Impl {
   std::vector<ResultWriter*> writers;
   Discretization disc;
   Assembler assembler;
-  KktSolver kkt;
+  std::unique_ptr<ConstrainedSolver> solver; ///< the backend (make_constrained_solver)
   SolutionState st;
   LoadHistory history;
   RunStatistics stats;

@@ -294,7 +294,7 @@ void Analysis::Impl::write_restart(StepRun& r) {
   // as a restarted run does, so the two repeat each other to the last digit. With Auto the reuse
   // decisions depend on measured times anyway: the factor is kept (a record costs no extra
   // factorisation), and a restarted run may take another, equally converged Newton path.
-  if (options.factor_reuse != FactorReuse::Auto) kkt.forget_factor();
+  if (options.factor_reuse != FactorReuse::Auto) solver->forget_factor();
   log::debug("  restart data written: step {} increment {} ({})", info.step, info.increment,
              restart_out.path().string());
 }

@@ -10,7 +10,7 @@
 
 namespace gapfem {
 
-NewtonResult solve_increment(NonlinearProblem& p, KktSolver& solver, const NewtonControls& c,
+NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver, const NewtonControls& c,
                              const FluxHistory& history, RunStatistics* stats) {
   NewtonResult res;
   std::unordered_map<ElemId, int> flips;

@@ -7,7 +7,7 @@
 /// plus, with contact, no status change in the last evaluation and every closed gap within the
 /// clearance tolerance. Contact status changes make "severe discontinuity" iterations.
 #include "common/timer.hpp"
-#include "linalg/kkt_solver.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "solver/nonlinear_problem.hpp"
 
 #include <string>
@@ -76,7 +76,7 @@ struct NewtonResult {
   double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
-NewtonResult solve_increment(NonlinearProblem& problem, KktSolver& solver, const NewtonControls& c,
+NewtonResult solve_increment(NonlinearProblem& problem, ConstrainedSolver& solver, const NewtonControls& c,
                              const FluxHistory& history, RunStatistics* stats);
 
 } // namespace gapfem

@@ -10,7 +10,7 @@ namespace gapfem {
 StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
                          SolutionState& state, const StepContext& base,
                          std::shared_ptr<const SparsityPattern> pattern)
-    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)),
+    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)), _Kin(_K),
       _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
       _constraint_tol(1e-10 * base.model_size) {}
 
@@ -76,7 +76,7 @@ FieldView StepProblem::fields() const {
 Evaluation StepProblem::evaluate() {
   ScopedTimer timer(_stats, TimeCategory::Assembly);
   const FieldView f = fields();
-  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, &_K, &_C);
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, &_Kin, &_C);
   if (_stats) { // gap elements are reported as "gap work", not assembly
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;
     (*_stats)[TimeCategory::Assembly] -= ar.gap_seconds;
@@ -87,7 +87,7 @@ Evaluation StepProblem::evaluate() {
   _loads.distributed_loads(_ctx.step_time, _active);
   bool follower = false;
   if (!_active.empty()) {
-    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_K, !_unsymmetric_loads);
+    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_Kin, !_unsymmetric_loads);
     for (const auto& a : _active)
       follower |= _unsymmetric_loads && _ctx.nlgeom &&
                   (a.load->kind == DistLoadKind::Pressure ||

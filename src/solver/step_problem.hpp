@@ -32,6 +32,8 @@ class StepProblem final : public NonlinearProblem {
   StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
               SolutionState& state, const StepContext& base,
               std::shared_ptr<const SparsityPattern> pattern);
+  StepProblem(const StepProblem&) = delete; // _Kin points into _K
+  StepProblem& operator=(const StepProblem&) = delete;
 
   /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
   /// values, temperatures and interference at t0 + dt.
@@ -81,6 +83,7 @@ class StepProblem final : public NonlinearProblem {
   SolutionState& _s;
   StepContext _ctx;
   CsrMatrix _K;
+  CsrInserter _Kin; ///< the assembler writes _K through it
   ConstraintBlock _C;
   std::vector<double> _rhs;
   std::vector<ActiveLoad> _active;

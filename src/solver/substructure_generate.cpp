@@ -177,10 +177,10 @@ void Analysis::Impl::generate_substructure(StepRun& r) {
     }
     CsrMatrix Kii(pattern);
     std::copy(rec.ii_val.begin(), rec.ii_val.end(), Kii.values().begin());
-    auto solver = make_cholmod_solver();
-    solver->analyze(*pattern);
+    auto cholmod = make_cholmod_solver();
+    cholmod->analyze(*pattern);
     try {
-      solver->factorize(Kii);
+      cholmod->factorize(Kii);
     } catch (const SingularSystem& e) {
       const LocalIndex eq = e.equations().empty() ? 0 : e.equations().front();
       const LocalIndex slot = eqmap.eq_slot[part.internal_eq[std::min<std::size_t>(eq, nI - 1)]];
@@ -204,7 +204,7 @@ void Analysis::Impl::generate_substructure(StepRun& r) {
           const auto c = static_cast<std::size_t>(rec.ir_col[k]);
           if (c >= c0 && c < c0 + nb) B[(c - c0) * nI + i] = rec.ir_val[k];
         }
-      solver->solve_many(B, X, static_cast<int>(nb));
+      cholmod->solve_many(B, X, static_cast<int>(nb));
       for (std::size_t i = 0; i < nI; ++i)
         for (std::int64_t k = rec.ir_ptr[i]; k < rec.ir_ptr[i + 1]; ++k) {
           const auto rrow = static_cast<std::size_t>(rec.ir_col[k]);

@@ -1,0 +1,67 @@
+#pragma once
+/// @file constrained_solver.hpp
+/// The seam between Newton and the linear algebra: a solver of the constrained Newton system
+///
+///     [ K  D ] [du]   [ b ]          D = C^T unless the rows carry their own columns
+///     [ C  0 ] [dl] = [-g ]
+///
+/// over the free equations of one process. Newton, the analysis and the step drivers know only
+/// this interface; the backends are chosen by make_constrained_solver(). The matrix K is the
+/// locally assembled tangent (the problem writes it through a MatrixInserter); a distributed
+/// backend sums the owned and ghost rows of every process into its own storage (EquationMap's
+/// owned/ghost layout), a serial one factorises it as it is.
+#include "common/timer.hpp"
+#include "linalg/constraint_block.hpp"
+#include "linalg/csr_matrix.hpp"
+#include "linalg/factor_reuse.hpp"
+#include "linalg/linear_solver.hpp" // SingularSystem
+
+#include <memory>
+#include <span>
+#include <string_view>
+
+namespace gapfem {
+
+struct KktOptions {
+  double augmentation = 100.0;       ///< R_i = augmentation x stiffness at the row's DOFs
+  double constraint_tolerance = 0.0; ///< stop the multiplier iteration when |C du + g| below this
+  int max_iterations = 200;
+  FactorReuse reuse = FactorReuse::Auto;
+  bool force_fresh = false; ///< factorise the current matrix (the caller saw slow convergence)
+  double max_drift = 1e-3;  ///< reuse only if |K - K_F|_ij <= max_drift sqrt(|K_F,ii K_F,jj|)
+};
+
+struct KktStatistics {
+  int schur_iterations = 0;
+  int solves = 0;
+  bool used_unsymmetric = false;
+  bool reused_factor = false; ///< no factorisation was done for this system
+  bool stale_factor = false;  ///< ... and the factor was of a different matrix (modified Newton)
+  int changed_rows = 0;       ///< constraint rows that differ from the factored ones
+  double constraint_residual = 0.0;
+};
+
+/// The available backends (the CLI's `--solver`).
+enum class SolverBackend {
+  Cholmod ///< KktSolver: CHOLMOD (UMFPACK when indefinite or unsymmetric), one process
+};
+
+class ConstrainedSolver {
+ public:
+  virtual ~ConstrainedSolver() = default;
+  virtual std::string_view name() const = 0;
+  /// Symbolic analysis for a step's pattern (once per step).
+  virtual void analyze(std::shared_ptr<const SparsityPattern> pattern) = 0;
+  /// Drop any factor: the next solve starts afresh, exactly as a new solver would (restart points).
+  virtual void forget_factor() = 0;
+  /// Solve the system above; K may be modified in place. du has one entry per equation, dl one
+  /// per constraint row. Throws SingularSystem when K (with the constraints) is singular, and
+  /// AnalysisError when the factor cannot fit in memory.
+  virtual KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
+                              std::span<double> du, std::span<double> dl, bool symmetric,
+                              const KktOptions& options, RunStatistics* stats = nullptr) = 0;
+};
+
+std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend);
+
+} // namespace gapfem
