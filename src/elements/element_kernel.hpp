@@ -92,6 +92,9 @@ struct ElementOutput {
   int n_constraints = 0;
   std::span<int> constraint_slot;     ///< which multiplier of the element each row belongs to
   std::span<double> constraint_value; ///< g_i(u); the solver drives it to 0
+  /// per row: 0 (exact) or 1/k (compliant: the multiplier is a force of stiffness k; the row is
+  /// C du - dl / k + g = 0, see ConstraintBlock::compliance)
+  std::span<double> constraint_compliance;
   std::span<double> constraint_coeff; ///< row-major n_multipliers x n_dofs: dg_i/du
   /// d(residual)/d(lambda_i) per row when it differs from dg_i/du (e.g. friction forces that depend
   /// on the normal multiplier); same layout as constraint_coeff; used only if has_columns
@@ -105,10 +108,12 @@ struct ElementOutput {
   /// growth of the next one. Infinity: no request.
   double dt_ratio = std::numeric_limits<double>::infinity();
 
-  void add_constraint(int slot, double value, std::span<const double> coeff) {
+  void add_constraint(int slot, double value, std::span<const double> coeff,
+                      double compliance = 0.0) {
     const auto n = residual.size();
     constraint_slot[n_constraints] = slot;
     constraint_value[n_constraints] = value;
+    constraint_compliance[n_constraints] = compliance;
     for (std::size_t i = 0; i < n; ++i) {
       constraint_coeff[n_constraints * n + i] = coeff[i];
       if (!constraint_column.empty()) constraint_column[n_constraints * n + i] = coeff[i];

@@ -134,7 +134,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
                 block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult +
                     out.constraint_slot[c],
                 out.has_columns ? out.constraint_column.subspan(off, nd)
-                                : std::span<const double>{});
+                                : std::span<const double>{},
+                out.constraint_compliance[c]);
           }
       }
     });
@@ -159,6 +160,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           }
           C->row_ptr.push_back(static_cast<LocalIndex>(C->col.size()));
           C->g.push_back(tc.g[r]);
+          C->compliance.push_back(tc.compliance[r]);
           C->multiplier.push_back(tc.multiplier[r]);
         }
       }

@@ -77,6 +77,7 @@ ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangen
   const auto m = static_cast<std::size_t>(block.n_mult);
   _cslot.assign(m, 0);
   _cval.assign(m, 0.0);
+  _ccomp.assign(m, 0.0);
   _ccoef.assign(m * n, 0.0);
   _ccol.assign(m * n, 0.0);
   _out = ElementOutput{};
@@ -85,6 +86,7 @@ ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangen
   _out.want_tangent = want_tangent;
   _out.constraint_slot = _cslot;
   _out.constraint_value = _cval;
+  _out.constraint_compliance = _ccomp;
   _out.constraint_coeff = _ccoef;
   _out.constraint_column = _ccol;
   return _out;

@@ -38,7 +38,7 @@ class ElementGather {
   std::vector<double> _r, _K;
   std::vector<std::uint8_t> _free;
   std::vector<int> _cslot;
-  std::vector<double> _cval, _ccoef, _ccol;
+  std::vector<double> _cval, _ccomp, _ccoef, _ccol;
 };
 
 } // namespace gapfem

@@ -2,8 +2,9 @@
 /// @file constrained_solver.hpp
 /// The seam between Newton and the linear algebra: a solver of the constrained Newton system
 ///
-///     [ K  D ] [du]   [ b ]          D = C^T unless the rows carry their own columns
-///     [ C  0 ] [dl] = [-g ]
+///     [ K  D ] [du]   [ b ]          D = C^T unless the rows carry their own columns,
+///     [ C -E ] [dl] = [-g ]          E = diag(compliance): 0 for exact constraints, 1/k for
+///                                    compliant rows (a penalty gap of stiffness k)
 ///
 /// over the free equations of one process. Newton, the analysis and the step drivers know only
 /// this interface; the backends are chosen by make_constrained_solver(). The matrix K is the

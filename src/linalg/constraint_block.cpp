@@ -4,7 +4,7 @@ namespace gapfem {
 
 bool ConstraintBlock::add_row(std::span<const LocalIndex> eqs, std::span<const double> coeff,
                               double value, std::int64_t multiplier_index,
-                              std::span<const double> column) {
+                              std::span<const double> column, double row_compliance) {
   const auto start = col.size();
   if (!column.empty() && dval.size() < val.size()) dval = val; // rows so far: D = C^T
   for (std::size_t k = 0; k < eqs.size(); ++k)
@@ -19,8 +19,15 @@ bool ConstraintBlock::add_row(std::span<const LocalIndex> eqs, std::span<const d
   if (col.size() == start) return false;
   row_ptr.push_back(static_cast<LocalIndex>(col.size()));
   g.push_back(value);
+  compliance.push_back(row_compliance);
   multiplier.push_back(multiplier_index);
   return true;
+}
+
+bool ConstraintBlock::has_compliance() const {
+  for (double e : compliance)
+    if (e != 0.0) return true;
+  return false;
 }
 
 void ConstraintBlock::multiply(std::span<const double> x, std::span<double> y) const {

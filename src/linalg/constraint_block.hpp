@@ -17,7 +17,10 @@ struct ConstraintBlock {
   /// Optional: d(residual)/d(lambda) per row in the same layout as val (the column block D of the
   /// system [K D; C 0]); empty when D = C^T for every row.
   std::vector<double> dval;
-  std::vector<double> g;                  ///< g_i(u); the Newton step drives it to 0
+  std::vector<double> g; ///< g_i(u); the Newton step drives C du - E dl + g to 0
+  /// E_ii per row: 0 for an exact constraint; 1/k for a compliant row, whose multiplier is a force
+  /// of stiffness k (a penalty gap): the row's equation is C du - dl / k + g = 0
+  std::vector<double> compliance;
   std::vector<std::int64_t> multiplier;   ///< index of the row's multiplier in the model storage
 
   int n_rows() const { return static_cast<int>(g.size()); }
@@ -27,12 +30,15 @@ struct ConstraintBlock {
     val.clear();
     dval.clear();
     g.clear();
+    compliance.clear();
     multiplier.clear();
   }
   /// Append a row: equation numbers (negative = prescribed DOF, skipped) and coefficients.
   /// Returns false (and appends nothing) when no coefficient falls on a free equation.
   bool add_row(std::span<const LocalIndex> eqs, std::span<const double> coeff, double value,
-               std::int64_t multiplier_index, std::span<const double> column = {});
+               std::int64_t multiplier_index, std::span<const double> column = {},
+               double row_compliance = 0.0);
+  bool has_compliance() const;
   bool has_columns() const { return !dval.empty(); }
   /// y = C x
   void multiply(std::span<const double> x, std::span<double> y) const;

@@ -17,6 +17,12 @@ double norm_inf(std::span<const double> v) {
   for (double x : v) s = std::max(s, std::abs(x));
   return s;
 }
+double compliance_of(const ConstraintBlock& C, int r) {
+  return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
+}
+/// A compliant row's spring in the factor must stay softer than the row itself (R E < 1, see
+/// solve()); half of it keeps the Schur system well away from that limit.
+constexpr double kCompliantSpringShare = 0.5;
 bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb) {
   const LocalIndex a0 = a.row_ptr[ra], a1 = a.row_ptr[ra + 1];
   const LocalIndex b0 = b.row_ptr[rb], b1 = b.row_ptr[rb + 1];
@@ -175,6 +181,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       double stiff = den > 0 ? num / den : 0.0;
       if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
       R[r] = opt.augmentation * stiff / std::max(den, 1e-300);
+      const double E = compliance_of(C, r);
+      if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
     }
   }
 
@@ -190,7 +198,10 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     int changes = 0;
     for (int r = 0; r < m; ++r) {
       const auto it = _frow_of.find(C.multiplier[r]);
-      if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second)) {
+      // a compliant row whose spring in the factor is no longer softer than the row (it got
+      // stiffer since) is replaced like a changed row
+      if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second) &&
+          _fR[it->second] * compliance_of(C, r) <= 0.9) {
         p_of[r] = it->second;
         used[it->second] = 1;
       } else {
@@ -252,7 +263,20 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     }
     const int mt = Ch->n_rows();
     std::vector<double> d(static_cast<std::size_t>(mt), 0.0), p(static_cast<std::size_t>(mt));
-    for (int r = 0; r < m; ++r) p[r] = p_of[r] >= 0 ? _fR[p_of[r]] : R[r] / opt.augmentation;
+    // Rows in the factor (spring R_F) carry w = (1 - R_F E) dl: their Schur block is
+    // C M^-1 C^T + E / (1 - R_F E); new rows carry w = dl with C M^-1 C^T + E. The preconditioner
+    // is the inverse of the block's estimate (C M^-1 C^T ~ 1/R_F for rows in the factor).
+    for (int r = 0; r < m; ++r) {
+      const double E = compliance_of(C, r);
+      if (p_of[r] >= 0) {
+        const double Rf = _fR[p_of[r]];
+        d[r] = -E / (1.0 - Rf * E);
+        p[r] = 1.0 / (1.0 / Rf - d[r]);
+      } else {
+        d[r] = -E;
+        p[r] = 1.0 / (opt.augmentation / R[r] + E);
+      }
+    }
     for (std::size_t k = 0; k < gone.size(); ++k) {
       const double Rf = _fR[gone[k]];
       d[m + k] = 1.0 / Rf;

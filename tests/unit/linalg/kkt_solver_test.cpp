@@ -258,3 +258,109 @@ TEST(KktSolver, LooseConstraintToleranceKeepsTheStepInEquilibrium) {
   EXPECT_LE(std::abs(du[0] - du[n - 1] + 0.2), 1e-3);
   EXPECT_LE(std::abs(du[3] - 0.1), 1e-3);
 }
+
+// Compliant rows (penalty gaps as rows): [K C^T; C -E] [du; dl] = [b; -g] with E = diag(1/k).
+// Randomised sequences of row sets on one factor (rows appearing, disappearing, changing their
+// compliance, stiff and soft against the chain) against a dense solve of the same system; the
+// fresh factor, the stale factor with changed rows and the unsymmetric path all give the step.
+namespace {
+Eigen::VectorXd dense_compliant(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
+                                const std::vector<Row>& rows, const std::vector<double>& E) {
+  const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
+  A.topLeftCorner(n, n) = K;
+  Eigen::VectorXd rhs(n + m);
+  rhs.head(n) = b;
+  for (int r = 0; r < m; ++r) {
+    for (std::size_t k = 0; k < rows[r].eqs.size(); ++k)
+      A(n + r, rows[r].eqs[k]) = A(rows[r].eqs[k], n + r) = rows[r].c[k];
+    A(n + r, n + r) = -E[r];
+    rhs[n + r] = -rows[r].g;
+  }
+  return A.fullPivLu().solve(rhs);
+}
+} // namespace
+
+TEST(KktSolver, CompliantRowsMatchTheDenseSystemOverRandomContactHistories) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int n = 12;
+  for (int trial = 0; trial < 40; ++trial) {
+    const bool symmetric = trial % 4 != 3;
+    Problem p = chain(n, trial % 5 != 0, symmetric ? 0.0 : 0.2);
+    // candidate rows: single DOFs (a gap to ground) and the end pair
+    std::vector<Row> candidates;
+    for (int i = 0; i < n; ++i)
+      candidates.push_back({{i}, {1.0}, 0.0, 100 + i});
+    candidates.push_back({{0, n - 1}, {1.0, -1.0}, 0.0, 99});
+    KktSolver solver;
+    solver.analyze(p.pattern);
+    KktOptions opt;
+    opt.constraint_tolerance = 1e-15;
+    opt.reuse = trial % 2 ? FactorReuse::Always : FactorReuse::Never;
+    RunStatistics stats;
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    for (int step = 0; step < 5; ++step) {
+      std::vector<Row> rows;
+      std::vector<double> E;
+      ConstraintBlock C;
+      for (const Row& cand : candidates) {
+        if (u01(rng) > 0.4) continue;
+        Row r = cand;
+        r.g = 0.1 * (u01(rng) - 0.5);
+        // stiffness from 1e-3 to 1e6 times the chain's (1..n); a fifth of them exact
+        const double E_r = u01(rng) < 0.2 ? 0.0 : std::pow(10.0, -6.0 + 9.0 * u01(rng));
+        rows.push_back(r);
+        E.push_back(E_r);
+        C.add_row(r.eqs, r.c, r.g, r.id, {}, E_r);
+      }
+      const bool held = trial % 5 != 0 || [&] {
+        for (std::size_t r = 0; r < rows.size(); ++r)
+          if (rows[r].eqs.size() == 1) return true;
+        return false;
+      }();
+      if (!held) continue; // a floating chain needs a row to ground it
+      CsrMatrix K = to_csr(p);
+      std::vector<double> du(n), dl(rows.size());
+      solver.solve(K, {b.data(), std::size_t(n)}, C, du, dl, symmetric, opt, &stats);
+      const Eigen::VectorXd ref = dense_compliant(p.K, b, rows, E);
+      const double su = ref.head(n).cwiseAbs().maxCoeff();
+      for (int i = 0; i < n; ++i)
+        EXPECT_NEAR(du[i], ref[i], 1e-9 * su) << "trial " << trial << " step " << step << " " << i;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const double sl = std::max(1.0, std::abs(ref[n + static_cast<int>(r)]));
+        EXPECT_NEAR(dl[r], ref[n + static_cast<int>(r)], 1e-8 * sl)
+            << "trial " << trial << " step " << step << " row " << r;
+      }
+    }
+    if (opt.reuse == FactorReuse::Always && symmetric)
+      EXPECT_LT(stats.factorizations, 5) << "rows that change reuse the factor";
+  }
+}
+
+// A compliant row gives the penalty force: eliminating dl = (C du + g) / E gives
+// (K + C^T C / E) du = b - C^T g / E, the matrix of a spring of stiffness 1/E.
+TEST(KktSolver, ACompliantRowIsTheSpringItStandsFor) {
+  const int n = 6;
+  Problem p = chain(n, true);
+  const double k = 1e4, g = 0.02;
+  ConstraintBlock C;
+  const std::vector<LocalIndex> eq{4};
+  const std::vector<double> c{1.0};
+  C.add_row(eq, c, g, 7, {}, 1.0 / k);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
+  CsrMatrix K = to_csr(p);
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  std::vector<double> du(n), dl(1);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-15;
+  solver.solve(K, {b.data(), std::size_t(n)}, C, du, dl, true, opt);
+  Eigen::MatrixXd Ks = p.K;
+  Ks(4, 4) += k;
+  Eigen::VectorXd bs = b;
+  bs[4] -= k * g;
+  const Eigen::VectorXd ref = Ks.ldlt().solve(bs);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-12 * ref.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(dl[0], k * (du[4] + g), 1e-9 * k * std::abs(du[4] + g) + 1e-12);
+}

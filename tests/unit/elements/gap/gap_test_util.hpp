@@ -39,7 +39,7 @@ struct SingleElement {
   std::vector<double> u, u0, state, state0, mult;
   StepContext ctx;
   double stiffness_hint = 0.0;
-  std::vector<double> r, K, cval, ccoef, ccol;
+  std::vector<double> r, K, cval, ccomp, ccoef, ccol;
   bool has_columns = false;
   bool unsymmetric = false;
   std::vector<int> cslot;
@@ -85,6 +85,7 @@ struct SingleElement {
     K.assign(nd * nd, 0.0);
     cslot.assign(m, 0);
     cval.assign(m, 0.0);
+    ccomp.assign(m, 0.0);
     ccoef.assign(m * nd, 0.0);
     ccol.assign(m * nd, 0.0);
     ElementOutput out;
@@ -92,6 +93,7 @@ struct SingleElement {
     out.tangent = K;
     out.constraint_slot = cslot;
     out.constraint_value = cval;
+    out.constraint_compliance = ccomp;
     out.constraint_coeff = ccoef;
     out.constraint_column = ccol;
     auto in = input();
