@@ -21,7 +21,7 @@ struct ConstraintBlock {
   /// E_ii per row: 0 for an exact constraint; 1/k for a compliant row, whose multiplier is a force
   /// of stiffness k (a penalty gap): the row's equation is C du - dl / k + g = 0
   std::vector<double> compliance;
-  std::vector<std::int64_t> multiplier;   ///< index of the row's multiplier in the model storage
+  std::vector<std::int64_t> multiplier; ///< index of the row's multiplier in the model storage
 
   int n_rows() const { return static_cast<int>(g.size()); }
   void clear() {

@@ -249,11 +249,29 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     out.stale_factor = stale;
     out.used_unsymmetric = _active != _cholmod.get();
 
+    // A compliant row in the factor whose column D differs from its row C (friction that depends
+    // on a penalty gap's force): in the unknown w = (1 - R_F E) dl its column is
+    // C^T + (D - C^T) / (1 - R_F E), which keeps K du + D dl = b exact (see solve's derivation in
+    // docs/theory/gap_elements.md).
+    const ConstraintBlock* Cs = &C;
+    ConstraintBlock scaled;
+    if (C.has_columns())
+      for (int r = 0; r < m; ++r) {
+        const double E = compliance_of(C, r);
+        if (p_of[r] < 0 || E == 0.0) continue;
+        if (Cs == &C) {
+          scaled = C;
+          Cs = &scaled;
+        }
+        const double f = 1.0 / (1.0 - _fR[p_of[r]] * E);
+        for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k)
+          scaled.dval[k] = C.val[k] + (C.dval[k] - C.val[k]) * f;
+      }
     // Extended rows: the current rows, then anti-rows cancelling the springs of rows gone.
-    const ConstraintBlock* Ch = &C;
+    const ConstraintBlock* Ch = Cs;
     ConstraintBlock ext;
     if (!gone.empty()) {
-      ext = C;
+      ext = *Cs;
       for (int f : gone) {
         const LocalIndex b0 = _frows.row_ptr[f], b1 = _frows.row_ptr[f + 1];
         ext.add_row({_frows.col.data() + b0, static_cast<std::size_t>(b1 - b0)},
@@ -283,51 +301,67 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       p[m + k] = -opt.augmentation * Rf; // the anti-row block is ~ -1/(augmentation R)
     }
 
-    // b1 = b - C_P^T R_F g ;  y = M^-1 b1
-    std::vector<double> b1(b.begin(), b.end());
-    if (m > 0) {
-      std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
-      for (int r = 0; r < m; ++r)
-        if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * C.g[r];
-      C.add_transpose_multiply(Rg, -1.0, b1);
-    }
-    std::vector<double> y(static_cast<std::size_t>(n));
-    back_solve(b1, y, stats);
-    if (mt == 0) {
-      std::copy(y.begin(), y.end(), du.begin());
-      out.solves = _solves;
-      return out;
-    }
-    // Schur system; its residual is the predicted constraint value C du + g.
-    std::vector<double> rhs(static_cast<std::size_t>(mt));
-    Ch->multiply(y, rhs);
-    for (int r = 0; r < m; ++r) rhs[r] += C.g[r];
-    const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
     const bool cg = !out.used_unsymmetric && !Ch->has_columns() && gone.empty();
     int max_it = opt.max_iterations;
     if (stale && opt.reuse == FactorReuse::Auto)
       max_it =
           std::min(max_it, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
-    std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n), 0.0);
-    const SchurResult sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol, stats);
+    // One solve of the system for the right-hand side (bb, -gg) with this factor.
+    auto step = [&](std::span<const double> bb, std::span<const double> gg, std::span<double> x_u,
+                    std::span<double> x_l) {
+      // b1 = bb - C_P^T R_F gg ;  y = M^-1 b1
+      std::vector<double> b1(bb.begin(), bb.end());
+      if (m > 0) {
+        std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
+        for (int r = 0; r < m; ++r)
+          if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * gg[r];
+        C.add_transpose_multiply(Rg, -1.0, b1);
+      }
+      std::vector<double> y(static_cast<std::size_t>(n));
+      back_solve(b1, y, stats);
+      SchurResult sr;
+      if (mt == 0) {
+        std::copy(y.begin(), y.end(), x_u.begin());
+        return sr;
+      }
+      // Schur system; its residual is the predicted constraint value C du + g.
+      std::vector<double> rhs(static_cast<std::size_t>(mt));
+      Ch->multiply(y, rhs);
+      for (int r = 0; r < m; ++r) rhs[r] += gg[r];
+      // Per-row tolerances. An exact row's residual is a length: the constraint tolerance. A
+      // compliant row's residual r means a force error r / E, large for a stiff penalty: it is
+      // solved until that error is 1e-13 of the largest force of bb (what a direct solve of the
+      // penalty matrix would give), or to round-off.
+      const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
+      std::vector<double> tol_r(static_cast<std::size_t>(mt), tol);
+      const double force_scale = norm_inf(bb), floor = 1e-15 * norm_inf(rhs);
+      for (int r = 0; r < m; ++r)
+        if (const double E = compliance_of(C, r); E > 0)
+          tol_r[r] = std::min(tol, std::max(1e-13 * force_scale * E, floor));
+      std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
+      sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol_r, stats);
+      for (LocalIndex i = 0; i < n; ++i) x_u[i] = y[i] - x[i];
+      // M du + D w = b - C_P^T R_F g gives K du + C^T dl = b exactly with
+      // dl = w + R_F (C du + g) on the rows whose springs are in the factor: the multiplier
+      // iteration stops once C du + g is within the constraint tolerance, and the spring force
+      // R_F (C du + g) left over (large, R_F being stiff) belongs to the multiplier, not to the
+      // residual.
+      std::copy(w.begin(), w.begin() + m, x_l.begin());
+      std::vector<double> cdu(static_cast<std::size_t>(m));
+      C.multiply(x_u, cdu);
+      for (int r = 0; r < m; ++r)
+        if (p_of[r] >= 0) x_l[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
+      return sr;
+    };
+    const SchurResult sr = step(b, C.g, du, dl);
     out.schur_iterations += sr.iterations;
-    if (stale && sr.residual > tol) {
+    if (stale && sr.ratio > 1.0) {
       log::debug("stale factor: multiplier iteration stalled ({} iterations, residual {:.3e}); "
                  "refactorising",
                  sr.iterations, sr.residual);
       stale = false;
       continue;
     }
-    for (LocalIndex i = 0; i < n; ++i) du[i] = y[i] - x[i];
-    // M du + D w = b - C_P^T R_F g gives K du + C^T dl = b exactly with
-    // dl = w + R_F (C du + g) on the rows whose springs are in the factor: the multiplier iteration
-    // stops once C du + g is within the constraint tolerance, and the spring force R_F (C du + g)
-    // left over (large, R_F being stiff) belongs to the multiplier, not to the residual.
-    std::copy(w.begin(), w.begin() + m, dl.begin());
-    std::vector<double> cdu(static_cast<std::size_t>(m));
-    C.multiply(du, cdu);
-    for (int r = 0; r < m; ++r)
-      if (p_of[r] >= 0) dl[r] += _fR[p_of[r]] * (cdu[r] + C.g[r]);
     out.constraint_residual = sr.residual;
     out.solves = _solves;
     log::debug("  {} factor, {} multiplier iterations",
@@ -339,7 +373,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
 KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<const double> d,
                                         std::span<const double> p, std::span<const double> rhs,
                                         std::span<double> w, std::span<double> x, bool cg,
-                                        int max_iterations, double tol, RunStatistics* stats) {
+                                        int max_iterations, std::span<const double> tol,
+                                        RunStatistics* stats) {
   SchurResult out;
   const int m = Ch.n_rows();
   const auto n = x.size();
@@ -353,6 +388,12 @@ KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<con
     for (int r = 0; r < m; ++r) Sv[r] -= d[r] * v[r];
   };
   std::vector<double> res(rhs.begin(), rhs.end());
+  // the largest residual relative to its row's tolerance: converged at <= 1
+  auto ratio = [&] {
+    double q = 0.0;
+    for (int r = 0; r < m; ++r) q = std::max(q, std::abs(res[r]) / tol[r]);
+    return q;
+  };
   std::fill(w.begin(), w.end(), 0.0);
   std::fill(x.begin(), x.end(), 0.0);
 
@@ -363,7 +404,7 @@ KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<con
     for (int r = 0; r < m; ++r) z[r] = p[r] * res[r];
     pv = z;
     double rz = std::inner_product(res.begin(), res.end(), z.begin(), 0.0);
-    for (int it = 0; it < max_iterations && norm_inf(res) > tol; ++it) {
+    for (int it = 0; it < max_iterations && ratio() > 1.0; ++it) {
       apply_S(pv, Sp, v_x);
       const double pSp = std::inner_product(pv.begin(), pv.end(), Sp.begin(), 0.0);
       if (!(pSp > 0)) break; // redundant constraints exhausted
@@ -381,6 +422,7 @@ KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<con
       for (int r = 0; r < m; ++r) pv[r] = z[r] + beta * pv[r];
     }
     out.residual = norm_inf(res);
+    out.ratio = ratio();
     return out;
   }
   // Right-preconditioned restarted GMRES.
@@ -389,7 +431,7 @@ KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<con
                                      std::vector<double>(static_cast<std::size_t>(m)));
   std::vector<double> H(static_cast<std::size_t>((restart + 1) * restart), 0.0), cs(restart),
       sn(restart), s(restart + 1), zv(static_cast<std::size_t>(m)), Sz(static_cast<std::size_t>(m));
-  while (norm_inf(res) > tol && out.iterations < max_iterations) {
+  while (ratio() > 1.0 && out.iterations < max_iterations) {
     const double beta = std::sqrt(std::inner_product(res.begin(), res.end(), res.begin(), 0.0));
     if (!(beta > 0)) break;
     for (int r = 0; r < m; ++r) V[0][r] = res[r] / beta;
@@ -444,6 +486,7 @@ KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<con
     if (k == 0) break;
   }
   out.residual = norm_inf(res);
+  out.ratio = ratio();
   return out;
 }
 

@@ -54,7 +54,8 @@ class KktSolver final : public ConstrainedSolver {
  private:
   struct SchurResult {
     int iterations = 0;
-    double residual = 0.0;
+    double residual = 0.0; ///< max |row residual|
+    double ratio = 0.0;    ///< max |row residual| / its tolerance (converged: <= 1)
   };
   void factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats);
   /// Factorise K augmented by the rows of C with weights R, remembering K and the rows.
@@ -64,7 +65,7 @@ class KktSolver final : public ConstrainedSolver {
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
-                    int max_iterations, double tol, RunStatistics* stats);
+                    int max_iterations, std::span<const double> tol, RunStatistics* stats);
 
   std::shared_ptr<const SparsityPattern> _pattern;
   std::unique_ptr<LinearSolver> _cholmod, _umfpack;

@@ -108,6 +108,19 @@ void MechanicalGapKernel::normal(const ElementInput& in, std::span<double> st,
       _law->force(R.g, L.hint, L.FN, L.dFN_dg);
     }
     L.is_closed = L.FN > 0 || (_no_separation && L.was_closed);
+    // Penalty as a compliant row (docs/theory/gap_elements.md): the law's slope F' leaves the
+    // tangent for a row dg.du - dlambda / F' = 0 whose multiplier is the force F itself. Eliminating
+    // the multiplier gives back the tangent term F' dg dg^T, so the Newton iterates are those of
+    // the force law; but a gap that opens or closes now changes a row, not the matrix, and the
+    // solver keeps its factor (the rows are a low-rank correction).
+    if (_compliant_rows && L.dFN_dg > 0 &&
+        L.dFN_dg >= kRowFraction * _law->stiffness_scale(L.hint) && enforceable(in, L, L.dg)) {
+      L.compliant_row = true;
+      L.lagrange_normal = true;
+      L.row_compliance = 1.0 / L.dFN_dg;
+      L.dFN_dg = 0.0;
+      if (L.update) mult[0] = L.FN;
+    }
     break;
   }
   case NormalMode::Augmented: {
@@ -242,7 +255,7 @@ void MechanicalGapKernel::friction_penalty(const ElementInput& in, std::span<dou
   R.dissipation = fr.dissipation;
   L.predicted_stick = fr.predicted_stick;
   if (FNc > 0) L.status = fr.slipping ? ContactStatus::Slip : ContactStatus::Stick;
-  if (FNc <= 0.0 && L.lagrange_normal) {
+  if (FNc <= 0.0 && L.lagrange_normal && !L.compliant_row) {
     // Closed at zero force (a gap that closes in this iteration, or starts closed unloaded):
     // friction has no stiffness yet, and a tangential motion held only by friction would be
     // singular. The tangent (not the force) takes the attached elements' stiffness, so the first
@@ -329,7 +342,11 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
   st[GapStateLayout::damping] = L.Fd;
   st[GapStateLayout::damping + 1] = L.td[0];
   st[GapStateLayout::damping + 2] = L.td[1];
-  if (L.lagrange_normal) out.add_constraint(0, R.g, {L.dg.data(), static_cast<std::size_t>(L.nd)});
+  // an exact row drives the overclosure to 0; a compliant row's multiplier is already the law's
+  // force at this state, so its value is 0 (the row only carries the linearisation)
+  if (L.lagrange_normal)
+    out.add_constraint(0, L.compliant_row ? 0.0 : R.g,
+                       {L.dg.data(), static_cast<std::size_t>(L.nd)}, L.row_compliance);
 }
 
 void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,

@@ -45,6 +45,9 @@ struct MechanicalGapKernel::Local {
   // normal behaviour
   double FN = 0.0, dFN_dg = 0.0;
   bool lagrange_normal = false, is_closed = false;
+  /// a force law's stiffness carried by a compliant row (compliance 1/F') instead of the tangent
+  bool compliant_row = false;
+  double row_compliance = 0.0;
   // friction
   const FrictionLaw* fl = nullptr;
   Eigen::Matrix2d dtau_ds = Eigen::Matrix2d::Zero();

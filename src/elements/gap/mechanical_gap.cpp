@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string_view>
 #include <fmt/format.h>
 #include <unordered_map>
 
@@ -69,6 +71,8 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
   _no_separation = b.given && b.no_separation;
   if (_law) {
     _mode = NormalMode::Force;
+    if (const char* env = std::getenv("GAPFEM_PENALTY_ROWS"))
+      _compliant_rows = std::string_view(env) != "0" && std::string_view(env) != "off";
   } else if (b.given && b.method == ContactMethod::AugmentedLagrange) {
     _mode = NormalMode::Augmented;
     _augmented_k = b.penalty_stiffness * _section.area;

@@ -66,6 +66,20 @@ void ExponentialLaw::force(double g, double, double& F, double& dF_dg) const {
   dF_dg = _area * dp;
 }
 
+double ExponentialLaw::stiffness_scale(double) const {
+  if (_kmax > 0) return _area * _kmax;
+  double p, dp; // the slope at zero overclosure, where p = p0
+  raw(0.0, p, dp);
+  return _area * dp;
+}
+
+double TabularLaw::stiffness_scale(double) const {
+  double s = 0.0;
+  for (std::size_t i = 1; i < _g.size(); ++i)
+    s = std::max(s, std::abs((_p[i] - _p[i - 1]) / (_g[i] - _g[i - 1])));
+  return _area * s;
+}
+
 TabularLaw::TabularLaw(std::vector<double> p, std::vector<double> g, double area)
     : _p(std::move(p)), _g(std::move(g)), _area(area) {}
 

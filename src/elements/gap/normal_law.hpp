@@ -19,6 +19,9 @@ class NormalForceLaw {
   /// Compressive contact force F(g) and dF/dg. `stiffness_hint` is the representative stiffness of
   /// the elements connected to the gap (for automatic penalty stiffnesses).
   virtual void force(double g, double stiffness_hint, double& F, double& dF_dg) const = 0;
+  /// The law's stiffness scale (its penalty, or its steepest slope): below kRowFraction of it a
+  /// slope is too soft to be worth a compliant row (MechanicalGapKernel).
+  virtual double stiffness_scale(double stiffness_hint) const = 0;
 };
 
 /// CalculiX's GAPUNI law (fields 6-7 of *GAP): F = k g (1/2 + atan(g/eps)/pi), eps = pi f_inf / k.
@@ -27,6 +30,7 @@ class CcxPenaltyLaw final : public NormalForceLaw {
   CcxPenaltyLaw(double stiffness, double tension)
       : _k(stiffness), _eps(3.141592653589793 * tension / stiffness) {}
   void force(double g, double, double& F, double& dF_dg) const override;
+  double stiffness_scale(double) const override { return _k; }
 
  private:
   double _k, _eps;
@@ -37,6 +41,7 @@ class LinearLaw final : public NormalForceLaw {
  public:
   LinearLaw(double slope, double area) : _k(slope * area) {}
   void force(double g, double, double& F, double& dF_dg) const override;
+  double stiffness_scale(double) const override { return _k; }
 
  private:
   double _k;
@@ -49,6 +54,7 @@ class ExponentialLaw final : public NormalForceLaw {
  public:
   ExponentialLaw(double c0, double p0, double kmax, double area);
   void force(double g, double, double& F, double& dF_dg) const override;
+  double stiffness_scale(double) const override;
 
  private:
   void raw(double g, double& p, double& dp) const;
@@ -61,6 +67,7 @@ class TabularLaw final : public NormalForceLaw {
  public:
   TabularLaw(std::vector<double> p, std::vector<double> g, double area);
   void force(double g, double, double& F, double& dF_dg) const override;
+  double stiffness_scale(double) const override;
 
  private:
   std::vector<double> _p, _g;
@@ -73,6 +80,9 @@ class PenaltyLaw final : public NormalForceLaw {
  public:
   explicit PenaltyLaw(double stiffness) : _k(stiffness) {}
   void force(double g, double hint, double& F, double& dF_dg) const override;
+  double stiffness_scale(double hint) const override {
+    return _k > 0 ? _k : kAutomaticFactor * hint;
+  }
   static constexpr double kAutomaticFactor = 10.0;
 
  private:
