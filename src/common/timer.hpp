@@ -23,6 +23,7 @@ struct RunStatistics {
   long iterations = 0; ///< Newton iterations (= linear solves of the Newton system)
   long factorizations = 0;
   long linear_solves = 0; ///< back-substitutions with a factor
+  long factor_updates = 0; ///< constraint rows added to or removed from a factor (rank-1 each)
   double& operator[](TimeCategory c) { return seconds[static_cast<int>(c)]; }
   double operator[](TimeCategory c) const { return seconds[static_cast<int>(c)]; }
 };

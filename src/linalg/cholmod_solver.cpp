@@ -27,6 +27,7 @@ class CholmodSolver final : public LinearSolver {
   ~CholmodSolver() override {
     free_work();
     if (_L) cholmod_free_factor(&_L, &_c);
+    if (_Lsym) cholmod_free_factor(&_Lsym, &_c);
     cholmod_finish(&_c);
   }
   std::string_view name() const override { return "CHOLMOD (supernodal Cholesky)"; }
@@ -34,6 +35,7 @@ class CholmodSolver final : public LinearSolver {
 
   void analyze(const SparsityPattern& p) override {
     if (_L) cholmod_free_factor(&_L, &_c);
+    if (_Lsym) cholmod_free_factor(&_Lsym, &_c);
     free_work();
     _n = p.n;
     cholmod_sparse A = view(p, nullptr);
@@ -44,10 +46,70 @@ class CholmodSolver final : public LinearSolver {
     _c.postorder = true;
     _L = cholmod_analyze(&A, &_c);
     if (!_L || _c.status < CHOLMOD_OK) throw AnalysisError(failure("ordering/analysis"));
+    // the symbolic supernodal factor, to start from again after modify() made L simplicial
+    _Lsym = cholmod_copy_factor(_L, &_c);
+    _inverse_perm.assign(static_cast<std::size_t>(_n), 0);
+    const auto* perm = static_cast<const int*>(_L->Perm);
+    for (LocalIndex k = 0; k < _n; ++k) _inverse_perm[perm ? perm[k] : k] = k;
+  }
+
+  bool modify(bool add, const SparseColumns& W) override {
+    FE_CHECK(_L && _L->xtype != CHOLMOD_PATTERN, "modify before factorize");
+    if (W.n_cols() == 0) return true;
+    // C = P W (CHOLMOD's factor is of P A P^T), rows sorted in each column
+    std::vector<int> p(W.ptr.begin(), W.ptr.end()), rows;
+    std::vector<double> vals;
+    std::vector<std::pair<int, double>> col;
+    for (int j = 0; j < W.n_cols(); ++j) {
+      col.clear();
+      for (LocalIndex k = W.ptr[j]; k < W.ptr[j + 1]; ++k)
+        col.emplace_back(_inverse_perm[W.row[k]], W.val[k]);
+      std::sort(col.begin(), col.end());
+      for (const auto& [r, v] : col) {
+        rows.push_back(r);
+        vals.push_back(v);
+      }
+    }
+    cholmod_sparse C{};
+    C.nrow = static_cast<std::size_t>(_n);
+    C.ncol = static_cast<std::size_t>(W.n_cols());
+    C.nzmax = rows.size();
+    C.p = p.data();
+    C.i = rows.data();
+    C.x = vals.data();
+    C.stype = 0;
+    C.itype = CHOLMOD_INT;
+    C.xtype = CHOLMOD_REAL;
+    C.dtype = CHOLMOD_DOUBLE;
+    C.sorted = true;
+    C.packed = true;
+    // (a supernodal factor is converted to simplicial LDL^T, which the next factorize() undoes)
+    const int ok = cholmod_updown(add ? 1 : 0, &C, _L, &_c);
+    if (_c.status < CHOLMOD_OK) throw AnalysisError(failure("factor update"));
+    if (!ok || _c.status == CHOLMOD_NOT_POSDEF || _L->minor < static_cast<std::size_t>(_n))
+      throw SingularSystem("the modified matrix is not positive definite", {});
+    if (!add) check_downdate();
+    return true;
+  }
+
+  /// A downdate that removes the only support of a mode leaves a pivot at round-off (CHOLMOD
+  /// does not notice a zero that is not negative): the simplicial LDL^T diagonal is checked.
+  void check_downdate() const {
+    const auto* Lp = static_cast<const int*>(_L->p);
+    const auto* Lx = static_cast<const double*>(_L->x);
+    double dmax = 0.0;
+    for (LocalIndex j = 0; j < _n; ++j) dmax = std::max(dmax, std::abs(Lx[Lp[j]]));
+    for (LocalIndex j = 0; j < _n; ++j)
+      if (!(Lx[Lp[j]] > kPivotRatio * dmax))
+        throw SingularSystem("the modified matrix is not positive definite", {});
   }
 
   void factorize(const CsrMatrix& M) override {
     FE_CHECK(_L && M.n() == _n, "factorize before analyze");
+    if (!_L->is_super) { // modified since: back to the supernodal analysis
+      cholmod_free_factor(&_L, &_c);
+      _L = cholmod_copy_factor(_Lsym, &_c);
+    }
     cholmod_sparse A = view(M.pattern(), M.values().data());
     const int ok = cholmod_factorize(&A, _L, &_c);
     if (_c.status < CHOLMOD_OK) throw AnalysisError(failure("Cholesky factorisation"));
@@ -146,6 +208,8 @@ class CholmodSolver final : public LinearSolver {
 
   cholmod_common _c{};
   cholmod_factor* _L = nullptr;
+  cholmod_factor* _Lsym = nullptr; ///< the symbolic analysis (supernodal)
+  std::vector<int> _inverse_perm;  ///< equation -> position in the factor's ordering
   cholmod_dense* _Y = nullptr;
   cholmod_dense* _E = nullptr;
   LocalIndex _n = 0;

@@ -62,6 +62,12 @@ class KktSolver final : public ConstrainedSolver {
   void fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
                     bool symmetric, RunStatistics* stats);
   void back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats);
+  /// Make the factor exact for the current rows: update it with the springs of the new rows
+  /// (p_of < 0) and downdate the springs of the rows gone (CHOLMOD's rank-k update/downdate).
+  /// Afterwards every row is a kept row. False (factor dropped) when the backend cannot or the
+  /// result is not positive definite.
+  bool modify_factor(const ConstraintBlock& C, std::span<const double> R, std::vector<int>& p_of,
+                     std::vector<int>& gone, RunStatistics* stats);
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
@@ -81,6 +87,9 @@ class KktSolver final : public ConstrainedSolver {
   std::vector<double> _fR;                        ///< their weights
   std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
+  double _t_update_row = 0.0; ///< measured seconds per row added to or removed from the factor
+  bool _modify =
+      true; ///< update/downdate the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
 };
 
 } // namespace gapfem

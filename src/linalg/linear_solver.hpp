@@ -16,7 +16,7 @@ namespace gapfem {
 /// The matrix is singular (or not positive definite where that is required). `equations` lists the
 /// equations whose pivots vanished, so the caller can name nodes and DOFs.
 class SingularSystem : public std::runtime_error {
-public:
+ public:
   SingularSystem(std::string what, std::vector<LocalIndex> equations, bool indefinite = false)
       : std::runtime_error(std::move(what)), _equations(std::move(equations)),
         _indefinite(indefinite) {}
@@ -24,13 +24,22 @@ public:
   /// A negative pivot (matrix indefinite) rather than a zero one.
   bool indefinite() const { return _indefinite; }
 
-private:
+ private:
   std::vector<LocalIndex> _equations;
   bool _indefinite;
 };
 
+/// k sparse columns of length n (equation numbers), column-major: column j holds
+/// row[ptr[j]..ptr[j+1]) with values val[...].
+struct SparseColumns {
+  std::vector<LocalIndex> ptr{0};
+  std::vector<LocalIndex> row;
+  std::vector<double> val;
+  int n_cols() const { return static_cast<int>(ptr.size()) - 1; }
+};
+
 class LinearSolver {
-public:
+ public:
   virtual ~LinearSolver() = default;
   virtual std::string_view name() const = 0;
   /// True when the solver assumes (and uses only one triangle of) a symmetric matrix.
@@ -43,6 +52,14 @@ public:
   virtual void solve(std::span<const double> b, std::span<double> x) = 0;
   /// Solve for several right-hand sides at once (column-major n x k); default loops.
   virtual void solve_many(std::span<const double> b, std::span<double> x, int k);
+  /// Rank-k modification of the current factor: A := A + W W^T (add) or A - W W^T. Returns false
+  /// when the backend cannot modify factors (nothing changed); throws SingularSystem when the
+  /// modified matrix is not positive definite (the factor is then unusable: factorise afresh).
+  virtual bool modify(bool add, const SparseColumns& W) {
+    (void)add;
+    (void)W;
+    return false;
+  }
   /// Bytes held by the factor (for reports).
   virtual std::size_t factor_bytes() const { return 0; }
 };

@@ -85,9 +85,10 @@ void TerminalWriter::end(const Model& model, const RunSummary& s) {
   else
     log::info("Analysis NOT completed after {:.2f} s: {}", s.wall_seconds,
               s.failure.empty() ? "no reason given" : s.failure);
-  log::info("  {} increments ({} attempts), {} iterations, {} factorizations, "
-            "{} solves",
-            st.increments, st.attempts, st.iterations, st.factorizations, st.linear_solves);
+  log::info("  {} increments ({} attempts), {} iterations, {} factorizations ({} contact rows "
+            "updated in a factor), {} solves",
+            st.increments, st.attempts, st.iterations, st.factorizations, st.factor_updates,
+            st.linear_solves);
   double total = 0.0;
   for (double t : st.seconds) total += t;
   if (total > 0)

@@ -2,6 +2,7 @@
 #include "linalg/kkt_solver.hpp"
 
 #include <Eigen/Dense>
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <random>
 
@@ -290,8 +291,7 @@ TEST(KktSolver, CompliantRowsMatchTheDenseSystemOverRandomContactHistories) {
     Problem p = chain(n, trial % 5 != 0, symmetric ? 0.0 : 0.2);
     // candidate rows: single DOFs (a gap to ground) and the end pair
     std::vector<Row> candidates;
-    for (int i = 0; i < n; ++i)
-      candidates.push_back({{i}, {1.0}, 0.0, 100 + i});
+    for (int i = 0; i < n; ++i) candidates.push_back({{i}, {1.0}, 0.0, 100 + i});
     candidates.push_back({{0, n - 1}, {1.0, -1.0}, 0.0, 99});
     KktSolver solver;
     solver.analyze(p.pattern);
@@ -363,4 +363,87 @@ TEST(KktSolver, ACompliantRowIsTheSpringItStandsFor) {
   const Eigen::VectorXd ref = Ks.ldlt().solve(bs);
   for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-12 * ref.cwiseAbs().maxCoeff());
   EXPECT_NEAR(dl[0], k * (du[4] + g), 1e-9 * k * std::abs(du[4] + g) + 1e-12);
+}
+
+// CHOLMOD's update/downdate behind LinearSolver::modify: A + W W^T, then back to A, against dense
+// solves; and the KKT solver uses it so that a reused factor with changed rows needs only the
+// multiplier iterations of a fresh one.
+TEST(CholmodModify, UpdateAndDowndateMatchDenseSolves) {
+  const int n = 10;
+  Problem p = chain(n, true);
+  std::vector<std::vector<LocalIndex>> elems;
+  auto solver = make_cholmod_solver();
+  solver->analyze(*p.pattern);
+  CsrMatrix A = to_csr(p);
+  solver->factorize(A);
+  SparseColumns W; // two columns inside the pattern: DOF 3, and DOFs 0 and n-1
+  W.row = {3, 0, n - 1};
+  W.val = {30.0, 5.0, -5.0};
+  W.ptr = {0, 1, 3};
+  Eigen::MatrixXd Wd = Eigen::MatrixXd::Zero(n, 2);
+  Wd(3, 0) = 30.0;
+  Wd(0, 1) = 5.0;
+  Wd(n - 1, 1) = -5.0;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  std::vector<double> x(n);
+  ASSERT_TRUE(solver->modify(true, W));
+  solver->solve({b.data(), std::size_t(n)}, x);
+  Eigen::VectorXd ref = (p.K + Wd * Wd.transpose()).ldlt().solve(b);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i], ref[i], 1e-12 * ref.cwiseAbs().maxCoeff()) << i;
+  ASSERT_TRUE(solver->modify(false, W));
+  solver->solve({b.data(), std::size_t(n)}, x);
+  ref = p.K.ldlt().solve(b);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i], ref[i], 1e-10 * ref.cwiseAbs().maxCoeff()) << i;
+  // a factorisation after modifications starts again from the supernodal analysis
+  solver->factorize(A);
+  solver->solve({b.data(), std::size_t(n)}, x);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(x[i], ref[i], 1e-12 * ref.cwiseAbs().maxCoeff()) << i;
+}
+
+TEST(CholmodModify, DowndatingTheOnlySupportIsRefused) {
+  // a floating chain held by one row: removing its spring leaves a singular matrix
+  const int n = 5;
+  Problem p = chain(n, false);
+  p.K(2, 2) += 100.0;
+  auto solver = make_cholmod_solver();
+  solver->analyze(*p.pattern);
+  CsrMatrix A = to_csr(p);
+  solver->factorize(A);
+  SparseColumns W;
+  W.row = {2};
+  W.val = {10.0};
+  W.ptr = {0, 1};
+  EXPECT_THROW(solver->modify(false, W), SingularSystem);
+}
+
+TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
+      fresh{{5}, {1.0}, 0.05, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  RunStatistics stats;
+  std::vector<double> du(n), dl(2);
+  {
+    CsrMatrix K = to_csr(p);
+    solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+  }
+  const std::vector<Row> rows{keep, fresh};
+  CsrMatrix K = to_csr(p);
+  const auto s =
+      solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
+  EXPECT_TRUE(s.stale_factor);
+  EXPECT_EQ(stats.factorizations, 1);
+  EXPECT_EQ(stats.factor_updates, 2); // "fresh" added, "a" removed
+  EXPECT_LE(s.schur_iterations, 3) << "CG on an exact factor, no anti-rows";
+  const Eigen::VectorXd ref = dense_kkt(p.K, b, rows);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+  EXPECT_NEAR(dl[0], ref[n], 1e-9);
+  EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
 }
