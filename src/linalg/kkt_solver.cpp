@@ -55,6 +55,7 @@ void KktSolver::forget_factor() {
   _factored.clear();
   _frows.clear();
   _fR.clear();
+  _fks.clear();
   _frow_of.clear();
   _t_factor = _t_solve = 0.0;
 }
@@ -66,6 +67,7 @@ void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _factored.clear();
   _frows.clear();
   _fR.clear();
+  _fks.clear();
   _frow_of.clear();
 }
 
@@ -116,8 +118,8 @@ void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* sta
 }
 
 bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> R,
-                              std::vector<int>& p_of, std::vector<int>& gone,
-                              RunStatistics* stats) {
+                              std::span<const double> ks, std::vector<int>& p_of,
+                              std::vector<int>& gone, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
   const Stopwatch watch;
   const int m = C.n_rows();
@@ -130,12 +132,14 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
     }
     W.ptr.push_back(static_cast<LocalIndex>(W.row.size()));
   };
-  std::vector<double> weights(static_cast<std::size_t>(m));
+  std::vector<double> weights(static_cast<std::size_t>(m)), stiffness(weights.size());
   for (int r = 0; r < m; ++r) {
     if (p_of[r] >= 0) {
       weights[r] = _fR[p_of[r]];
+      stiffness[r] = _fks[p_of[r]];
     } else {
       weights[r] = R[r];
+      stiffness[r] = ks[r];
       push(add, C, r, R[r]);
     }
   }
@@ -149,12 +153,17 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
   }
   const int rows = add.n_cols() + del.n_cols();
   if (stats) stats->factor_updates += rows;
-  if (rows > 0) {
+  if (rows > 0 && _supernodal) {
+    // the first update of a factor also converts it to the simplicial form CHOLMOD updates
+    _t_convert = std::max(0.0, watch.seconds() - rows * _t_update_row);
+  } else if (rows > 0) {
     const double per_row = watch.seconds() / rows;
     _t_update_row = _t_update_row > 0 ? 0.5 * (_t_update_row + per_row) : per_row;
   }
+  _supernodal = false;
   _frows = C;
   _fR = std::move(weights);
+  _fks = std::move(stiffness);
   _frow_of.clear();
   for (int r = 0; r < m; ++r) {
     _frow_of[C.multiplier[r]] = r;
@@ -177,10 +186,11 @@ void KktSolver::back_solve(std::span<const double> b, std::span<double> x, RunSt
 }
 
 void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
-                             bool symmetric, RunStatistics* stats) {
+                             std::span<const double> ks, bool symmetric, RunStatistics* stats) {
   _factored.clear(); // no stale factor survives a failed factorisation
   _frows.clear();
   _fR.clear();
+  _fks.clear();
   _frow_of.clear();
   const auto vals = K.values();
   std::vector<double> raw(vals.begin(), vals.end());
@@ -203,11 +213,13 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
     K.add_block(eqs, eqs, block);
   }
   factorize(K, symmetric, stats);
+  _supernodal = true;
   _factored = std::move(raw);
   _factored_scale = scale > 0 ? scale : 1.0;
   _factored_symmetric = symmetric;
   _frows = C;
   _fR.assign(R.begin(), R.end());
+  _fks.assign(ks.begin(), ks.end());
   for (int r = 0; r < C.n_rows(); ++r) _frow_of[C.multiplier[r]] = r;
 }
 
@@ -221,7 +233,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
   const int m = C.n_rows();
 
   // Augmentation weights from the stiffness at each row's DOFs (before augmenting).
-  std::vector<double> R(static_cast<std::size_t>(m), 0.0);
+  std::vector<double> R(static_cast<std::size_t>(m), 0.0), ks(R.size(), 0.0);
   if (m > 0) {
     double mean_diag = 0.0;
     for (LocalIndex i = 0; i < n; ++i) mean_diag += std::abs(K.diagonal(i));
@@ -236,7 +248,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       }
       double stiff = den > 0 ? num / den : 0.0;
       if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
-      R[r] = opt.augmentation * stiff / std::max(den, 1e-300);
+      ks[r] = stiff / std::max(den, 1e-300); // the structure's stiffness along the row
+      R[r] = opt.augmentation * ks[r];
       const double E = compliance_of(C, r);
       if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
     }
@@ -294,7 +307,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
         // of an exact factor (about 5; an update costs a few hundredths of a factorisation per
         // row until measured) cost less than a factorisation
         stale = _t_solve > 0 &&
-                5 * _t_solve + changes * (_t_update_row > 0 ? _t_update_row : 0.02 * _t_factor) <
+                5 * _t_solve + (_supernodal ? _t_convert : 0.0) +
+                        changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
                     _t_factor;
       else // reuse pays when the extra multiplier iterations (measured: about 5 + one per two
            // changed rows) cost less than a factorisation
@@ -304,7 +318,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
 
   for (;;) {
     if (!exact_same && !stale) {
-      fresh_factor(K, C, R, symmetric, stats);
+      fresh_factor(K, C, R, ks, symmetric, stats);
       for (int r = 0; r < m; ++r) p_of[r] = r;
       gone.clear();
     }
@@ -316,7 +330,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     // (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
     if (stale && _modify && _active == _cholmod.get() &&
         (!gone.empty() || std::find(p_of.begin(), p_of.end(), -1) != p_of.end()) &&
-        !modify_factor(C, R, p_of, gone, stats)) {
+        !modify_factor(C, R, ks, p_of, gone, stats)) {
       stale = false;
       continue;
     }
@@ -360,10 +374,10 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       if (p_of[r] >= 0) {
         const double Rf = _fR[p_of[r]];
         d[r] = -E / (1.0 - Rf * E);
-        p[r] = 1.0 / (1.0 / Rf - d[r]);
+        p[r] = 1.0 / (1.0 / (Rf + _fks[p_of[r]]) - d[r]);
       } else {
         d[r] = -E;
-        p[r] = 1.0 / (opt.augmentation / R[r] + E);
+        p[r] = 1.0 / (1.0 / ks[r] + E);
       }
     }
     for (std::size_t k = 0; k < gone.size(); ++k) {
@@ -408,7 +422,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       const double force_scale = norm_inf(bb), floor = 1e-15 * norm_inf(rhs);
       for (int r = 0; r < m; ++r)
         if (const double E = compliance_of(C, r); E > 0)
-          tol_r[r] = std::min(tol, std::max(1e-13 * force_scale * E, floor));
+          tol_r[r] = std::min(tol, std::max(1e-8 * force_scale * E, floor));
       std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
       sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol_r, stats);
       for (LocalIndex i = 0; i < n; ++i) x_u[i] = y[i] - x[i];

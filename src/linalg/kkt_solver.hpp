@@ -60,14 +60,15 @@ class KktSolver final : public ConstrainedSolver {
   void factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats);
   /// Factorise K augmented by the rows of C with weights R, remembering K and the rows.
   void fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
-                    bool symmetric, RunStatistics* stats);
+                    std::span<const double> ks, bool symmetric, RunStatistics* stats);
   void back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats);
   /// Make the factor exact for the current rows: update it with the springs of the new rows
   /// (p_of < 0) and downdate the springs of the rows gone (CHOLMOD's rank-k update/downdate).
   /// Afterwards every row is a kept row. False (factor dropped) when the backend cannot or the
   /// result is not positive definite.
-  bool modify_factor(const ConstraintBlock& C, std::span<const double> R, std::vector<int>& p_of,
-                     std::vector<int>& gone, RunStatistics* stats);
+  bool modify_factor(const ConstraintBlock& C, std::span<const double> R,
+                     std::span<const double> ks, std::vector<int>& p_of, std::vector<int>& gone,
+                     RunStatistics* stats);
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
@@ -83,11 +84,15 @@ class KktSolver final : public ConstrainedSolver {
   double _factored_scale = 1.0;       ///< max |diag K_F|
   std::vector<double> _factored_diag; ///< |diag K_F| per row (floored), for the drift measure
   bool _factored_symmetric = true;
-  ConstraintBlock _frows;                         ///< rows of C_F (g unused)
-  std::vector<double> _fR;                        ///< their weights
+  ConstraintBlock _frows;  ///< rows of C_F (g unused)
+  std::vector<double> _fR; ///< their weights
+  std::vector<double>
+      _fks; ///< the structure's stiffness along each (the preconditioner's estimate)
   std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
   double _t_update_row = 0.0; ///< measured seconds per row added to or removed from the factor
+  double _t_convert = 0.0;    ///< measured seconds of the first update (to the simplicial form)
+  bool _supernodal = true;    ///< the factor has not been updated since it was made
   bool _modify =
       true; ///< update/downdate the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
 };

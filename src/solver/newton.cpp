@@ -18,6 +18,7 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver, con
   double previous_ratio = std::numeric_limits<double>::infinity();
   int increases = 0, equilibrium_iterations = 0;
   bool last_stale = false, force_fresh = false;
+  double fresh_contraction = 0.0; ///< residual ratio over the last fresh-factor iteration
   Evaluation ev;
   try {
     ev = p.evaluate();
@@ -176,10 +177,16 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver, con
       res.cause = FailureCause::NonFinite;
       return res;
     }
-    // A stale factor that no longer contracts the residual well is replaced.
-    if (last_stale && ev.status_changes == 0 && std::isfinite(previous_ratio) &&
-        worst_ratio > c.stale_contraction * previous_ratio)
-      force_fresh = true;
+    // A stale factor that no longer contracts the residual well is replaced: "well" is 10x, or
+    // half as well as a fresh factor did in this increment when full Newton itself contracts
+    // slowly (a penalty law's kinks), so that the stale step is not blamed for the physics.
+    if (std::isfinite(previous_ratio) && previous_ratio > 0 && ev.status_changes == 0) {
+      const double contraction = worst_ratio / previous_ratio;
+      if (!last_stale)
+        fresh_contraction = contraction;
+      else if (contraction > std::max(c.stale_contraction, 2.0 * fresh_contraction))
+        force_fresh = true;
+    }
     if (ev.status_changes == 0) {
       if (worst_ratio > previous_ratio)
         ++increases;

@@ -34,8 +34,9 @@ struct NewtonControls {
   int chatter_flips = 8;               ///< one element flipping this often is chattering
   int max_augmentations = 25;          ///< augmented-Lagrange updates per increment
   /// factor reuse across iterations and increments (modified Newton with exact contact rows);
-  /// a stale-factor iteration that reduces the residual by less than stale_contraction forces a
-  /// fresh factor on the next one
+  /// a stale-factor iteration that reduces the residual by less than stale_contraction (or, when
+  /// a fresh factor contracted less than that in this increment, by less than half as much as it)
+  /// forces a fresh factor on the next one
   FactorReuse factor_reuse = FactorReuse::Auto;
   double stale_contraction = 0.1;
 };

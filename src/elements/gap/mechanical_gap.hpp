@@ -101,7 +101,7 @@ class MechanicalGapKernel final : public ElementKernel {
   /// Force laws: a gap whose slope is at least kRowFraction of the law's stiffness scale carries
   /// it as a compliant constraint row (GAPFEM_PENALTY_ROWS=0 keeps it in the tangent)
   bool _compliant_rows = true;
-  static constexpr double kRowFraction = 1e-6;
+  static constexpr double kRowFraction = 1e-9;
   double _augmented_k = 0.0;          ///< 0: automatic
   std::vector<FrictionLaw> _friction; ///< [0] the section's (if any), then *CHANGE FRICTION
   std::vector<std::vector<std::pair<int, int>>> _friction_schedule; ///< per element: (step, law)
