@@ -57,7 +57,8 @@ void KktSolver::forget_factor() {
   _fR.clear();
   _fks.clear();
   _frow_of.clear();
-  _t_factor = _t_solve = 0.0;
+  _t_factor = _t_solve = _t_update_row = _t_convert = 0.0;
+  _supernodal = true;
 }
 
 void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
