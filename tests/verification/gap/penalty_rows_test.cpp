@@ -124,8 +124,10 @@ TEST(PenaltyRows, RandomPenaltyFrictionAndRadialUnitsGiveTheForceLawsAnswer) {
     same_history += expect_same(run_with_rows(deck, true), run_with_rows(deck, false), 1e-8,
                                 max_penalty(m), m.tag);
   }
-  // GAPCYL/GAPSPHER units under NLGEOM: the displacements to 3e-8 (the rotating normal adds a
-  // geometric stiffness that makes these models less well conditioned). With friction their
+  // GAPCYL/GAPSPHER units under NLGEOM: the displacements to 1e-7 (springs down to 1e2 against
+  // penalties up to 1e7 and a rotating normal: the residual tolerance itself, 1e-8 of the flux,
+  // leaves the displacements free by ~1e-8 of the load over the softest spring; a sanitized build
+  // lands 7e-8 away). With friction their
   // answer depends on the path (the random contact test checks only convergence and the Coulomb
   // bound for them), so round-off may lead the two runs to different admissible states: both
   // must converge.
@@ -139,7 +141,7 @@ TEST(PenaltyRows, RandomPenaltyFrictionAndRadialUnitsGiveTheForceLawsAnswer) {
       EXPECT_EQ(a.exit_code, b.exit_code) << m.tag << ": " << a.error << " | " << b.error;
       continue;
     }
-    same_history += expect_same(a, b, 3e-8, max_penalty(m), m.tag);
+    same_history += expect_same(a, b, 1e-7, max_penalty(m), m.tag);
   }
   // (elastic slips down to 1e-9 make stick/slip decisions that round-off can move by an
   // iteration; the answers above are compared regardless)
