@@ -265,7 +265,7 @@ class ContinuumKernel final : public ElementKernel {
         add_material_pairs(p, K);
       } else {
         p.law.apply(NNRM, p.B, DB);
-        K.noalias() += p.dV * (p.B.transpose() * DB);
+        K.noalias() += p.dV * p.B.transpose().lazyProduct(DB);
       }
       if (nlgeom) add_geometric(p, w, q, K);
     }

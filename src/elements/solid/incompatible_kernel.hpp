@@ -265,7 +265,7 @@ class IncompatibleKernel final : public ElementKernel {
       point(in, q, nlgeom, x, p);
       r.noalias() += p.g.dV * (p.B.transpose() * p.S);
       p.law.apply(NNRM, p.B, DB);
-      Kx.noalias() += p.g.dV * (p.B.transpose() * DB);
+      Kx.noalias() += p.g.dV * p.B.transpose().lazyProduct(DB);
       if (!nlgeom) continue;
       MatF Sm = MatF::Zero();
       double S33 = 0.0;

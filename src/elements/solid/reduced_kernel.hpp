@@ -78,7 +78,7 @@ class ReducedKernel final : public ElementKernel {
     Eigen::Map<MatK> Kout(out.tangent.data());
     MatB DB;
     w.law.apply(NNRM, w.B, DB);
-    MatK Km = w.g.V * (w.B.transpose() * DB);
+    MatK Km = w.g.V * w.B.transpose().lazyProduct(DB);
     Km += w.Khg;
     if (in.ctx && in.ctx->nlgeom) add_geometric(w, Km);
     Kout += Km;
