@@ -122,6 +122,20 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
                               std::span<const double> ks, std::vector<int>& p_of,
                               std::vector<int>& gone, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
+  if (_supernodal) {
+    // The first update copies the factor into CHOLMOD's simplicial form (about twice its size
+    // while both exist): where that does not fit, factor afresh instead, for the rest of the run.
+    const auto available = available_memory_bytes();
+    if (available &&
+        2.0 * static_cast<double>(_cholmod->factor_bytes()) > static_cast<double>(*available)) {
+      log::debug("  not enough memory to update the factor ({} needed, {} available); "
+                 "refactorising from now on",
+                 memory_size_text(2.0 * static_cast<double>(_cholmod->factor_bytes())),
+                 memory_size_text(static_cast<double>(*available)));
+      _modify = false;
+      return false;
+    }
+  }
   const Stopwatch watch;
   const int m = C.n_rows();
   SparseColumns add, del;

@@ -447,3 +447,40 @@ TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
   EXPECT_NEAR(dl[0], ref[n], 1e-9);
   EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
 }
+
+// Updating a factor first copies it (supernodal -> simplicial): where that copy does not fit
+// (GAPFEM_MEMORY_LIMIT stands in for a small machine) the solver factorises afresh instead, with
+// the same exact step.
+TEST(KktSolver, NoFactorUpdateWhereTheCopyDoesNotFit) {
+  if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
+  const int n = 8;
+  Problem p = chain(n, true);
+  auto probe = make_cholmod_solver();
+  probe->analyze(*p.pattern);
+  const double factor = static_cast<double>(probe->factor_bytes());
+  ASSERT_GT(factor, 0.0);
+  // room for the factor (1.25 x) but not for the update's copy (2 x)
+  ::setenv("GAPFEM_MEMORY_LIMIT", std::to_string(static_cast<long>(1.6 * factor)).c_str(), 1);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
+      fresh{{5}, {1.0}, 0.05, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  RunStatistics stats;
+  std::vector<double> du(n), dl(2);
+  {
+    CsrMatrix K = to_csr(p);
+    solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+  }
+  const std::vector<Row> rows{keep, fresh};
+  CsrMatrix K = to_csr(p);
+  solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  ::unsetenv("GAPFEM_MEMORY_LIMIT");
+  EXPECT_EQ(stats.factor_updates, 0);
+  EXPECT_EQ(stats.factorizations, 2);
+  const Eigen::VectorXd ref = dense_kkt(p.K, b, rows);
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+}
