@@ -416,36 +416,49 @@ TEST(CholmodModify, DowndatingTheOnlySupportIsRefused) {
   EXPECT_THROW(solver->modify(false, W), SingularSystem);
 }
 
-TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
-  const int n = 8;
+namespace {
+/// One factor, two systems: rows {a, keep} then {keep, fresh} (gap "a" opened, "fresh" closed),
+/// reuse forced; the second step, its statistics and the dense solution of the second system.
+struct ChangedRows {
+  static constexpr int n = 8;
   Problem p = chain(n, true);
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
-      fresh{{5}, {1.0}, 0.05, 12};
-  KktSolver solver;
-  solver.analyze(p.pattern);
-  KktOptions opt;
-  opt.constraint_tolerance = 1e-14;
-  opt.reuse = FactorReuse::Always;
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
   RunStatistics stats;
-  std::vector<double> du(n), dl(2);
-  {
-    CsrMatrix K = to_csr(p);
-    solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+  KktStatistics second;
+  std::vector<double> du = std::vector<double>(n), dl = std::vector<double>(2);
+  Eigen::VectorXd ref;
+  void run() {
+    const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
+        fresh{{5}, {1.0}, 0.05, 12};
+    KktSolver solver;
+    solver.analyze(p.pattern);
+    KktOptions opt;
+    opt.constraint_tolerance = 1e-14;
+    opt.reuse = FactorReuse::Always;
+    CsrMatrix K1 = to_csr(p);
+    solver.solve(K1, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
+    const std::vector<Row> rows{keep, fresh};
+    CsrMatrix K2 = to_csr(p);
+    second = solver.solve(K2, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+    ref = dense_kkt(p.K, b, rows);
   }
-  const std::vector<Row> rows{keep, fresh};
-  CsrMatrix K = to_csr(p);
-  const auto s =
-      solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  void expect_exact_step() const {
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+    EXPECT_NEAR(dl[0], ref[n], 1e-9);
+    EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
+  }
+};
+} // namespace
+
+TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
   if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
-  EXPECT_TRUE(s.stale_factor);
-  EXPECT_EQ(stats.factorizations, 1);
-  EXPECT_EQ(stats.factor_updates, 2); // "fresh" added, "a" removed
-  EXPECT_LE(s.schur_iterations, 3) << "CG on an exact factor, no anti-rows";
-  const Eigen::VectorXd ref = dense_kkt(p.K, b, rows);
-  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
-  EXPECT_NEAR(dl[0], ref[n], 1e-9);
-  EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
+  ChangedRows c;
+  c.run();
+  EXPECT_TRUE(c.second.stale_factor);
+  EXPECT_EQ(c.stats.factorizations, 1);
+  EXPECT_EQ(c.stats.factor_updates, 2); // "fresh" added, "a" removed
+  EXPECT_LE(c.second.schur_iterations, 3) << "CG on an exact factor, no anti-rows";
+  c.expect_exact_step();
 }
 
 // Updating a factor first copies it (supernodal -> simplicial): where that copy does not fit
@@ -453,34 +466,16 @@ TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
 // the same exact step.
 TEST(KktSolver, NoFactorUpdateWhereTheCopyDoesNotFit) {
   if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
-  const int n = 8;
-  Problem p = chain(n, true);
+  ChangedRows c;
   auto probe = make_cholmod_solver();
-  probe->analyze(*p.pattern);
+  probe->analyze(*c.p.pattern);
   const double factor = static_cast<double>(probe->factor_bytes());
   ASSERT_GT(factor, 0.0);
   // room for the factor (1.25 x) but not for the update's copy (2 x)
   ::setenv("GAPFEM_MEMORY_LIMIT", std::to_string(static_cast<long>(1.6 * factor)).c_str(), 1);
-  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
-  const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
-      fresh{{5}, {1.0}, 0.05, 12};
-  KktSolver solver;
-  solver.analyze(p.pattern);
-  KktOptions opt;
-  opt.constraint_tolerance = 1e-14;
-  opt.reuse = FactorReuse::Always;
-  RunStatistics stats;
-  std::vector<double> du(n), dl(2);
-  {
-    CsrMatrix K = to_csr(p);
-    solver.solve(K, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
-  }
-  const std::vector<Row> rows{keep, fresh};
-  CsrMatrix K = to_csr(p);
-  solver.solve(K, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
+  c.run();
   ::unsetenv("GAPFEM_MEMORY_LIMIT");
-  EXPECT_EQ(stats.factor_updates, 0);
-  EXPECT_EQ(stats.factorizations, 2);
-  const Eigen::VectorXd ref = dense_kkt(p.K, b, rows);
-  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+  EXPECT_EQ(c.stats.factor_updates, 0);
+  EXPECT_EQ(c.stats.factorizations, 2);
+  c.expect_exact_step();
 }

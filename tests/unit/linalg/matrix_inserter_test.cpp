@@ -38,34 +38,23 @@ TEST(MatrixInserter, LanesMergeToTheSumOfTheBlocks) {
     for (double& v : b) v = val(rng);
     blocks.push_back(b);
   }
-  // the reference: one lane, element order
-  CsrMatrix ref(pattern);
-  CsrInserter one(ref);
-  one.set_zero();
-  one.open(1);
-  for (std::size_t e = 0; e < elems.size(); ++e) one.add(0, elems[e], elems[e], blocks[e]);
-  one.close();
-  // three lanes, elements dealt round-robin; a stale value in the target is cleared by set_zero
-  for (int trial = 0; trial < 2; ++trial) {
+  // element e goes to lane e % lanes; a stale value in the target is cleared by set_zero
+  auto assemble = [&](int lanes) {
     CsrMatrix A(pattern);
     A.values()[0] = 123.0;
-    CsrInserter three(A);
-    three.set_zero();
-    three.open(3);
+    CsrInserter ins(A);
+    ins.set_zero();
+    ins.open(lanes);
     for (std::size_t e = 0; e < elems.size(); ++e)
-      three.add(static_cast<int>(e % 3), elems[e], elems[e], blocks[e]);
-    three.close();
-    for (std::size_t k = 0; k < ref.values().size(); ++k)
-      EXPECT_NEAR(A.values()[k], ref.values()[k], 1e-13) << k;
-    // the same lanes again give bitwise the same matrix
-    CsrMatrix B(pattern);
-    CsrInserter again(B);
-    again.set_zero();
-    again.open(3);
-    for (std::size_t e = 0; e < elems.size(); ++e)
-      again.add(static_cast<int>(e % 3), elems[e], elems[e], blocks[e]);
-    again.close();
-    for (std::size_t k = 0; k < ref.values().size(); ++k) EXPECT_EQ(A.values()[k], B.values()[k]);
+      ins.add(static_cast<int>(e % static_cast<std::size_t>(lanes)), elems[e], elems[e], blocks[e]);
+    ins.close();
+    return A;
+  };
+  const CsrMatrix ref = assemble(1); // one lane, element order
+  const CsrMatrix A = assemble(3), B = assemble(3);
+  for (std::size_t k = 0; k < ref.values().size(); ++k) {
+    EXPECT_NEAR(A.values()[k], ref.values()[k], 1e-13) << k;
+    EXPECT_EQ(A.values()[k], B.values()[k]) << "the same lanes give bitwise the same matrix";
   }
 }
 
