@@ -2,6 +2,7 @@
 #include "app/check.hpp"
 #include "app/job.hpp"
 #include "common/log.hpp"
+#include "parallel/parallel.hpp"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -39,10 +40,58 @@ int check_main(int argc, char** argv) {
   }
 }
 
+/// The backend --solver names, or the default: CHOLMOD on one process, MUMPS under mpirun.
+/// Returns false (with a message) for a choice this build or this run cannot honour.
+bool choose_solver(const std::string& name, gapfem::JobOptions& options) {
+  using gapfem::SolverBackend;
+  const bool ranks = gapfem::parallel::size() > 1;
+  if (name == "auto") {
+    options.solver = ranks ? SolverBackend::Mumps : SolverBackend::Cholmod;
+    return true;
+  }
+  if (name == "cholmod") {
+    if (ranks) {
+      std::fprintf(stderr,
+                   "gapfem: --solver cholmod solves on one process, but mpirun started "
+                   "%d: use --solver mumps or --solver iterative\n",
+                   gapfem::parallel::size());
+      return false;
+    }
+    options.solver = SolverBackend::Cholmod;
+    return true;
+  }
+  if (!gapfem::parallel::available()) {
+    std::fprintf(stderr,
+                 "gapfem: --solver %s needs PETSc, and this gapfem was built without it: "
+                 "install Debian's petsc-dev (scripts/install-deps.sh) and build again\n",
+                 name.c_str());
+    return false;
+  }
+  options.solver = name == "mumps" ? SolverBackend::Mumps : SolverBackend::Iterative;
+  return true;
+}
+
+/// Start MPI and PETSc when mpirun started us or a PETSc solver is asked for; false (with a
+/// message) when this build cannot.
+bool start_processes(const std::vector<std::string>& petsc_options, bool petsc_solver) {
+  if (!gapfem::parallel::launched_by_mpirun() && !petsc_solver && petsc_options.empty())
+    return true;
+  if (!gapfem::parallel::available()) {
+    std::fprintf(stderr, "gapfem: this gapfem was built without PETSc, so it cannot run under "
+                         "mpirun nor take PETSc options: install Debian's petsc-dev "
+                         "(scripts/install-deps.sh) and build again\n");
+    return false;
+  }
+  gapfem::parallel::start(petsc_options);
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "check") == 0) return check_main(argc - 1, argv + 1);
+  // PETSc's own options (-ksp_rtol 1e-12, -inner_pc_type hypre, ...) are not gapfem's
+  const std::vector<std::string> petsc_options = gapfem::parallel::take_petsc_options(argc, argv);
   CLI::App app{"gapfem: nonlinear finite elements with Abaqus gap contact elements\n"
                "  gapfem [options] job.inp   run the analysis\n"
                "  gapfem check job.inp       validate the deck and summarise the model, no solve"};
@@ -77,6 +126,13 @@ int main(int argc, char** argv) {
   app.add_option("--oldjob", options.oldjob,
                  "the job a deck with *RESTART, READ continues (Abaqus's oldjob=): a job name or "
                  "the path of its .res file");
+  std::string solver = "auto";
+  app.add_option("--solver", solver,
+                 "the linear solver: cholmod (one process; the default), mumps (PETSc + MUMPS, "
+                 "direct, any number of processes; the default under mpirun) or iterative "
+                 "(PETSc: GMRES with an AMG block preconditioner, for the largest models); PETSc "
+                 "options such as -ksp_rtol 1e-12 or -inner_pc_type hypre are passed to PETSc")
+      ->check(CLI::IsMember({"auto", "cholmod", "mumps", "iterative"}));
   app.set_version_flag("--version", std::string("gapfem ") + GAPFEM_VERSION);
   try {
     app.parse(argc, argv);
@@ -89,11 +145,28 @@ int main(int argc, char** argv) {
   options.factor_reuse = reuse == "always"  ? gapfem::FactorReuse::Always
                          : reuse == "never" ? gapfem::FactorReuse::Never
                                             : gapfem::FactorReuse::Auto;
+  int code = gapfem::kExitOk;
+  std::string error;
   try {
-    const gapfem::JobResult result = gapfem::run_job(options);
-    return result.exit_code;
+    if (!start_processes(petsc_options, solver == "mumps" || solver == "iterative"))
+      return gapfem::kExitInputError;
+    if (!choose_solver(solver, options)) {
+      code = gapfem::kExitInputError;
+    } else {
+      // rank 0 alone writes the files and the terminal (docs/parallel.md)
+      if (gapfem::parallel::rank() > 0) {
+        options.write_files = false;
+        options.silent = true;
+      }
+      const gapfem::JobResult result = gapfem::run_job(options);
+      code = result.exit_code;
+      error = result.error;
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "gapfem: internal error: %s\n", e.what());
-    return gapfem::kExitInternal;
+    code = gapfem::kExitInternal;
+    error = e.what();
   }
+  // a rank that failed alone must not leave the others waiting: finish() ends the whole job
+  return gapfem::parallel::finish(code, error);
 }

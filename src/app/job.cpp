@@ -8,6 +8,7 @@
 #include "model/model.hpp"
 #include "output/output_file.hpp"
 #include "output/writers.hpp"
+#include "parallel/parallel.hpp"
 #include "solver/analysis.hpp"
 #include "solver/restart_file.hpp"
 
@@ -195,9 +196,11 @@ JobResult run_job(const JobOptions& given) {
   std::filesystem::path dir = options.output_dir;
   if (dir.empty()) dir = options.deck.has_parent_path() ? options.deck.parent_path() : ".";
   std::optional<log::Level> previous_level;
-  if (options.quiet || options.verbose) {
+  if (options.quiet || options.verbose || options.silent) {
     previous_level = log::level();
-    log::set_level(options.quiet ? log::Level::Warning : log::Level::Debug);
+    log::set_level(options.silent  ? log::Level::Quiet
+                   : options.quiet ? log::Level::Warning
+                                   : log::Level::Debug);
   }
   auto restore = [&] {
     if (previous_level) log::set_level(*previous_level);
@@ -238,7 +241,10 @@ JobResult run_job(const JobOptions& given) {
     if (options.restart) resume = own_restart_point(*model, options.deck, dir, job);
     if (options.write_files) prepare_output(dir, job);
     if (!options.user_code.empty())
-      model->user_code = load_user_code(options.user_code, dir / (job + ".scratch"));
+      model->user_code = load_user_code(
+          options.user_code, dir / (job + ".scratch" +
+                                    (parallel::rank() > 0 ? fmt::format(".rank{}", parallel::rank())
+                                                          : std::string())));
   } catch (const InputError& e) {
     result.exit_code = kExitInputError;
     result.error = e.what();
@@ -274,6 +280,7 @@ JobResult run_job(const JobOptions& given) {
   try {
     AnalysisOptions aopt;
     aopt.factor_reuse = options.factor_reuse;
+    aopt.solver = options.solver;
     aopt.restart_header.job = job;
     if (options.write_files) {
       aopt.output_dir = dir;

@@ -2,6 +2,7 @@
 /// @file job.hpp
 /// Running one deck end to end: read, build, analyse, write results. Used by the gapfem executable
 /// and by the tests (which inspect the in-memory results).
+#include "linalg/constrained_solver.hpp"
 #include "linalg/factor_reuse.hpp"
 #include "output/results.hpp"
 
@@ -23,8 +24,10 @@ struct JobOptions {
   std::vector<std::string> report_gaps;
   bool quiet = false;      ///< no terminal progress
   bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
+  bool silent = false;     ///< nothing on the terminal, errors included (ranks other than 0)
   bool keep_frames = true; ///< keep every output frame in JobResult (tests)
-  FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
+  FactorReuse factor_reuse = FactorReuse::Auto;  ///< --factor-reuse (docs/performance.md)
+  SolverBackend solver = SolverBackend::Cholmod; ///< --solver (docs/parallel.md)
   /// --restart: continue this job from the last complete record of its job.res (docs/restart.md)
   bool restart = false;
   /// --oldjob: the job a deck with *RESTART, READ continues (a job name, found in the working or

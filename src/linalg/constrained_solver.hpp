@@ -20,6 +20,7 @@
 #include <memory>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace gapfem {
 
@@ -44,7 +45,10 @@ struct KktStatistics {
 
 /// The available backends (the CLI's `--solver`).
 enum class SolverBackend {
-  Cholmod ///< KktSolver: CHOLMOD (UMFPACK when indefinite or unsymmetric), one process
+  Cholmod,  ///< KktSolver: CHOLMOD (UMFPACK when indefinite or unsymmetric), one process
+  Mumps,    ///< PETSc + MUMPS: LDL^T (LU when unsymmetric) of the whole bordered system, any ranks
+  Iterative ///< PETSc: GMRES on the bordered system, block preconditioner with AMG (GAMG), any
+            ///< ranks
 };
 
 class ConstrainedSolver {
@@ -63,6 +67,16 @@ class ConstrainedSolver {
                               const KktOptions& options, RunStatistics* stats = nullptr) = 0;
 };
 
+/// Throws std::runtime_error when the backend is not in this build (no PETSc) or cannot run here
+/// (the serial CHOLMOD backend under mpirun with more than one rank).
 std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend);
+/// The backend's name as the CLI spells it (cholmod, mumps, iterative).
+std::string_view backend_name(SolverBackend backend);
+
+/// Augmentation weights of the rows of C: ks_r is the structure's stiffness along row r (from the
+/// diagonal of K at its DOFs), R_r = augmentation x ks_r, kept below half the stiffness 1/E_r of a
+/// compliant row. Both backends augment K + C^T R C with these.
+void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double augmentation,
+                          std::vector<double>& R, std::vector<double>& ks);
 
 } // namespace gapfem

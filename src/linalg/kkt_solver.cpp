@@ -35,12 +35,31 @@ bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb
 }
 } // namespace
 
-std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend) {
-  switch (backend) {
-  case SolverBackend::Cholmod:
-    return std::make_unique<KktSolver>();
+void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double augmentation,
+                          std::vector<double>& R, std::vector<double>& ks) {
+  const LocalIndex n = K.n();
+  const int m = C.n_rows();
+  R.assign(static_cast<std::size_t>(m), 0.0);
+  ks.assign(R.size(), 0.0);
+  if (m == 0) return;
+  double mean_diag = 0.0;
+  for (LocalIndex i = 0; i < n; ++i) mean_diag += std::abs(K.diagonal(i));
+  mean_diag = n > 0 ? mean_diag / n : 1.0;
+  if (!(mean_diag > 0)) mean_diag = 1.0;
+  for (int r = 0; r < m; ++r) {
+    double num = 0.0, den = 0.0;
+    for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
+      const double c2 = C.val[k] * C.val[k];
+      num += c2 * std::abs(K.diagonal(C.col[k]));
+      den += c2;
+    }
+    double stiff = den > 0 ? num / den : 0.0;
+    if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
+    ks[r] = stiff / std::max(den, 1e-300); // the structure's stiffness along the row
+    R[r] = augmentation * ks[r];
+    const double E = compliance_of(C, r);
+    if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
   }
-  throw std::logic_error("unknown solver backend");
 }
 
 KktSolver::KktSolver() {
@@ -248,27 +267,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
   const int m = C.n_rows();
 
   // Augmentation weights from the stiffness at each row's DOFs (before augmenting).
-  std::vector<double> R(static_cast<std::size_t>(m), 0.0), ks(R.size(), 0.0);
-  if (m > 0) {
-    double mean_diag = 0.0;
-    for (LocalIndex i = 0; i < n; ++i) mean_diag += std::abs(K.diagonal(i));
-    mean_diag = n > 0 ? mean_diag / n : 1.0;
-    if (!(mean_diag > 0)) mean_diag = 1.0;
-    for (int r = 0; r < m; ++r) {
-      double num = 0.0, den = 0.0;
-      for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
-        const double c2 = C.val[k] * C.val[k];
-        num += c2 * std::abs(K.diagonal(C.col[k]));
-        den += c2;
-      }
-      double stiff = den > 0 ? num / den : 0.0;
-      if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
-      ks[r] = stiff / std::max(den, 1e-300); // the structure's stiffness along the row
-      R[r] = opt.augmentation * ks[r];
-      const double E = compliance_of(C, r);
-      if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
-    }
-  }
+  std::vector<double> R, ks;
+  augmentation_weights(K, C, opt.augmentation, R, ks);
 
   // Compare with what the current factor is of: rows kept (P), new rows (N), rows gone (O).
   std::vector<int> p_of(static_cast<std::size_t>(m), -1); // row of _frows, for P rows

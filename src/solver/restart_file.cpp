@@ -244,7 +244,8 @@ void RestartFileWriter::write(const RestartRecordInfo& info, std::string_view pa
   try {
     write_all(fd, rec, _path);
   } catch (...) {
-    ::ftruncate(fd, static_cast<off_t>(_size));
+    // cut the partial record off (best effort: the write's own error is the one reported)
+    [[maybe_unused]] const int cut = ::ftruncate(fd, static_cast<off_t>(_size));
     ::close(fd);
     throw;
   }

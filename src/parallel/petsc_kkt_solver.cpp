@@ -1,0 +1,596 @@
+#include "parallel/petsc_kkt_solver.hpp"
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "linalg/kkt_solver.hpp"
+#include "parallel/kkt_layout.hpp"
+#include "parallel/parallel.hpp"
+#include "parallel/petsc_runtime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <petscksp.h>
+
+namespace gapfem {
+
+using parallel::petsc_check;
+
+namespace {
+
+constexpr double kDefaultRtol = 1e-10;
+constexpr int kGmresRestart = 100;
+constexpr int kMaxIterations = 2000;
+
+double compliance_of(const ConstraintBlock& C, int r) {
+  return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
+}
+double column_value(const ConstraintBlock& C, LocalIndex k) {
+  return C.has_columns() ? C.dval[k] : C.val[k];
+}
+
+/// The multiplier scale s: the mean of |diag K| (1 for an empty or zero diagonal).
+double multiplier_scale(const CsrMatrix& K) {
+  double sum = 0.0;
+  for (LocalIndex i = 0; i < K.n(); ++i) sum += std::abs(K.diagonal(i));
+  const double s = K.n() > 0 ? sum / K.n() : 1.0;
+  return s > 0 && std::isfinite(s) ? s : 1.0;
+}
+
+/// Destroys a PETSc object when it goes (PETSc's XxxDestroy set the handle to null).
+template <class T, PetscErrorCode (*Destroy)(T*)>
+struct Handle {
+  T h = nullptr;
+  Handle() = default;
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { reset(); }
+  void reset() {
+    if (h) Destroy(&h);
+    h = nullptr;
+  }
+  operator T() const { return h; }
+  T* out() {
+    reset();
+    return &h;
+  }
+};
+using MatH = Handle<Mat, MatDestroy>;
+using VecH = Handle<Vec, VecDestroy>;
+using KspH = Handle<KSP, KSPDestroy>;
+using ScatterH = Handle<VecScatter, VecScatterDestroy>;
+
+/// A matrix of `rows` x `cols` (global), with this rank's rows given as lists of (column, value).
+/// Built whole each time (its preallocation is exact).
+struct RowLists {
+  std::vector<std::vector<PetscInt>> cols;
+  std::vector<std::vector<PetscScalar>> vals;
+  explicit RowLists(PetscInt local_rows)
+      : cols(static_cast<std::size_t>(local_rows)), vals(static_cast<std::size_t>(local_rows)) {}
+  void add(PetscInt local_row, PetscInt col, double v) {
+    cols[local_row].push_back(col);
+    vals[local_row].push_back(v);
+  }
+};
+void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt global_rows,
+                   PetscInt global_cols) {
+  const auto nloc = static_cast<PetscInt>(rows.cols.size());
+  PetscInt first = 0; // global number of this rank's first row and column
+  PetscInt first_col = 0;
+  MPI_Exscan(&nloc, &first, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  MPI_Exscan(&local_cols, &first_col, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  if (parallel::rank() == 0) first = first_col = 0;
+  std::vector<PetscInt> d(rows.cols.size(), 0), o(rows.cols.size(), 0);
+  for (std::size_t i = 0; i < rows.cols.size(); ++i)
+    for (PetscInt c : rows.cols[i]) ++(c >= first_col && c < first_col + local_cols ? d[i] : o[i]);
+  petsc_check(MatCreate(PETSC_COMM_WORLD, out), "MatCreate");
+  petsc_check(MatSetSizes(*out, nloc, local_cols, global_rows, global_cols), "MatSetSizes");
+  petsc_check(MatSetType(*out, MATAIJ), "MatSetType");
+  petsc_check(MatSeqAIJSetPreallocation(*out, 0, d.data()), "MatSeqAIJSetPreallocation");
+  petsc_check(MatMPIAIJSetPreallocation(*out, 0, d.data(), 0, o.data()),
+              "MatMPIAIJSetPreallocation");
+  for (std::size_t i = 0; i < rows.cols.size(); ++i) {
+    const PetscInt row = first + static_cast<PetscInt>(i);
+    if (rows.cols[i].empty()) continue;
+    petsc_check(MatSetValues(*out, 1, &row, static_cast<PetscInt>(rows.cols[i].size()),
+                             rows.cols[i].data(), rows.vals[i].data(), ADD_VALUES),
+                "MatSetValues");
+  }
+  petsc_check(MatAssemblyBegin(*out, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(*out, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
+/// The whole of a distributed vector on every rank.
+void gather_all(Vec x, std::vector<double>& out) {
+  ScatterH scatter;
+  VecH all;
+  petsc_check(VecScatterCreateToAll(x, scatter.out(), all.out()), "VecScatterCreateToAll");
+  petsc_check(VecScatterBegin(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  petsc_check(VecScatterEnd(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  PetscInt n = 0;
+  petsc_check(VecGetSize(all, &n), "VecGetSize");
+  const PetscScalar* a = nullptr;
+  petsc_check(VecGetArrayRead(all, &a), "VecGetArrayRead");
+  out.assign(a, a + n);
+  petsc_check(VecRestoreArrayRead(all, &a), "VecRestoreArrayRead");
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The iterative method's operator and preconditioner (PETSc shell callbacks)
+
+struct BorderedSystem {
+  KktLayout layout;
+  Mat A = nullptr; ///< K + C^T R C (u numbering)
+  MatH Dp;         ///< s (D - C^T R E), n x m
+  MatH Cm;         ///< s C, m x n
+  VecH Ev;         ///< s^2 E (l layout)
+  VecH Sinv;       ///< 1 / (s^2 (E + (1 - R E) / (R + ks))) (l layout)
+  KSP inner = nullptr;
+  VecH xu, xl, yu, yl, tu, tl; ///< views into the bordered vectors, and work vectors
+  bool has_rows() const { return layout.m > 0; }
+
+  void make_views() {
+    const PetscInt nu = layout.u_local(), nl = layout.l_local();
+    petsc_check(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, nu, layout.n, nullptr, xu.out()),
+                "VecCreateMPIWithArray");
+    petsc_check(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, nu, layout.n, nullptr, yu.out()),
+                "VecCreateMPIWithArray");
+    petsc_check(VecCreateMPI(PETSC_COMM_WORLD, nu, layout.n, tu.out()), "VecCreateMPI");
+    if (!has_rows()) return;
+    petsc_check(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, nl, layout.m, nullptr, xl.out()),
+                "VecCreateMPIWithArray");
+    petsc_check(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, nl, layout.m, nullptr, yl.out()),
+                "VecCreateMPIWithArray");
+    petsc_check(VecCreateMPI(PETSC_COMM_WORLD, nl, layout.m, tl.out()), "VecCreateMPI");
+  }
+  /// Point the views at the two parts of x (read) and y (written).
+  void place(Vec x, Vec y, const PetscScalar*& xa, PetscScalar*& ya) {
+    petsc_check(VecGetArrayRead(x, &xa), "VecGetArrayRead");
+    petsc_check(VecGetArray(y, &ya), "VecGetArray");
+    auto* xw = const_cast<PetscScalar*>(xa); // the views of x are only read
+    petsc_check(VecPlaceArray(xu, xw), "VecPlaceArray");
+    petsc_check(VecPlaceArray(yu, ya), "VecPlaceArray");
+    if (has_rows()) {
+      petsc_check(VecPlaceArray(xl, xw + layout.u_local()), "VecPlaceArray");
+      petsc_check(VecPlaceArray(yl, ya + layout.u_local()), "VecPlaceArray");
+    }
+  }
+  void unplace(Vec x, Vec y, const PetscScalar*& xa, PetscScalar*& ya) {
+    petsc_check(VecResetArray(xu), "VecResetArray");
+    petsc_check(VecResetArray(yu), "VecResetArray");
+    if (has_rows()) {
+      petsc_check(VecResetArray(xl), "VecResetArray");
+      petsc_check(VecResetArray(yl), "VecResetArray");
+    }
+    petsc_check(VecRestoreArrayRead(x, &xa), "VecRestoreArrayRead");
+    petsc_check(VecRestoreArray(y, &ya), "VecRestoreArray");
+  }
+  /// y = [A Dp; Cm -Ev] x
+  void multiply(Vec x, Vec y) {
+    const PetscScalar* xa = nullptr;
+    PetscScalar* ya = nullptr;
+    place(x, y, xa, ya);
+    petsc_check(MatMult(A, xu, yu), "MatMult");
+    if (has_rows()) {
+      petsc_check(MatMultAdd(Dp, xl, yu, yu), "MatMultAdd");
+      petsc_check(MatMult(Cm, xu, yl), "MatMult");
+      petsc_check(VecPointwiseMult(tl, Ev, xl), "VecPointwiseMult");
+      petsc_check(VecAXPY(yl, -1.0, tl), "VecAXPY");
+    }
+    unplace(x, y, xa, ya);
+  }
+  /// y = P^-1 r with P = [A Dp; 0 -S]: y_l = -S^-1 r_l, y_u = AMG(r_u - Dp y_l)
+  void precondition(Vec r, Vec y) {
+    const PetscScalar* ra = nullptr;
+    PetscScalar* ya = nullptr;
+    place(r, y, ra, ya);
+    petsc_check(VecCopy(xu, tu), "VecCopy");
+    if (has_rows()) {
+      petsc_check(VecPointwiseMult(yl, Sinv, xl), "VecPointwiseMult");
+      petsc_check(VecScale(yl, -1.0), "VecScale");
+      petsc_check(MatMult(Dp, yl, yu), "MatMult");
+      petsc_check(VecAXPY(tu, -1.0, yu), "VecAXPY");
+    }
+    petsc_check(KSPSolve(inner, tu, yu), "KSPSolve (AMG cycle)");
+    unplace(r, y, ra, ya);
+  }
+};
+
+namespace {
+PetscErrorCode shell_multiply(Mat op, Vec x, Vec y) {
+  void* ctx = nullptr;
+  MatShellGetContext(op, &ctx);
+  try {
+    static_cast<BorderedSystem*>(ctx)->multiply(x, y);
+  } catch (const std::exception&) {
+    return PETSC_ERR_LIB;
+  }
+  return 0;
+}
+PetscErrorCode shell_precondition(PC pc, Vec r, Vec y) {
+  void* ctx = nullptr;
+  PCShellGetContext(pc, &ctx);
+  try {
+    static_cast<BorderedSystem*>(ctx)->precondition(r, y);
+  } catch (const std::exception&) {
+    return PETSC_ERR_LIB;
+  }
+  return 0;
+}
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+struct PetscKktSolver::Impl {
+  Method method;
+  std::shared_ptr<const SparsityPattern> pattern;
+  // MUMPS: the bordered matrix and its solver (kept while the rows keep their pattern)
+  MatH kkt;
+  KspH direct;
+  std::vector<LocalIndex> kkt_row_ptr, kkt_col; ///< the rows' pattern the matrix was made for
+  bool kkt_symmetric = false;
+  std::vector<double> factored; ///< what the factor is of (K values, rows)
+  ConstraintBlock factored_rows;
+  // Iterative: A with K's pattern, and its AMG cycle
+  MatH A;
+  KspH amg;
+  bool amg_ready = false;
+  int iterations_after_build = 0, last_iterations = 0;
+
+  KktStatistics solve_mumps(const CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
+                            std::span<double> du, std::span<double> dl, bool symmetric,
+                            const KktOptions& opt, RunStatistics* stats);
+  KktStatistics solve_iterative(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
+                                std::span<double> du, std::span<double> dl, bool symmetric,
+                                const KktOptions& opt, RunStatistics* stats);
+  void build_kkt(const CsrMatrix& K, const ConstraintBlock& C, double s, bool symmetric,
+                 const KktLayout& L);
+  void fill_a(const CsrMatrix& K, const KktLayout& L);
+  [[noreturn]] void singular(const CsrMatrix& K, std::span<const double> b,
+                             const ConstraintBlock& C, bool symmetric, const std::string& what);
+};
+
+PetscKktSolver::PetscKktSolver(Method method) : _impl(std::make_unique<Impl>()) {
+  _impl->method = method;
+}
+PetscKktSolver::~PetscKktSolver() = default;
+
+std::string_view PetscKktSolver::name() const {
+  return _impl->method == Method::Mumps ? "mumps" : "iterative";
+}
+
+void PetscKktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
+  _impl->pattern = std::move(pattern);
+  forget_factor();
+  _impl->A.reset();
+}
+
+void PetscKktSolver::forget_factor() {
+  _impl->direct.reset();
+  _impl->kkt.reset();
+  _impl->kkt_row_ptr.clear();
+  _impl->kkt_col.clear();
+  _impl->factored.clear();
+  _impl->factored_rows.clear();
+  _impl->amg.reset();
+  _impl->amg_ready = false;
+}
+
+KktStatistics PetscKktSolver::solve(CsrMatrix& K, std::span<const double> b,
+                                    const ConstraintBlock& C, std::span<double> du,
+                                    std::span<double> dl, bool symmetric, const KktOptions& opt,
+                                    RunStatistics* stats) {
+  FE_CHECK(_impl->pattern && K.n() == _impl->pattern->n,
+           "PETSc solver not analysed for this pattern");
+  if (_impl->method == Method::Mumps)
+    return _impl->solve_mumps(K, b, C, du, dl, symmetric, opt, stats);
+  return _impl->solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
+}
+
+void PetscKktSolver::Impl::singular(const CsrMatrix& K, std::span<const double> b,
+                                    const ConstraintBlock& C, bool symmetric,
+                                    const std::string& what) {
+  // One process: let the CHOLMOD backend name the equations without stiffness (its pivots do),
+  // so that the diagnosis names the nodes as in a CHOLMOD run
+  if (parallel::size() == 1) {
+    KktSolver diagnosis;
+    diagnosis.analyze(pattern);
+    CsrMatrix copy = K;
+    std::vector<double> du(static_cast<std::size_t>(K.n())),
+        dl(static_cast<std::size_t>(C.n_rows()));
+    diagnosis.solve(copy, b, C, du, dl, symmetric, KktOptions{}); // throws SingularSystem
+  }
+  throw SingularSystem(what, {});
+}
+
+// ---------------------------------------------------------------------------------------------
+// MUMPS
+
+void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& C, double s,
+                                     bool symmetric, const KktLayout& L) {
+  const SparsityPattern& pat = K.pattern();
+  const auto vals = K.values();
+  RowLists rows(L.u_local() + L.l_local());
+  for (PetscInt i = L.u0(); i < L.u1(); ++i)
+    for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k)
+      rows.add(i - L.u0(), L.kkt_u(pat.col[k]), vals[k]);
+  for (int r = 0; r < C.n_rows(); ++r) {
+    const bool own_row = r >= L.l0() && r < L.l1();
+    for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
+      const LocalIndex i = C.col[k];
+      if (i >= L.u0() && i < L.u1()) rows.add(i - L.u0(), L.kkt_l(r), s * column_value(C, k));
+      if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_u(i), s * C.val[k]);
+    }
+    if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_l(r), -s * s * compliance_of(C, r));
+  }
+  const PetscInt N = L.n + L.m;
+  create_matrix(kkt.out(), rows, L.u_local() + L.l_local(), N, N);
+  kkt_symmetric = symmetric && !C.has_columns();
+  if (kkt_symmetric) petsc_check(MatSetOption(kkt, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+}
+
+KktStatistics PetscKktSolver::Impl::solve_mumps(const CsrMatrix& K, std::span<const double> b,
+                                                const ConstraintBlock& C, std::span<double> du,
+                                                std::span<double> dl, bool symmetric,
+                                                const KktOptions& opt, RunStatistics* stats) {
+  KktStatistics out;
+  const KktLayout L(K.n(), C.n_rows());
+  const double s = multiplier_scale(K);
+  // the identical system (a linear step's next increment) keeps its factor
+  const auto vals = K.values();
+  const bool same = direct && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
+                    kkt_symmetric == (symmetric && !C.has_columns()) &&
+                    std::equal(vals.begin(), vals.end(), factored.begin(), factored.end()) &&
+                    factored_rows.row_ptr == C.row_ptr && factored_rows.col == C.col &&
+                    factored_rows.val == C.val && factored_rows.dval == C.dval &&
+                    factored_rows.compliance == C.compliance;
+  if (!same) {
+    ScopedTimer timer(stats, TimeCategory::Factorization);
+    if (stats) ++stats->factorizations;
+    build_kkt(K, C, s, symmetric, L);
+    petsc_check(KSPCreate(PETSC_COMM_WORLD, direct.out()), "KSPCreate");
+    petsc_check(KSPSetOperators(direct, kkt, kkt), "KSPSetOperators");
+    petsc_check(KSPSetType(direct, KSPPREONLY), "KSPSetType");
+    PC pc = nullptr;
+    petsc_check(KSPGetPC(direct, &pc), "KSPGetPC");
+    petsc_check(PCSetType(pc, kkt_symmetric ? PCCHOLESKY : PCLU), "PCSetType");
+    petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+    petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+    Mat F = nullptr;
+    petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl"); // detect null pivots
+    petsc_check(KSPSetErrorIfNotConverged(direct, PETSC_FALSE), "KSPSetErrorIfNotConverged");
+    petsc_check(KSPSetFromOptions(direct), "KSPSetFromOptions");
+    const PetscErrorCode setup = KSPSetUp(direct);
+    PetscInt info1 = 0, null_pivots = 0;
+    MatMumpsGetInfog(F, 1, &info1);
+    MatMumpsGetInfog(F, 28, &null_pivots);
+    if (setup != 0 || info1 < 0 || null_pivots > 0) {
+      direct.reset();
+      if ((setup == 0 && info1 >= 0) || info1 == -10)
+        singular(K, b, C, symmetric,
+                 fmt::format("the system of equations is singular ({} null pivots in MUMPS's "
+                             "factor)",
+                             null_pivots));
+      throw std::runtime_error(
+          fmt::format("MUMPS could not factorise the system of {} equations and {} constraint rows "
+                      "(INFOG(1) = {}{})",
+                      L.n, L.m, info1,
+                      info1 == -9 || info1 == -8 || info1 == -13 || info1 == -19
+                          ? ": not enough memory; more ranks (mpirun -np N) or --solver iterative"
+                          : ""));
+    }
+    factored.assign(vals.begin(), vals.end());
+    factored_rows = C;
+  } else {
+    out.reused_factor = true;
+  }
+  // right-hand side [b; -s g] in this rank's rows
+  VecH rhs, x;
+  petsc_check(MatCreateVecs(kkt, x.out(), rhs.out()), "MatCreateVecs");
+  {
+    PetscScalar* a = nullptr;
+    petsc_check(VecGetArray(rhs, &a), "VecGetArray");
+    for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = b[i];
+    for (PetscInt r = L.l0(); r < L.l1(); ++r) a[L.u_local() + r - L.l0()] = -s * C.g[r];
+    petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
+  }
+  {
+    ScopedTimer timer(stats, TimeCategory::Solve);
+    petsc_check(KSPSolve(direct, rhs, x), "KSPSolve");
+    if (stats) ++stats->linear_solves;
+  }
+  std::vector<double> all;
+  gather_all(x, all);
+  for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
+  for (PetscInt r = 0; r < L.m; ++r) dl[r] = s * all[L.kkt_l(r)];
+  out.solves = 1;
+  log::debug("  MUMPS: {} factor of {} equations and {} rows", same ? "same" : "new", L.n, L.m);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Iterative
+
+void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
+  const SparsityPattern& pat = K.pattern();
+  const auto vals = K.values();
+  if (!A) {
+    RowLists rows(L.u_local());
+    for (PetscInt i = L.u0(); i < L.u1(); ++i)
+      for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k)
+        rows.add(i - L.u0(), pat.col[k], vals[k]);
+    create_matrix(A.out(), rows, L.u_local(), L.n, L.n);
+    petsc_check(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
+    return;
+  }
+  std::vector<PetscInt> cols;
+  for (PetscInt i = L.u0(); i < L.u1(); ++i) {
+    const LocalIndex k0 = pat.row_ptr[i], k1 = pat.row_ptr[i + 1];
+    cols.assign(pat.col.begin() + k0, pat.col.begin() + k1);
+    petsc_check(MatSetValues(A, 1, &i, k1 - k0, cols.data(), vals.data() + k0, INSERT_VALUES),
+                "MatSetValues");
+  }
+  petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
+KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<const double> b,
+                                                    const ConstraintBlock& C, std::span<double> du,
+                                                    std::span<double> dl, bool symmetric,
+                                                    const KktOptions& opt, RunStatistics* stats) {
+  KktStatistics out;
+  const KktLayout L(K.n(), C.n_rows());
+  const double s = multiplier_scale(K);
+  std::vector<double> R, ks;
+  augmentation_weights(K, C, opt.augmentation, R, ks);
+  const int m = C.n_rows();
+  // A = K + C^T R C, in place (the springs lie inside each row's own block of the pattern)
+  {
+    auto vals = K.values();
+    const SparsityPattern& pat = K.pattern();
+    for (int r = 0; r < m; ++r)
+      for (LocalIndex a = C.row_ptr[r]; a < C.row_ptr[r + 1]; ++a)
+        for (LocalIndex c = C.row_ptr[r]; c < C.row_ptr[r + 1]; ++c) {
+          const LocalIndex pos = pat.find(C.col[a], C.col[c]);
+          FE_CHECK(pos >= 0, "constraint row outside the sparsity pattern");
+          vals[pos] += R[r] * C.val[a] * C.val[c];
+        }
+  }
+  BorderedSystem sys;
+  sys.layout = L;
+  fill_a(K, L);
+  sys.A = A;
+  if (m > 0) {
+    RowLists d(L.u_local()), c(L.l_local());
+    for (int r = 0; r < m; ++r) {
+      const double E = compliance_of(C, r);
+      const bool own_row = r >= L.l0() && r < L.l1();
+      for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
+        const LocalIndex i = C.col[k];
+        if (i >= L.u0() && i < L.u1())
+          d.add(i - L.u0(), r, s * (column_value(C, k) - C.val[k] * R[r] * E));
+        if (own_row) c.add(r - L.l0(), i, s * C.val[k]);
+      }
+    }
+    create_matrix(sys.Dp.out(), d, L.l_local(), L.n, L.m);
+    create_matrix(sys.Cm.out(), c, L.u_local(), L.m, L.n);
+    petsc_check(VecCreateMPI(PETSC_COMM_WORLD, L.l_local(), L.m, sys.Ev.out()), "VecCreateMPI");
+    petsc_check(VecDuplicate(sys.Ev, sys.Sinv.out()), "VecDuplicate");
+    PetscScalar *e = nullptr, *p = nullptr;
+    petsc_check(VecGetArray(sys.Ev, &e), "VecGetArray");
+    petsc_check(VecGetArray(sys.Sinv, &p), "VecGetArray");
+    for (PetscInt r = L.l0(); r < L.l1(); ++r) {
+      const double E = compliance_of(C, r);
+      e[r - L.l0()] = s * s * E;
+      p[r - L.l0()] = 1.0 / (s * s * (E + (1.0 - R[r] * E) / (R[r] + ks[r])));
+    }
+    petsc_check(VecRestoreArray(sys.Ev, &e), "VecRestoreArray");
+    petsc_check(VecRestoreArray(sys.Sinv, &p), "VecRestoreArray");
+  }
+  sys.make_views();
+
+  // the AMG cycle: rebuilt when asked, or when the iterations it takes have doubled
+  const bool rebuild = !amg_ready || opt.force_fresh || opt.reuse == FactorReuse::Never ||
+                       last_iterations > 2 * iterations_after_build + 5;
+  if (!amg) {
+    petsc_check(KSPCreate(PETSC_COMM_WORLD, amg.out()), "KSPCreate");
+    petsc_check(KSPSetOptionsPrefix(amg, "inner_"), "KSPSetOptionsPrefix");
+    petsc_check(KSPSetType(amg, KSPPREONLY), "KSPSetType");
+    PC pc = nullptr;
+    petsc_check(KSPGetPC(amg, &pc), "KSPGetPC");
+    petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
+    petsc_check(KSPSetFromOptions(amg), "KSPSetFromOptions");
+  }
+  petsc_check(KSPSetOperators(amg, A, A), "KSPSetOperators");
+  petsc_check(KSPSetReusePreconditioner(amg, rebuild ? PETSC_FALSE : PETSC_TRUE),
+              "KSPSetReusePreconditioner");
+  if (rebuild) {
+    ScopedTimer timer(stats, TimeCategory::Factorization);
+    if (stats) ++stats->factorizations;
+    petsc_check(KSPSetUp(amg), "KSPSetUp (AMG)");
+    amg_ready = true;
+  }
+  sys.inner = amg;
+
+  // GMRES on the bordered operator
+  const PetscInt local = L.u_local() + L.l_local(), N = L.n + L.m;
+  MatH op;
+  petsc_check(MatCreateShell(PETSC_COMM_WORLD, local, local, N, N, &sys, op.out()),
+              "MatCreateShell");
+  petsc_check(
+      MatShellSetOperation(op, MATOP_MULT, reinterpret_cast<void (*)(void)>(shell_multiply)),
+      "MatShellSetOperation");
+  KspH ksp;
+  petsc_check(KSPCreate(PETSC_COMM_WORLD, ksp.out()), "KSPCreate");
+  petsc_check(KSPSetOperators(ksp, op, op), "KSPSetOperators");
+  petsc_check(KSPSetType(ksp, KSPGMRES), "KSPSetType");
+  petsc_check(KSPGMRESSetRestart(ksp, kGmresRestart), "KSPGMRESSetRestart");
+  petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+  petsc_check(KSPSetTolerances(ksp, kDefaultRtol, 1e-300, PETSC_DEFAULT, kMaxIterations),
+              "KSPSetTolerances");
+  petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+  PC pc = nullptr;
+  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, PCSHELL), "PCSetType");
+  petsc_check(PCShellSetContext(pc, &sys), "PCShellSetContext");
+  petsc_check(PCShellSetApply(pc, shell_precondition), "PCShellSetApply");
+  petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+
+  VecH rhs, x;
+  petsc_check(VecCreateMPI(PETSC_COMM_WORLD, local, N, rhs.out()), "VecCreateMPI");
+  petsc_check(VecDuplicate(rhs, x.out()), "VecDuplicate");
+  {
+    // [b - C^T R g; -s g]: the augmentation's share of the right-hand side
+    std::vector<double> bb(b.begin(), b.end()), Rg(static_cast<std::size_t>(m));
+    for (int r = 0; r < m; ++r) Rg[r] = R[r] * C.g[r];
+    C.add_transpose_multiply(Rg, -1.0, bb);
+    PetscScalar* a = nullptr;
+    petsc_check(VecGetArray(rhs, &a), "VecGetArray");
+    for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = bb[i];
+    for (PetscInt r = L.l0(); r < L.l1(); ++r) a[L.u_local() + r - L.l0()] = -s * C.g[r];
+    petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
+  }
+  KSPConvergedReason reason{};
+  PetscInt its = 0;
+  {
+    ScopedTimer timer(stats, TimeCategory::Solve);
+    petsc_check(KSPSolve(ksp, rhs, x), "KSPSolve");
+    petsc_check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
+    petsc_check(KSPGetIterationNumber(ksp, &its), "KSPGetIterationNumber");
+  }
+  if (stats) stats->linear_solves += its;
+  last_iterations = static_cast<int>(its);
+  if (rebuild) iterations_after_build = static_cast<int>(its);
+  log::debug("  GMRES: {} iterations ({} AMG), {} equations and {} rows, reason {}", its,
+             rebuild ? "new" : "reused", L.n, L.m, static_cast<int>(reason));
+  if (reason < 0) {
+    if (!rebuild) { // the old hierarchy may be what failed: once more with a new one
+      amg_ready = false;
+      // K is already augmented: undo nothing, solve from K's current values minus the springs
+      for (int r = 0; r < m; ++r) {
+        auto vals = K.values();
+        for (LocalIndex a = C.row_ptr[r]; a < C.row_ptr[r + 1]; ++a)
+          for (LocalIndex c = C.row_ptr[r]; c < C.row_ptr[r + 1]; ++c)
+            vals[K.pattern().find(C.col[a], C.col[c])] -= R[r] * C.val[a] * C.val[c];
+      }
+      return solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
+    }
+    singular(K, b, C, symmetric,
+             fmt::format("the iterative solver did not converge ({} GMRES iterations, PETSc "
+                         "reason {}): the system may be singular; --solver mumps factorises it",
+                         its, static_cast<int>(reason)));
+  }
+  std::vector<double> all;
+  gather_all(x, all);
+  for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
+  for (PetscInt r = 0; r < L.m; ++r) dl[r] = s * all[L.kkt_l(r)];
+  out.reused_factor = !rebuild;
+  out.solves = static_cast<int>(its);
+  out.schur_iterations = static_cast<int>(its);
+  return out;
+}
+
+} // namespace gapfem
