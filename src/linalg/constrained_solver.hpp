@@ -51,12 +51,23 @@ enum class SolverBackend {
             ///< ranks
 };
 
+/// Vectors an algebraic multigrid should interpolate well (the rigid-body modes): `count` vectors
+/// of n entries each, one after the other.
+struct NearNullSpace {
+  int count = 0;
+  std::vector<double> vectors;
+};
+
 class ConstrainedSolver {
  public:
   virtual ~ConstrainedSolver() = default;
   virtual std::string_view name() const = 0;
   /// Symbolic analysis for a step's pattern (once per step).
   virtual void analyze(std::shared_ptr<const SparsityPattern> pattern) = 0;
+  /// True when the backend uses a near null space (an AMG preconditioner): the analysis then
+  /// gives it one per step, after analyze().
+  virtual bool wants_near_null_space() const { return false; }
+  virtual void set_near_null_space(NearNullSpace modes) { (void)modes; }
   /// Drop any factor: the next solve starts afresh, exactly as a new solver would (restart points).
   virtual void forget_factor() = 0;
   /// Solve the system above; K may be modified in place. du has one entry per equation, dl one

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <petscksp.h>
+#include <unordered_map>
 
 namespace gapfem {
 
@@ -21,12 +22,37 @@ namespace {
 constexpr double kDefaultRtol = 1e-10;
 constexpr int kGmresRestart = 100;
 constexpr int kMaxIterations = 2000;
+constexpr int kRowsAbsorbed = 20;
 
 double compliance_of(const ConstraintBlock& C, int r) {
   return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
 }
 double column_value(const ConstraintBlock& C, LocalIndex k) {
   return C.has_columns() ? C.dval[k] : C.val[k];
+}
+
+/// Rows of b that a does not have (same multiplier, same coefficients), plus rows of a gone.
+int changed_rows(const ConstraintBlock& a, const ConstraintBlock& b) {
+  std::unordered_map<std::int64_t, int> row_of;
+  for (int r = 0; r < a.n_rows(); ++r) row_of.emplace(a.multiplier[r], r);
+  int kept = 0;
+  for (int r = 0; r < b.n_rows(); ++r) {
+    const auto it = row_of.find(b.multiplier[r]);
+    if (it == row_of.end()) continue;
+    const int q = it->second;
+    kept += std::equal(b.col.begin() + b.row_ptr[r], b.col.begin() + b.row_ptr[r + 1],
+                       a.col.begin() + a.row_ptr[q], a.col.begin() + a.row_ptr[q + 1]) &&
+            std::equal(b.val.begin() + b.row_ptr[r], b.val.begin() + b.row_ptr[r + 1],
+                       a.val.begin() + a.row_ptr[q], a.val.begin() + a.row_ptr[q + 1]);
+  }
+  return (b.n_rows() - kept) + (a.n_rows() - kept);
+}
+
+/// The factor f = 1 - R E of a compliant row's equation in the bordered matrix MUMPS factorises:
+/// the augmentation makes the row's column s (1 - R E) C^T, so the row is scaled alike and the
+/// matrix stays symmetric (f >= 1/2, R being at most half the row's stiffness).
+double row_factor(std::span<const double> R, const ConstraintBlock& C, int r) {
+  return 1.0 - R[r] * compliance_of(C, r);
 }
 
 /// The multiplier scale s: the mean of |diag K| (1 for an empty or zero diagonal).
@@ -235,19 +261,26 @@ struct PetscKktSolver::Impl {
   ConstraintBlock factored_rows;
   // Iterative: A with K's pattern, and its AMG cycle
   MatH A;
+  NearNullSpace modes; ///< the rigid-body modes A's AMG interpolates (set per step)
   KspH amg;
   bool amg_ready = false;
   int iterations_after_build = 0, last_iterations = 0;
+  ConstraintBlock amg_rows;     ///< the rows whose springs were in A when its AMG was built
+  bool direct_fallback = false; ///< GMRES failed in this step: MUMPS solves until the next step
 
-  KktStatistics solve_mumps(const CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
+  KktStatistics solve_mumps(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                             std::span<double> du, std::span<double> dl, bool symmetric,
                             const KktOptions& opt, RunStatistics* stats);
   KktStatistics solve_iterative(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                                 std::span<double> du, std::span<double> dl, bool symmetric,
                                 const KktOptions& opt, RunStatistics* stats);
-  void build_kkt(const CsrMatrix& K, const ConstraintBlock& C, double s, bool symmetric,
-                 const KktLayout& L);
+  void build_kkt(const CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R, double s,
+                 bool symmetric, const KktLayout& L);
+  /// Factorise kkt with MUMPS (workspace relaxation ICNTL(14) in percent); MUMPS's INFOG(1),
+  /// -10 also for null pivots.
+  PetscInt factorize_mumps(int workspace_percent);
   void fill_a(const CsrMatrix& K, const KktLayout& L);
+  void attach_near_null_space(const KktLayout& L);
   [[noreturn]] void singular(const CsrMatrix& K, std::span<const double> b,
                              const ConstraintBlock& C, bool symmetric, const std::string& what);
 };
@@ -263,8 +296,17 @@ std::string_view PetscKktSolver::name() const {
 
 void PetscKktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _impl->pattern = std::move(pattern);
+  _impl->direct_fallback = false;
   forget_factor();
   _impl->A.reset();
+}
+
+bool PetscKktSolver::wants_near_null_space() const {
+  return _impl->method == Method::Iterative;
+}
+void PetscKktSolver::set_near_null_space(NearNullSpace modes) {
+  _impl->modes = std::move(modes);
+  _impl->A.reset(); // made again with them
 }
 
 void PetscKktSolver::forget_factor() {
@@ -284,7 +326,7 @@ KktStatistics PetscKktSolver::solve(CsrMatrix& K, std::span<const double> b,
                                     RunStatistics* stats) {
   FE_CHECK(_impl->pattern && K.n() == _impl->pattern->n,
            "PETSc solver not analysed for this pattern");
-  if (_impl->method == Method::Mumps)
+  if (_impl->method == Method::Mumps || _impl->direct_fallback)
     return _impl->solve_mumps(K, b, C, du, dl, symmetric, opt, stats);
   return _impl->solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
 }
@@ -308,8 +350,9 @@ void PetscKktSolver::Impl::singular(const CsrMatrix& K, std::span<const double> 
 // ---------------------------------------------------------------------------------------------
 // MUMPS
 
-void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& C, double s,
-                                     bool symmetric, const KktLayout& L) {
+void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& C,
+                                     std::span<const double> R, double s, bool symmetric,
+                                     const KktLayout& L) {
   const SparsityPattern& pat = K.pattern();
   const auto vals = K.values();
   RowLists rows(L.u_local() + L.l_local());
@@ -318,12 +361,14 @@ void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& 
       rows.add(i - L.u0(), L.kkt_u(pat.col[k]), vals[k]);
   for (int r = 0; r < C.n_rows(); ++r) {
     const bool own_row = r >= L.l0() && r < L.l1();
+    const double E = compliance_of(C, r), f = row_factor(R, C, r);
     for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
       const LocalIndex i = C.col[k];
-      if (i >= L.u0() && i < L.u1()) rows.add(i - L.u0(), L.kkt_l(r), s * column_value(C, k));
-      if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_u(i), s * C.val[k]);
+      if (i >= L.u0() && i < L.u1())
+        rows.add(i - L.u0(), L.kkt_l(r), s * (column_value(C, k) - C.val[k] * R[r] * E));
+      if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_u(i), s * f * C.val[k]);
     }
-    if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_l(r), -s * s * compliance_of(C, r));
+    if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_l(r), -s * s * f * E);
   }
   const PetscInt N = L.n + L.m;
   create_matrix(kkt.out(), rows, L.u_local() + L.l_local(), N, N);
@@ -331,7 +376,68 @@ void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& 
   if (kkt_symmetric) petsc_check(MatSetOption(kkt, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
 }
 
-KktStatistics PetscKktSolver::Impl::solve_mumps(const CsrMatrix& K, std::span<const double> b,
+namespace {
+
+/// A = K + C^T R C in place (the springs lie inside each row's own block of the pattern).
+void augment(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R, double sign = 1.0) {
+  auto vals = K.values();
+  const SparsityPattern& pat = K.pattern();
+  for (int r = 0; r < C.n_rows(); ++r)
+    for (LocalIndex a = C.row_ptr[r]; a < C.row_ptr[r + 1]; ++a)
+      for (LocalIndex c = C.row_ptr[r]; c < C.row_ptr[r + 1]; ++c) {
+        const LocalIndex pos = pat.find(C.col[a], C.col[c]);
+        FE_CHECK(pos >= 0, "constraint row outside the sparsity pattern");
+        vals[pos] += sign * R[r] * C.val[a] * C.val[c];
+      }
+}
+
+/// This rank's part of the right-hand side [b - C^T R g; -s f g] of the augmented system (f:
+/// the rows' factors, row_factor(); 1 when not given).
+void fill_rhs(Vec rhs, std::span<const double> b, const ConstraintBlock& C,
+              std::span<const double> R, double s, const KktLayout& L, bool scaled_rows) {
+  std::vector<double> bb(b.begin(), b.end()), Rg(static_cast<std::size_t>(C.n_rows()));
+  for (int r = 0; r < C.n_rows(); ++r) Rg[r] = R[r] * C.g[r];
+  C.add_transpose_multiply(Rg, -1.0, bb);
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(rhs, &a), "VecGetArray");
+  for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = bb[i];
+  for (PetscInt r = L.l0(); r < L.l1(); ++r)
+    a[L.u_local() + r - L.l0()] = -s * (scaled_rows ? row_factor(R, C, r) : 1.0) * C.g[r];
+  petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
+}
+
+/// MUMPS's INFOG(1) for a factor that ran out of its workspace estimate.
+bool mumps_workspace_short(PetscInt info1) {
+  return info1 == -8 || info1 == -9 || info1 == -14;
+}
+
+} // namespace
+
+PetscInt PetscKktSolver::Impl::factorize_mumps(int workspace_percent) {
+  petsc_check(KSPCreate(PETSC_COMM_WORLD, direct.out()), "KSPCreate");
+  petsc_check(KSPSetOperators(direct, kkt, kkt), "KSPSetOperators");
+  petsc_check(KSPSetType(direct, KSPPREONLY), "KSPSetType");
+  PC pc = nullptr;
+  petsc_check(KSPGetPC(direct, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, kkt_symmetric ? PCCHOLESKY : PCLU), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+  Mat F = nullptr;
+  petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+  petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl"); // detect null pivots
+  petsc_check(MatMumpsSetIcntl(F, 14, workspace_percent), "MatMumpsSetIcntl");
+  petsc_check(KSPSetErrorIfNotConverged(direct, PETSC_FALSE), "KSPSetErrorIfNotConverged");
+  petsc_check(KSPSetFromOptions(direct), "KSPSetFromOptions");
+  const PetscErrorCode setup = KSPSetUp(direct);
+  PetscInt info1 = 0, null_pivots = 0;
+  MatMumpsGetInfog(F, 1, &info1);
+  MatMumpsGetInfog(F, 28, &null_pivots);
+  if (info1 >= 0 && setup != 0) info1 = -1; // PETSc's own failure
+  if (info1 >= 0 && null_pivots > 0) info1 = -10;
+  return info1;
+}
+
+KktStatistics PetscKktSolver::Impl::solve_mumps(CsrMatrix& K, std::span<const double> b,
                                                 const ConstraintBlock& C, std::span<double> du,
                                                 std::span<double> dl, bool symmetric,
                                                 const KktOptions& opt, RunStatistics* stats) {
@@ -346,57 +452,42 @@ KktStatistics PetscKktSolver::Impl::solve_mumps(const CsrMatrix& K, std::span<co
                     factored_rows.row_ptr == C.row_ptr && factored_rows.col == C.col &&
                     factored_rows.val == C.val && factored_rows.dval == C.dval &&
                     factored_rows.compliance == C.compliance;
+  // augmented as the iterative method is: A = K + C^T R C is definite where the rows hold a body
+  // that K alone leaves free, which spares MUMPS most delayed pivots
+  std::vector<double> R, ks;
+  augmentation_weights(K, C, opt.augmentation, R, ks);
   if (!same) {
     ScopedTimer timer(stats, TimeCategory::Factorization);
     if (stats) ++stats->factorizations;
-    build_kkt(K, C, s, symmetric, L);
-    petsc_check(KSPCreate(PETSC_COMM_WORLD, direct.out()), "KSPCreate");
-    petsc_check(KSPSetOperators(direct, kkt, kkt), "KSPSetOperators");
-    petsc_check(KSPSetType(direct, KSPPREONLY), "KSPSetType");
-    PC pc = nullptr;
-    petsc_check(KSPGetPC(direct, &pc), "KSPGetPC");
-    petsc_check(PCSetType(pc, kkt_symmetric ? PCCHOLESKY : PCLU), "PCSetType");
-    petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-    petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-    Mat F = nullptr;
-    petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-    petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl"); // detect null pivots
-    petsc_check(KSPSetErrorIfNotConverged(direct, PETSC_FALSE), "KSPSetErrorIfNotConverged");
-    petsc_check(KSPSetFromOptions(direct), "KSPSetFromOptions");
-    const PetscErrorCode setup = KSPSetUp(direct);
-    PetscInt info1 = 0, null_pivots = 0;
-    MatMumpsGetInfog(F, 1, &info1);
-    MatMumpsGetInfog(F, 28, &null_pivots);
-    if (setup != 0 || info1 < 0 || null_pivots > 0) {
+    factored.assign(vals.begin(), vals.end());
+    factored_rows = C;
+    augment(K, C, R);
+    build_kkt(K, C, R, s, symmetric, L);
+    PetscInt info1 = 0;
+    for (int percent = 35; percent <= 35 * 16; percent *= 2)
+      if (info1 = factorize_mumps(percent); !mumps_workspace_short(info1)) break;
+    if (info1 < 0) {
       direct.reset();
-      if ((setup == 0 && info1 >= 0) || info1 == -10)
-        singular(K, b, C, symmetric,
-                 fmt::format("the system of equations is singular ({} null pivots in MUMPS's "
-                             "factor)",
-                             null_pivots));
+      factored.clear();
+      if (info1 == -10) {
+        augment(K, C, R, -1.0);
+        singular(K, b, C, symmetric, "the system of equations is singular (MUMPS's factor)");
+      }
       throw std::runtime_error(
           fmt::format("MUMPS could not factorise the system of {} equations and {} constraint rows "
                       "(INFOG(1) = {}{})",
                       L.n, L.m, info1,
-                      info1 == -9 || info1 == -8 || info1 == -13 || info1 == -19
+                      mumps_workspace_short(info1) || info1 == -13 || info1 == -19
                           ? ": not enough memory; more ranks (mpirun -np N) or --solver iterative"
                           : ""));
     }
-    factored.assign(vals.begin(), vals.end());
-    factored_rows = C;
   } else {
     out.reused_factor = true;
   }
   // right-hand side [b; -s g] in this rank's rows
   VecH rhs, x;
   petsc_check(MatCreateVecs(kkt, x.out(), rhs.out()), "MatCreateVecs");
-  {
-    PetscScalar* a = nullptr;
-    petsc_check(VecGetArray(rhs, &a), "VecGetArray");
-    for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = b[i];
-    for (PetscInt r = L.l0(); r < L.l1(); ++r) a[L.u_local() + r - L.l0()] = -s * C.g[r];
-    petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
-  }
+  fill_rhs(rhs, b, C, R, s, L, true);
   {
     ScopedTimer timer(stats, TimeCategory::Solve);
     petsc_check(KSPSolve(direct, rhs, x), "KSPSolve");
@@ -424,6 +515,9 @@ void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
         rows.add(i - L.u0(), pat.col[k], vals[k]);
     create_matrix(A.out(), rows, L.u_local(), L.n, L.n);
     petsc_check(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
+    attach_near_null_space(L);
+    amg.reset(); // a new matrix: a new hierarchy
+    amg_ready = false;
     return;
   }
   std::vector<PetscInt> cols;
@@ -437,6 +531,42 @@ void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
 }
 
+void PetscKktSolver::Impl::attach_near_null_space(const KktLayout& L) {
+  if (modes.count == 0 || modes.vectors.size() != static_cast<std::size_t>(modes.count) * L.n)
+    return;
+  // orthonormal (modified Gram-Schmidt); modes the free equations do not carry are dropped
+  std::vector<Vec> kept;
+  for (int k = 0; k < modes.count; ++k) {
+    Vec v = nullptr;
+    petsc_check(VecCreateMPI(PETSC_COMM_WORLD, L.u_local(), L.n, &v), "VecCreateMPI");
+    PetscScalar* a = nullptr;
+    petsc_check(VecGetArray(v, &a), "VecGetArray");
+    const double* mode = modes.vectors.data() + static_cast<std::size_t>(k) * L.n;
+    std::copy(mode + L.u0(), mode + L.u1(), a);
+    petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
+    for (Vec q : kept) {
+      PetscScalar dot = 0;
+      petsc_check(VecDot(v, q, &dot), "VecDot");
+      petsc_check(VecAXPY(v, -dot, q), "VecAXPY");
+    }
+    PetscReal norm = 0;
+    petsc_check(VecNorm(v, NORM_2, &norm), "VecNorm");
+    if (norm > 1e-8 * std::sqrt(static_cast<double>(L.n))) {
+      petsc_check(VecScale(v, 1.0 / norm), "VecScale");
+      kept.push_back(v);
+    } else {
+      VecDestroy(&v);
+    }
+  }
+  MatNullSpace space = nullptr;
+  petsc_check(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, static_cast<PetscInt>(kept.size()),
+                                 kept.data(), &space),
+              "MatNullSpaceCreate");
+  petsc_check(MatSetNearNullSpace(A, space), "MatSetNearNullSpace");
+  MatNullSpaceDestroy(&space);
+  for (Vec& v : kept) VecDestroy(&v);
+}
+
 KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<const double> b,
                                                     const ConstraintBlock& C, std::span<double> du,
                                                     std::span<double> dl, bool symmetric,
@@ -447,18 +577,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   std::vector<double> R, ks;
   augmentation_weights(K, C, opt.augmentation, R, ks);
   const int m = C.n_rows();
-  // A = K + C^T R C, in place (the springs lie inside each row's own block of the pattern)
-  {
-    auto vals = K.values();
-    const SparsityPattern& pat = K.pattern();
-    for (int r = 0; r < m; ++r)
-      for (LocalIndex a = C.row_ptr[r]; a < C.row_ptr[r + 1]; ++a)
-        for (LocalIndex c = C.row_ptr[r]; c < C.row_ptr[r + 1]; ++c) {
-          const LocalIndex pos = pat.find(C.col[a], C.col[c]);
-          FE_CHECK(pos >= 0, "constraint row outside the sparsity pattern");
-          vals[pos] += R[r] * C.val[a] * C.val[c];
-        }
-  }
+  augment(K, C, R);
   BorderedSystem sys;
   sys.layout = L;
   fill_a(K, L);
@@ -492,9 +611,12 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   }
   sys.make_views();
 
-  // the AMG cycle: rebuilt when asked, or when the iterations it takes have doubled
+  // the AMG cycle: rebuilt when asked, when the iterations it takes have doubled, or when more
+  // rows changed than GMRES absorbs cheaply (each changed row moves A by a stiff spring at its
+  // DOFs, an outlier eigenvalue of the preconditioned system: about one iteration each)
+  const int changed = changed_rows(amg_rows, C);
   const bool rebuild = !amg_ready || opt.force_fresh || opt.reuse == FactorReuse::Never ||
-                       last_iterations > 2 * iterations_after_build + 5;
+                       last_iterations > 2 * iterations_after_build + 5 || changed > kRowsAbsorbed;
   if (!amg) {
     petsc_check(KSPCreate(PETSC_COMM_WORLD, amg.out()), "KSPCreate");
     petsc_check(KSPSetOptionsPrefix(amg, "inner_"), "KSPSetOptionsPrefix");
@@ -512,6 +634,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
     if (stats) ++stats->factorizations;
     petsc_check(KSPSetUp(amg), "KSPSetUp (AMG)");
     amg_ready = true;
+    amg_rows = C;
   }
   sys.inner = amg;
 
@@ -529,7 +652,9 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   petsc_check(KSPSetType(ksp, KSPGMRES), "KSPSetType");
   petsc_check(KSPGMRESSetRestart(ksp, kGmresRestart), "KSPGMRESSetRestart");
   petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
-  petsc_check(KSPSetTolerances(ksp, kDefaultRtol, 1e-300, PETSC_DEFAULT, kMaxIterations),
+  // a reused hierarchy gets a few times the iterations of a new one before it is replaced
+  const int max_it = rebuild ? kMaxIterations : 3 * iterations_after_build + 30;
+  petsc_check(KSPSetTolerances(ksp, kDefaultRtol, 1e-300, PETSC_DEFAULT, max_it),
               "KSPSetTolerances");
   petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
   PC pc = nullptr;
@@ -542,17 +667,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   VecH rhs, x;
   petsc_check(VecCreateMPI(PETSC_COMM_WORLD, local, N, rhs.out()), "VecCreateMPI");
   petsc_check(VecDuplicate(rhs, x.out()), "VecDuplicate");
-  {
-    // [b - C^T R g; -s g]: the augmentation's share of the right-hand side
-    std::vector<double> bb(b.begin(), b.end()), Rg(static_cast<std::size_t>(m));
-    for (int r = 0; r < m; ++r) Rg[r] = R[r] * C.g[r];
-    C.add_transpose_multiply(Rg, -1.0, bb);
-    PetscScalar* a = nullptr;
-    petsc_check(VecGetArray(rhs, &a), "VecGetArray");
-    for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = bb[i];
-    for (PetscInt r = L.l0(); r < L.l1(); ++r) a[L.u_local() + r - L.l0()] = -s * C.g[r];
-    petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
-  }
+  fill_rhs(rhs, b, C, R, s, L, false);
   KSPConvergedReason reason{};
   PetscInt its = 0;
   {
@@ -569,19 +684,19 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   if (reason < 0) {
     if (!rebuild) { // the old hierarchy may be what failed: once more with a new one
       amg_ready = false;
-      // K is already augmented: undo nothing, solve from K's current values minus the springs
-      for (int r = 0; r < m; ++r) {
-        auto vals = K.values();
-        for (LocalIndex a = C.row_ptr[r]; a < C.row_ptr[r + 1]; ++a)
-          for (LocalIndex c = C.row_ptr[r]; c < C.row_ptr[r + 1]; ++c)
-            vals[K.pattern().find(C.col[a], C.col[c])] -= R[r] * C.val[a] * C.val[c];
-      }
+      augment(K, C, R, -1.0); // back to K, and once more with a new hierarchy
       return solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
     }
-    singular(K, b, C, symmetric,
-             fmt::format("the iterative solver did not converge ({} GMRES iterations, PETSc "
-                         "reason {}): the system may be singular; --solver mumps factorises it",
-                         its, static_cast<int>(reason)));
+    // GMRES cannot solve this system with this preconditioner (an indefinite tangent that the
+    // Chebyshev smoother does not expect, rotations of beams and shells, or a singular system):
+    // it and the rest of the step are factorised, which also diagnoses a singular system
+    augment(K, C, R, -1.0);
+    log::warning("--solver iterative: GMRES did not converge on a system of {} equations and {} "
+                 "constraint rows ({} iterations, PETSc reason {}); the rest of the step is "
+                 "solved by MUMPS",
+                 L.n, L.m, its, static_cast<int>(reason));
+    direct_fallback = true;
+    return solve_mumps(K, b, C, du, dl, symmetric, opt, stats);
   }
   std::vector<double> all;
   gather_all(x, all);

@@ -41,6 +41,8 @@ class PetscKktSolver final : public ConstrainedSolver {
   std::string_view name() const override;
   void analyze(std::shared_ptr<const SparsityPattern> pattern) override;
   void forget_factor() override;
+  bool wants_near_null_space() const override;
+  void set_near_null_space(NearNullSpace modes) override;
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                       std::span<double> du, std::span<double> dl, bool symmetric,
                       const KktOptions& options, RunStatistics* stats = nullptr) override;

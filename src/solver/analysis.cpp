@@ -1,5 +1,7 @@
 #include "solver/analysis.hpp"
 
+#include "fem/rigid_body_modes.hpp"
+
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
@@ -282,6 +284,10 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   disc.set_equations(loads.equations(), loads.local_bcs());
   r.pattern = step_pattern(loads);
   solver->analyze(r.pattern);
+  if (solver->wants_near_null_space())
+    solver->set_near_null_space(rigid_body_modes(disc.dofs(), loads.equations(),
+                                                 model.mesh.coords,
+                                                 model.space != ModelSpace::ThreeD));
 
   StepContext& base = r.base;
   base.procedure = step.procedure;

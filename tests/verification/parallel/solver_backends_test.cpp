@@ -1,0 +1,238 @@
+// The PETSc backends (`--solver mumps|iterative`, issue 17) against the CHOLMOD backend as the
+// oracle: every deck must converge to the same answer, displacements, rotations, temperatures,
+// reactions and gap forces to 1e-8 of their scales. CHOLMOD runs with a fresh factor in every
+// Newton iteration (FactorReuse::Never), as the PETSc backends take exact Newton steps: the
+// iterates then differ only by round-off (MUMPS) or by the Krylov tolerance 1e-10 (iterative).
+// Randomised gap networks (exact and penalty contact, friction, GAPCYL/GAPSPHER under NLGEOM) with
+// tight convergence controls, the examples, the structural verification decks, a body held only by
+// closed gaps (K singular, the bordered system not) and a singular model, whose diagnosis must name
+// the same nodes as with CHOLMOD.
+#include "parallel/parallel.hpp"
+#include "test_util.hpp"
+#include "verification/gap/random/random_generators.hpp"
+#include "verification/gap/same_answer.hpp"
+
+#include <filesystem>
+#include <gtest/gtest.h>
+
+using namespace gapfem;
+using namespace gapfem::test;
+using namespace gapfem::test::random_contact;
+
+namespace {
+
+#define REQUIRE_PETSC()                                                                            \
+  if (!parallel::available())                                                                      \
+  GTEST_SKIP() << "this build has no PETSc (petsc-dev): the mumps and iterative backends are "     \
+                  "not tested"
+
+JobResult run_file(const std::filesystem::path& deck, SolverBackend backend) {
+  JobOptions o;
+  o.deck = deck;
+  o.write_files = false;
+  o.quiet = true;
+  o.solver = backend;
+  o.factor_reuse = backend == SolverBackend::Cholmod ? FactorReuse::Never : FactorReuse::Auto;
+  return run_job(o);
+}
+JobResult run_text(const std::string& text, SolverBackend backend) {
+  return run_file(write_deck(text, std::string(backend_name(backend))), backend);
+}
+
+/// The deck with each PETSc backend against CHOLMOD; returns how many iteration histories were
+/// identical.
+int compare_backends(const std::string& text, double tol, double k_max, const std::string& tag) {
+  const JobResult oracle = run_text(text, SolverBackend::Cholmod);
+  int same = 0;
+  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
+    same += expect_same(oracle, run_text(text, b), tol, k_max,
+                        tag + " with " + std::string(backend_name(b)));
+  return same;
+}
+
+double max_penalty(const ModelDef& m) {
+  double k = 0.0;
+  for (const GapDef& g : m.gaps) k = std::max(k, g.penalty);
+  return k;
+}
+void tighten(ModelDef& m) {
+  m.tight_controls = true;
+  m.residual_tolerance = 1e-8;
+}
+
+} // namespace
+
+TEST(SolverBackends, RandomExactAndPenaltyNetworks) {
+  REQUIRE_PETSC();
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    ModelDef m = network_model(seed, seed % 3 == 0 ? NormalMethod::Penalty : NormalMethod::Direct);
+    tighten(m);
+    compare_backends(write_deck(m), 1e-8, max_penalty(m), m.tag);
+  }
+}
+
+TEST(SolverBackends, RandomFrictionNetworksAndRadialUnits) {
+  REQUIRE_PETSC();
+  // Coulomb friction with the generator's own controls (tightened, some stick/slip histories do
+  // not converge at all): the answers to 1e-6, what their residual tolerance determines
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const ModelDef m = friction_model(seed);
+    compare_backends(write_deck(m), 1e-6, max_penalty(m), m.tag);
+  }
+  // GAPCYL/GAPSPHER under NLGEOM, without friction (with it the answer depends on the path): to
+  // 1e-7, what the residual tolerance leaves the softest spring (PenaltyRows explains)
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    ModelDef m = radial_model(seed, false);
+    tighten(m);
+    compare_backends(write_deck(m), 1e-7, max_penalty(m), m.tag);
+  }
+}
+
+TEST(SolverBackends, ExamplesAndStructuralDecks) {
+  REQUIRE_PETSC();
+  const std::filesystem::path src = GAPFEM_SOURCE_DIR;
+  // the examples: beams on friction supports, an axisymmetric shrink fit, a fuel pin (thermal
+  // gaps, GAPUNIT), a pipe elbow on GAPCYL guides; beams, shells and trusses under NLGEOM, a
+  // thermal gradient, and the constraints of an Abaqus/CAE assembly
+  const char* decks[] = {"examples/02_shrink_fit/shrink_fit.inp",
+                         "examples/03_fuel_pin/fuel_pin.inp",
+                         "examples/04_pipe_elbow/pipe_elbow.inp",
+                         "tests/verification/structural/truss_nlgeom.inp",
+                         "tests/verification/structural/beam_planar_load.inp",
+                         "tests/verification/structural/shell_scordelis_lo.inp",
+                         "tests/verification/structural/thermal_gradient.inp",
+                         "tests/verification/assembly/cae_constraints.inp"};
+  for (const char* deck : decks) {
+    const JobResult oracle = run_file(src / deck, SolverBackend::Cholmod);
+    ASSERT_EQ(oracle.exit_code, 0) << deck << ": " << oracle.error;
+    for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
+      expect_same(oracle, run_file(src / deck, b), 1e-8, 0.0,
+                  std::string(deck) + " with " + std::string(backend_name(b)));
+  }
+  // friction on the supports: the stick/slip path is set by the Newton tolerance (5e-3 of the
+  // flux), so the full-Newton paths are compared to 1e-5
+  const JobResult oracle =
+      run_file(src / "examples/01_pipe_on_supports/pipe_on_supports.inp", SolverBackend::Cholmod);
+  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
+    expect_same(oracle, run_file(src / "examples/01_pipe_on_supports/pipe_on_supports.inp", b),
+                1e-5, 0.0, "pipe on supports with " + std::string(backend_name(b)));
+}
+
+TEST(SolverBackends, ALinearProblemTakesOneIteration) {
+  REQUIRE_PETSC();
+  // a cantilever of C3D8 with an open gap: one Newton iteration, whichever backend
+  std::string deck = "*NODE\n";
+  for (int i = 0; i <= 10; ++i)
+    for (int k = 0; k < 4; ++k)
+      deck += fmt::format("{}, {}, {}, {}\n", 1 + i * 4 + k, 0.1 * i, 0.1 * (k % 2), 0.1 * (k / 2));
+  deck += "99, 1.0, 0., -0.5\n*ELEMENT, TYPE=C3D8, ELSET=B\n";
+  for (int i = 0; i < 10; ++i) {
+    const int a = 1 + 4 * i, b = a + 4;
+    deck += fmt::format("{}, {}, {}, {}, {}, {}, {}, {}, {}\n", i + 1, a, b, b + 1, a + 1, a + 2,
+                        b + 2, b + 3, a + 3);
+  }
+  deck += R"(*MATERIAL, NAME=S
+*ELASTIC
+2.E5, 0.3
+*SOLID SECTION, ELSET=B, MATERIAL=S
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+100, 41, 99
+*GAP, ELSET=G
+0.3, 0., 0., -1.
+*BOUNDARY
+1, 1, 3
+2, 1, 3
+3, 1, 3
+4, 1, 3
+99, 1, 3
+*STEP
+*STATIC
+*CLOAD
+41, 3, -1.
+*END STEP
+)";
+  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative}) {
+    const JobResult r = run_text(deck, b);
+    ASSERT_EQ(r.exit_code, 0) << r.error;
+    EXPECT_EQ(r.run.stats.iterations, 1) << backend_name(b);
+  }
+}
+
+TEST(SolverBackends, ABodyHeldOnlyByClosedGaps) {
+  REQUIRE_PETSC();
+  // a free truss pushed onto two closed gaps: K alone is singular, the bordered system is not
+  // (MUMPS pivots across it; the iterative method's augmentation makes A definite)
+  const std::string deck = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+11, 0., -1., 0.
+12, 1., -1., 0.
+*ELEMENT, TYPE=T3D2, ELSET=T
+1, 1, 2
+*MATERIAL, NAME=S
+*ELASTIC
+2.E5, 0.3
+*SOLID SECTION, ELSET=T, MATERIAL=S
+1.
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+10, 1, 11
+11, 2, 12
+*GAP, ELSET=G
+0., 0., -1., 0.
+*BOUNDARY
+11, 1, 3
+12, 1, 3
+1, 1, 1
+1, 3, 3
+2, 3, 3
+*STEP
+*STATIC
+*CLOAD
+1, 2, -10.
+2, 2, -30.
+2, 1, 100.
+*END STEP
+)";
+  compare_backends(deck, 1e-8, 0.0, "truss on two gaps");
+  const JobResult r = run_text(deck, SolverBackend::Iterative);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  EXPECT_NEAR(gap(r, last_frame(r), 11).normal_force, 30.0, 1e-8);
+}
+
+TEST(SolverBackends, ASingularModelIsDiagnosedAsWithCholmod) {
+  REQUIRE_PETSC();
+  // the same truss with one gap open: a rigid-body mode the diagnosis names by its nodes
+  const std::string deck = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+11, 0., -1., 0.
+*ELEMENT, TYPE=T3D2, ELSET=T
+1, 1, 2
+*MATERIAL, NAME=S
+*ELASTIC
+2.E5, 0.3
+*SOLID SECTION, ELSET=T, MATERIAL=S
+1.
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+10, 1, 11
+*GAP, ELSET=G
+0.1, 0., -1., 0.
+*BOUNDARY
+11, 1, 3
+1, 1, 1
+1, 3, 3
+2, 3, 3
+*STEP
+*STATIC
+*CLOAD
+2, 2, -30.
+*END STEP
+)";
+  const JobResult oracle = run_text(deck, SolverBackend::Cholmod);
+  ASSERT_NE(oracle.exit_code, 0);
+  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative}) {
+    const JobResult r = run_text(deck, b);
+    EXPECT_EQ(r.exit_code, oracle.exit_code) << backend_name(b) << ": " << r.error;
+    EXPECT_EQ(r.error, oracle.error) << backend_name(b);
+  }
+}
