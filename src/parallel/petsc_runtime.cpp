@@ -14,9 +14,11 @@
 namespace gapfem::parallel {
 
 namespace {
-constexpr int kFailureWaitSeconds = 20;
+constexpr int kFailureWaitSeconds = 10;
 bool g_started = false;
 int g_rank = 0, g_size = 1;
+/// A communicator of its own for finish(): its barrier never meets a collective of the solvers
+MPI_Comm g_exit_comm = MPI_COMM_NULL;
 void finalize() {
   if (g_started) PetscFinalize();
   g_started = false;
@@ -55,6 +57,7 @@ void start(const std::vector<std::string>& petsc_options) {
   g_started = true;
   MPI_Comm_rank(PETSC_COMM_WORLD, &g_rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &g_size);
+  MPI_Comm_dup(PETSC_COMM_WORLD, &g_exit_comm);
   std::atexit(finalize);
 }
 
@@ -65,7 +68,7 @@ void abort_job(int exit_code) {
 int finish(int exit_code, const std::string& error) {
   if (!g_started || g_size == 1) return exit_code;
   MPI_Request request{};
-  MPI_Ibarrier(PETSC_COMM_WORLD, &request);
+  MPI_Ibarrier(g_exit_comm, &request);
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(kFailureWaitSeconds);
   for (int done = 0;;) {
     MPI_Test(&request, &done, MPI_STATUS_IGNORE);

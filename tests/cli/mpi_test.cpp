@@ -1,0 +1,190 @@
+// `mpirun -np 2 gapfem` (issue 17): the same answer as one process to 1e-8, rank 0 alone writes
+// the files and the terminal, the serial-only CHOLMOD backend is refused, and a rank that fails
+// alone (bad input read on one rank) brings the whole job down with its message and exit status
+// instead of leaving the other rank waiting. Skipped with a message where MPI or PETSc is absent.
+#include "parallel/parallel.hpp"
+#include "test_util.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <map>
+#include <nlohmann/json.hpp>
+
+using namespace gapfem;
+using namespace gapfem::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+bool have_mpirun() {
+  return std::system("command -v mpirun > /dev/null 2>&1") == 0;
+}
+
+#define REQUIRE_MPI()                                                                              \
+  if (!parallel::available() || !have_mpirun())                                                    \
+  GTEST_SKIP() << "no PETSc build or no mpirun here (Debian's petsc-dev and openmpi-bin): the "    \
+                  "mpirun tests are not run"
+
+/// Run a shell command line (mpirun as root needs Open MPI's consent); returns the exit status
+/// and leaves stdout+stderr in `log`.
+int shell(const std::string& cmd, const fs::path& log) {
+  const std::string line = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                           "OMPI_MCA_rmaps_base_oversubscribe=1 " +
+                           cmd + " > '" + log.string() + "' 2>&1";
+  const int rc = std::system(line.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+/// gapfem on `deck` into `dir` with `args`, on `ranks` processes (0: without mpirun).
+int run(const fs::path& deck, const fs::path& dir, const std::string& args, int ranks,
+        std::string* output = nullptr) {
+  fs::create_directories(dir);
+  const std::string launcher = ranks > 0 ? fmt::format("mpirun -np {} ", ranks) : "";
+  const fs::path log = dir / "terminal.log";
+  const int rc = shell(fmt::format("{}'{}' {} -o '{}' '{}'", launcher, GAPFEM_EXE, args,
+                                   dir.string(), deck.string()),
+                       log);
+  if (output) *output = slurp(log);
+  return rc;
+}
+
+/// Every nodal value and gap force of the last frame of every step, by field name ("U", "RF",
+/// "normal_force", …), and the gaps' statuses under "status" (1 closed or sticking, 0 open).
+/// Element stresses are left out: where they vanish their round-off has no scale to compare to.
+void collect(const nlohmann::json& j, const std::string& field,
+             std::map<std::string, std::vector<double>>& out) {
+  if (j.is_number()) {
+    out[field].push_back(j.get<double>());
+  } else if (j.is_array()) {
+    for (const auto& e : j) collect(e, field, out);
+  } else if (j.is_object()) {
+    for (const auto& [k, v] : j.items())
+      collect(v, std::isdigit(static_cast<unsigned char>(k[0])) ? field : k, out);
+  }
+}
+std::map<std::string, std::vector<double>> last_frames(const fs::path& json_file) {
+  const nlohmann::json j = nlohmann::json::parse(slurp(json_file));
+  std::map<std::string, std::vector<double>> out;
+  for (const auto& step : j.at("steps")) {
+    const auto& frame = step.at("frames").back();
+    collect(frame.at("nodes"), "nodes", out);
+    for (const auto& [label, e] : frame.at("elements").items()) {
+      if (!e.contains("gap")) continue;
+      const auto& g = e.at("gap");
+      collect(g.at("normal_force"), "normal_force", out);
+      collect(g.at("friction_force"), "friction_force", out);
+      out["status"].push_back(g.at("status").get<std::string>() == "open" ? 0.0 : 1.0);
+    }
+  }
+  return out;
+}
+/// Each field of b within tol of a's largest value of that field.
+void expect_same_results(const fs::path& a, const fs::path& b, double tol,
+                         const std::string& what) {
+  SCOPED_TRACE(what);
+  const auto fa = last_frames(a), fb = last_frames(b);
+  ASSERT_EQ(fa.size(), fb.size());
+  for (const auto& [field, va] : fa) {
+    const auto& vb = fb.at(field);
+    ASSERT_EQ(va.size(), vb.size()) << field;
+    double scale = 0.0, diff = 0.0;
+    for (std::size_t i = 0; i < va.size(); ++i) {
+      scale = std::max(scale, std::abs(va[i]));
+      diff = std::max(diff, std::abs(va[i] - vb[i]));
+    }
+    EXPECT_LE(diff, tol * scale + 1e-300) << field;
+  }
+}
+
+} // namespace
+
+TEST(Mpi, TwoRanksGiveTheSerialAnswer) {
+  REQUIRE_MPI();
+  const fs::path src = GAPFEM_SOURCE_DIR, dir = test_dir();
+  // gap verification decks of the examples (GAPUNI on a pipe with friction, an axisymmetric
+  // shrink fit, a fuel pin with thermal GAPUNIT/DGAP gaps, a pipe elbow on GAPCYL guides), NLGEOM
+  // trusses and shells
+  const std::vector<std::pair<std::string, std::string>> decks = {
+      {"pipe", "examples/01_pipe_on_supports/pipe_on_supports.inp"},
+      {"shrink", "examples/02_shrink_fit/shrink_fit.inp"},
+      {"fuel", "examples/03_fuel_pin/fuel_pin.inp"},
+      {"elbow", "examples/04_pipe_elbow/pipe_elbow.inp"},
+      {"truss", "tests/verification/structural/truss_nlgeom.inp"},
+      {"thermal", "tests/verification/structural/thermal_gradient.inp"}};
+  for (const auto& [name, deck] : decks)
+    for (const char* solver : {"mumps", "iterative"}) {
+      // GMRES to 1e-13 (a PETSc option, passed through): the partitioned AMG cycle differs from
+      // the serial one, so the iterates agree only to the Krylov tolerance, and the stick/slip
+      // path of the friction supports would amplify 1e-10 to 1e-7
+      const std::string args =
+          fmt::format("--solver {} --no-vtu -q{}", solver,
+                      std::string_view(solver) == "iterative" ? " -ksp_rtol 1e-13" : "");
+      const fs::path one = dir / name / solver / "1", two = dir / name / solver / "2";
+      ASSERT_EQ(run(src / deck, one, args, 0), 0) << deck;
+      std::string out;
+      ASSERT_EQ(run(src / deck, two, args, 2, &out), 0) << deck << "\n" << out;
+      const std::string stem = fs::path(deck).stem().string();
+      // ... and where friction decides the path (the pipe on its supports) the Newton tolerance
+      // still leaves the two iterative runs 3e-8 apart
+      const double tol = name == "pipe" && std::string_view(solver) == "iterative" ? 1e-7 : 1e-8;
+      expect_same_results(one / (stem + ".results.json"), two / (stem + ".results.json"), tol,
+                          deck + " with " + solver);
+    }
+}
+
+TEST(Mpi, RankZeroAloneWritesTheFilesAndTheTerminal) {
+  REQUIRE_MPI();
+  const fs::path src = GAPFEM_SOURCE_DIR, dir = test_dir() / "out";
+  fs::remove_all(dir);
+  std::string out;
+  ASSERT_EQ(run(src / "examples/02_shrink_fit/shrink_fit.inp", dir, "--no-vtu", 2, &out), 0) << out;
+  // one progress report, one set of files
+  std::size_t count = 0;
+  for (std::size_t p = out.find("Step 1 completed"); p != std::string::npos;
+       p = out.find("Step 1 completed", p + 1))
+    ++count;
+  EXPECT_EQ(count, 1u) << out;
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"shrink_fit.dat", "shrink_fit.msg",
+                                             "shrink_fit.report.html", "shrink_fit.results.json",
+                                             "shrink_fit.sta", "terminal.log"}));
+}
+
+TEST(Mpi, TheSerialCholmodBackendIsRefused) {
+  REQUIRE_MPI();
+  const fs::path src = GAPFEM_SOURCE_DIR;
+  std::string out;
+  EXPECT_EQ(
+      run(src / "examples/02_shrink_fit/shrink_fit.inp", test_dir(), "--solver cholmod", 2, &out),
+      1);
+  EXPECT_NE(out.find("--solver cholmod solves on one process"), std::string::npos) << out;
+}
+
+TEST(Mpi, ARankThatFailsAloneStopsTheJob) {
+  REQUIRE_MPI();
+  // rank 0 reads a good deck, rank 1 a deck with an input error (mpirun's MPMD form): rank 1
+  // must not leave rank 0 waiting in its first collective call, nor rank 0 hang
+  const fs::path src = GAPFEM_SOURCE_DIR, dir = test_dir();
+  const fs::path good = src / "examples/02_shrink_fit/shrink_fit.inp";
+  const fs::path bad =
+      write_deck("*NODE\n1, 0., 0.\n*STEP\n*STATIC\n*CLOAD\n99, 1, 1.\n*END STEP\n", "bad");
+  const auto start = std::chrono::steady_clock::now();
+  const std::string cmd =
+      fmt::format("timeout 120 mpirun -np 1 '{0}' -o '{1}' '{2}' : -np 1 '{0}' -o '{1}' '{3}'",
+                  GAPFEM_EXE, (dir / "run").string(), good.string(), bad.string());
+  const int rc = shell(cmd, dir / "terminal.log");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string out = slurp(dir / "terminal.log");
+  EXPECT_NE(rc, 0) << out;
+  EXPECT_NE(rc, 124) << "the job hung until timeout killed it\n" << out;
+  EXPECT_LT(seconds, 100.0);
+  EXPECT_NE(out.find("gapfem (rank 1)"), std::string::npos) << out;
+  EXPECT_NE(out.find("99"), std::string::npos) << out; // rank 1's own message names the node
+  EXPECT_NE(out.find("stopping the whole job"), std::string::npos) << out;
+}
