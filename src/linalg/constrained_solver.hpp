@@ -31,6 +31,9 @@ struct KktOptions {
   FactorReuse reuse = FactorReuse::Auto;
   bool force_fresh = false; ///< factorise the current matrix (the caller saw slow convergence)
   double max_drift = 1e-3;  ///< reuse only if |K - K_F|_ij <= max_drift sqrt(|K_F,ii K_F,jj|)
+  /// An iterative backend may stop at this relative residual (Newton's forcing term; 0: the
+  /// backend's own default). Direct backends solve exactly whatever it says.
+  double relative_tolerance = 0.0;
 };
 
 struct KktStatistics {

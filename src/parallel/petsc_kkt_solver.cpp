@@ -23,6 +23,8 @@ constexpr double kDefaultRtol = 1e-10;
 constexpr int kGmresRestart = 100;
 constexpr int kMaxIterations = 2000;
 constexpr int kRowsAbsorbed = 20;
+/// A solve whose true relative residual exceeds this many times the tolerance has failed.
+constexpr double kTrueResidualSlack = 100.0;
 
 double compliance_of(const ConstraintBlock& C, int r) {
   return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
@@ -264,7 +266,9 @@ struct PetscKktSolver::Impl {
   NearNullSpace modes; ///< the rigid-body modes A's AMG interpolates (set per step)
   KspH amg;
   bool amg_ready = false;
-  int iterations_after_build = 0, last_iterations = 0;
+  /// GMRES iterations per decade of residual reduction, after the last build and in the last solve
+  /// (solves to different forcing terms compare so)
+  double per_decade_after_build = 0.0, per_decade_last = 0.0;
   ConstraintBlock amg_rows;     ///< the rows whose springs were in A when its AMG was built
   bool direct_fallback = false; ///< GMRES failed in this step: MUMPS solves until the next step
 
@@ -616,7 +620,8 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   // DOFs, an outlier eigenvalue of the preconditioned system: about one iteration each)
   const int changed = changed_rows(amg_rows, C);
   const bool rebuild = !amg_ready || opt.force_fresh || opt.reuse == FactorReuse::Never ||
-                       last_iterations > 2 * iterations_after_build + 5 || changed > kRowsAbsorbed;
+                       per_decade_last > 2 * per_decade_after_build + 0.5 ||
+                       changed > kRowsAbsorbed;
   if (!amg) {
     petsc_check(KSPCreate(PETSC_COMM_WORLD, amg.out()), "KSPCreate");
     petsc_check(KSPSetOptionsPrefix(amg, "inner_"), "KSPSetOptionsPrefix");
@@ -653,9 +658,11 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   petsc_check(KSPGMRESSetRestart(ksp, kGmresRestart), "KSPGMRESSetRestart");
   petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
   // a reused hierarchy gets a few times the iterations of a new one before it is replaced
-  const int max_it = rebuild ? kMaxIterations : 3 * iterations_after_build + 30;
-  petsc_check(KSPSetTolerances(ksp, kDefaultRtol, 1e-300, PETSC_DEFAULT, max_it),
-              "KSPSetTolerances");
+  const double rtol = opt.relative_tolerance > 0 ? opt.relative_tolerance : kDefaultRtol;
+  const double decades = std::max(1.0, -std::log10(rtol));
+  const int max_it =
+      rebuild ? kMaxIterations : static_cast<int>((3 * per_decade_after_build + 3) * decades);
+  petsc_check(KSPSetTolerances(ksp, rtol, 1e-300, PETSC_DEFAULT, max_it), "KSPSetTolerances");
   petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
   PC pc = nullptr;
   petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
@@ -676,11 +683,27 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
     petsc_check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
     petsc_check(KSPGetIterationNumber(ksp, &its), "KSPGetIterationNumber");
   }
+  // GMRES's residual is an estimate (from its least-squares problem) that round-off can part from
+  // the true one: the true residual of the bordered system is checked, so that a "converged" step
+  // is never a wrong one
+  double true_ratio = 0.0;
+  {
+    VecH r;
+    petsc_check(VecDuplicate(rhs, r.out()), "VecDuplicate");
+    petsc_check(MatMult(op, x, r), "MatMult");
+    petsc_check(VecAYPX(r, -1.0, rhs), "VecAYPX");
+    PetscReal rn = 0, bn = 0;
+    petsc_check(VecNorm(r, NORM_2, &rn), "VecNorm");
+    petsc_check(VecNorm(rhs, NORM_2, &bn), "VecNorm");
+    true_ratio = bn > 0 ? rn / bn : 0.0;
+    if (reason > 0 && !(true_ratio <= kTrueResidualSlack * rtol)) reason = KSP_DIVERGED_BREAKDOWN;
+  }
   if (stats) stats->linear_solves += its;
-  last_iterations = static_cast<int>(its);
-  if (rebuild) iterations_after_build = static_cast<int>(its);
-  log::debug("  GMRES: {} iterations ({} AMG), {} equations and {} rows, reason {}", its,
-             rebuild ? "new" : "reused", L.n, L.m, static_cast<int>(reason));
+  per_decade_last = static_cast<double>(its) / decades;
+  if (rebuild) per_decade_after_build = per_decade_last;
+  log::debug("  GMRES: {} iterations ({} AMG), {} equations and {} rows, true residual {:.1e}, "
+             "reason {}",
+             its, rebuild ? "new" : "reused", L.n, L.m, true_ratio, static_cast<int>(reason));
   if (reason < 0) {
     if (!rebuild) { // the old hierarchy may be what failed: once more with a new one
       amg_ready = false;

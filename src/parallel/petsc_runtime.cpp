@@ -45,7 +45,7 @@ int g_rank = 0, g_size = 1;
 /// A communicator of its own for finish(): its barrier never meets a collective of the solvers
 MPI_Comm g_exit_comm = MPI_COMM_NULL;
 void finalize() {
-  const MpiRuntimeAllocations runtime;
+  [[maybe_unused]] const MpiRuntimeAllocations runtime;
   if (g_started) PetscFinalize();
   g_started = false;
 }
@@ -66,7 +66,7 @@ int size() {
 
 void start(const std::vector<std::string>& petsc_options) {
   if (g_started) return;
-  const MpiRuntimeAllocations runtime;
+  [[maybe_unused]] const MpiRuntimeAllocations runtime;
   // PETSc reads its options from an argv: the program name, ours, then the user's (which win)
   static std::vector<std::string> words;
   words = {"gapfem", "-no_signal_handler"};
@@ -94,7 +94,7 @@ void abort_job(int exit_code) {
 
 int finish(int exit_code, const std::string& error) {
   if (!g_started || g_size == 1) return exit_code;
-  const MpiRuntimeAllocations runtime; // the non-blocking barrier's schedule
+  [[maybe_unused]] const MpiRuntimeAllocations runtime; // the non-blocking barrier's schedule
   MPI_Request request{};
   MPI_Ibarrier(g_exit_comm, &request);
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(kFailureWaitSeconds);
