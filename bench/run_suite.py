@@ -16,6 +16,7 @@ Cases (generators in this directory):
                       the model's stiffness, timed by `gapfem check --time-factorization`)
   block-50k-friction  the 50k block with Coulomb friction (mu = 0.3): pressure, then a lateral load
   slab-10k            a flat slab, 212,807 equations and 10,201 gaps (exact contact)
+  slab-40k            the same slab coarser, 38,505 equations and 2,601 gaps (solver backends)
   slab-1M             a flat slab, 1.09M equations and 40,401 gaps (exact contact)
   pipe-rack-<size>    B31 pipe lines on GAPCYL guides and GAPUNI rest supports, thermal expansion
   stack-<size>        DGAP thermal stack (steady heat transfer)
@@ -23,6 +24,7 @@ Cases (generators in this directory):
 Usage:
   bench/run_suite.py [--gapfem build/release/gapfem] [--sizes small,medium,large,huge]
                      [--ccx-max-eq 60000] [--work /tmp/gapfem-bench] [--markdown table.md]
+                     [--solver cholmod|mumps|iterative] [--ranks N]   (mpirun -np N)
 Every run is sequential (nothing else should run on the machine). Decks and outputs stay in --work.
 """
 import argparse
@@ -61,6 +63,8 @@ CASES = [
     ("inc10-200k", "large", "gen_block.py", "--nx 40 --nz 39 --max-inc 0.1", False),
     ("block-200k", "large", "gen_block.py", "--nx 40 --nz 39", False),
     ("slab-10k", "large", "gen_block.py", "--nx 100 --nz 6 --length 10 --height 0.4", False),
+    # the slab family at a size every backend runs in a minute (issue 17's 1 -> 2 rank table)
+    ("slab-40k", "medium", "gen_block.py", "--nx 50 --nz 4 --length 10 --height 0.4", False),
     ("block-200k-ccx", "large", "gen_block.py", "--nx 40 --nz 39 --penalty 1e7", True),
     ("pipe-rack-250k", "large", "gen_pipe_rack.py", "--lines 200 --spans 20 --elems 10", False),
     ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
@@ -117,6 +121,10 @@ def main():
                     help="run ccx only up to this many equations (ccx needs 45 min at 196k)")
     ap.add_argument("--work", default="/tmp/gapfem-bench")
     ap.add_argument("--markdown", default=None, help="also write the table to this file")
+    ap.add_argument("--solver", default=None, choices=["cholmod", "mumps", "iterative"],
+                    help="gapfem's --solver (default: gapfem's own choice)")
+    ap.add_argument("--ranks", type=int, default=0,
+                    help="run gapfem under mpirun -np RANKS (peak MB is then the largest rank's)")
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
     sizes = set(a.sizes.split(","))
@@ -136,7 +144,14 @@ def main():
         deck = os.path.join(d, "job.inp")
         neq, ngaps = generate(gen, args, deck)
         print(f"== {name}: {neq} equations, {ngaps} gaps", file=sys.stderr, flush=True)
-        rc, wall, mem, log = timed([os.path.abspath(a.gapfem), "--no-vtu", "-q", "job.inp"], d)
+        cmd = [os.path.abspath(a.gapfem), "--no-vtu", "-q", "job.inp"]
+        if a.solver:
+            cmd += ["--solver", a.solver]
+        if a.ranks > 0:
+            os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
+            os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
+            cmd = ["mpirun", "-np", str(a.ranks)] + cmd
+        rc, wall, mem, log = timed(cmd, d)
         row = {"case": name, "eq": neq, "gaps": ngaps, "rc": rc, "wall": wall, "mem": mem}
         js = None
         try:
