@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/memory.hpp"
 #include "linalg/kkt_solver.hpp"
 #include "parallel/kkt_layout.hpp"
 #include "parallel/parallel.hpp"
@@ -23,6 +24,8 @@ constexpr double kDefaultRtol = 1e-10;
 constexpr int kGmresRestart = 100;
 constexpr int kMaxIterations = 2000;
 constexpr int kRowsAbsorbed = 20;
+/// MUMPS's factor (with its pivoting and workspace) against CHOLMOD's symbolic estimate.
+constexpr double kDirectMemoryFactor = 1.5;
 /// A solve whose true relative residual exceeds this many times the tolerance has failed.
 constexpr double kTrueResidualSlack = 100.0;
 
@@ -285,6 +288,9 @@ struct PetscKktSolver::Impl {
   PetscInt factorize_mumps(int workspace_percent);
   void fill_a(const CsrMatrix& K, const KktLayout& L);
   void attach_near_null_space(const KktLayout& L);
+  /// AnalysisError naming `what` when a direct factor of the pattern (CHOLMOD's symbolic estimate,
+  /// 1.5x for MUMPS's pivoting and workspace) cannot fit in the memory left on some rank.
+  void require_direct_fits(const std::string& what) const;
   [[noreturn]] void singular(const CsrMatrix& K, std::span<const double> b,
                              const ConstraintBlock& C, bool symmetric, const std::string& what);
 };
@@ -349,6 +355,21 @@ void PetscKktSolver::Impl::singular(const CsrMatrix& K, std::span<const double> 
     diagnosis.solve(copy, b, C, du, dl, symmetric, KktOptions{}); // throws SingularSystem
   }
   throw SingularSystem(what, {});
+}
+
+void PetscKktSolver::Impl::require_direct_fits(const std::string& what) const {
+  auto estimate = make_cholmod_solver();
+  estimate->analyze(*pattern);
+  const double need = kDirectMemoryFactor * static_cast<double>(estimate->factor_bytes());
+  const auto available = available_memory_bytes();
+  const int short_here = available && need > static_cast<double>(*available) ? 1 : 0;
+  if (parallel::max_over_ranks(short_here) == 0) return;
+  throw AnalysisError(fmt::format(
+      "--solver iterative: {}, and factorising it instead (MUMPS) would need about {} of memory, "
+      "more than is available{}. Try another multigrid (-inner_pc_type hypre), more iterations "
+      "(-ksp_max_it), a smaller increment, or more ranks on more machines (mpirun -np N)",
+      what, memory_size_text(need),
+      available ? fmt::format(" ({})", memory_size_text(static_cast<double>(*available))) : ""));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -714,10 +735,11 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
     // Chebyshev smoother does not expect, rotations of beams and shells, or a singular system):
     // it and the rest of the step are factorised, which also diagnoses a singular system
     augment(K, C, R, -1.0);
-    log::warning("--solver iterative: GMRES did not converge on a system of {} equations and {} "
-                 "constraint rows ({} iterations, PETSc reason {}); the rest of the step is "
-                 "solved by MUMPS",
-                 L.n, L.m, its, static_cast<int>(reason));
+    const std::string what = fmt::format("GMRES did not converge on a system of {} equations and "
+                                         "{} constraint rows ({} iterations, PETSc reason {})",
+                                         L.n, L.m, its, static_cast<int>(reason));
+    require_direct_fits(what);
+    log::warning("--solver iterative: {}; the rest of the step is solved by MUMPS", what);
     direct_fallback = true;
     return solve_mumps(K, b, C, du, dl, symmetric, opt, stats);
   }
