@@ -230,26 +230,23 @@ struct BorderedSystem {
 };
 
 namespace {
-PetscErrorCode shell_multiply(Mat op, Vec x, Vec y) {
+/// A PETSc shell callback (MATOP_MULT, PCShellSetApply) calling `Apply` on the BorderedSystem kept
+/// as the shell's context; exceptions become PETSc error codes.
+template <class Object, PetscErrorCode (*GetContext)(Object, void*),
+          void (BorderedSystem::*Apply)(Vec, Vec)>
+PetscErrorCode shell_call(Object object, Vec in, Vec out) {
   void* ctx = nullptr;
-  MatShellGetContext(op, &ctx);
+  GetContext(object, &ctx);
   try {
-    static_cast<BorderedSystem*>(ctx)->multiply(x, y);
+    (static_cast<BorderedSystem*>(ctx)->*Apply)(in, out);
   } catch (const std::exception&) {
     return PETSC_ERR_LIB;
   }
   return 0;
 }
-PetscErrorCode shell_precondition(PC pc, Vec r, Vec y) {
-  void* ctx = nullptr;
-  PCShellGetContext(pc, &ctx);
-  try {
-    static_cast<BorderedSystem*>(ctx)->precondition(r, y);
-  } catch (const std::exception&) {
-    return PETSC_ERR_LIB;
-  }
-  return 0;
-}
+constexpr auto shell_multiply = shell_call<Mat, MatShellGetContext, &BorderedSystem::multiply>;
+constexpr auto shell_precondition =
+    shell_call<PC, PCShellGetContext, &BorderedSystem::precondition>;
 } // namespace
 
 // ---------------------------------------------------------------------------------------------

@@ -55,6 +55,28 @@ double max_penalty(const ModelDef& m) {
   for (const GapDef& g : m.gaps) k = std::max(k, g.penalty);
   return k;
 }
+/// A T3D2 truss from node 1 to node 2 along x (x held at node 1), resting on `gaps` GAPUNI
+/// (1: under node 1; 2: under both) of clearance d to ground nodes 11, 12 below; y is free, so K
+/// alone is singular. `loads` are *CLOAD lines.
+std::string truss_on_gaps(int gaps, double d, const std::string& loads) {
+  std::string deck = "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n11, 0., -1., 0.\n";
+  if (gaps == 2) deck += "12, 1., -1., 0.\n";
+  deck += R"(*ELEMENT, TYPE=T3D2, ELSET=T
+1, 1, 2
+*MATERIAL, NAME=S
+*ELASTIC
+2.E5, 0.3
+*SOLID SECTION, ELSET=T, MATERIAL=S
+1.
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+10, 1, 11
+)";
+  if (gaps == 2) deck += "11, 2, 12\n";
+  deck += fmt::format("*GAP, ELSET=G\n{}, 0., -1., 0.\n*BOUNDARY\n11, 1, 3\n", d);
+  if (gaps == 2) deck += "12, 1, 3\n";
+  return deck + "1, 1, 1\n1, 3, 3\n2, 3, 3\n*STEP\n*STATIC\n*CLOAD\n" + loads + "*END STEP\n";
+}
+
 void tighten(ModelDef& m) {
   m.tight_controls = true;
   m.residual_tolerance = 1e-8;
@@ -162,37 +184,7 @@ TEST(SolverBackends, ABodyHeldOnlyByClosedGaps) {
   REQUIRE_PETSC();
   // a free truss pushed onto two closed gaps: K alone is singular, the bordered system is not
   // (MUMPS pivots across it; the iterative method's augmentation makes A definite)
-  const std::string deck = R"(*NODE
-1, 0., 0., 0.
-2, 1., 0., 0.
-11, 0., -1., 0.
-12, 1., -1., 0.
-*ELEMENT, TYPE=T3D2, ELSET=T
-1, 1, 2
-*MATERIAL, NAME=S
-*ELASTIC
-2.E5, 0.3
-*SOLID SECTION, ELSET=T, MATERIAL=S
-1.
-*ELEMENT, TYPE=GAPUNI, ELSET=G
-10, 1, 11
-11, 2, 12
-*GAP, ELSET=G
-0., 0., -1., 0.
-*BOUNDARY
-11, 1, 3
-12, 1, 3
-1, 1, 1
-1, 3, 3
-2, 3, 3
-*STEP
-*STATIC
-*CLOAD
-1, 2, -10.
-2, 2, -30.
-2, 1, 100.
-*END STEP
-)";
+  const std::string deck = truss_on_gaps(2, 0.0, "1, 2, -10.\n2, 2, -30.\n2, 1, 100.\n");
   compare_backends(deck, 1e-8, 0.0, "truss on two gaps");
   const JobResult r = run_text(deck, SolverBackend::Iterative);
   ASSERT_EQ(r.exit_code, 0) << r.error;
@@ -202,32 +194,7 @@ TEST(SolverBackends, ABodyHeldOnlyByClosedGaps) {
 TEST(SolverBackends, ASingularModelIsDiagnosedAsWithCholmod) {
   REQUIRE_PETSC();
   // the same truss with one gap open: a rigid-body mode the diagnosis names by its nodes
-  const std::string deck = R"(*NODE
-1, 0., 0., 0.
-2, 1., 0., 0.
-11, 0., -1., 0.
-*ELEMENT, TYPE=T3D2, ELSET=T
-1, 1, 2
-*MATERIAL, NAME=S
-*ELASTIC
-2.E5, 0.3
-*SOLID SECTION, ELSET=T, MATERIAL=S
-1.
-*ELEMENT, TYPE=GAPUNI, ELSET=G
-10, 1, 11
-*GAP, ELSET=G
-0.1, 0., -1., 0.
-*BOUNDARY
-11, 1, 3
-1, 1, 1
-1, 3, 3
-2, 3, 3
-*STEP
-*STATIC
-*CLOAD
-2, 2, -30.
-*END STEP
-)";
+  const std::string deck = truss_on_gaps(1, 0.1, "2, 2, -30.\n");
   const JobResult oracle = run_text(deck, SolverBackend::Cholmod);
   ASSERT_NE(oracle.exit_code, 0);
   for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative}) {
