@@ -4,6 +4,7 @@
 #include "common/log.hpp"
 #include "common/memory.hpp"
 #include "linalg/kkt_solver.hpp"
+#include "linalg/row_elimination.hpp"
 #include "parallel/kkt_layout.hpp"
 #include "parallel/parallel.hpp"
 #include "parallel/petsc_runtime.hpp"
@@ -594,12 +595,18 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
                                                     std::span<double> dl, bool symmetric,
                                                     const KktOptions& opt, RunStatistics* stats) {
   KktStatistics out;
-  const KktLayout L(K.n(), C.n_rows());
+  // rows that fix one equation, and compliant rows, leave the bordered system exactly; what
+  // remains is (K', b', C')
+  RowElimination elim;
+  elim.reduce(K, b, C);
+  const ConstraintBlock& Cr = elim.reduced_rows();
+  const auto br = elim.reduced_b();
+  const KktLayout L(K.n(), Cr.n_rows());
   const double s = multiplier_scale(K);
   std::vector<double> R, ks;
-  augmentation_weights(K, C, opt.augmentation, R, ks);
-  const int m = C.n_rows();
-  augment(K, C, R);
+  augmentation_weights(K, Cr, opt.augmentation, R, ks);
+  const int m = Cr.n_rows();
+  augment(K, Cr, R);
   BorderedSystem sys;
   sys.layout = L;
   fill_a(K, L);
@@ -607,13 +614,13 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   if (m > 0) {
     RowLists d(L.u_local()), c(L.l_local());
     for (int r = 0; r < m; ++r) {
-      const double E = compliance_of(C, r);
+      const double E = compliance_of(Cr, r);
       const bool own_row = r >= L.l0() && r < L.l1();
-      for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
-        const LocalIndex i = C.col[k];
+      for (LocalIndex k = Cr.row_ptr[r]; k < Cr.row_ptr[r + 1]; ++k) {
+        const LocalIndex i = Cr.col[k];
         if (i >= L.u0() && i < L.u1())
-          d.add(i - L.u0(), r, s * (column_value(C, k) - C.val[k] * R[r] * E));
-        if (own_row) c.add(r - L.l0(), i, s * C.val[k]);
+          d.add(i - L.u0(), r, s * (column_value(Cr, k) - Cr.val[k] * R[r] * E));
+        if (own_row) c.add(r - L.l0(), i, s * Cr.val[k]);
       }
     }
     create_matrix(sys.Dp.out(), d, L.l_local(), L.n, L.m);
@@ -624,7 +631,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
     petsc_check(VecGetArray(sys.Ev, &e), "VecGetArray");
     petsc_check(VecGetArray(sys.Sinv, &p), "VecGetArray");
     for (PetscInt r = L.l0(); r < L.l1(); ++r) {
-      const double E = compliance_of(C, r);
+      const double E = compliance_of(Cr, r);
       e[r - L.l0()] = s * s * E;
       p[r - L.l0()] = 1.0 / (s * s * (E + (1.0 - R[r] * E) / (R[r] + ks[r])));
     }
@@ -672,9 +679,16 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   KspH ksp;
   petsc_check(KSPCreate(PETSC_COMM_WORLD, ksp.out()), "KSPCreate");
   petsc_check(KSPSetOperators(ksp, op, op), "KSPSetOperators");
-  petsc_check(KSPSetType(ksp, KSPGMRES), "KSPSetType");
-  petsc_check(KSPGMRESSetRestart(ksp, kGmresRestart), "KSPGMRESSetRestart");
-  petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
+  // K' alone and symmetric: CG (the AMG cycle is symmetric), on the true residual's norm
+  const bool cg = m == 0 && symmetric && !C.has_columns();
+  if (cg) {
+    petsc_check(KSPSetType(ksp, KSPCG), "KSPSetType");
+    petsc_check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  } else {
+    petsc_check(KSPSetType(ksp, KSPGMRES), "KSPSetType");
+    petsc_check(KSPGMRESSetRestart(ksp, kGmresRestart), "KSPGMRESSetRestart");
+  }
+  petsc_check(KSPSetPCSide(ksp, cg ? PC_LEFT : PC_RIGHT), "KSPSetPCSide");
   // a reused hierarchy gets a few times the iterations of a new one before it is replaced
   const double rtol = opt.relative_tolerance > 0 ? opt.relative_tolerance : kDefaultRtol;
   const double decades = std::max(1.0, -std::log10(rtol));
@@ -687,12 +701,11 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   petsc_check(PCSetType(pc, PCSHELL), "PCSetType");
   petsc_check(PCShellSetContext(pc, &sys), "PCShellSetContext");
   petsc_check(PCShellSetApply(pc, shell_precondition), "PCShellSetApply");
-  petsc_check(KSPSetPCSide(ksp, PC_RIGHT), "KSPSetPCSide");
 
   VecH rhs, x;
   petsc_check(VecCreateMPI(PETSC_COMM_WORLD, local, N, rhs.out()), "VecCreateMPI");
   petsc_check(VecDuplicate(rhs, x.out()), "VecDuplicate");
-  fill_rhs(rhs, b, C, R, s, L, false);
+  fill_rhs(rhs, br, Cr, R, s, L, false);
   KSPConvergedReason reason{};
   PetscInt its = 0;
   {
@@ -719,22 +732,24 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   if (stats) stats->linear_solves += its;
   per_decade_last = static_cast<double>(its) / decades;
   if (rebuild) per_decade_after_build = per_decade_last;
-  log::debug("  GMRES: {} iterations ({} AMG), {} equations and {} rows, true residual {:.1e}, "
-             "reason {}",
-             its, rebuild ? "new" : "reused", L.n, L.m, true_ratio, static_cast<int>(reason));
+  log::debug("  {}: {} iterations ({} AMG), {} equations ({} pinned) and {} rows ({} left), true "
+             "residual {:.1e}, reason {}",
+             cg ? "CG" : "GMRES", its, rebuild ? "new" : "reused", L.n, elim.pinned_count(),
+             C.n_rows(), L.m, true_ratio, static_cast<int>(reason));
   if (reason < 0) {
+    augment(K, Cr, R, -1.0); // back to K
+    elim.restore(K);
     if (!rebuild) { // the old hierarchy may be what failed: once more with a new one
       amg_ready = false;
-      augment(K, C, R, -1.0); // back to K, and once more with a new hierarchy
       return solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
     }
     // GMRES cannot solve this system with this preconditioner (an indefinite tangent that the
     // Chebyshev smoother does not expect, rotations of beams and shells, or a singular system):
     // it and the rest of the step are factorised, which also diagnoses a singular system
-    augment(K, C, R, -1.0);
-    const std::string what = fmt::format("GMRES did not converge on a system of {} equations and "
-                                         "{} constraint rows ({} iterations, PETSc reason {})",
-                                         L.n, L.m, its, static_cast<int>(reason));
+    const std::string what =
+        fmt::format("{} did not converge on a system of {} equations and {} constraint rows ({} "
+                    "iterations, PETSc reason {})",
+                    cg ? "CG" : "GMRES", L.n, C.n_rows(), its, static_cast<int>(reason));
     require_direct_fits(what);
     log::warning("--solver iterative: {}; the rest of the step is solved by MUMPS", what);
     direct_fallback = true;
@@ -743,7 +758,9 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   std::vector<double> all;
   gather_all(x, all);
   for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
-  for (PetscInt r = 0; r < L.m; ++r) dl[r] = s * all[L.kkt_l(r)];
+  std::vector<double> dl_reduced(static_cast<std::size_t>(m));
+  for (PetscInt r = 0; r < L.m; ++r) dl_reduced[r] = s * all[L.kkt_l(r)];
+  elim.recover(b, C, du, dl_reduced, dl);
   out.reused_factor = !rebuild;
   out.solves = static_cast<int>(its);
   out.schur_iterations = static_cast<int>(its);

@@ -18,7 +18,11 @@
 /// * Mumps: the whole matrix goes to MUMPS: LDL^T with 2x2 pivots (symmetric indefinite) when
 ///   D = C^T and K is symmetric, LU otherwise. A later system whose constraint rows have the same
 ///   pattern refactorises numerically on the same analysis; the identical system reuses the factor.
-/// * Iterative: the exact constraints are kept as constraints (no penalty): K is augmented to
+/// * Iterative: first the rows that need no iteration leave the system exactly (RowElimination:
+///   a row fixing one equation, such as a gap to a fixed node along an axis, fixes that equation;
+///   a compliant row's multiplier is substituted). When no row is left and K is symmetric, CG with
+///   one AMG cycle as preconditioner solves K' du = b'. Otherwise the remaining exact constraints
+///   are kept as constraints (no penalty): K is augmented to
 ///   A = K + C^T R C (R_r ~ 100 x the stiffness along the row, as KktSolver does; D becomes
 ///   D - C^T R E so the solution is unchanged), and right-preconditioned GMRES solves the bordered
 ///   system with the block upper-triangular preconditioner [A  sD'; 0  -S], where A^-1 is one AMG

@@ -204,20 +204,23 @@ TEST(SolverBackends, ASingularModelIsDiagnosedAsWithCholmod) {
   }
 }
 
-TEST(SolverBackends, WhereGmresFailsTheStepIsFactorisedIfTheFactorFits) {
+TEST(SolverBackends, WhereTheKrylovMethodFailsTheStepIsFactorisedIfTheFactorFits) {
   REQUIRE_PETSC();
-  // free shells and beams under a thermal gradient: GAMG is no preconditioner for their
-  // rotations, GMRES fails, and MUMPS solves the rest of the step: CHOLMOD's answer
-  const std::filesystem::path deck = std::filesystem::path(GAPFEM_SOURCE_DIR) /
-                                     "tests/verification/structural/thermal_gradient.inp";
+  // a beam rolled up into a circle by an end moment: GAMG is no preconditioner for the large
+  // rotations of its NLGEOM tangent, the Krylov method fails, and MUMPS solves the rest of the
+  // step: CHOLMOD's answer
+  const std::filesystem::path deck =
+      std::filesystem::path(GAPFEM_SOURCE_DIR) / "tests/verification/structural/beam_rollup_2d.inp";
   const JobResult oracle = run_file(deck, SolverBackend::Cholmod);
   ASSERT_EQ(oracle.exit_code, 0) << oracle.error;
-  expect_same(oracle, run_file(deck, SolverBackend::Iterative), 1e-8, 0.0, "thermal gradient");
+  // (its reactions are zero in theory, a pure end moment M = 628: they compare at the round-off
+  // of the force scale M/L, through k_max = 1e3 per unit of displacement)
+  expect_same(oracle, run_file(deck, SolverBackend::Iterative), 1e-8, 1e3, "beam roll-up");
   // ... unless that factor cannot fit: then the run stops with a sentence that says so
   ::setenv("GAPFEM_MEMORY_LIMIT", "1", 1);
   const JobResult r = run_file(deck, SolverBackend::Iterative);
   ::unsetenv("GAPFEM_MEMORY_LIMIT");
   EXPECT_EQ(r.exit_code, kExitNoConvergence);
-  EXPECT_NE(r.error.find("GMRES did not converge"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("did not converge"), std::string::npos) << r.error;
   EXPECT_NE(r.error.find("would need about"), std::string::npos) << r.error;
 }
