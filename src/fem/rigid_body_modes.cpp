@@ -5,6 +5,27 @@
 
 namespace gapfem {
 
+namespace {
+
+/// The padded nodal numbering when every equation is a translation (UX, UY[, UZ]) of its node.
+void nodal_blocks(const DofMap& dofs, const EquationMap& eqs, int block, NearNullSpace& out) {
+  const LocalIndex n = eqs.n_eq();
+  for (LocalIndex e = 0; e < n; ++e)
+    if (static_cast<int>(dofs.slot_dof(eqs.eq_slot[e])) >= block) return;
+  out.padded.resize(static_cast<std::size_t>(n));
+  LocalIndex blocks = 0;
+  NodeId last = -1;
+  for (LocalIndex e = 0; e < n; ++e) { // equations follow the slots: node by node
+    const NodeId node = dofs.slot_node(eqs.eq_slot[e]);
+    if (node != last) ++blocks;
+    last = node;
+    out.padded[e] = block * (blocks - 1) + static_cast<int>(dofs.slot_dof(eqs.eq_slot[e]));
+  }
+  out.block_size = block;
+}
+
+} // namespace
+
 NearNullSpace rigid_body_modes(const DofMap& dofs, const EquationMap& eqs,
                                std::span<const Vec3> coords, bool two_d) {
   const LocalIndex n = eqs.n_eq();
@@ -44,6 +65,7 @@ NearNullSpace rigid_body_modes(const DofMap& dofs, const EquationMap& eqs,
       at(3 + (c - 3), e) = 1.0;
     }
   }
+  nodal_blocks(dofs, eqs, two_d ? 2 : 3, out);
   for (int m = 0; m < out.count; ++m) {
     double big = 0.0;
     for (LocalIndex e = 0; e < n; ++e) big = std::max(big, std::abs(at(m, e)));

@@ -59,6 +59,12 @@ enum class SolverBackend {
 struct NearNullSpace {
   int count = 0;
   std::vector<double> vectors;
+  /// Nodal blocks, for aggregating nodes rather than equations: when block_size > 1, every
+  /// equation is a translation of a node whose equations are all translations, and padded[e] is
+  /// its place in a numbering where the k-th node with equations holds [block_size k,
+  /// block_size (k + 1)) (its prescribed translations pad the block). Empty when block_size is 1.
+  int block_size = 1;
+  std::vector<LocalIndex> padded;
 };
 
 class ConstrainedSolver {

@@ -19,14 +19,17 @@ struct KktLayout {
   std::vector<int> u{0, 0}, l{0, 0}; ///< first equation / constraint row of each rank, size + 1
 
   KktLayout() = default;
+  /// `block`: the equations are split in whole blocks of that many (nodal blocks; n a multiple).
   KktLayout(int n_equations, int n_rows, int this_rank = parallel::rank(),
-            int n_ranks = parallel::size())
-      : n(n_equations), m(n_rows), rank(this_rank), size(n_ranks), u(split(n_equations, n_ranks)),
-        l(split(n_rows, n_ranks)) {}
+            int n_ranks = parallel::size(), int block = 1)
+      : n(n_equations), m(n_rows), rank(this_rank), size(n_ranks),
+        u(split(n_equations, n_ranks, block)), l(split(n_rows, n_ranks)) {}
 
-  static std::vector<int> split(int count, int ranks) {
+  static std::vector<int> split(int count, int ranks, int block = 1) {
     std::vector<int> start(static_cast<std::size_t>(ranks) + 1, 0);
-    for (int p = 0; p < ranks; ++p) start[p + 1] = start[p] + count / ranks + (p < count % ranks);
+    const int blocks = count / block;
+    for (int p = 0; p < ranks; ++p)
+      start[p + 1] = start[p] + block * (blocks / ranks + (p < blocks % ranks));
     return start;
   }
   int u0() const { return u[rank]; }

@@ -25,6 +25,9 @@ constexpr double kDefaultRtol = 1e-10;
 constexpr int kGmresRestart = 100;
 constexpr int kMaxIterations = 2000;
 constexpr int kRowsAbsorbed = 20;
+/// Nodal aggregation from this many equations on: below, GAMG's hierarchy has a level or two and
+/// aggregating nodes rather than equations changes nothing but the round-off.
+constexpr int kNodalBlocksFrom = 1000;
 /// MUMPS's factor (with its pivoting and workspace) against CHOLMOD's symbolic estimate.
 constexpr double kDirectMemoryFactor = 1.5;
 /// A solve whose true relative residual exceeds this many times the tolerance has failed.
@@ -105,7 +108,7 @@ struct RowLists {
   }
 };
 void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt global_rows,
-                   PetscInt global_cols) {
+                   PetscInt global_cols, PetscInt block = 1) {
   const auto nloc = static_cast<PetscInt>(rows.cols.size());
   PetscInt first = 0; // global number of this rank's first row and column
   PetscInt first_col = 0;
@@ -118,6 +121,7 @@ void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt
   petsc_check(MatCreate(PETSC_COMM_WORLD, out), "MatCreate");
   petsc_check(MatSetSizes(*out, nloc, local_cols, global_rows, global_cols), "MatSetSizes");
   petsc_check(MatSetType(*out, MATAIJ), "MatSetType");
+  if (block > 1) petsc_check(MatSetBlockSize(*out, block), "MatSetBlockSize");
   petsc_check(MatSeqAIJSetPreallocation(*out, 0, d.data()), "MatSeqAIJSetPreallocation");
   petsc_check(MatMPIAIJSetPreallocation(*out, 0, d.data(), 0, o.data()),
               "MatMPIAIJSetPreallocation");
@@ -262,7 +266,16 @@ struct PetscKktSolver::Impl {
   bool kkt_symmetric = false;
   std::vector<double> factored; ///< what the factor is of (K values, rows)
   ConstraintBlock factored_rows;
-  // Iterative: A with K's pattern, and its AMG cycle
+  // Iterative: A with K's pattern, and its AMG cycle. A's rows follow the nodal numbering of
+  // NearNullSpace::padded when there is one (padding rows: a diagonal), so that the AMG
+  // aggregates nodes.
+  int block = 1;
+  std::vector<LocalIndex> pad, unpad; ///< equation -> row of A; row of A -> equation or -1
+  LocalIndex row_of(LocalIndex i) const { return pad.empty() ? i : pad[i]; }
+  LocalIndex eq_of(LocalIndex p) const { return unpad.empty() ? p : unpad[p]; }
+  LocalIndex a_size(LocalIndex n) const {
+    return unpad.empty() ? n : static_cast<LocalIndex>(unpad.size());
+  }
   MatH A;
   NearNullSpace modes; ///< the rigid-body modes A's AMG interpolates (set per step)
   KspH amg;
@@ -272,6 +285,7 @@ struct PetscKktSolver::Impl {
   double per_decade_after_build = 0.0, per_decade_last = 0.0;
   ConstraintBlock amg_rows;     ///< the rows whose springs were in A when its AMG was built
   bool direct_fallback = false; ///< GMRES failed in this step: MUMPS solves until the next step
+  bool no_cg = false; ///< CG failed in this step (the AMG cycle was not definite): GMRES instead
 
   KktStatistics solve_mumps(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                             std::span<double> du, std::span<double> dl, bool symmetric,
@@ -284,7 +298,7 @@ struct PetscKktSolver::Impl {
   /// Factorise kkt with MUMPS (workspace relaxation ICNTL(14) in percent); MUMPS's INFOG(1),
   /// -10 also for null pivots.
   PetscInt factorize_mumps(int workspace_percent);
-  void fill_a(const CsrMatrix& K, const KktLayout& L);
+  void fill_a(const CsrMatrix& K, const KktLayout& L, double padding);
   void attach_near_null_space(const KktLayout& L);
   /// AnalysisError naming `what` when a direct factor of the pattern (CHOLMOD's symbolic estimate,
   /// 1.5x for MUMPS's pivoting and workspace) cannot fit in the memory left on some rank.
@@ -304,7 +318,11 @@ std::string_view PetscKktSolver::name() const {
 
 void PetscKktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _impl->pattern = std::move(pattern);
+  _impl->block = 1;
+  _impl->pad.clear();
+  _impl->unpad.clear();
   _impl->direct_fallback = false;
+  _impl->no_cg = false;
   forget_factor();
   _impl->A.reset();
 }
@@ -313,6 +331,18 @@ bool PetscKktSolver::wants_near_null_space() const {
   return _impl->method == Method::Iterative;
 }
 void PetscKktSolver::set_near_null_space(NearNullSpace modes) {
+  Impl& m = *_impl;
+  m.block = 1;
+  m.pad.clear();
+  m.unpad.clear();
+  if (modes.block_size > 1 && m.pattern && m.pattern->n >= kNodalBlocksFrom &&
+      modes.padded.size() == static_cast<std::size_t>(m.pattern->n)) {
+    m.block = modes.block_size;
+    m.pad = std::move(modes.padded);
+    const LocalIndex last = m.pad.empty() ? -1 : *std::max_element(m.pad.begin(), m.pad.end());
+    m.unpad.assign(static_cast<std::size_t>(m.block * (last / m.block + 1)), -1);
+    for (std::size_t i = 0; i < m.pad.size(); ++i) m.unpad[m.pad[i]] = static_cast<LocalIndex>(i);
+  }
   _impl->modes = std::move(modes);
   _impl->A.reset(); // made again with them
 }
@@ -417,13 +447,17 @@ void augment(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R, 
 /// This rank's part of the right-hand side [b - C^T R g; -s f g] of the augmented system (f:
 /// the rows' factors, row_factor(); 1 when not given).
 void fill_rhs(Vec rhs, std::span<const double> b, const ConstraintBlock& C,
-              std::span<const double> R, double s, const KktLayout& L, bool scaled_rows) {
+              std::span<const double> R, double s, const KktLayout& L, bool scaled_rows,
+              std::span<const LocalIndex> unpad = {}) {
   std::vector<double> bb(b.begin(), b.end()), Rg(static_cast<std::size_t>(C.n_rows()));
   for (int r = 0; r < C.n_rows(); ++r) Rg[r] = R[r] * C.g[r];
   C.add_transpose_multiply(Rg, -1.0, bb);
   PetscScalar* a = nullptr;
   petsc_check(VecGetArray(rhs, &a), "VecGetArray");
-  for (PetscInt i = L.u0(); i < L.u1(); ++i) a[i - L.u0()] = bb[i];
+  for (PetscInt p = L.u0(); p < L.u1(); ++p) {
+    const LocalIndex i = unpad.empty() ? p : unpad[p];
+    a[p - L.u0()] = i >= 0 ? bb[i] : 0.0;
+  }
   for (PetscInt r = L.l0(); r < L.l1(); ++r)
     a[L.u_local() + r - L.l0()] = -s * (scaled_rows ? row_factor(R, C, r) : 1.0) * C.g[r];
   petsc_check(VecRestoreArray(rhs, &a), "VecRestoreArray");
@@ -528,15 +562,20 @@ KktStatistics PetscKktSolver::Impl::solve_mumps(CsrMatrix& K, std::span<const do
 // ---------------------------------------------------------------------------------------------
 // Iterative
 
-void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
+void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L, double padding) {
   const SparsityPattern& pat = K.pattern();
   const auto vals = K.values();
   if (!A) {
     RowLists rows(L.u_local());
-    for (PetscInt i = L.u0(); i < L.u1(); ++i)
-      for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k)
-        rows.add(i - L.u0(), pat.col[k], vals[k]);
-    create_matrix(A.out(), rows, L.u_local(), L.n, L.n);
+    for (PetscInt p = L.u0(); p < L.u1(); ++p) {
+      const LocalIndex i = eq_of(p);
+      if (i < 0)
+        rows.add(p - L.u0(), p, padding);
+      else
+        for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k)
+          rows.add(p - L.u0(), row_of(pat.col[k]), vals[k]);
+    }
+    create_matrix(A.out(), rows, L.u_local(), L.n, L.n, block);
     petsc_check(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
     attach_near_null_space(L);
     amg.reset(); // a new matrix: a new hierarchy
@@ -544,10 +583,13 @@ void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
     return;
   }
   std::vector<PetscInt> cols;
-  for (PetscInt i = L.u0(); i < L.u1(); ++i) {
+  for (PetscInt p = L.u0(); p < L.u1(); ++p) {
+    const LocalIndex i = eq_of(p);
+    if (i < 0) continue; // a padding row keeps its diagonal
     const LocalIndex k0 = pat.row_ptr[i], k1 = pat.row_ptr[i + 1];
-    cols.assign(pat.col.begin() + k0, pat.col.begin() + k1);
-    petsc_check(MatSetValues(A, 1, &i, k1 - k0, cols.data(), vals.data() + k0, INSERT_VALUES),
+    cols.resize(static_cast<std::size_t>(k1 - k0));
+    for (LocalIndex k = k0; k < k1; ++k) cols[k - k0] = row_of(pat.col[k]);
+    petsc_check(MatSetValues(A, 1, &p, k1 - k0, cols.data(), vals.data() + k0, INSERT_VALUES),
                 "MatSetValues");
   }
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -555,7 +597,8 @@ void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L) {
 }
 
 void PetscKktSolver::Impl::attach_near_null_space(const KktLayout& L) {
-  if (modes.count == 0 || modes.vectors.size() != static_cast<std::size_t>(modes.count) * L.n)
+  if (modes.count == 0 ||
+      modes.vectors.size() != static_cast<std::size_t>(modes.count) * pattern->n)
     return;
   // orthonormal (modified Gram-Schmidt); modes the free equations do not carry are dropped
   std::vector<Vec> kept;
@@ -564,8 +607,11 @@ void PetscKktSolver::Impl::attach_near_null_space(const KktLayout& L) {
     petsc_check(VecCreateMPI(PETSC_COMM_WORLD, L.u_local(), L.n, &v), "VecCreateMPI");
     PetscScalar* a = nullptr;
     petsc_check(VecGetArray(v, &a), "VecGetArray");
-    const double* mode = modes.vectors.data() + static_cast<std::size_t>(k) * L.n;
-    std::copy(mode + L.u0(), mode + L.u1(), a);
+    const double* mode = modes.vectors.data() + static_cast<std::size_t>(k) * pattern->n;
+    for (PetscInt p = L.u0(); p < L.u1(); ++p) {
+      const LocalIndex i = eq_of(p);
+      a[p - L.u0()] = i >= 0 ? mode[i] : 0.0;
+    }
     petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
     for (Vec q : kept) {
       PetscScalar dot = 0;
@@ -601,7 +647,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   elim.reduce(K, b, C);
   const ConstraintBlock& Cr = elim.reduced_rows();
   const auto br = elim.reduced_b();
-  const KktLayout L(K.n(), Cr.n_rows());
+  const KktLayout L(a_size(K.n()), Cr.n_rows(), parallel::rank(), parallel::size(), block);
   const double s = multiplier_scale(K);
   std::vector<double> R, ks;
   augmentation_weights(K, Cr, opt.augmentation, R, ks);
@@ -609,7 +655,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   augment(K, Cr, R);
   BorderedSystem sys;
   sys.layout = L;
-  fill_a(K, L);
+  fill_a(K, L, s);
   sys.A = A;
   if (m > 0) {
     RowLists d(L.u_local()), c(L.l_local());
@@ -617,7 +663,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
       const double E = compliance_of(Cr, r);
       const bool own_row = r >= L.l0() && r < L.l1();
       for (LocalIndex k = Cr.row_ptr[r]; k < Cr.row_ptr[r + 1]; ++k) {
-        const LocalIndex i = Cr.col[k];
+        const LocalIndex i = row_of(Cr.col[k]);
         if (i >= L.u0() && i < L.u1())
           d.add(i - L.u0(), r, s * (column_value(Cr, k) - Cr.val[k] * R[r] * E));
         if (own_row) c.add(r - L.l0(), i, s * Cr.val[k]);
@@ -680,7 +726,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   petsc_check(KSPCreate(PETSC_COMM_WORLD, ksp.out()), "KSPCreate");
   petsc_check(KSPSetOperators(ksp, op, op), "KSPSetOperators");
   // K' alone and symmetric: CG (the AMG cycle is symmetric), on the true residual's norm
-  const bool cg = m == 0 && symmetric && !C.has_columns();
+  const bool cg = m == 0 && symmetric && !C.has_columns() && !no_cg;
   if (cg) {
     petsc_check(KSPSetType(ksp, KSPCG), "KSPSetType");
     petsc_check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
@@ -705,7 +751,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   VecH rhs, x;
   petsc_check(VecCreateMPI(PETSC_COMM_WORLD, local, N, rhs.out()), "VecCreateMPI");
   petsc_check(VecDuplicate(rhs, x.out()), "VecDuplicate");
-  fill_rhs(rhs, br, Cr, R, s, L, false);
+  fill_rhs(rhs, br, Cr, R, s, L, false, unpad);
   KSPConvergedReason reason{};
   PetscInt its = 0;
   {
@@ -734,13 +780,14 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   if (rebuild) per_decade_after_build = per_decade_last;
   log::debug("  {}: {} iterations ({} AMG), {} equations ({} pinned) and {} rows ({} left), true "
              "residual {:.1e}, reason {}",
-             cg ? "CG" : "GMRES", its, rebuild ? "new" : "reused", L.n, elim.pinned_count(),
+             cg ? "CG" : "GMRES", its, rebuild ? "new" : "reused", K.n(), elim.pinned_count(),
              C.n_rows(), L.m, true_ratio, static_cast<int>(reason));
   if (reason < 0) {
     augment(K, Cr, R, -1.0); // back to K
     elim.restore(K);
-    if (!rebuild) { // the old hierarchy may be what failed: once more with a new one
-      amg_ready = false;
+    if (!rebuild || cg) {  // the old hierarchy, or CG, may be what failed: once more with a new
+      amg_ready = false;   // hierarchy, and GMRES for the rest of the step if CG found the cycle
+      no_cg = no_cg || cg; // indefinite (its Chebyshev smoothing bounds can miss)
       return solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
     }
     // GMRES cannot solve this system with this preconditioner (an indefinite tangent that the
@@ -749,7 +796,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
     const std::string what =
         fmt::format("{} did not converge on a system of {} equations and {} constraint rows ({} "
                     "iterations, PETSc reason {})",
-                    cg ? "CG" : "GMRES", L.n, C.n_rows(), its, static_cast<int>(reason));
+                    cg ? "CG" : "GMRES", K.n(), C.n_rows(), its, static_cast<int>(reason));
     require_direct_fits(what);
     log::warning("--solver iterative: {}; the rest of the step is solved by MUMPS", what);
     direct_fallback = true;
@@ -757,7 +804,7 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   }
   std::vector<double> all;
   gather_all(x, all);
-  for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
+  for (LocalIndex i = 0; i < K.n(); ++i) du[i] = all[L.kkt_u(row_of(i))];
   std::vector<double> dl_reduced(static_cast<std::size_t>(m));
   for (PetscInt r = 0; r < L.m; ++r) dl_reduced[r] = s * all[L.kkt_l(r)];
   elim.recover(b, C, du, dl_reduced, dl);

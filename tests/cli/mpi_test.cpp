@@ -4,11 +4,13 @@
 // instead of leaving the other rank waiting. Skipped with a message where MPI or PETSc is absent.
 #include "parallel/parallel.hpp"
 #include "test_util.hpp"
+#include "verification/parallel/slab_deck.hpp"
 
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -110,14 +112,18 @@ TEST(Mpi, TwoRanksGiveTheSerialAnswer) {
   const fs::path src = GAPFEM_SOURCE_DIR, dir = test_dir();
   // gap verification decks of the examples (GAPUNI on a pipe with friction, an axisymmetric
   // shrink fit, a fuel pin with thermal GAPUNIT/DGAP gaps, a pipe elbow on GAPCYL guides), NLGEOM
-  // trusses and shells
+  // trusses and shells, and a slab on gaps whose nodal blocks (iterative: block size 3) are split
+  // between the ranks
+  const fs::path slab = dir / "slab_on_gaps.inp";
+  std::ofstream(slab) << slab_on_gaps(12, 2);
   const std::vector<std::pair<std::string, std::string>> decks = {
       {"pipe", "examples/01_pipe_on_supports/pipe_on_supports.inp"},
       {"shrink", "examples/02_shrink_fit/shrink_fit.inp"},
       {"fuel", "examples/03_fuel_pin/fuel_pin.inp"},
       {"elbow", "examples/04_pipe_elbow/pipe_elbow.inp"},
       {"truss", "tests/verification/structural/truss_nlgeom.inp"},
-      {"thermal", "tests/verification/structural/thermal_gradient.inp"}};
+      {"thermal", "tests/verification/structural/thermal_gradient.inp"},
+      {"slab", slab.string()}};
   for (const auto& [name, deck] : decks)
     for (const char* solver : {"mumps", "iterative"}) {
       // GMRES to 1e-13 (a PETSc option, passed through): the partitioned AMG cycle differs from
