@@ -103,6 +103,7 @@ struct ElementOutput {
 
   int status_changes = 0;   ///< contact status flips decided in this evaluation
   bool unsymmetric = false; ///< tangent is not symmetric (friction slip, coupled terms)
+  bool friction = false;    ///< a closed gap with friction: its stick/slip path is sensitive
   /// The ratio of a new to the current time increment the element asks for (a UEL's PNEWDT):
   /// below 1 the increment is abandoned and tried again that much smaller; above 1 it bounds the
   /// growth of the next one. Infinity: no request.

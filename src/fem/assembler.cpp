@@ -25,8 +25,7 @@ int default_thread_count() {
 Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
-      _thread_f(static_cast<std::size_t>(_threads)) {
-}
+      _thread_f(static_cast<std::size_t>(_threads)) {}
 
 namespace {
 /// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
@@ -72,8 +71,7 @@ void symmetrize(ElementOutput& out, int nd) {
 } // namespace
 
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
-                                   std::span<double> f_int, MatrixInserter* K,
-                                   ConstraintBlock* C) {
+                                   std::span<double> f_int, MatrixInserter* K, ConstraintBlock* C) {
   const DofMap& dofs = _disc.dofs();
   std::fill(f_int.begin(), f_int.end(), 0.0);
   if (K) {
@@ -120,6 +118,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           K->add(multi ? t : 0, eqs, eqs, out.tangent);
         }
         res.unsymmetric |= out.unsymmetric;
+        res.friction |= out.friction;
         res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
         if (out.status_changes) {
           res.status_changes += out.status_changes;
@@ -175,6 +174,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;
+    total.friction |= p.friction;
     total.dt_ratio = std::min(total.dt_ratio, p.dt_ratio);
     for (int f = 0; f < kNumFields; ++f) {
       total.flux_sum[f] += p.flux_sum[f];
@@ -186,8 +186,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
 }
 
 void Assembler::assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
-                               const StepContext& ctx, std::span<double> f_ext,
-                               MatrixInserter* K, bool symmetrize) {
+                               const StepContext& ctx, std::span<double> f_ext, MatrixInserter* K,
+                               bool symmetrize) {
   ElementGather& g = _scratch[0];
   std::vector<double> fe, Ke;
   if (K) K->open(1);

@@ -16,6 +16,7 @@ namespace gapfem {
 struct AssemblyResult {
   int status_changes = 0;
   bool unsymmetric = false;
+  bool friction = false; ///< some element has a closed gap with friction (ElementOutput::friction)
   std::array<double, kNumFields> flux_sum{}; ///< sum of |element residual entries| per field
   std::array<long, kNumFields> flux_count{};
   std::vector<ElemId> changed; ///< elements whose contact status changed in this evaluation

@@ -18,11 +18,14 @@ namespace {
 /// is 1e-3 of what Newton tolerates (R_n x the flux, given the residual ratio now), never looser
 /// than 1e-6. Direct backends ignore it.
 double forcing_term(const NewtonControls& c, int iterations, double residual_ratio,
-                    int status_changes) {
+                    int status_changes, bool friction) {
   constexpr double kFull = 1e-10, kLoosest = 1e-6;
-  if (iterations == 0 || status_changes > 0 || !std::isfinite(residual_ratio) ||
-      residual_ratio <= 0)
-    return kFull;
+  // the first system is solved fully, so that a linear increment is done in one iteration (its
+  // residual must fall below 1e-8 of the flux). After contact status changes: 1e-6 without
+  // friction (an open/closed decision follows a gap's value, which the next iteration corrects
+  // anyway), in full with friction, whose stick/slip decisions chatter otherwise.
+  if (iterations == 0 || !std::isfinite(residual_ratio) || residual_ratio <= 0) return kFull;
+  if (status_changes > 0) return friction ? kFull : kLoosest;
   double rn = std::numeric_limits<double>::infinity();
   for (const NewtonControls::Field& f : c.field) rn = std::min(rn, f.residual_ratio);
   return std::clamp(1e-3 * rn / residual_ratio, kFull, kLoosest);
@@ -82,7 +85,8 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
     opt.constraint_tolerance = 1e-3 * p.constraint_tolerance();
     opt.reuse = c.factor_reuse;
     opt.force_fresh = force_fresh;
-    opt.relative_tolerance = forcing_term(c, res.iterations, residual_ratio_now, ev.status_changes);
+    opt.relative_tolerance =
+        forcing_term(c, res.iterations, residual_ratio_now, ev.status_changes, ev.friction);
     try {
       const KktStatistics ks = solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
       last_stale = ks.stale_factor;

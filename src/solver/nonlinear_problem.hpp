@@ -23,6 +23,7 @@ struct Evaluation {
   int status_changes = 0;
   std::vector<ElemId> changed; ///< elements whose contact status changed
   bool symmetric = true;
+  bool friction = false; ///< some closed gap has friction
   /// the elements' time-increment request (AssemblyResult::dt_ratio); infinity: none
   double dt_ratio = std::numeric_limits<double>::infinity();
 };

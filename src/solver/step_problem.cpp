@@ -10,8 +10,8 @@ namespace gapfem {
 StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
                          SolutionState& state, const StepContext& base,
                          std::shared_ptr<const SparsityPattern> pattern)
-    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)), _Kin(_K),
-      _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
+    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)),
+      _Kin(_K), _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
       _constraint_tol(1e-10 * base.model_size) {}
 
 void StepProblem::set_unsymmetric_loads(bool on) {
@@ -97,6 +97,7 @@ Evaluation StepProblem::evaluate() {
   ev.status_changes = ar.status_changes;
   ev.changed = std::move(ar.changed);
   ev.symmetric = !ar.unsymmetric && !follower;
+  ev.friction = ar.friction;
   ev.dt_ratio = ar.dt_ratio;
   const DofMap& dofs = _disc.dofs();
   const EquationMap& eqm = _loads.equations();

@@ -35,6 +35,7 @@ void MechanicalGapKernel::assemble(const ElementInput& in, ElementOutput& out, c
   // friction: r += f_a q_a (the forces of Lagrange stick are its multipliers); the slip, and with
   // it the force, moves with d s_a / d u = ds_a
   Eigen::Vector2d f = R.friction + L.td;
+  out.friction = out.friction || L.fl != nullptr;
   for (int a = 0; a < 2; ++a) res(L.q[a], f[a]);
   for (int a = 0; a < 2; ++a) {
     for (int b = 0; b < 2; ++b)
