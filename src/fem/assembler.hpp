@@ -68,7 +68,8 @@ class Assembler {
   std::vector<std::vector<double>> _thread_f;
 };
 
-/// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads, 2).
+/// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads / ranks on this
+/// machine under mpirun, 2), at least 1.
 int default_thread_count();
 
 } // namespace gapfem

@@ -21,9 +21,10 @@
 /// * Iterative: first the rows that need no iteration leave the system exactly (RowElimination:
 ///   a row fixing one equation, such as a gap to a fixed node along an axis, fixes that equation;
 ///   a compliant row's multiplier is substituted). When no row is left and K is symmetric, CG with
-///   one AMG cycle as preconditioner solves K' du = b'. Otherwise the remaining exact constraints
-///   are kept as constraints (no penalty): K is augmented to
-///   A = K + C^T R C (R_r ~ 100 x the stiffness along the row, as KktSolver does; D becomes
+///   one AMG cycle as preconditioner solves K' du = b' (GMRES for the rest of the step if CG
+///   finds the cycle indefinite). Where every equation is a translation, A is numbered by nodes
+///   (block size 3, NearNullSpace::padded) so that GAMG aggregates nodes. Otherwise the remaining
+///   exact constraints are kept as constraints (no penalty): K is augmented to A = K + C^T R C (R_r ~ 100 x the stiffness along the row, as KktSolver does; D becomes
 ///   D - C^T R E so the solution is unchanged), and right-preconditioned GMRES solves the bordered
 ///   system with the block upper-triangular preconditioner [A  sD'; 0  -S], where A^-1 is one AMG
 ///   cycle (GAMG; options prefix `inner_`) and S = s²(E + (1 - RE)/(R + ks)) is the diagonal
