@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <petscksp.h>
 #include <unordered_map>
 
@@ -389,15 +390,19 @@ void PetscKktSolver::Impl::require_direct_fits(const std::string& what) const {
   auto estimate = make_cholmod_solver();
   estimate->analyze(*pattern);
   const double need = kDirectMemoryFactor * static_cast<double>(estimate->factor_bytes());
+  // the rank with the least memory left decides, for every rank alike
   const auto available = available_memory_bytes();
-  const int short_here = available && need > static_cast<double>(*available) ? 1 : 0;
-  if (parallel::max_over_ranks(short_here) == 0) return;
+  const double here =
+      available ? static_cast<double>(*available) : std::numeric_limits<double>::infinity();
+  const double least = -parallel::max_over_ranks(-here);
+  if (!(need > least)) return;
   throw AnalysisError(fmt::format(
       "--solver iterative: {}, and factorising it instead (MUMPS) would need about {} of memory, "
-      "more than is available{}. Try another multigrid (-inner_pc_type hypre), more iterations "
-      "(-ksp_max_it), a smaller increment, or more ranks on more machines (mpirun -np N)",
-      what, memory_size_text(need),
-      available ? fmt::format(" ({})", memory_size_text(static_cast<double>(*available))) : ""));
+      "more than is available ({}{}). Try another multigrid (-inner_pc_type hypre), more "
+      "iterations (-ksp_max_it), a smaller increment, or more ranks on more machines (mpirun -np "
+      "N)",
+      what, memory_size_text(need), memory_size_text(least),
+      parallel::size() > 1 ? " on the rank with the least" : ""));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -198,3 +198,31 @@ TEST(Mpi, ARankThatFailsAloneStopsTheJob) {
   EXPECT_NE(out.find("99"), std::string::npos) << out; // rank 1's own message names the node
   EXPECT_NE(out.find("stopping the whole job"), std::string::npos) << out;
 }
+
+TEST(Mpi, ARankShortOfMemoryStopsTheJobWithItsSentence) {
+  REQUIRE_MPI();
+  // the beam rolled into a circle defeats the AMG-preconditioned Krylov method, and its fallback,
+  // a MUMPS factor, is checked against the memory left on every rank; rank 1 alone is short of
+  // memory (GAPFEM_MEMORY_LIMIT, mpirun's MPMD form with -x for that rank only): every rank must
+  // stop with the sentence that says so, exit status 2, no rank left waiting
+  const fs::path src = GAPFEM_SOURCE_DIR, dir = test_dir();
+  const fs::path deck = src / "tests/verification/structural/beam_rollup_2d.inp";
+  const auto start = std::chrono::steady_clock::now();
+  const std::string cmd =
+      fmt::format("timeout 120 mpirun -np 1 '{0}' --solver iterative -o '{1}' '{2}' : -np 1 -x "
+                  "GAPFEM_MEMORY_LIMIT=1 '{0}' --solver iterative -o '{1}' '{2}'",
+                  GAPFEM_EXE, (dir / "run").string(), deck.string());
+  const int rc = shell(cmd, dir / "terminal.log");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string out = slurp(dir / "terminal.log");
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_LT(seconds, 100.0);
+  EXPECT_NE(out.find("would need about"), std::string::npos) << out;
+  // ... naming the memory of the rank that is short, not rank 0's
+  EXPECT_NE(out.find("more than is available (0.0 KiB on the rank with the least)"),
+            std::string::npos)
+      << out;
+  // rank 0 kept what converged before: the results file of the increments before the failure
+  EXPECT_TRUE(fs::exists(dir / "run" / "beam_rollup_2d.results.json")) << out;
+}
