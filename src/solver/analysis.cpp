@@ -1,12 +1,11 @@
 #include "solver/analysis.hpp"
 
-#include "fem/rigid_body_modes.hpp"
-
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/timer.hpp"
 #include "fem/assembler.hpp"
 #include "fem/discretization.hpp"
+#include "fem/rigid_body_modes.hpp"
 #include "linalg/kkt_solver.hpp"
 #include "model/model.hpp"
 #include "solver/analysis_impl.hpp"
@@ -285,8 +284,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   r.pattern = step_pattern(loads);
   solver->analyze(r.pattern);
   if (solver->wants_near_null_space())
-    solver->set_near_null_space(rigid_body_modes(disc.dofs(), loads.equations(),
-                                                 model.mesh.coords,
+    solver->set_near_null_space(rigid_body_modes(disc.dofs(), loads.equations(), model.mesh.coords,
                                                  model.space != ModelSpace::ThreeD));
 
   StepContext& base = r.base;
@@ -459,6 +457,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   r.converged_f_ext = st.f_ext;
   for (int f = 0; f < kNumFields; ++f) r.flux.sum[f] += res.flux[f];
   ++r.flux.n;
+  r.controls.nonlinear_step = res.iterations > 1;
   ctrl.accept(res.iterations - res.severe_iterations, growth);
   r.heat->add_increment(disc.dofs(), dt, prob.reactions(), st.f_ext);
   ++stats.increments;

@@ -20,11 +20,13 @@ namespace {
 double forcing_term(const NewtonControls& c, int iterations, double residual_ratio,
                     int status_changes, bool friction) {
   constexpr double kFull = 1e-10, kLoosest = 1e-6;
-  // the first system is solved fully, so that a linear increment is done in one iteration (its
-  // residual must fall below 1e-8 of the flux). After contact status changes: 1e-6 without
+  // The first system of a step that may be linear is solved fully, so that a linear increment is
+  // done in one iteration (its residual must fall below 1e-8 of the flux). After contact status
+  // changes, and for the first system once the step has shown itself nonlinear: 1e-6 without
   // friction (an open/closed decision follows a gap's value, which the next iteration corrects
   // anyway), in full with friction, whose stick/slip decisions chatter otherwise.
-  if (iterations == 0 || !std::isfinite(residual_ratio) || residual_ratio <= 0) return kFull;
+  if (iterations == 0) return c.nonlinear_step && !friction ? kLoosest : kFull;
+  if (!std::isfinite(residual_ratio) || residual_ratio <= 0) return kFull;
   if (status_changes > 0) return friction ? kFull : kLoosest;
   double rn = std::numeric_limits<double>::infinity();
   for (const NewtonControls::Field& f : c.field) rn = std::min(rn, f.residual_ratio);

@@ -39,6 +39,10 @@ struct NewtonControls {
   /// forces a fresh factor on the next one
   FactorReuse factor_reuse = FactorReuse::Auto;
   double stale_contraction = 0.1;
+  /// The last converged increment of the step took more than one iteration: the step is not
+  /// linear, so the first system of the next increment is solved to Newton's looser forcing term
+  /// (an iterative backend) rather than in full. Set by the step driver.
+  bool nonlinear_step = false;
 };
 
 struct FluxHistory {
@@ -77,7 +81,8 @@ struct NewtonResult {
   double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
-NewtonResult solve_increment(NonlinearProblem& problem, ConstrainedSolver& solver, const NewtonControls& c,
-                             const FluxHistory& history, RunStatistics* stats);
+NewtonResult solve_increment(NonlinearProblem& problem, ConstrainedSolver& solver,
+                             const NewtonControls& c, const FluxHistory& history,
+                             RunStatistics* stats);
 
 } // namespace gapfem
