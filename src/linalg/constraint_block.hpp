@@ -40,6 +40,12 @@ struct ConstraintBlock {
                double row_compliance = 0.0);
   bool has_compliance() const;
   bool has_columns() const { return !dval.empty(); }
+  /// E_rr (0 when no row carries a compliance).
+  double row_compliance(int r) const {
+    return static_cast<std::size_t>(r) < compliance.size() ? compliance[r] : 0.0;
+  }
+  /// Entry k of D (the row's own column when given, else its coefficient).
+  double column_value(LocalIndex k) const { return has_columns() ? dval[k] : val[k]; }
   /// y = C x
   void multiply(std::span<const double> x, std::span<double> y) const;
   /// x += alpha * C^T y

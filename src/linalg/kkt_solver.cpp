@@ -19,9 +19,6 @@ double norm_inf(std::span<const double> v) {
   for (double x : v) s = std::max(s, std::abs(x));
   return s;
 }
-double compliance_of(const ConstraintBlock& C, int r) {
-  return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
-}
 /// A compliant row's spring in the factor must stay softer than the row itself (R E < 1, see
 /// solve()); half of it keeps the Schur system well away from that limit.
 constexpr double kCompliantSpringShare = 0.5;
@@ -57,7 +54,7 @@ void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double a
     if (!(stiff > 1e-12 * mean_diag)) stiff = mean_diag;
     ks[r] = stiff / std::max(den, 1e-300); // the structure's stiffness along the row
     R[r] = augmentation * ks[r];
-    const double E = compliance_of(C, r);
+    const double E = C.row_compliance(r);
     if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
   }
 }
@@ -285,7 +282,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       // a compliant row whose spring in the factor is no longer softer than the row (it got
       // stiffer since) is replaced like a changed row
       if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second) &&
-          _fR[it->second] * compliance_of(C, r) <= 0.9) {
+          _fR[it->second] * C.row_compliance(r) <= 0.9) {
         p_of[r] = it->second;
         used[it->second] = 1;
       } else {
@@ -357,7 +354,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     ConstraintBlock scaled;
     if (C.has_columns())
       for (int r = 0; r < m; ++r) {
-        const double E = compliance_of(C, r);
+        const double E = C.row_compliance(r);
         if (p_of[r] < 0 || E == 0.0) continue;
         if (Cs == &C) {
           scaled = C;
@@ -385,7 +382,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     // C M^-1 C^T + E / (1 - R_F E); new rows carry w = dl with C M^-1 C^T + E. The preconditioner
     // is the inverse of the block's estimate (C M^-1 C^T ~ 1/R_F for rows in the factor).
     for (int r = 0; r < m; ++r) {
-      const double E = compliance_of(C, r);
+      const double E = C.row_compliance(r);
       if (p_of[r] >= 0) {
         const double Rf = _fR[p_of[r]];
         d[r] = -E / (1.0 - Rf * E);
@@ -436,7 +433,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       std::vector<double> tol_r(static_cast<std::size_t>(mt), tol);
       const double force_scale = norm_inf(bb), floor = 1e-15 * norm_inf(rhs);
       for (int r = 0; r < m; ++r)
-        if (const double E = compliance_of(C, r); E > 0)
+        if (const double E = C.row_compliance(r); E > 0)
           tol_r[r] = std::min(tol, std::max(1e-8 * force_scale * E, floor));
       std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
       sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol_r, stats);

@@ -6,15 +6,6 @@
 
 namespace gapfem {
 
-namespace {
-double compliance_of(const ConstraintBlock& C, int r) {
-  return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
-}
-double column_value(const ConstraintBlock& C, LocalIndex k) {
-  return C.has_columns() ? C.dval[k] : C.val[k];
-}
-} // namespace
-
 void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                             bool pin) {
   const SparsityPattern& pat = K.pattern();
@@ -33,11 +24,11 @@ void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const Const
   };
   for (int r = 0; r < C.n_rows(); ++r) {
     const LocalIndex k0 = C.row_ptr[r], k1 = C.row_ptr[r + 1];
-    const double E = compliance_of(C, r);
+    const double E = C.row_compliance(r);
     if (E > 0 && k1 > k0) { // K + D E^-1 C, b - D E^-1 g
       _folded.push_back(r);
       for (LocalIndex a = k0; a < k1; ++a) {
-        const double da = column_value(C, a) / E;
+        const double da = C.column_value(a) / E;
         _b[C.col[a]] -= da * C.g[r];
         for (LocalIndex c = k0; c < k1; ++c) {
           const LocalIndex pos = pat.find(C.col[a], C.col[c]);
@@ -48,11 +39,11 @@ void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const Const
       continue;
     }
     if (pin && E == 0 && k1 - k0 == 1 && touches[C.col[k0]] == 1 && C.val[k0] != 0 &&
-        column_value(C, k0) != 0) {
+        C.column_value(k0) != 0) {
       _pin_row.push_back(r);
       _pin_eq.push_back(C.col[k0]);
       _pin_du.push_back(-C.g[r] / C.val[k0]);
-      _pin_d.push_back(column_value(C, k0));
+      _pin_d.push_back(C.column_value(k0));
       continue;
     }
     _kept.push_back(r);
@@ -95,7 +86,7 @@ void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const Const
       _rows.dval.insert(_rows.dval.end(), C.dval.begin() + k0, C.dval.begin() + k1);
     _rows.row_ptr.push_back(static_cast<LocalIndex>(_rows.col.size()));
     _rows.g.push_back(C.g[r]);
-    if (!C.compliance.empty()) _rows.compliance.push_back(compliance_of(C, r));
+    if (!C.compliance.empty()) _rows.compliance.push_back(C.row_compliance(r));
     _rows.multiplier.push_back(C.multiplier[r]);
   }
 }
@@ -114,7 +105,7 @@ void RowElimination::recover(std::span<const double> b, const ConstraintBlock& C
   for (int r : _folded) {
     double cdu = C.g[r];
     for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) cdu += C.val[k] * du[C.col[k]];
-    dl[r] = cdu / compliance_of(C, r);
+    dl[r] = cdu / C.row_compliance(r);
   }
 }
 

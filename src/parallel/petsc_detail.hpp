@@ -27,8 +27,6 @@ constexpr double kDirectMemoryFactor = 1.5;
 /// A solve whose true relative residual exceeds this many times the tolerance has failed.
 constexpr double kTrueResidualSlack = 100.0;
 
-double compliance_of(const ConstraintBlock& C, int r);
-double column_value(const ConstraintBlock& C, LocalIndex k);
 /// Rows of b that a does not have (same multiplier, same coefficients), plus rows of a gone.
 int changed_rows(const ConstraintBlock& a, const ConstraintBlock& b);
 /// The factor f = 1 - R E of a compliant row's equation in the bordered matrix MUMPS factorises

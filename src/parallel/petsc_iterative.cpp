@@ -198,12 +198,12 @@ void PetscKktSolver::Impl::build_rows(BorderedSystem& sys, const ConstraintBlock
   const int m = Cr.n_rows();
   RowLists d(L.u_local()), c(L.l_local());
   for (int r = 0; r < m; ++r) {
-    const double E = compliance_of(Cr, r);
+    const double E = Cr.row_compliance(r);
     const bool own_row = r >= L.l0() && r < L.l1();
     for (LocalIndex k = Cr.row_ptr[r]; k < Cr.row_ptr[r + 1]; ++k) {
       const LocalIndex i = row_of(Cr.col[k]);
       if (i >= L.u0() && i < L.u1())
-        d.add(i - L.u0(), r, s * (column_value(Cr, k) - Cr.val[k] * R[r] * E));
+        d.add(i - L.u0(), r, s * (Cr.column_value(k) - Cr.val[k] * R[r] * E));
       if (own_row) c.add(r - L.l0(), i, s * Cr.val[k]);
     }
   }
@@ -215,7 +215,7 @@ void PetscKktSolver::Impl::build_rows(BorderedSystem& sys, const ConstraintBlock
   petsc_check(VecGetArray(sys.Ev, &e), "VecGetArray");
   petsc_check(VecGetArray(sys.Sinv, &p), "VecGetArray");
   for (PetscInt r = L.l0(); r < L.l1(); ++r) {
-    const double E = compliance_of(Cr, r);
+    const double E = Cr.row_compliance(r);
     e[r - L.l0()] = s * s * E;
     p[r - L.l0()] = 1.0 / (s * s * (E + (1.0 - R[r] * E) / (R[r] + ks[r])));
   }

@@ -23,13 +23,6 @@ using parallel::petsc_check;
 
 namespace petsc_detail {
 
-double compliance_of(const ConstraintBlock& C, int r) {
-  return static_cast<std::size_t>(r) < C.compliance.size() ? C.compliance[r] : 0.0;
-}
-double column_value(const ConstraintBlock& C, LocalIndex k) {
-  return C.has_columns() ? C.dval[k] : C.val[k];
-}
-
 /// Rows of b that a does not have (same multiplier, same coefficients), plus rows of a gone.
 int changed_rows(const ConstraintBlock& a, const ConstraintBlock& b) {
   std::unordered_map<std::int64_t, int> row_of;
@@ -51,7 +44,7 @@ int changed_rows(const ConstraintBlock& a, const ConstraintBlock& b) {
 /// the augmentation makes the row's column s (1 - R E) C^T, so the row is scaled alike and the
 /// matrix stays symmetric (f >= 1/2, R being at most half the row's stiffness).
 double row_factor(std::span<const double> R, const ConstraintBlock& C, int r) {
-  return 1.0 - R[r] * compliance_of(C, r);
+  return 1.0 - R[r] * C.row_compliance(r);
 }
 
 /// The multiplier scale s: the mean of |diag K| (1 for an empty or zero diagonal).
@@ -253,11 +246,11 @@ void PetscKktSolver::Impl::build_kkt(const CsrMatrix& K, const ConstraintBlock& 
       rows.add(i - L.u0(), L.kkt_u(pat.col[k]), vals[k]);
   for (int r = 0; r < C.n_rows(); ++r) {
     const bool own_row = r >= L.l0() && r < L.l1();
-    const double E = compliance_of(C, r), f = row_factor(R, C, r);
+    const double E = C.row_compliance(r), f = row_factor(R, C, r);
     for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
       const LocalIndex i = C.col[k];
       if (i >= L.u0() && i < L.u1())
-        rows.add(i - L.u0(), L.kkt_l(r), s * (column_value(C, k) - C.val[k] * R[r] * E));
+        rows.add(i - L.u0(), L.kkt_l(r), s * (C.column_value(k) - C.val[k] * R[r] * E));
       if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_u(i), s * f * C.val[k]);
     }
     if (own_row) rows.add(L.u_local() + r - L.l0(), L.kkt_l(r), -s * s * f * E);
