@@ -1,6 +1,9 @@
 // CHOLMOD supernodal Cholesky behind the LinearSolver interface.
 #include "common/error.hpp"
+#include "common/memory.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/low_rank_correction.hpp"
+#include "linalg/sparse_forward.hpp"
 
 #include <algorithm>
 #include <cholmod.h>
@@ -27,7 +30,6 @@ class CholmodSolver final : public LinearSolver {
   ~CholmodSolver() override {
     free_work();
     if (_L) cholmod_free_factor(&_L, &_c);
-    if (_Lsym) cholmod_free_factor(&_Lsym, &_c);
     cholmod_finish(&_c);
   }
   std::string_view name() const override { return "CHOLMOD (supernodal Cholesky)"; }
@@ -35,9 +37,10 @@ class CholmodSolver final : public LinearSolver {
 
   void analyze(const SparsityPattern& p) override {
     if (_L) cholmod_free_factor(&_L, &_c);
-    if (_Lsym) cholmod_free_factor(&_Lsym, &_c);
     free_work();
     _n = p.n;
+    _correction.reset(_n);
+    _forward.reset();
     cholmod_sparse A = view(p, nullptr);
     // CHOLMOD's own choice: AMD, then METIS as well when AMD's fill is high (3-D meshes), keeping
     // the better ordering. Forcing METIS costs minutes on graphs of many small disconnected blocks
@@ -46,70 +49,79 @@ class CholmodSolver final : public LinearSolver {
     _c.postorder = true;
     _L = cholmod_analyze(&A, &_c);
     if (!_L || _c.status < CHOLMOD_OK) throw AnalysisError(failure("ordering/analysis"));
-    // the symbolic supernodal factor, to start from again after modify() made L simplicial
-    _Lsym = cholmod_copy_factor(_L, &_c);
     _inverse_perm.assign(static_cast<std::size_t>(_n), 0);
     const auto* perm = static_cast<const int*>(_L->Perm);
     for (LocalIndex k = 0; k < _n; ++k) _inverse_perm[perm ? perm[k] : k] = k;
   }
 
-  bool modify(bool add, const SparseColumns& W) override {
+  /// A + W W^T or A - W W^T through the Woodbury identity on the untouched supernodal factor
+  /// (linalg/low_rank_correction.hpp); a column that undoes an earlier one cancels it. The
+  /// correction of a spring w w^T loses about log10(1 + w^T A^-1 w) digits; where `scale` lets
+  /// it, an added spring is softened to w^T A^-1 w = kMaxSpringGain.
+  bool modify(bool add, const SparseColumns& W, std::span<double> scale) override {
     FE_CHECK(_L && _L->xtype != CHOLMOD_PATTERN, "modify before factorize");
-    if (W.n_cols() == 0) return true;
-    // C = P W (CHOLMOD's factor is of P A P^T), rows sorted in each column
-    std::vector<int> p(W.ptr.begin(), W.ptr.end()), rows;
+    // what it may take is checked first: declining leaves everything as it was
+    const int cols = W.n_cols();
+    if (_correction.size() + cols > kMaxCorrectionColumns) return false;
+    // Y = L^-1 U by sparse forward solves, a block of columns at a time (the block's dense
+    // scratch, n x block, is bounded)
+    const int block = std::clamp(static_cast<int>(kScratchDoubles / std::max<LocalIndex>(_n, 1)), 1,
+                                 kCorrectionBlock);
+    const auto available = available_memory_bytes();
+    if (cols > 0 && available &&
+        2.0 * sizeof(double) * static_cast<double>(_n) * std::min(block, cols) >
+            static_cast<double>(*available))
+      return false;
+    const double sign = add ? 1.0 : -1.0;
+    std::vector<LocalIndex> rows;
     std::vector<double> vals;
-    std::vector<std::pair<int, double>> col;
-    for (int j = 0; j < W.n_cols(); ++j) {
-      col.clear();
-      for (LocalIndex k = W.ptr[j]; k < W.ptr[j + 1]; ++k)
-        col.emplace_back(_inverse_perm[W.row[k]], W.val[k]);
-      std::sort(col.begin(), col.end());
-      for (const auto& [r, v] : col) {
-        rows.push_back(r);
-        vals.push_back(v);
+    std::vector<LowRankCorrection::Column> fresh;
+    std::vector<int> index; // column of W of each fresh column
+    for (int j = 0; j < cols; ++j) {
+      if (!scale.empty()) scale[j] = 1.0;
+      permuted_column(W, j, rows, vals);
+      if (_correction.cancel(rows, vals, sign)) continue;
+      index.push_back(j);
+      LowRankCorrection::Column c;
+      c.u_row = rows;
+      c.u_val = vals;
+      c.sign = sign;
+      fresh.push_back(std::move(c));
+    }
+    const int k = static_cast<int>(fresh.size());
+    if (!_forward) _forward = std::make_unique<SparseForwardSolver>(*_L);
+    std::vector<SparseForwardSolver::Column> in, out;
+    for (int j0 = 0; j0 < k; j0 += block) {
+      const int nb = std::min(block, k - j0);
+      in.resize(static_cast<std::size_t>(nb));
+      for (int j = 0; j < nb; ++j) {
+        in[j].rows = fresh[j0 + j].u_row;
+        in[j].vals = fresh[j0 + j].u_val;
+      }
+      _forward->solve(in, out);
+      for (int j = 0; j < nb; ++j) {
+        auto& c = fresh[j0 + j];
+        c.y_row = std::move(out[j].rows);
+        c.y_val = std::move(out[j].vals);
+        double gain = 0.0;
+        for (double v : c.y_val) gain += v * v;
+        if (add && !scale.empty() && gain > kMaxSpringGain) {
+          const double f = std::sqrt(kMaxSpringGain / gain);
+          for (double& v : c.u_val) v *= f;
+          for (double& v : c.y_val) v *= f;
+          scale[index[j0 + j]] = f;
+        }
+        _correction.add(std::move(c));
       }
     }
-    cholmod_sparse C{};
-    C.nrow = static_cast<std::size_t>(_n);
-    C.ncol = static_cast<std::size_t>(W.n_cols());
-    C.nzmax = rows.size();
-    C.p = p.data();
-    C.i = rows.data();
-    C.x = vals.data();
-    C.stype = 0;
-    C.itype = CHOLMOD_INT;
-    C.xtype = CHOLMOD_REAL;
-    C.dtype = CHOLMOD_DOUBLE;
-    C.sorted = true;
-    C.packed = true;
-    // (a supernodal factor is converted to simplicial LDL^T, which the next factorize() undoes)
-    const int ok = cholmod_updown(add ? 1 : 0, &C, _L, &_c);
-    if (_c.status < CHOLMOD_OK) throw AnalysisError(failure("factor update"));
-    if (!ok || _c.status == CHOLMOD_NOT_POSDEF || _L->minor < static_cast<std::size_t>(_n))
-      throw SingularSystem("the modified matrix is not positive definite", {});
-    if (!add) check_downdate();
+    _correction.factorize(); // throws SingularSystem: the caller factorises afresh
     return true;
-  }
-
-  /// A downdate that removes the only support of a mode leaves a pivot at round-off (CHOLMOD
-  /// does not notice a zero that is not negative): the simplicial LDL^T diagonal is checked.
-  void check_downdate() const {
-    const auto* Lp = static_cast<const int*>(_L->p);
-    const auto* Lx = static_cast<const double*>(_L->x);
-    double dmax = 0.0;
-    for (LocalIndex j = 0; j < _n; ++j) dmax = std::max(dmax, std::abs(Lx[Lp[j]]));
-    for (LocalIndex j = 0; j < _n; ++j)
-      if (!(Lx[Lp[j]] > kPivotRatio * dmax))
-        throw SingularSystem("the modified matrix is not positive definite", {});
   }
 
   void factorize(const CsrMatrix& M) override {
     FE_CHECK(_L && M.n() == _n, "factorize before analyze");
-    if (!_L->is_super) { // modified since: back to the supernodal analysis
-      cholmod_free_factor(&_L, &_c);
-      _L = cholmod_copy_factor(_Lsym, &_c);
-    }
+    _correction.reset(_n);
+    _forward.reset();
     cholmod_sparse A = view(M.pattern(), M.values().data());
     const int ok = cholmod_factorize(&A, _L, &_c);
     if (_c.status < CHOLMOD_OK) throw AnalysisError(failure("Cholesky factorisation"));
@@ -129,19 +141,28 @@ class CholmodSolver final : public LinearSolver {
 
   void solve_many(std::span<const double> b, std::span<double> x, int k) override {
     FE_CHECK(_L, "solve before factorize");
-    cholmod_dense B{};
-    B.nrow = static_cast<std::size_t>(_n);
-    B.ncol = static_cast<std::size_t>(k);
-    B.nzmax = B.nrow * B.ncol;
-    B.d = B.nrow;
-    B.x = const_cast<double*>(b.data());
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense* X = nullptr;
-    if (!cholmod_solve2(CHOLMOD_A, _L, &B, nullptr, &X, nullptr, &_Y, &_E, &_c) || !X)
-      throw AnalysisError(failure("solve"));
-    std::memcpy(x.data(), X->x, sizeof(double) * B.nzmax);
-    cholmod_free_dense(&X, &_c);
+    const auto n = static_cast<std::size_t>(_n);
+    if (_correction.empty()) {
+      cholmod_dense* X = solve_system(CHOLMOD_A, b.data(), k);
+      std::memcpy(x.data(), X->x, sizeof(double) * n * k);
+      cholmod_free_dense(&X, &_c);
+      return;
+    }
+    // x = P^T L^-T (I + Y S Y^T)^-1 L^-1 P b
+    const auto* perm = static_cast<const int*>(_L->Perm);
+    _work.resize(n * k);
+    for (int c = 0; c < k; ++c)
+      for (std::size_t r = 0; r < n; ++r)
+        _work[c * n + r] = b[c * n + (perm ? static_cast<std::size_t>(perm[r]) : r)];
+    cholmod_dense* Y = solve_system(CHOLMOD_L, _work.data(), k);
+    _correction.apply({static_cast<double*>(Y->x), n * k}, k);
+    cholmod_dense* Z = solve_system(CHOLMOD_Lt, static_cast<const double*>(Y->x), k);
+    const auto* z = static_cast<const double*>(Z->x);
+    for (int c = 0; c < k; ++c)
+      for (std::size_t r = 0; r < n; ++r)
+        x[c * n + (perm ? static_cast<std::size_t>(perm[r]) : r)] = z[c * n + r];
+    cholmod_free_dense(&Y, &_c);
+    cholmod_free_dense(&Z, &_c);
   }
 
   /// A sentence for a failed CHOLMOD call; running out of memory names the factor's size.
@@ -159,10 +180,52 @@ class CholmodSolver final : public LinearSolver {
     if (!_L) return 0;
     const double entries = _L->is_super ? static_cast<double>(_L->xsize)
                                         : std::max(static_cast<double>(_L->nzmax), _c.lnz);
-    return static_cast<std::size_t>(entries) * sizeof(double);
+    return static_cast<std::size_t>(entries) * sizeof(double) + _correction.bytes();
   }
 
  private:
+  /// Larger corrections cost more per solve than a factorisation saves: refactorise instead.
+  static constexpr int kMaxCorrectionColumns = 3000;
+  /// The stiffest an added spring may be relative to the matrix along it (w^T A^-1 w): the
+  /// augmentation's purpose (a multiplier spectrum clustered within 1%) needs no more.
+  static constexpr double kMaxSpringGain = 100.0;
+  /// Right-hand sides per forward solve when forming Y = L^-1 U, and the most doubles its
+  /// scratch may take (64 MB).
+  static constexpr int kCorrectionBlock = 64;
+  static constexpr std::size_t kScratchDoubles = std::size_t{8} << 20;
+
+  /// Column j of W in the factor's ordering (CHOLMOD factors P A P^T), rows ascending.
+  void permuted_column(const SparseColumns& W, int j, std::vector<LocalIndex>& rows,
+                       std::vector<double>& vals) const {
+    std::vector<std::pair<LocalIndex, double>> col;
+    for (LocalIndex q = W.ptr[j]; q < W.ptr[j + 1]; ++q)
+      col.emplace_back(_inverse_perm[W.row[q]], W.val[q]);
+    std::sort(col.begin(), col.end());
+    rows.clear();
+    vals.clear();
+    for (const auto& [r, v] : col) {
+      rows.push_back(r);
+      vals.push_back(v);
+    }
+  }
+
+  /// CHOLMOD's solve of system `sys` for k right-hand sides (n x k, column-major); the caller
+  /// frees the result.
+  cholmod_dense* solve_system(int sys, const double* b, int k) {
+    cholmod_dense B{};
+    B.nrow = static_cast<std::size_t>(_n);
+    B.ncol = static_cast<std::size_t>(k);
+    B.nzmax = B.nrow * B.ncol;
+    B.d = B.nrow;
+    B.x = const_cast<double*>(b);
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* X = nullptr;
+    if (!cholmod_solve2(sys, _L, &B, nullptr, &X, nullptr, &_Y, &_E, &_c) || !X)
+      throw AnalysisError(failure("solve"));
+    return X;
+  }
+
   cholmod_sparse view(const SparsityPattern& p, const double* values) {
     cholmod_sparse A{};
     A.nrow = A.ncol = static_cast<std::size_t>(p.n);
@@ -208,11 +271,13 @@ class CholmodSolver final : public LinearSolver {
 
   cholmod_common _c{};
   cholmod_factor* _L = nullptr;
-  cholmod_factor* _Lsym = nullptr; ///< the symbolic analysis (supernodal)
-  std::vector<int> _inverse_perm;  ///< equation -> position in the factor's ordering
+  std::vector<int> _inverse_perm; ///< equation -> position in the factor's ordering
   cholmod_dense* _Y = nullptr;
   cholmod_dense* _E = nullptr;
   LocalIndex _n = 0;
+  LowRankCorrection _correction; ///< rank-one changes since the factorisation (modify())
+  std::unique_ptr<SparseForwardSolver> _forward; ///< for _L's structure (made on first use)
+  std::vector<double> _work;
 };
 
 } // namespace

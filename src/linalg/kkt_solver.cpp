@@ -73,8 +73,7 @@ void KktSolver::forget_factor() {
   _fR.clear();
   _fks.clear();
   _frow_of.clear();
-  _t_factor = _t_solve = _t_update_row = _t_convert = 0.0;
-  _supernodal = true;
+  _t_factor = _t_solve = _t_update_row = 0.0;
 }
 
 void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
@@ -138,20 +137,6 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
                               std::span<const double> ks, std::vector<int>& p_of,
                               std::vector<int>& gone, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
-  if (_supernodal) {
-    // The first update copies the factor into CHOLMOD's simplicial form (about twice its size
-    // while both exist): where that does not fit, factor afresh instead, for the rest of the run.
-    const auto available = available_memory_bytes();
-    if (available &&
-        2.0 * static_cast<double>(_cholmod->factor_bytes()) > static_cast<double>(*available)) {
-      log::debug("  not enough memory to update the factor ({} needed, {} available); "
-                 "refactorising from now on",
-                 memory_size_text(2.0 * static_cast<double>(_cholmod->factor_bytes())),
-                 memory_size_text(static_cast<double>(*available)));
-      _modify = false;
-      return false;
-    }
-  }
   const Stopwatch watch;
   const int m = C.n_rows();
   SparseColumns add, del;
@@ -164,6 +149,7 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
     W.ptr.push_back(static_cast<LocalIndex>(W.row.size()));
   };
   std::vector<double> weights(static_cast<std::size_t>(m)), stiffness(weights.size());
+  std::vector<int> added;
   for (int r = 0; r < m; ++r) {
     if (p_of[r] >= 0) {
       weights[r] = _fR[p_of[r]];
@@ -172,26 +158,26 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
       weights[r] = R[r];
       stiffness[r] = ks[r];
       push(add, C, r, R[r]);
+      added.push_back(r);
     }
   }
   for (int f : gone) push(del, _frows, f, _fR[f]);
+  // the backend may soften a new row's spring (its weight then is R s^2)
+  std::vector<double> scale(added.size(), 1.0);
   try {
     // updates first: the matrix stays positive definite throughout
-    if (!_cholmod->modify(true, add) || !_cholmod->modify(false, del)) return false;
+    if (!_cholmod->modify(true, add, scale) || !_cholmod->modify(false, del)) return false;
   } catch (const SingularSystem&) {
     _factored.clear(); // the factor is unusable: the caller factorises afresh
     return false;
   }
+  for (std::size_t j = 0; j < added.size(); ++j) weights[added[j]] *= scale[j] * scale[j];
   const int rows = add.n_cols() + del.n_cols();
   if (stats) stats->factor_updates += rows;
-  if (rows > 0 && _supernodal) {
-    // the first update of a factor also converts it to the simplicial form CHOLMOD updates
-    _t_convert = std::max(0.0, watch.seconds() - rows * _t_update_row);
-  } else if (rows > 0) {
+  if (rows > 0) {
     const double per_row = watch.seconds() / rows;
     _t_update_row = _t_update_row > 0 ? 0.5 * (_t_update_row + per_row) : per_row;
   }
-  _supernodal = false;
   _frows = C;
   _fR = std::move(weights);
   _fks = std::move(stiffness);
@@ -244,7 +230,6 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
     K.add_block(eqs, eqs, block);
   }
   factorize(K, symmetric, stats);
-  _supernodal = true;
   _factored = std::move(raw);
   _factored_scale = scale > 0 ? scale : 1.0;
   _factored_symmetric = symmetric;
@@ -319,8 +304,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
         // of an exact factor (about 5; an update costs a few hundredths of a factorisation per
         // row until measured) cost less than a factorisation
         stale = _t_solve > 0 &&
-                5 * _t_solve + (_supernodal ? _t_convert : 0.0) +
-                        changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
+                5 * _t_solve + changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
                     _t_factor;
       else // reuse pays when the extra multiplier iterations (measured: about 5 + one per two
            // changed rows) cost less than a factorisation

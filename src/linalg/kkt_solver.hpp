@@ -63,7 +63,7 @@ class KktSolver final : public ConstrainedSolver {
                     std::span<const double> ks, bool symmetric, RunStatistics* stats);
   void back_solve(std::span<const double> b, std::span<double> x, RunStatistics* stats);
   /// Make the factor exact for the current rows: update it with the springs of the new rows
-  /// (p_of < 0) and downdate the springs of the rows gone (CHOLMOD's rank-k update/downdate).
+  /// (p_of < 0) and remove the springs of the rows gone (LinearSolver::modify).
   /// Afterwards every row is a kept row. False (factor dropped) when the backend cannot or the
   /// result is not positive definite.
   bool modify_factor(const ConstraintBlock& C, std::span<const double> R,
@@ -91,10 +91,7 @@ class KktSolver final : public ConstrainedSolver {
   std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
   double _t_update_row = 0.0; ///< measured seconds per row added to or removed from the factor
-  double _t_convert = 0.0;    ///< measured seconds of the first update (to the simplicial form)
-  bool _supernodal = true;    ///< the factor has not been updated since it was made
-  bool _modify =
-      true; ///< update/downdate the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
+  bool _modify = true;        ///< modify the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
 };
 
 } // namespace gapfem

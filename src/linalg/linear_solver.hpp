@@ -53,11 +53,16 @@ class LinearSolver {
   /// Solve for several right-hand sides at once (column-major n x k); default loops.
   virtual void solve_many(std::span<const double> b, std::span<double> x, int k);
   /// Rank-k modification of the current factor: A := A + W W^T (add) or A - W W^T. Returns false
-  /// when the backend cannot modify factors (nothing changed); throws SingularSystem when the
-  /// modified matrix is not positive definite (the factor is then unusable: factorise afresh).
-  virtual bool modify(bool add, const SparseColumns& W) {
+  /// when the backend cannot modify factors or declines to (too many changes, no memory for
+  /// them; nothing changed); throws SingularSystem when the modified matrix is not positive
+  /// definite (the factor is then unusable: factorise afresh). With `scale` (one per column, an
+  /// addition only) the backend may add s_j W_j, 0 < s_j <= 1, instead of W_j where that keeps
+  /// the modified factor accurate, and says so in scale[j] (a spring much stiffer than the
+  /// matrix along it, see CholmodSolver).
+  virtual bool modify(bool add, const SparseColumns& W, std::span<double> scale = {}) {
     (void)add;
     (void)W;
+    (void)scale;
     return false;
   }
   /// Bytes held by the factor (for reports).
