@@ -38,6 +38,15 @@ struct Incrementation {
   double deltmx = 0.0;      ///< transient: max temperature change per increment (0: none)
 };
 
+/// *STEP, EXTRAPOLATION: how the first guess of an increment is formed from the increments before
+/// it in the step (Abaqus/Standard's default: LINEAR, 100% of the previous increment's solution
+/// scaled by the ratio of the time increments). Theory: docs/theory/extrapolation.md.
+enum class Extrapolation : std::uint8_t {
+  Linear,    ///< u_n + (dt / dt_n) du_n
+  Parabolic, ///< the parabola through the last three converged states (linear until there are)
+  None       ///< EXTRAPOLATION=NO: each increment starts at the last converged state
+};
+
 /// *CONTROLS: Abaqus/Standard's solution controls (defaults as in Abaqus). They stay in effect in
 /// later steps until changed or reset (*CONTROLS, RESET).
 struct SolutionControls {
@@ -96,6 +105,7 @@ struct Step {
   /// *STEP, UNSYMM=NO: symmetric tangents only (friction, coupled terms): the symmetric solver
   /// throughout, at the price of more iterations
   bool symmetric_only = false;
+  Extrapolation extrapolation = Extrapolation::Linear; ///< *STEP, EXTRAPOLATION=
   Incrementation inc;
   SolutionControls controls;
   Stabilization stabilize;

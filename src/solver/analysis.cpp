@@ -378,7 +378,10 @@ void Analysis::Impl::increment_loop(StepRun& r) {
     }
     const double t0 = ctrl.step_time();
     const double dt = ctrl.next();
-    prob.begin_increment(t0, dt, ctrl.increment() + 1);
+    const auto guess =
+        r.extrapolate ? r.predictor.guess(step.extrapolation, dt) : std::span<const double>{};
+    prob.begin_increment(t0, dt, ctrl.increment() + 1, guess);
+    if (!guess.empty()) log::debug("  first guess extrapolated from the last increments");
     NewtonResult res;
     // A failure no smaller increment can cure (the linear solver out of memory, an output file
     // that cannot be written) ends the step like a convergence failure, so the result files are
@@ -448,6 +451,8 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   r.last_t0 = t_prev;
   r.last_dt = dt;
   r.attempts_log.clear();
+  r.predictor.record(st.u, st.u_start, dt);
+  r.extrapolate = true;
   prob.commit();
   if (r.stab)
     prob.set_stabilization(
@@ -500,6 +505,7 @@ bool Analysis::Impl::reject_attempt(StepRun& r, const NewtonResult& res, const I
   const bool structural =
       res.singular || !res.chattering.empty() || res.cause == FailureCause::Element;
   r.attempts_log.add(info.increment, info.attempts, kind, r.last_problem, structural);
+  r.extrapolate = false;
   if (r.stab && prob.stabilization_factor() < 1e3 * r.stab_c0) // more damping for the retry
     prob.set_stabilization(unit_mass, 2.0 * prob.stabilization_factor());
   log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,

@@ -11,6 +11,7 @@
 #include "model/model.hpp"
 #include "solver/analysis.hpp"
 #include "solver/diagnostics.hpp"
+#include "solver/extrapolation.hpp"
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
 #include "solver/restart_file.hpp"
@@ -49,6 +50,10 @@ struct StepRun {
   /// The last converged increment [t0, t0 + dt]: a resumed step starts at that state.
   double last_t0 = 0.0, last_dt = 0.0;
   bool ended_at_restart = false; ///< *RESTART, READ, END STEP: the step ends where it resumed
+  /// The first guess of each increment (*STEP, EXTRAPOLATION); an attempt after a failed one
+  /// starts from the last converged state instead (the guess may have been what failed).
+  IncrementPredictor predictor;
+  bool extrapolate = true;
 };
 
 /// A restart record being resumed: its payload and the reader positioned in it.

@@ -11,7 +11,7 @@
 namespace gapfem {
 namespace {
 
-constexpr std::uint32_t kPayloadVersion = 1;
+constexpr std::uint32_t kPayloadVersion = 2;
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -204,6 +204,7 @@ void Analysis::Impl::restore_step(StepRun& r) {
   in.pod(r.stab_c0);
   in.pod(r.last_t0);
   in.pod(r.last_dt);
+  r.predictor.restore(in, st.u.size());
   if (r.stab) r.prob->set_stabilization(unit_mass, factor);
   // the state after the record's increment (its loads, temperatures and interference)
   r.prob->begin_increment(r.last_t0, r.last_dt);
@@ -281,6 +282,7 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.pod(r.stab_c0);
   a.pod(r.last_t0);
   a.pod(r.last_dt);
+  r.predictor.save(a);
 
   RestartRecordInfo info;
   info.step = r.step->number;

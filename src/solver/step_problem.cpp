@@ -18,12 +18,16 @@ void StepProblem::set_unsymmetric_loads(bool on) {
   _unsymmetric_loads = on;
 }
 
-void StepProblem::begin_increment(double t0, double dt, int increment) {
+void StepProblem::begin_increment(double t0, double dt, int increment,
+                                  std::span<const double> guess) {
   _ctx.increment = increment;
   _ctx.dt = dt;
   _ctx.step_time = t0 + dt;
   _ctx.total_time = _s.total_time + t0 + dt;
   std::copy(_s.u_start.begin(), _s.u_start.end(), _s.u.begin());
+  FE_CHECK(guess.empty() || guess.size() == _s.u.size(), "guessed increment of the wrong size");
+  if (!guess.empty()) // prescribed slots take their values below
+    for (std::size_t k = 0; k < guess.size(); ++k) _s.u[k] += guess[k];
   _disc.reset_trial();
   _loads.apply_prescribed(_ctx.step_time, _s.u);
   _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());

@@ -35,9 +35,10 @@ class StepProblem final : public NonlinearProblem {
   StepProblem(const StepProblem&) = delete; // _Kin points into _K
   StepProblem& operator=(const StepProblem&) = delete;
 
-  /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed, prescribed
+  /// Start an attempt of the increment [t0, t0 + dt] (step time): trial := committed plus the
+  /// guessed increment `guess` (per slot, may be empty: solver/extrapolation.hpp), prescribed
   /// values, temperatures and interference at t0 + dt.
-  void begin_increment(double t0, double dt, int increment = 0);
+  void begin_increment(double t0, double dt, int increment = 0, std::span<const double> guess = {});
   /// Accept the trial state (and add the increment's energies to ALLIE and ALLSD).
   void commit();
   /// Keep the unsymmetric stiffness of follower loads (*STEP, UNSYMM=YES).

@@ -133,6 +133,8 @@ void handle_step(BuildState& s, const Keyword& kw) {
     st.unsymmetric = yes_no_param(kw, "UNSYMM", false);
     st.symmetric_only = !st.unsymmetric;
   }
+  st.extrapolation =
+      static_cast<Extrapolation>(enum_param(kw, "EXTRAPOLATION", {"LINEAR", "PARABOLIC", "NO"}, 0));
   if (auto inc = int_param(kw, "INC")) {
     if (*inc < 1)
       throw InputError(kw.loc, "INC", "the maximum number of increments must be at least 1");

@@ -91,7 +91,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   // model or history
   {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED"},
   // history: steps and procedures
-  {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION"},
+  {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION|EXTRAPOLATION"},
   {"*END STEP", handle_end_step, W::Both, ""},
   {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE"},
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},

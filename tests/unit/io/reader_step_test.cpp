@@ -14,15 +14,18 @@ std::string with(std::string_view history) {
 }
 
 TEST(ReaderStep, StepParametersAndStatic) {
-  const Model m = read(with(R"(*STEP, NAME=Load it, NLGEOM, INC=50, UNSYMM=YES
+  const Model m = read(with(R"(*STEP, NAME=Load it, NLGEOM, INC=50, UNSYMM=YES, extrapolation=NO
 *STATIC, DIRECT
 0.1, 2., 1.E-5, 0.5
 *END STEP
-*STEP, NLGEOM=NO, AMPLITUDE=STEP
+*STEP, NLGEOM=NO, AMPLITUDE=STEP, EXTRAPOLATION=PARABOLIC
+*STATIC
+*END STEP
+*STEP
 *STATIC
 *END STEP
 )"));
-  ASSERT_EQ(m.steps.size(), 2u);
+  ASSERT_EQ(m.steps.size(), 3u);
   const Step& s1 = m.steps[0];
   EXPECT_EQ(s1.number, 1);
   EXPECT_EQ(s1.name, "Load it");
@@ -36,6 +39,9 @@ TEST(ReaderStep, StepParametersAndStatic) {
   EXPECT_EQ(s1.inc.maximum, 0.5);
   EXPECT_TRUE(s1.ramp_default);
   EXPECT_EQ(s1.loc.str(), "deck.inp:11 (*STEP)");
+  EXPECT_EQ(s1.extrapolation, Extrapolation::None);
+  EXPECT_EQ(m.steps[1].extrapolation, Extrapolation::Parabolic);
+  EXPECT_EQ(m.steps[2].extrapolation, Extrapolation::Linear); // Abaqus's default, every step
   const Step& s2 = m.steps[1];
   EXPECT_EQ(s2.name, "Step-2");
   EXPECT_TRUE(s2.nlgeom); // once on, NLGEOM stays on (Abaqus): NO after YES is a warning
@@ -122,6 +128,9 @@ TEST(ReaderStep, StructureErrors) {
   EXPECT_CONTAINS(error_text(with("*STEP, INC=0\n*STATIC\n*END STEP\n")), "at least 1");
   EXPECT_CONTAINS(error_text(with("*STEP, NLGEOM=MAYBE\n*STATIC\n*END STEP\n")),
                   "NLGEOM=MAYBE: write YES or NO");
+  EXPECT_CONTAINS(error_text(with("*STEP, EXTRAPOLATION=CUBIC\n*STATIC\n*END STEP\n")),
+                  "EXTRAPOLATION=CUBIC: this value is not supported by gapfem; use one of: LINEAR, "
+                  "PARABOLIC, NO");
 }
 
 TEST(ReaderStep, ModelAndHistoryDataMustNotMix) {
