@@ -99,6 +99,7 @@ class CholmodSolver final : public LinearSolver {
         in[j].vals = fresh[j0 + j].u_val;
       }
       _forward->solve(in, out);
+      std::vector<LowRankCorrection::Column> batch;
       for (int j = 0; j < nb; ++j) {
         auto& c = fresh[j0 + j];
         c.y_row = std::move(out[j].rows);
@@ -111,8 +112,9 @@ class CholmodSolver final : public LinearSolver {
           for (double& v : c.y_val) v *= f;
           scale[index[j0 + j]] = f;
         }
-        _correction.add(std::move(c));
+        batch.push_back(std::move(c));
       }
+      _correction.add(std::move(batch));
     }
     _correction.factorize(); // throws SingularSystem: the caller factorises afresh
     return true;

@@ -16,7 +16,9 @@ LocalIndex SparsityPattern::find(LocalIndex row, LocalIndex column) const {
   return (it != end && *it == column) ? static_cast<LocalIndex>(it - col.data()) : -1;
 }
 
-void CsrMatrix::set_zero() { std::fill(_values.begin(), _values.end(), 0.0); }
+void CsrMatrix::set_zero() {
+  std::fill(_values.begin(), _values.end(), 0.0);
+}
 
 namespace {
 /// Adds a dense block into rows of a CSR matrix. For each local row, local columns are visited in
@@ -101,8 +103,8 @@ double CsrMatrix::asymmetry() const {
   return amax > 0 ? dmax / amax : 0.0;
 }
 
-std::shared_ptr<SparsityPattern> build_pattern(LocalIndex n,
-                                               std::span<const std::span<const LocalIndex>> elements) {
+std::shared_ptr<SparsityPattern>
+build_pattern(LocalIndex n, std::span<const std::span<const LocalIndex>> elements) {
   // Count-then-fill with per-row dedup: first collect (row, col) pairs row by row through a
   // row-wise adjacency built in two passes, then sort/unique each row.
   std::vector<std::int64_t> count(static_cast<std::size_t>(n) + 1, 0);
@@ -136,8 +138,9 @@ std::shared_ptr<SparsityPattern> build_pattern(LocalIndex n,
     const auto* u = std::unique(b, e);
     total += (u - b);
     if (total > std::numeric_limits<LocalIndex>::max())
-      throw AnalysisError("the stiffness matrix has more than 2^31 non-zeros; the model is too large "
-                          "for this build");
+      throw AnalysisError(
+          "the stiffness matrix has more than 2^31 non-zeros; the model is too large "
+          "for this build");
     fill[r] = start[r] + (u - b);
   }
   pattern->col.reserve(static_cast<std::size_t>(total));

@@ -21,7 +21,7 @@ struct SparsityPattern {
 };
 
 class CsrMatrix {
-public:
+ public:
   CsrMatrix() = default;
   explicit CsrMatrix(std::shared_ptr<const SparsityPattern> pattern)
       : _pattern(std::move(pattern)), _values(_pattern->nnz(), 0.0) {}
@@ -45,14 +45,14 @@ public:
   /// max |A - A^T| / max |A| (0 for symmetric)
   double asymmetry() const;
 
-private:
+ private:
   std::shared_ptr<const SparsityPattern> _pattern;
   std::vector<double> _values;
 };
 
 /// Build the pattern from a list of element equation lists (negative entries ignored). Each
 /// element couples all its equations. `n` is the number of equations.
-std::shared_ptr<SparsityPattern> build_pattern(LocalIndex n,
-                                               std::span<const std::span<const LocalIndex>> elements);
+std::shared_ptr<SparsityPattern>
+build_pattern(LocalIndex n, std::span<const std::span<const LocalIndex>> elements);
 
 } // namespace gapfem

@@ -34,8 +34,13 @@ class LowRankCorrection {
   /// Cancel the term that `u` with `sign` would undo (the same u to 1e-12, the opposite sign):
   /// true when there was one (it is removed), false otherwise.
   bool cancel(std::span<const LocalIndex> rows, std::span<const double> vals, double sign);
-  /// Add a term. Call factorize() after the last one.
-  void add(Column c);
+  /// Add terms. Call factorize() after the last one.
+  void add(std::vector<Column> cols);
+  void add(Column c) {
+    std::vector<Column> one;
+    one.push_back(std::move(c));
+    add(std::move(one));
+  }
   /// Factorise G. Throws SingularSystem when L L^T + U S U^T is not positive definite (its
   /// smallest eigenvalue relative to L L^T's below 1e-12): the terms are then unusable.
   void factorize();
@@ -47,8 +52,9 @@ class LowRankCorrection {
   std::size_t y_nonzeros() const { return _y_nnz; }
 
  private:
-  /// y_i^T y_j for every i, into G's column j (w: y_j scattered, dense).
-  void fill_column(int j);
+  /// G's columns k0.. (the terms just added): y_i^T y_j over the rows the new columns reach, as
+  /// dense products (BLAS), the old columns gathered onto those rows a chunk at a time.
+  void fill_columns(int k0);
 
   LocalIndex _n = 0;
   std::vector<Column> _cols;
@@ -57,7 +63,7 @@ class LowRankCorrection {
   Eigen::LLT<Eigen::MatrixXd> _Gaa;  ///< G_AA = I + Y_A^T Y_A (positive definite)
   Eigen::LLT<Eigen::MatrixXd> _T;    ///< T = -(G_RR - G_RA G_AA^-1 G_AR) (positive definite)
   Eigen::MatrixXd _GaaInvGar;        ///< G_AA^-1 G_AR
-  mutable std::vector<double> _w;    ///< dense scratch of length n
+  std::vector<int> _pos;             ///< row -> its place among the new columns' rows (-1: none)
   std::size_t _y_nnz = 0;
 };
 

@@ -1,8 +1,8 @@
 #include "linalg/sparse_forward.hpp"
 
 #include "common/error.hpp"
+#include "linalg/blas.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 
 namespace gapfem {
@@ -26,8 +26,6 @@ SparseForwardSolver::SparseForwardSolver(const cholmod_factor& L) : _L(L) {
 }
 
 void SparseForwardSolver::solve(const std::vector<Column>& rhs, std::vector<Column>& out) {
-  using Mat = Eigen::MatrixXd;
-  using Block = Eigen::Map<const Mat, 0, Eigen::OuterStride<>>;
   const auto* super = static_cast<const int*>(_L.super);
   const auto* pi = static_cast<const int*>(_L.pi);
   const auto* px = static_cast<const int*>(_L.px);
@@ -54,25 +52,29 @@ void SparseForwardSolver::solve(const std::vector<Column>& rhs, std::vector<Colu
   for (int j = 0; j < nb; ++j)
     for (std::size_t q = 0; q < rhs[j].rows.size(); ++q)
       _dense[j * n + rhs[j].rows[q]] = rhs[j].vals[q];
-  Mat X, W;
+  std::vector<double> X, W;
   for (int k : touched) {
     const int c0 = super[k], ncol = super[k + 1] - c0, nrow = pi[k + 1] - pi[k];
+    const int nbelow = nrow - ncol;
     const std::vector<int>& cols = _active[k];
-    const auto na = static_cast<Eigen::Index>(cols.size());
-    X.resize(ncol, na);
-    for (Eigen::Index c = 0; c < na; ++c)
-      for (int i = 0; i < ncol; ++i) X(i, c) = _dense[cols[c] * n + c0 + i];
-    const Block L11(x + px[k], ncol, ncol, Eigen::OuterStride<>(nrow));
-    L11.triangularView<Eigen::Lower>().solveInPlace(X);
-    for (Eigen::Index c = 0; c < na; ++c)
-      for (int i = 0; i < ncol; ++i) _dense[cols[c] * n + c0 + i] = X(i, c);
-    if (nrow > ncol) {
-      const Block L21(x + px[k] + ncol, nrow - ncol, ncol, Eigen::OuterStride<>(nrow));
-      W.noalias() = L21 * X;
+    const int na = static_cast<int>(cols.size());
+    // X = the block's rows of the columns that reach it (ncol x na), solved with L11
+    X.resize(static_cast<std::size_t>(ncol) * na);
+    for (int c = 0; c < na; ++c)
+      std::copy_n(_dense.data() + cols[c] * n + c0, ncol, X.data() + c * ncol);
+    const double one = 1.0, zero = 0.0;
+    dtrsm_("L", "L", "N", "N", &ncol, &na, &one, x + px[k], &nrow, X.data(), &ncol);
+    for (int c = 0; c < na; ++c)
+      std::copy_n(X.data() + c * ncol, ncol, _dense.data() + cols[c] * n + c0);
+    if (nbelow > 0) { // the rows below: W = L21 X, subtracted where they belong
+      W.resize(static_cast<std::size_t>(nbelow) * na);
+      dgemm_("N", "N", &nbelow, &na, &ncol, &one, x + px[k] + ncol, &nrow, X.data(), &ncol, &zero,
+             W.data(), &nbelow);
       const int* below = s + pi[k] + ncol;
-      for (Eigen::Index c = 0; c < na; ++c) {
+      for (int c = 0; c < na; ++c) {
         double* d = _dense.data() + cols[c] * n;
-        for (int i = 0; i < nrow - ncol; ++i) d[below[i]] -= W(i, c);
+        const double* wc = W.data() + c * nbelow;
+        for (int i = 0; i < nbelow; ++i) d[below[i]] -= wc[i];
       }
     }
   }

@@ -3,8 +3,8 @@
 /// Forward solves L Y = U with a CHOLMOD supernodal factor for sparse right-hand sides: a column
 /// of U with a few entries has a Y column that is non-zero only on the elimination-tree paths
 /// from its rows to the root, so only those supernodes are visited (Gilbert and Peierls's
-/// observation, by supernodes). The columns of one call are solved together, with dense
-/// (Eigen) triangular solves and products per supernode over the columns that reach it.
+/// observation, by supernodes). The columns of one call are solved together, with the BLAS's
+/// triangular solve and product per supernode over the columns that reach it.
 /// Used to form the Woodbury correction of linalg/low_rank_correction.hpp at a fraction of the
 /// cost of dense forward solves.
 #include "common/types.hpp"
