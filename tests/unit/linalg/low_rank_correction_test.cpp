@@ -119,7 +119,7 @@ TEST(CholmodModify, RandomRankOneHistoriesMatchDenseSolves) {
       const Eigen::LDLT<Eigen::MatrixXd> ref(A);
       Eigen::MatrixXd b = Eigen::MatrixXd::Random(g.n, 3);
       std::vector<double> x(3 * g.n);
-      solver->solve_many({b.data(), b.size()}, x, 3);
+      solver->solve_many({b.data(), static_cast<std::size_t>(b.size())}, x, 3);
       const Eigen::MatrixXd want = ref.solve(b);
       const Eigen::Map<const Eigen::MatrixXd> got(x.data(), g.n, 3);
       EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 1e-9 * want.cwiseAbs().maxCoeff())
