@@ -58,7 +58,8 @@ class CholmodSolver final : public LinearSolver {
   /// (linalg/low_rank_correction.hpp); a column that undoes an earlier one cancels it. The
   /// correction of a spring w w^T loses about log10(1 + w^T A^-1 w) digits; where `scale` lets
   /// it, an added spring is softened to w^T A^-1 w = kMaxSpringGain.
-  bool modify(bool add, const SparseColumns& W, std::span<double> scale) override {
+  bool modify(bool add, const SparseColumns& W, std::span<double> scale,
+              std::span<double> gain) override {
     FE_CHECK(_L && _L->xtype != CHOLMOD_PATTERN, "modify before factorize");
     // what it may take is checked first: declining leaves everything as it was
     const int cols = W.n_cols();
@@ -79,6 +80,7 @@ class CholmodSolver final : public LinearSolver {
     std::vector<int> index; // column of W of each fresh column
     for (int j = 0; j < cols; ++j) {
       if (!scale.empty()) scale[j] = 1.0;
+      if (!gain.empty()) gain[j] = 0.0;
       permuted_column(W, j, rows, vals);
       if (_correction.cancel(rows, vals, sign)) continue;
       index.push_back(j);
@@ -104,14 +106,16 @@ class CholmodSolver final : public LinearSolver {
         auto& c = fresh[j0 + j];
         c.y_row = std::move(out[j].rows);
         c.y_val = std::move(out[j].vals);
-        double gain = 0.0;
-        for (double v : c.y_val) gain += v * v;
-        if (add && !scale.empty() && gain > kMaxSpringGain) {
-          const double f = std::sqrt(kMaxSpringGain / gain);
+        double g = 0.0; // u^T (L L^T)^-1 u
+        for (double v : c.y_val) g += v * v;
+        if (add && !scale.empty() && g > kMaxSpringGain) {
+          const double f = std::sqrt(kMaxSpringGain / g);
           for (double& v : c.u_val) v *= f;
           for (double& v : c.y_val) v *= f;
           scale[index[j0 + j]] = f;
+          g = kMaxSpringGain;
         }
+        if (add && !gain.empty()) gain[index[j0 + j]] = g;
         batch.push_back(std::move(c));
       }
       _correction.add(std::move(batch));

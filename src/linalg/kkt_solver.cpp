@@ -162,16 +162,22 @@ bool KktSolver::modify_factor(const ConstraintBlock& C, std::span<const double> 
     }
   }
   for (int f : gone) push(del, _frows, f, _fR[f]);
-  // the backend may soften a new row's spring (its weight then is R s^2)
-  std::vector<double> scale(added.size(), 1.0);
+  // the backend may soften a new row's spring (its weight then is R s^2), and tells how stiff
+  // the spring is against the matrix along the row (gain = weight / the structure's stiffness)
+  std::vector<double> scale(added.size(), 1.0), gain(added.size(), 0.0);
   try {
     // updates first: the matrix stays positive definite throughout
-    if (!_cholmod->modify(true, add, scale) || !_cholmod->modify(false, del)) return false;
+    if (!_cholmod->modify(true, add, scale, gain) || !_cholmod->modify(false, del)) return false;
   } catch (const SingularSystem&) {
     _factored.clear(); // the factor is unusable: the caller factorises afresh
     return false;
   }
-  for (std::size_t j = 0; j < added.size(); ++j) weights[added[j]] *= scale[j] * scale[j];
+  for (std::size_t j = 0; j < added.size(); ++j) {
+    weights[added[j]] *= scale[j] * scale[j];
+    // the exact stiffness along the row (the preconditioner's estimate of its Schur block);
+    // the diagonal's estimate is far too stiff on a flexible structure
+    if (gain[j] > 0) stiffness[added[j]] = weights[added[j]] / gain[j];
+  }
   const int rows = add.n_cols() + del.n_cols();
   if (stats) stats->factor_updates += rows;
   if (rows > 0) {

@@ -58,11 +58,15 @@ class LinearSolver {
   /// definite (the factor is then unusable: factorise afresh). With `scale` (one per column, an
   /// addition only) the backend may add s_j W_j, 0 < s_j <= 1, instead of W_j where that keeps
   /// the modified factor accurate, and says so in scale[j] (a spring much stiffer than the
-  /// matrix along it, see CholmodSolver).
-  virtual bool modify(bool add, const SparseColumns& W, std::span<double> scale = {}) {
+  /// matrix along it, see CholmodSolver). With `gain` (an addition only) it reports
+  /// s_j^2 W_j^T A^-1 W_j, A the matrix before the column was added, where it knows it (0: not
+  /// known): how stiff the spring is against the matrix along it.
+  virtual bool modify(bool add, const SparseColumns& W, std::span<double> scale = {},
+                      std::span<double> gain = {}) {
     (void)add;
     (void)W;
     (void)scale;
+    (void)gain;
     return false;
   }
   /// Bytes held by the factor (for reports).
