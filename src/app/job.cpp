@@ -280,6 +280,7 @@ JobResult run_job(const JobOptions& given) {
   try {
     AnalysisOptions aopt;
     aopt.factor_reuse = options.factor_reuse;
+    aopt.residual_only = options.residual_only;
     aopt.solver = options.solver;
     aopt.restart_header.job = job;
     if (options.write_files) {
@@ -296,6 +297,9 @@ JobResult run_job(const JobOptions& given) {
       if (v == "always") aopt.factor_reuse = FactorReuse::Always;
       if (v == "never") aopt.factor_reuse = FactorReuse::Never;
     }
+    // GAPFEM_RESIDUAL_ONLY=0 assembles the tangent in every evaluation (docs/performance.md)
+    if (const char* env = std::getenv("GAPFEM_RESIDUAL_ONLY"))
+      aopt.residual_only = std::string(env) != "0" && std::string(env) != "off";
     Analysis analysis(*model, ptrs, aopt);
     result.run = analysis.run();
     result.exit_code = kExitOk;

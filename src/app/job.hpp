@@ -26,7 +26,9 @@ struct JobOptions {
   bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
   bool silent = false;     ///< nothing on the terminal, errors included (ranks other than 0)
   bool keep_frames = true; ///< keep every output frame in JobResult (tests)
-  FactorReuse factor_reuse = FactorReuse::Auto;  ///< --factor-reuse (docs/performance.md)
+  FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
+  /// residual-only evaluations while a factor is reused (GAPFEM_RESIDUAL_ONLY=0: off)
+  bool residual_only = true;
   SolverBackend solver = SolverBackend::Cholmod; ///< --solver (docs/parallel.md)
   /// --restart: continue this job from the last complete record of its job.res (docs/restart.md)
   bool restart = false;

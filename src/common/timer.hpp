@@ -22,27 +22,29 @@ struct RunStatistics {
   long attempts = 0;   ///< increment attempts including cut-back ones
   long iterations = 0; ///< Newton iterations (= linear solves of the Newton system)
   long factorizations = 0;
-  long linear_solves = 0; ///< back-substitutions with a factor
-  long factor_updates = 0; ///< constraint rows added to or removed from a factor (rank-1 each)
+  long linear_solves = 0;      ///< back-substitutions with a factor
+  long factor_updates = 0;     ///< constraint rows added to or removed from a factor (rank-1 each)
+  long evaluations = 0;        ///< assemblies of the residual (and constraints)
+  long tangent_assemblies = 0; ///< ... of which also assembled the tangent
   double& operator[](TimeCategory c) { return seconds[static_cast<int>(c)]; }
   double operator[](TimeCategory c) const { return seconds[static_cast<int>(c)]; }
 };
 
 class Stopwatch {
-public:
+ public:
   Stopwatch() : _start(std::chrono::steady_clock::now()) {}
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - _start).count();
   }
   void restart() { _start = std::chrono::steady_clock::now(); }
 
-private:
+ private:
   std::chrono::steady_clock::time_point _start;
 };
 
 /// Adds the lifetime of the scope to one category of a RunStatistics (if given).
 class ScopedTimer {
-public:
+ public:
   ScopedTimer(RunStatistics* stats, TimeCategory cat) : _stats(stats), _cat(cat) {}
   ~ScopedTimer() {
     if (_stats) (*_stats)[_cat] += _watch.seconds();
@@ -50,7 +52,7 @@ public:
   ScopedTimer(const ScopedTimer&) = delete;
   ScopedTimer& operator=(const ScopedTimer&) = delete;
 
-private:
+ private:
   RunStatistics* _stats;
   TimeCategory _cat;
   Stopwatch _watch;

@@ -101,7 +101,11 @@ struct ElementOutput {
   std::span<double> constraint_column;
   bool has_columns = false;
 
-  int status_changes = 0;   ///< contact status flips decided in this evaluation
+  int status_changes = 0; ///< contact status flips decided in this evaluation
+  /// a status change in this evaluation altered the tangent itself, not only the constraint rows
+  /// (a penalty or augmented gap in the matrix opened or closed, a gap started or stopped
+  /// slipping): a solver reusing an older factor must see the new matrix
+  bool stiffness_changed = false;
   bool unsymmetric = false; ///< tangent is not symmetric (friction slip, coupled terms)
   bool friction = false;    ///< a closed gap with friction: its stick/slip path is sensitive
   /// The ratio of a new to the current time increment the element asks for (a UEL's PNEWDT):

@@ -125,6 +125,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           K->add(multi ? t : 0, eqs, eqs, out.tangent);
         }
         res.unsymmetric |= out.unsymmetric;
+        res.stiffness_changed |= out.stiffness_changed;
         res.friction |= out.friction;
         res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
         if (out.status_changes) {
@@ -181,6 +182,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
     total.unsymmetric |= p.unsymmetric;
+    total.stiffness_changed |= p.stiffness_changed;
     total.friction |= p.friction;
     total.dt_ratio = std::min(total.dt_ratio, p.dt_ratio);
     for (int f = 0; f < kNumFields; ++f) {

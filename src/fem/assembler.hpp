@@ -15,6 +15,7 @@ namespace gapfem {
 
 struct AssemblyResult {
   int status_changes = 0;
+  bool stiffness_changed = false; ///< ElementOutput::stiffness_changed of some element
   bool unsymmetric = false;
   bool friction = false; ///< some element has a closed gap with friction (ElementOutput::friction)
   std::array<double, kNumFields> flux_sum{}; ///< sum of |element residual entries| per field

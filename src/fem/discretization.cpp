@@ -156,6 +156,31 @@ void Discretization::commit() {
   _constraints.mult_committed = _constraints.mult_trial;
 }
 
+void Discretization::save_trial(std::vector<double>& out) const {
+  out.clear();
+  for (const auto& b : _blocks) {
+    out.insert(out.end(), b.state_trial.begin(), b.state_trial.end());
+    out.insert(out.end(), b.mult_trial.begin(), b.mult_trial.end());
+  }
+  out.insert(out.end(), _constraints.mult_trial.begin(), _constraints.mult_trial.end());
+}
+
+void Discretization::restore_trial(std::span<const double> saved) {
+  auto it = saved.begin();
+  auto take = [&](std::vector<double>& v) {
+    FE_CHECK(saved.end() - it >= static_cast<std::ptrdiff_t>(v.size()),
+             "saved trial state does not match the model");
+    std::copy(it, it + static_cast<std::ptrdiff_t>(v.size()), v.begin());
+    it += static_cast<std::ptrdiff_t>(v.size());
+  };
+  for (auto& b : _blocks) {
+    take(b.state_trial);
+    take(b.mult_trial);
+  }
+  take(_constraints.mult_trial);
+  FE_CHECK(it == saved.end(), "saved trial state does not match the model");
+}
+
 double& Discretization::multiplier_trial(std::int64_t index) {
   if (index >= _n_mult) {
     FE_CHECK(index - _n_mult < _constraints.n_rows(), "multiplier index out of range");

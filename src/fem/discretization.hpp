@@ -70,6 +70,10 @@ class Discretization {
   void reset_trial();
   /// Committed := trial (increment accepted).
   void commit();
+  /// Copy of every trial history and multiplier, so that an evaluation can be repeated with the
+  /// history it saw (StepProblem::assemble_tangent).
+  void save_trial(std::vector<double>& out) const;
+  void restore_trial(std::span<const double> saved);
   /// Multiplier value by global index (trial).
   double& multiplier_trial(std::int64_t index);
 

@@ -66,13 +66,8 @@ class CholmodSolver final : public LinearSolver {
     if (_correction.size() + cols > kMaxCorrectionColumns) return false;
     // Y = L^-1 U by sparse forward solves, a block of columns at a time (the block's dense
     // scratch, n x block, is bounded)
-    const int block = std::clamp(static_cast<int>(kScratchDoubles / std::max<LocalIndex>(_n, 1)), 1,
-                                 kCorrectionBlock);
-    const auto available = available_memory_bytes();
-    if (cols > 0 && available &&
-        2.0 * sizeof(double) * static_cast<double>(_n) * std::min(block, cols) >
-            static_cast<double>(*available))
-      return false;
+    const int block = correction_block();
+    if (!scratch_fits(std::min(block, cols))) return false;
     const double sign = add ? 1.0 : -1.0;
     std::vector<LocalIndex> rows;
     std::vector<double> vals;
@@ -171,6 +166,51 @@ class CholmodSolver final : public LinearSolver {
     cholmod_free_dense(&Z, &_c);
   }
 
+  bool has_split_solves() const override { return _L && _L->is_super && _correction.empty(); }
+
+  void forward(std::span<const double> b, std::span<double> t) override {
+    FE_CHECK(has_split_solves(), "split solves need an unmodified supernodal factor");
+    const auto n = static_cast<std::size_t>(_n);
+    const auto* perm = static_cast<const int*>(_L->Perm);
+    _work.resize(n);
+    for (std::size_t r = 0; r < n; ++r) _work[r] = b[perm ? static_cast<std::size_t>(perm[r]) : r];
+    cholmod_dense* Y = solve_system(CHOLMOD_L, _work.data(), 1);
+    std::memcpy(t.data(), Y->x, sizeof(double) * n);
+    cholmod_free_dense(&Y, &_c);
+  }
+
+  void backward(std::span<const double> t, std::span<double> x) override {
+    FE_CHECK(has_split_solves(), "split solves need an unmodified supernodal factor");
+    const auto n = static_cast<std::size_t>(_n);
+    const auto* perm = static_cast<const int*>(_L->Perm);
+    cholmod_dense* Z = solve_system(CHOLMOD_Lt, t.data(), 1);
+    const auto* z = static_cast<const double*>(Z->x);
+    for (std::size_t r = 0; r < n; ++r) x[perm ? static_cast<std::size_t>(perm[r]) : r] = z[r];
+    cholmod_free_dense(&Z, &_c);
+  }
+
+  bool forward_sparse(const SparseColumns& W, SparseColumns& Z) override {
+    FE_CHECK(has_split_solves(), "split solves need an unmodified supernodal factor");
+    const int cols = W.n_cols();
+    const int block = correction_block();
+    if (!scratch_fits(std::min(block, cols))) return false;
+    if (!_forward) _forward = std::make_unique<SparseForwardSolver>(*_L);
+    Z = SparseColumns{};
+    std::vector<SparseForwardSolver::Column> in, out;
+    for (int j0 = 0; j0 < cols; j0 += block) {
+      const int nb = std::min(block, cols - j0);
+      in.resize(static_cast<std::size_t>(nb));
+      for (int j = 0; j < nb; ++j) permuted_column(W, j0 + j, in[j].rows, in[j].vals);
+      _forward->solve(in, out);
+      for (int j = 0; j < nb; ++j) {
+        Z.row.insert(Z.row.end(), out[j].rows.begin(), out[j].rows.end());
+        Z.val.insert(Z.val.end(), out[j].vals.begin(), out[j].vals.end());
+        Z.ptr.push_back(static_cast<LocalIndex>(Z.row.size()));
+      }
+    }
+    return true;
+  }
+
   /// A sentence for a failed CHOLMOD call; running out of memory names the factor's size.
   std::string failure(std::string_view what) const {
     if (_c.status == CHOLMOD_OUT_OF_MEMORY || _c.status == CHOLMOD_TOO_LARGE)
@@ -199,6 +239,18 @@ class CholmodSolver final : public LinearSolver {
   /// scratch may take (64 MB).
   static constexpr int kCorrectionBlock = 64;
   static constexpr std::size_t kScratchDoubles = std::size_t{8} << 20;
+
+  /// Columns per sparse forward solve (their dense scratch, n x block, is bounded).
+  int correction_block() const {
+    return std::clamp(static_cast<int>(kScratchDoubles / std::max<LocalIndex>(_n, 1)), 1,
+                      kCorrectionBlock);
+  }
+  /// The scratch of a forward solve of `cols` columns fits in the memory left.
+  bool scratch_fits(int cols) const {
+    const auto available = available_memory_bytes();
+    return cols <= 0 || !available ||
+           2.0 * sizeof(double) * static_cast<double>(_n) * cols <= static_cast<double>(*available);
+  }
 
   /// Column j of W in the factor's ordering (CHOLMOD factors P A P^T), rows ascending.
   void permuted_column(const SparseColumns& W, int j, std::vector<LocalIndex>& rows,
@@ -290,6 +342,16 @@ class CholmodSolver final : public LinearSolver {
 
 std::unique_ptr<LinearSolver> make_cholmod_solver() {
   return std::make_unique<CholmodSolver>();
+}
+
+void LinearSolver::forward(std::span<const double>, std::span<double>) {
+  FE_CHECK(false, "this solver has no split solves");
+}
+void LinearSolver::backward(std::span<const double>, std::span<double>) {
+  FE_CHECK(false, "this solver has no split solves");
+}
+bool LinearSolver::forward_sparse(const SparseColumns&, SparseColumns&) {
+  return false;
 }
 
 void LinearSolver::solve_many(std::span<const double> b, std::span<double> x, int k) {

@@ -34,6 +34,12 @@ struct KktOptions {
   /// An iterative backend may stop at this relative residual (Newton's forcing term; 0: the
   /// backend's own default). Direct backends solve exactly whatever it says.
   double relative_tolerance = 0.0;
+  /// K holds the tangent of this system. When false (Newton assembled the residual alone, having
+  /// been told matrix_optional()), K's values are stale and must not be used: the backend solves
+  /// with the factor it keeps (a modified-Newton step; the constraint rows are the current ones)
+  /// or, where it would not (no factor, too many changes, a stalled multiplier iteration), sets
+  /// KktStatistics::needs_matrix and solves nothing.
+  bool matrix_current = true;
 };
 
 struct KktStatistics {
@@ -44,6 +50,8 @@ struct KktStatistics {
   bool stale_factor = false;  ///< ... and the factor was of a different matrix (modified Newton)
   int changed_rows = 0;       ///< constraint rows that differ from the factored ones
   double constraint_residual = 0.0;
+  /// Nothing was solved: the system needs the current tangent (KktOptions::matrix_current).
+  bool needs_matrix = false;
 };
 
 /// The available backends (the CLI's `--solver`).
@@ -79,6 +87,10 @@ class ConstrainedSolver {
   virtual void set_near_null_space(NearNullSpace modes) { (void)modes; }
   /// Drop any factor: the next solve starts afresh, exactly as a new solver would (restart points).
   virtual void forget_factor() = 0;
+  /// True when the next solve can most likely do without the tangent's values (a kept factor of
+  /// a stiffness that has barely drifted): Newton then assembles the residual alone and solves
+  /// with KktOptions::matrix_current = false.
+  virtual bool matrix_optional() const { return false; }
   /// Solve the system above; K may be modified in place. du has one entry per equation, dl one
   /// per constraint row. Throws SingularSystem when K (with the constraints) is singular, and
   /// AnalysisError when the factor cannot fit in memory.

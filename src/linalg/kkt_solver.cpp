@@ -22,6 +22,8 @@ double norm_inf(std::span<const double> v) {
 /// A compliant row's spring in the factor must stay softer than the row itself (R E < 1, see
 /// solve()); half of it keeps the Schur system well away from that limit.
 constexpr double kCompliantSpringShare = 0.5;
+/// Below this factorisation time the measured costs are noise: no reuse.
+constexpr double kMinReusedFactorSeconds = 2e-3;
 bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb) {
   const LocalIndex a0 = a.row_ptr[ra], a1 = a.row_ptr[ra + 1];
   const LocalIndex b0 = b.row_ptr[rb], b1 = b.row_ptr[rb + 1];
@@ -32,22 +34,24 @@ bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb
 }
 } // namespace
 
-void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double augmentation,
-                          std::vector<double>& R, std::vector<double>& ks) {
-  const LocalIndex n = K.n();
+namespace {
+/// augmentation_weights() from |diag K| given by diag(i), i < n
+template <class Diagonal>
+void weights_from_diagonal(LocalIndex n, Diagonal diag, const ConstraintBlock& C,
+                           double augmentation, std::vector<double>& R, std::vector<double>& ks) {
   const int m = C.n_rows();
   R.assign(static_cast<std::size_t>(m), 0.0);
   ks.assign(R.size(), 0.0);
   if (m == 0) return;
   double mean_diag = 0.0;
-  for (LocalIndex i = 0; i < n; ++i) mean_diag += std::abs(K.diagonal(i));
+  for (LocalIndex i = 0; i < n; ++i) mean_diag += diag(i);
   mean_diag = n > 0 ? mean_diag / n : 1.0;
   if (!(mean_diag > 0)) mean_diag = 1.0;
   for (int r = 0; r < m; ++r) {
     double num = 0.0, den = 0.0;
     for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) {
       const double c2 = C.val[k] * C.val[k];
-      num += c2 * std::abs(K.diagonal(C.col[k]));
+      num += c2 * diag(C.col[k]);
       den += c2;
     }
     double stiff = den > 0 ? num / den : 0.0;
@@ -58,10 +62,19 @@ void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double a
     if (E > 0) R[r] = std::min(R[r], kCompliantSpringShare / E);
   }
 }
+} // namespace
+
+void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double augmentation,
+                          std::vector<double>& R, std::vector<double>& ks) {
+  weights_from_diagonal(
+      K.n(), [&](LocalIndex i) { return std::abs(K.diagonal(i)); }, C, augmentation, R, ks);
+}
 
 KktSolver::KktSolver() {
   if (const char* env = std::getenv("GAPFEM_FACTOR_UPDATES"))
     _modify = std::string_view(env) != "0" && std::string_view(env) != "off";
+  if (const char* env = std::getenv("GAPFEM_DENSE_MULTIPLIERS"))
+    _dense = std::string_view(env) != "0" && std::string_view(env) != "off";
 }
 KktSolver::~KktSolver() = default;
 
@@ -237,12 +250,97 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
   }
   factorize(K, symmetric, stats);
   _factored = std::move(raw);
+  _mcols.reset(_active == _cholmod.get() ? K.n() : 0);
+  _dense_failed = false;
+  _drift = 0.0;
+  _drift_step = std::numeric_limits<double>::infinity();
+  _last_changes = 0;
   _factored_scale = scale > 0 ? scale : 1.0;
   _factored_symmetric = symmetric;
   _frows = C;
   _fR.assign(R.begin(), R.end());
   _fks.assign(ks.begin(), ks.end());
   for (int r = 0; r < C.n_rows(); ++r) _frow_of[C.multiplier[r]] = r;
+}
+
+KktSolver::Plan KktSolver::compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric,
+                                   const KktOptions& opt, std::vector<int>& p_of,
+                                   std::vector<int>& gone) {
+  Plan plan;
+  const int m = C.n_rows();
+  const auto vals = K.values();
+  const bool comparable = _active && !_factored.empty() && symmetric == _factored_symmetric &&
+                          _factored.size() == vals.size();
+  if (!comparable) return plan;
+  std::vector<char> used(static_cast<std::size_t>(_frows.n_rows()), 0);
+  for (int r = 0; r < m; ++r) {
+    const auto it = _frow_of.find(C.multiplier[r]);
+    // a compliant row whose spring in the factor is no longer softer than the row (it got
+    // stiffer since) is replaced like a changed row
+    if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second) &&
+        _fR[it->second] * C.row_compliance(r) <= 0.9) {
+      p_of[r] = it->second;
+      used[it->second] = 1;
+    } else {
+      ++plan.changes;
+    }
+  }
+  for (int f = 0; f < _frows.n_rows(); ++f)
+    if (!used[f]) gone.push_back(f);
+  plan.changes += static_cast<int>(gone.size());
+  _last_changes = plan.changes;
+  // drift entry by entry relative to the diagonals of its row and column: a change that is
+  // small against the stiffest DOF of the model can still be large where it happens (a
+  // friction gap going from slip to a stiff stick in a model with stiffer gaps elsewhere).
+  // Without the current matrix, the drift is the one last measured.
+  double drift = _drift;
+  if (opt.matrix_current) {
+    const double before = _drift;
+    drift = 0.0;
+    const SparsityPattern& pat = K.pattern();
+    for (LocalIndex i = 0; i < pat.n; ++i)
+      for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k) {
+        const double change = std::abs(vals[k] - _factored[k]);
+        if (change != 0.0)
+          drift =
+              std::max(drift, change / std::sqrt(_factored_diag[i] * _factored_diag[pat.col[k]]));
+      }
+    _drift_step = std::max(drift - before, 0.0);
+    _drift = drift;
+    _max_drift = opt.max_drift;
+  }
+  log::debug(
+      "  system: drift {:.2e}{}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
+      drift, opt.matrix_current ? "" : " (last measured)", plan.changes, _t_factor, _t_solve);
+  // the same matrix (a linear model, an unchanged contact set): the step factorises once
+  plan.exact_same = opt.matrix_current && drift == 0.0 && plan.changes == 0;
+  if (!plan.exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
+      drift <= opt.max_drift)
+    plan.stale = opt.reuse == FactorReuse::Always || reuse_pays(plan.changes);
+  return plan;
+}
+
+bool KktSolver::reuse_pays(int changes) const {
+  // a factorisation this cheap costs no more than the timer's noise: factorising every system
+  // (full Newton) keeps small models' answers independent of the machine's timing
+  if (!(_t_solve > 0) || _t_factor < kMinReusedFactorSeconds) return false;
+  if (_modify && _active == _cholmod.get())
+    // reuse pays when updating the factor for the changed rows and the multiplier iterations of
+    // an exact factor (about 5; an update costs a few hundredths of a factorisation per row
+    // until measured) cost less than a factorisation
+    return 5 * _t_solve + changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
+           _t_factor;
+  // reuse pays when the extra multiplier iterations (measured: about 5 + one per two changed
+  // rows) cost less than a factorisation
+  return (0.5 * changes + 5) * _t_solve < _t_factor;
+}
+
+bool KktSolver::matrix_optional() const {
+  // the drift grows by less per iteration as Newton converges: twice the last growth bounds it
+  // (unknown right after a factorisation: the next system brings its matrix)
+  return _active && !_factored.empty() && _reuse != FactorReuse::Never &&
+         _drift + 2.0 * _drift_step <= _max_drift &&
+         (_reuse == FactorReuse::Always || reuse_pays(_last_changes));
 }
 
 KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
@@ -253,70 +351,32 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
   _solves = 0;
   const LocalIndex n = K.n();
   const int m = C.n_rows();
+  if (opt.matrix_current) _max_drift = opt.max_drift;
+  _reuse = opt.reuse;
 
-  // Augmentation weights from the stiffness at each row's DOFs (before augmenting).
+  // Augmentation weights from the stiffness at each row's DOFs (before augmenting); without the
+  // current matrix, from the factored one's diagonal (which has drifted little).
   std::vector<double> R, ks;
-  augmentation_weights(K, C, opt.augmentation, R, ks);
+  if (opt.matrix_current)
+    augmentation_weights(K, C, opt.augmentation, R, ks);
+  else
+    weights_from_diagonal(
+        n, [&](LocalIndex i) { return _factored.empty() ? 1.0 : _factored_diag[i]; }, C,
+        opt.augmentation, R, ks);
 
   // Compare with what the current factor is of: rows kept (P), new rows (N), rows gone (O).
   std::vector<int> p_of(static_cast<std::size_t>(m), -1); // row of _frows, for P rows
   std::vector<int> gone;                                  // rows of _frows no longer present
-  const auto vals = K.values();
-  const bool comparable = _active && !_factored.empty() && symmetric == _factored_symmetric &&
-                          _factored.size() == vals.size();
-  bool exact_same = false, stale = false;
-  if (comparable) {
-    std::vector<char> used(static_cast<std::size_t>(_frows.n_rows()), 0);
-    int changes = 0;
-    for (int r = 0; r < m; ++r) {
-      const auto it = _frow_of.find(C.multiplier[r]);
-      // a compliant row whose spring in the factor is no longer softer than the row (it got
-      // stiffer since) is replaced like a changed row
-      if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second) &&
-          _fR[it->second] * C.row_compliance(r) <= 0.9) {
-        p_of[r] = it->second;
-        used[it->second] = 1;
-      } else {
-        ++changes;
-      }
-    }
-    for (int f = 0; f < _frows.n_rows(); ++f)
-      if (!used[f]) gone.push_back(f);
-    changes += static_cast<int>(gone.size());
-    // drift entry by entry relative to the diagonals of its row and column: a change that is
-    // small against the stiffest DOF of the model can still be large where it happens (a
-    // friction gap going from slip to a stiff stick in a model with stiffer gaps elsewhere)
-    double drift = 0.0;
-    const SparsityPattern& pat = K.pattern();
-    for (LocalIndex i = 0; i < pat.n; ++i)
-      for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k) {
-        const double change = std::abs(vals[k] - _factored[k]);
-        if (change != 0.0)
-          drift =
-              std::max(drift, change / std::sqrt(_factored_diag[i] * _factored_diag[pat.col[k]]));
-      }
-    out.changed_rows = changes;
-    log::debug(
-        "  system: drift {:.2e}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
-        drift, changes, _t_factor, _t_solve);
-    // the same matrix (a linear model, an unchanged contact set): the step factorises once
-    exact_same = drift == 0.0 && changes == 0;
-    if (!exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
-        drift <= opt.max_drift) {
-      if (opt.reuse == FactorReuse::Always)
-        stale = true;
-      else if (_modify && _active == _cholmod.get())
-        // reuse pays when updating the factor for the changed rows and the multiplier iterations
-        // of an exact factor (about 5; an update costs a few hundredths of a factorisation per
-        // row until measured) cost less than a factorisation
-        stale = _t_solve > 0 &&
-                5 * _t_solve + changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
-                    _t_factor;
-      else // reuse pays when the extra multiplier iterations (measured: about 5 + one per two
-           // changed rows) cost less than a factorisation
-        stale = _t_solve > 0 && (0.5 * changes + 5) * _t_solve < _t_factor;
-    }
-  }
+  const Plan plan = compare(K, C, symmetric, opt, p_of, gone);
+  out.changed_rows = plan.changes;
+  bool exact_same = plan.exact_same, stale = plan.stale;
+  // without the current matrix only the kept factor can be used
+  auto need_matrix = [&] {
+    out.needs_matrix = true;
+    log::debug("  the kept factor cannot be used: the system needs the current matrix");
+    return out;
+  };
+  if (!opt.matrix_current && !stale) return need_matrix();
 
   for (;;) {
     if (!exact_same && !stale) {
@@ -328,11 +388,17 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     out.stale_factor = stale;
     out.used_unsymmetric = _active != _cholmod.get();
 
-    // A stale symmetric factor is made exact for the current rows by updating and downdating it
-    // (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
-    if (stale && _modify && _active == _cholmod.get() &&
+    // A kept symmetric factor serves the changed rows through the dense multiplier matrix of
+    // its own rows, new rows and anti-rows (one forward and one backward solve per step), or,
+    // where that cannot be used, is made exact for the current rows by updating and downdating
+    // it (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
+    const bool dense = _dense && !_dense_failed && (stale || exact_same) && m > 0 &&
+                       _active == _cholmod.get() && !C.has_columns() &&
+                       _cholmod->has_split_solves();
+    if (stale && !dense && _modify && _active == _cholmod.get() &&
         (!gone.empty() || std::find(p_of.begin(), p_of.end(), -1) != p_of.end()) &&
         !modify_factor(C, R, ks, p_of, gone, stats)) {
+      if (!opt.matrix_current) return need_matrix();
       stale = false;
       continue;
     }
@@ -396,6 +462,14 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     // One solve of the system for the right-hand side (bb, -gg) with this factor.
     auto step = [&](std::span<const double> bb, std::span<const double> gg, std::span<double> x_u,
                     std::span<double> x_l) {
+      if (dense) {
+        if (dense_step(C, p_of, gone, d, bb, gg, x_u, x_l, stats)) {
+          SchurResult exact;
+          exact.residual = _dense_residual;
+          return exact;
+        }
+        _dense_failed = true;
+      }
       // b1 = bb - C_P^T R_F gg ;  y = M^-1 b1
       std::vector<double> b1(bb.begin(), bb.end());
       if (m > 0) {
@@ -446,6 +520,10 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       log::debug("stale factor: multiplier iteration stalled ({} iterations, residual {:.3e}); "
                  "refactorising",
                  sr.iterations, sr.residual);
+      if (!opt.matrix_current) {
+        _factored.clear(); // the solve with the current matrix factorises afresh
+        return need_matrix();
+      }
       stale = false;
       continue;
     }

@@ -25,6 +25,7 @@
 /// times.
 #include "linalg/constrained_solver.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/multiplier_columns.hpp"
 
 #include <memory>
 #include <unordered_map>
@@ -45,6 +46,10 @@ class KktSolver final : public ConstrainedSolver {
   /// factorises afresh, exactly as a new solver would. A restart point calls it, so that a
   /// restarted run repeats the uninterrupted one (docs/restart.md).
   void forget_factor() override;
+  /// A factor is kept, the stiffness's drift from it, last measured plus twice its growth over
+  /// the iteration before, stays within the reuse limit, and reusing the factor paid with as
+  /// many changed rows as the last system had.
+  bool matrix_optional() const override;
   /// Solve; K may be modified in place (augmented). du has n entries, dl one per constraint row.
   /// Throws SingularSystem when M is singular (a rigid-body mode).
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
@@ -57,6 +62,19 @@ class KktSolver final : public ConstrainedSolver {
     double residual = 0.0; ///< max |row residual|
     double ratio = 0.0;    ///< max |row residual| / its tolerance (converged: <= 1)
   };
+  /// What to do with the kept factor for a system.
+  struct Plan {
+    bool exact_same = false; ///< the factor is of this very matrix and rows
+    bool stale = false;      ///< reuse it (modified Newton)
+    int changes = 0;         ///< constraint rows that differ from the factored ones
+  };
+  /// Compare a system with what the factor is of: p_of[r] is the row of _frows that row r of C
+  /// repeats (-1: a new row), `gone` the rows of _frows no longer present.
+  Plan compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric, const KktOptions& opt,
+               std::vector<int>& p_of, std::vector<int>& gone);
+  /// Reusing the factor for a system with `changes` changed rows costs less than a factorisation
+  /// (from the measured times).
+  bool reuse_pays(int changes) const;
   void factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats);
   /// Factorise K augmented by the rows of C with weights R, remembering K and the rows.
   void fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
@@ -69,6 +87,18 @@ class KktSolver final : public ConstrainedSolver {
   bool modify_factor(const ConstraintBlock& C, std::span<const double> R,
                      std::span<const double> ks, std::vector<int>& p_of, std::vector<int>& gone,
                      RunStatistics* stats);
+  /// The columns (MultiplierColumns) of the rows of C and of the rows gone (`gone`, rows of
+  /// _frows), made where missing: idx[r] for r < m, idx[m + k] for gone[k]. False when the
+  /// backend declines.
+  bool dense_columns(const ConstraintBlock& C, std::span<const int> gone, std::vector<int>& idx,
+                     RunStatistics* stats);
+  /// The step for the right-hand side (bb, -gg) with the unmodified kept factor and the dense
+  /// multiplier matrix Z^T Z - diag(d) of the current rows and the anti-rows of the rows gone:
+  /// one forward and one backward solve. False (nothing solved) when it cannot be used: the
+  /// backend declines the columns, or the matrix is singular (redundant rows).
+  bool dense_step(const ConstraintBlock& C, std::span<const int> p_of, std::span<const int> gone,
+                  std::span<const double> d, std::span<const double> bb, std::span<const double> gg,
+                  std::span<double> x_u, std::span<double> x_l, RunStatistics* stats);
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
@@ -92,6 +122,17 @@ class KktSolver final : public ConstrainedSolver {
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
   double _t_update_row = 0.0; ///< measured seconds per row added to or removed from the factor
   bool _modify = true;        ///< modify the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
+  double _drift = 0.0;        ///< of the last system with its matrix, against the factored one
+  double _drift_step = 0.0;   ///< its growth since the measurement before (infinity: unknown)
+  double _max_drift = 1e-3;   ///< KktOptions::max_drift of that system
+  int _last_changes = 0;      ///< changed rows of the last system
+  FactorReuse _reuse = FactorReuse::Auto; ///< KktOptions::reuse of the last system
+  /// the dense multiplier path (GAPFEM_DENSE_MULTIPLIERS=0: off): the columns of the current
+  /// factor, and whether the path failed for it (the Krylov path then serves the factor)
+  bool _dense = true;
+  bool _dense_failed = false;
+  MultiplierColumns _mcols;
+  double _dense_residual = 0.0; ///< max |S w - rhs| of the last dense step
 };
 
 } // namespace gapfem

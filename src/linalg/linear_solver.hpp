@@ -69,6 +69,14 @@ class LinearSolver {
     (void)gain;
     return false;
   }
+  /// Split solves with a Cholesky factor L L^T = P A P^T (P a permutation), for backends that
+  /// have them (CHOLMOD) and whose factor carries no modification: t = L^-1 P b (forward),
+  /// x = P^T L^-T t (backward) and, for sparse columns W, Z = L^-1 P W with Z's rows in the
+  /// factor's ordering (forward_sparse; false when its scratch does not fit in memory).
+  virtual bool has_split_solves() const { return false; }
+  virtual void forward(std::span<const double> b, std::span<double> t);
+  virtual void backward(std::span<const double> t, std::span<double> x);
+  virtual bool forward_sparse(const SparseColumns& W, SparseColumns& Z);
   /// Bytes held by the factor (for reports).
   virtual std::size_t factor_bytes() const { return 0; }
 };

@@ -1,7 +1,7 @@
 #include "linalg/low_rank_correction.hpp"
 
-#include "linalg/blas.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/sparse_gram.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -72,52 +72,15 @@ void LowRankCorrection::add(std::vector<Column> cols) {
 }
 
 void LowRankCorrection::fill_columns(int k0) {
-  const int k = size(), nb = k - k0;
   if (_pos.size() != static_cast<std::size_t>(_n)) _pos.assign(static_cast<std::size_t>(_n), -1);
-  // the rows the new columns reach, and the new columns on them (dense, column-major)
-  std::vector<LocalIndex> rows;
-  for (int j = k0; j < k; ++j)
-    for (LocalIndex r : _cols[j].y_row)
-      if (_pos[r] < 0) {
-        _pos[r] = static_cast<int>(rows.size());
-        rows.push_back(r);
-      }
-  const int m = static_cast<int>(rows.size());
-  std::vector<double> Ynew(static_cast<std::size_t>(m) * nb, 0.0);
-  for (int j = k0; j < k; ++j) {
-    const Column& c = _cols[j];
-    for (std::size_t q = 0; q < c.y_row.size(); ++q)
-      Ynew[static_cast<std::size_t>(j - k0) * m + _pos[c.y_row[q]]] = c.y_val[q];
-  }
-  _G.block(0, k0, k, nb).setZero();
-  _G.block(k0, 0, nb, k).setZero();
-  const double one = 1.0, zero = 0.0;
-  std::vector<double> prod;
-  auto products = [&](const double* Y, int ncols, int i0) { // G(i0.., k0..) = Y^T Ynew
-    if (m == 0) return;
-    prod.resize(static_cast<std::size_t>(ncols) * nb);
-    dgemm_("T", "N", &ncols, &nb, &m, &one, Y, &m, Ynew.data(), &m, &zero, prod.data(), &ncols);
-    for (int j = 0; j < nb; ++j)
-      for (int i = 0; i < ncols; ++i)
-        _G(i0 + i, k0 + j) = _G(k0 + j, i0 + i) = prod[static_cast<std::size_t>(j) * ncols + i];
-  };
-  products(Ynew.data(), nb, k0);
-  // the old columns on the same rows, in chunks that keep the gathered block near 64 MB
-  const int chunk = std::max(1, static_cast<int>((std::size_t{8} << 20) / std::max(m, 1)));
-  std::vector<double> Yold;
-  for (int i0 = 0; i0 < k0; i0 += chunk) {
-    const int nc = std::min(chunk, k0 - i0);
-    Yold.assign(static_cast<std::size_t>(m) * nc, 0.0);
-    for (int i = 0; i < nc; ++i) {
-      const Column& c = _cols[i0 + i];
-      for (std::size_t q = 0; q < c.y_row.size(); ++q)
-        if (const int p = _pos[c.y_row[q]]; p >= 0)
-          Yold[static_cast<std::size_t>(i) * m + p] = c.y_val[q];
-    }
-    products(Yold.data(), nc, i0);
-  }
+  const int k = size();
+  fill_gram(
+      k, k0,
+      [&](int j) {
+        return SparseColumnView{_cols[j].y_row, _cols[j].y_val};
+      },
+      _G, _pos);
   for (int j = k0; j < k; ++j) _G(j, j) += _cols[j].sign;
-  for (LocalIndex r : rows) _pos[r] = -1;
 }
 
 void LowRankCorrection::factorize() {

@@ -148,9 +148,10 @@ void JsonWriter::append_tail(fmt::memory_buffer& b, const RunSummary& summary) c
   fmt::format_to(fmt::appender(b),
                  ",\"increments\":{},\"attempts\":{},\"iterations\":{},"
                  "\"factorizations\":{},\"factor_updates\":{},"
-                 "\"linear_solves\":{},\"peak_memory_kb\":{},\"seconds\":{{",
+                 "\"linear_solves\":{},\"evaluations\":{},\"tangent_assemblies\":{},"
+                 "\"peak_memory_kb\":{},\"seconds\":{{",
                  st.increments, st.attempts, st.iterations, st.factorizations, st.factor_updates,
-                 st.linear_solves, summary.peak_memory_kb);
+                 st.linear_solves, st.evaluations, st.tangent_assemblies, summary.peak_memory_kb);
   for (int c = 0; c < kNumTimeCategories; ++c) {
     if (c) b.push_back(',');
     append_json_string(b, time_category_name(static_cast<TimeCategory>(c)));

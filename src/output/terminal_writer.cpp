@@ -86,9 +86,9 @@ void TerminalWriter::end(const Model& model, const RunSummary& s) {
     log::info("Analysis NOT completed after {:.2f} s: {}", s.wall_seconds,
               s.failure.empty() ? "no reason given" : s.failure);
   log::info("  {} increments ({} attempts), {} iterations, {} factorizations ({} contact rows "
-            "updated in a factor), {} solves",
+            "updated in a factor), {} solves, {} evaluations ({} with the tangent)",
             st.increments, st.attempts, st.iterations, st.factorizations, st.factor_updates,
-            st.linear_solves);
+            st.linear_solves, st.evaluations, st.tangent_assemblies);
   double total = 0.0;
   for (double t : st.seconds) total += t;
   if (total > 0)

@@ -144,7 +144,7 @@ RunSummary Analysis::run() {
 bool Analysis::Impl::supported_at_last_converged(StepProblem& prob, double t0) {
   prob.begin_increment(t0, 0.0);
   try {
-    const Evaluation ev = prob.evaluate();
+    const Evaluation ev = prob.evaluate(true);
     std::vector<double> du(prob.rhs().size()),
         dl(static_cast<std::size_t>(prob.constraints().n_rows()));
     KktOptions opt;
@@ -203,7 +203,7 @@ ModelCheck Analysis::check(bool time_factorization) {
       ctx.step_number = step.number;
       StepProblem prob(m.disc, m.assembler, loads, m.st, ctx, pattern);
       prob.begin_increment(0.0, 0.0);
-      prob.evaluate();
+      prob.evaluate(true);
       // a model held by its gaps alone is singular here: a slightly stiffened diagonal costs the
       // same factorisation and completes it
       CsrMatrix K = prob.matrix();
@@ -350,6 +350,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   r.heat = std::make_unique<HeatBalance>(has_temperature_dofs && is_thermal(step.procedure),
                                          base.transient, r.u_step_start);
   r.controls = newton_controls(step.controls, options.factor_reuse);
+  r.controls.residual_only = options.residual_only;
   step_damping_peak = 0.0;
   if (from) {
     restore_step(r);
@@ -532,7 +533,7 @@ StepSummary Analysis::Impl::finish_step(StepRun& r) {
       st.f_ext = r.converged_f_ext;
     } else {
       try {
-        prob.evaluate();
+        prob.evaluate(false);
       } catch (const ConvergenceFailure&) {
       }
     }

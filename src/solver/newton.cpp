@@ -46,13 +46,37 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
   bool last_stale = false, force_fresh = false;
   double fresh_contraction = 0.0; ///< residual ratio over the last fresh-factor iteration
   Evaluation ev;
-  try {
-    ev = p.evaluate();
-  } catch (const ConvergenceFailure& e) {
-    res.reason = e.what();
-    res.cause = FailureCause::Element;
-    return res;
-  }
+  // Evaluate at the trial state; the tangent only where the solver will use it (with a kept
+  // factor of a stiffness that has barely drifted, modified Newton needs the residual alone).
+  // An increment's first evaluation always assembles it: the solver measures the drift there.
+  auto evaluate = [&](bool tangent) {
+    try {
+      ev = p.evaluate(tangent);
+      return true;
+    } catch (const ConvergenceFailure& e) {
+      res.reason = e.what();
+      res.cause = FailureCause::Element;
+      return false;
+    }
+  };
+  auto tangent_wanted = [&] {
+    return c.factor_reuse == FactorReuse::Never || !c.residual_only || !solver.matrix_optional();
+  };
+  // the tangent at the state of an evaluation made without it
+  auto add_tangent = [&] {
+    try {
+      const Evaluation full = p.assemble_tangent();
+      ev.symmetric = full.symmetric;
+      ev.friction = full.friction;
+      ev.tangent = true;
+      return true;
+    } catch (const ConvergenceFailure& e) {
+      res.reason = e.what();
+      res.cause = FailureCause::Element;
+      return false;
+    }
+  };
+  if (!evaluate(true)) return res;
   // The flux scale of the increment is the largest average flux seen in any of its evaluations
   // without contact status changes: a free thermal expansion has large thermal forces at the start
   // and none at convergence. An evaluation that changes status is transitional and may carry
@@ -89,8 +113,16 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
     opt.force_fresh = force_fresh;
     opt.relative_tolerance =
         forcing_term(c, res.iterations, residual_ratio_now, ev.status_changes, ev.friction);
+    if (force_fresh && !ev.tangent && !add_tangent()) return res;
     try {
-      const KktStatistics ks = solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+      opt.matrix_current = ev.tangent;
+      KktStatistics ks = solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+      if (ks.needs_matrix) {
+        log::debug("  the solver needs the tangent: assembling it");
+        if (!add_tangent()) return res;
+        opt.matrix_current = true;
+        ks = solver.solve(p.matrix(), b, C, du, dl, ev.symmetric, opt, stats);
+      }
       last_stale = ks.stale_factor;
       force_fresh = false;
     } catch (const SingularSystem& e) {
@@ -117,14 +149,10 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
       const int f = static_cast<int>(p.equation_field(static_cast<LocalIndex>(i)));
       cmax[f] = std::max(cmax[f], std::abs(du[i]));
     }
-    // ---- evaluate at the new state
-    try {
-      ev = p.evaluate();
-    } catch (const ConvergenceFailure& e) {
-      res.reason = e.what();
-      res.cause = FailureCause::Element;
-      return res;
-    }
+    // ---- evaluate at the new state (with the tangent after all where a status change altered
+    // it: the solver must see the new matrix)
+    if (!evaluate(tangent_wanted())) return res;
+    if (!ev.tangent && ev.stiffness_changed && !add_tangent()) return res;
     if (requested_cutback()) return res;
     if (ev.status_changes == 0)
       for (int f = 0; f < kNumFields; ++f) flux[f] = std::max(flux[f], ev.flux[f]);
@@ -188,13 +216,8 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
         res.cause = FailureCause::Augmentation;
         return res;
       }
-      try {
-        ev = p.evaluate();
-      } catch (const ConvergenceFailure& e) {
-        res.reason = e.what();
-        res.cause = FailureCause::Element;
-        return res;
-      }
+      if (!evaluate(tangent_wanted())) return res;
+      if (!ev.tangent && ev.stiffness_changed && !add_tangent()) return res;
       if (requested_cutback()) return res;
       equilibrium_iterations = 0;
       increases = 0;

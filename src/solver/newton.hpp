@@ -39,6 +39,10 @@ struct NewtonControls {
   /// forces a fresh factor on the next one
   FactorReuse factor_reuse = FactorReuse::Auto;
   double stale_contraction = 0.1;
+  /// While the solver keeps a factor it can reuse (ConstrainedSolver::matrix_optional), evaluate
+  /// the residual alone: the tangent's values would not be used. An increment's first evaluation
+  /// and any that precedes a fresh factorisation assemble it.
+  bool residual_only = true;
   /// The last converged increment of the step took more than one iteration: the step is not
   /// linear, so the first system of the next increment is solved to Newton's looser forcing term
   /// (an iterative backend) rather than in full. Set by the step driver.

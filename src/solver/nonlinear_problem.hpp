@@ -21,18 +21,29 @@ struct Evaluation {
   std::array<bool, kNumFields> has_field{}; ///< the field has free equations
   double constraint_max = 0.0;              ///< max |g| of the active constraint rows
   int status_changes = 0;
+  /// a status change altered the tangent itself (ElementOutput::stiffness_changed)
+  bool stiffness_changed = false;
   std::vector<ElemId> changed; ///< elements whose contact status changed
   bool symmetric = true;
   bool friction = false; ///< some closed gap has friction
   /// the elements' time-increment request (AssemblyResult::dt_ratio); infinity: none
   double dt_ratio = std::numeric_limits<double>::infinity();
+  /// matrix() holds the tangent at this state (false: an evaluation of the residual alone)
+  bool tangent = true;
 };
 
 class NonlinearProblem {
  public:
   virtual ~NonlinearProblem() = default;
-  /// Assemble residual, tangent and constraints at the trial state. May throw ConvergenceFailure.
-  virtual Evaluation evaluate() = 0;
+  /// Assemble residual and constraints at the trial state, and the tangent when `tangent` (else
+  /// matrix() keeps whatever an earlier evaluation or the solver left in it: Newton asks for the
+  /// residual alone while the solver reuses a kept factor). May throw ConvergenceFailure.
+  virtual Evaluation evaluate(bool tangent) = 0;
+  /// The tangent at the state of the last evaluation, which was made without it: the elements see
+  /// the history that evaluation saw, so its residual, constraints and status changes stand
+  /// (Evaluation::symmetric and friction of the tangent's assembly are returned). May throw
+  /// ConvergenceFailure.
+  virtual Evaluation assemble_tangent() = 0;
   /// The tangent over the free equations (valid after evaluate; the solver may overwrite it).
   virtual CsrMatrix& matrix() = 0;
   /// -residual over the free equations.

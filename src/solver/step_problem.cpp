@@ -29,6 +29,7 @@ void StepProblem::begin_increment(double t0, double dt, int increment,
   if (!guess.empty()) // prescribed slots take their values below
     for (std::size_t k = 0; k < guess.size(); ++k) _s.u[k] += guess[k];
   _disc.reset_trial();
+  _trial_saved = false;
   _loads.apply_prescribed(_ctx.step_time, _s.u);
   _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
@@ -77,21 +78,34 @@ FieldView StepProblem::fields() const {
   return f;
 }
 
-Evaluation StepProblem::evaluate() {
+Evaluation StepProblem::assemble_tangent() {
+  FE_CHECK(_trial_saved, "assemble_tangent without an evaluation of the residual alone");
+  _disc.restore_trial(_trial_before);
+  return evaluate(true);
+}
+
+Evaluation StepProblem::evaluate(bool tangent) {
   ScopedTimer timer(_stats, TimeCategory::Assembly);
+  _trial_saved = !tangent;
+  if (!tangent) _disc.save_trial(_trial_before);
+  if (_stats) {
+    ++_stats->evaluations;
+    if (tangent) ++_stats->tangent_assemblies;
+  }
   const FieldView f = fields();
-  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, &_Kin, &_C);
+  MatrixInserter* K = tangent ? &_Kin : nullptr;
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C);
   if (_stats) { // gap elements are reported as "gap work", not assembly
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;
     (*_stats)[TimeCategory::Assembly] -= ar.gap_seconds;
   }
-  add_stabilization(ar);
+  add_stabilization(ar, tangent);
   std::fill(_s.f_ext.begin(), _s.f_ext.end(), 0.0);
   _loads.add_nodal_loads(_ctx.step_time, _s.f_ext);
   _loads.distributed_loads(_ctx.step_time, _active);
   bool follower = false;
   if (!_active.empty()) {
-    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, &_Kin, !_unsymmetric_loads);
+    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, K, !_unsymmetric_loads);
     for (const auto& a : _active)
       follower |= _unsymmetric_loads && _ctx.nlgeom &&
                   (a.load->kind == DistLoadKind::Pressure ||
@@ -99,10 +113,12 @@ Evaluation StepProblem::evaluate() {
   }
   Evaluation ev;
   ev.status_changes = ar.status_changes;
+  ev.stiffness_changed = ar.stiffness_changed;
   ev.changed = std::move(ar.changed);
   ev.symmetric = !ar.unsymmetric && !follower;
   ev.friction = ar.friction;
   ev.dt_ratio = ar.dt_ratio;
+  ev.tangent = tangent;
   const DofMap& dofs = _disc.dofs();
   const EquationMap& eqm = _loads.equations();
   for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {
@@ -130,7 +146,7 @@ Evaluation StepProblem::evaluate() {
   return ev;
 }
 
-void StepProblem::add_stabilization(AssemblyResult& ar) {
+void StepProblem::add_stabilization(AssemblyResult& ar, bool tangent) {
   if (_stab_c <= 0.0 || !(_ctx.dt > 0.0)) {
     if (!_f_stab.empty()) std::fill(_f_stab.begin(), _f_stab.end(), 0.0);
     return;
@@ -146,7 +162,7 @@ void StepProblem::add_stabilization(AssemblyResult& ar) {
     const double f = k * m[s] * (_s.u[s] - _s.u_start[s]);
     _f_stab[s] = f;
     _s.f_int[s] += f;
-    _K.add(i, i, k * m[s]);
+    if (tangent) _K.add(i, i, k * m[s]);
     if (f != 0.0) {
       const int fld = static_cast<int>(dofs.slot_field(s));
       ar.flux_sum[fld] += std::abs(f);
@@ -156,6 +172,7 @@ void StepProblem::add_stabilization(AssemblyResult& ar) {
 }
 
 void StepProblem::apply(std::span<const double> du, std::span<const double> dl) {
+  _trial_saved = false;
   const EquationMap& eqm = _loads.equations();
   for (LocalIndex i = 0; i < eqm.n_eq(); ++i) _s.u[eqm.eq_slot[i]] += du[i];
   for (int r = 0; r < _C.n_rows(); ++r) _disc.multiplier_trial(_C.multiplier[r]) += dl[r];

@@ -52,7 +52,8 @@ class StepProblem final : public NonlinearProblem {
   /// The stabilization forces per slot at the last evaluation (empty when off).
   std::span<const double> stabilization_forces() const { return _f_stab; }
 
-  Evaluation evaluate() override;
+  Evaluation evaluate(bool tangent) override;
+  Evaluation assemble_tangent() override;
   CsrMatrix& matrix() override { return _K; }
   std::span<const double> rhs() const override { return _rhs; }
   const ConstraintBlock& constraints() const override { return _C; }
@@ -76,7 +77,7 @@ class StepProblem final : public NonlinearProblem {
 
  private:
   /// Stabilization forces into f_int and their tangent into K (after the assembly).
-  void add_stabilization(AssemblyResult& ar);
+  void add_stabilization(AssemblyResult& ar, bool tangent);
 
   Discretization& _disc;
   Assembler& _asm;
@@ -89,6 +90,9 @@ class StepProblem final : public NonlinearProblem {
   std::vector<double> _rhs;
   std::vector<ActiveLoad> _active;
   std::vector<double> _du_slots; ///< a Newton correction per slot (step_limit)
+  /// the trial histories before the last evaluation without tangent (assemble_tangent)
+  std::vector<double> _trial_before;
+  bool _trial_saved = false;
   double _constraint_tol;
   bool _unsymmetric_loads = false;
   std::shared_ptr<const std::vector<double>> _stab_mass;

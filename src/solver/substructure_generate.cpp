@@ -144,7 +144,7 @@ void Analysis::Impl::generate_substructure(StepRun& r) {
   // the stiffness at the step start
   StepProblem& prob = *r.prob;
   prob.begin_increment(0.0, 0.0);
-  prob.evaluate();
+  prob.evaluate(true);
   const CsrMatrix& K = prob.matrix();
 
   // K_II, factorised

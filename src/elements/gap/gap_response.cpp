@@ -109,10 +109,10 @@ void MechanicalGapKernel::normal(const ElementInput& in, std::span<double> st,
     }
     L.is_closed = L.FN > 0 || (_no_separation && L.was_closed);
     // Penalty as a compliant row (docs/theory/gap_elements.md): the law's slope F' leaves the
-    // tangent for a row dg.du - dlambda / F' = 0 whose multiplier is the force F itself. Eliminating
-    // the multiplier gives back the tangent term F' dg dg^T, so the Newton iterates are those of
-    // the force law; but a gap that opens or closes now changes a row, not the matrix, and the
-    // solver keeps its factor (the rows are a low-rank correction).
+    // tangent for a row dg.du - dlambda / F' = 0 whose multiplier is the force F itself.
+    // Eliminating the multiplier gives back the tangent term F' dg dg^T, so the Newton iterates are
+    // those of the force law; but a gap that opens or closes now changes a row, not the matrix, and
+    // the solver keeps its factor (the rows are a low-rank correction).
     if (_compliant_rows && L.dFN_dg > 0 &&
         L.dFN_dg >= kRowFraction * _law->stiffness_scale(L.hint) && enforceable(in, L, L.dg)) {
       L.compliant_row = true;
@@ -330,6 +330,15 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
                                 L.previous != ContactStatus::Closed;
   if ((_mode == NormalMode::Direct && normal_changed) || friction_changed || L.predicted_stick)
     out.status_changes = 1;
+  // open/closed changes only rows with exact or compliant-row normal contact, stick changes only
+  // rows with Lagrange friction; slip terms, augmented and in-matrix penalties, and GAPUNIT's
+  // conductance live in the tangent
+  const bool normal_rows =
+      _mode == NormalMode::Direct || (_mode == NormalMode::Force && _compliant_rows);
+  const bool friction_rows = !L.fl || (L.fl->lagrange() && L.status != ContactStatus::Slip &&
+                                       L.previous != ContactStatus::Slip);
+  if (L.status != L.previous && !(normal_rows && friction_rows && !_thermal))
+    out.stiffness_changed = true;
   const auto& s0 = in.state_start;
   st[GapStateLayout::status] = static_cast<double>(L.status);
   if (!R.geom.degenerate)

@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <limits>
 #include <random>
 
 using namespace gapfem;
@@ -453,8 +454,22 @@ struct ChangedRows {
 };
 } // namespace
 
+namespace {
+/// Sets an environment variable for a scope (the solver reads its switches when made).
+struct ScopedEnv {
+  ScopedEnv(const char* name, const char* value) : _name(name) { ::setenv(name, value, 1); }
+  ~ScopedEnv() { ::unsetenv(_name); }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+  const char* _name;
+};
+} // namespace
+
+// The Woodbury path (GAPFEM_DENSE_MULTIPLIERS=0): the kept factor is made exact for the
+// current rows, and the multipliers are solved by CG on it.
 TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
   if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
+  const ScopedEnv off("GAPFEM_DENSE_MULTIPLIERS", "0");
   ChangedRows c;
   c.run();
   EXPECT_TRUE(c.second.stale_factor);
@@ -470,10 +485,79 @@ TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
 // exact step.
 TEST(KktSolver, NoFactorUpdateWhereItsScratchDoesNotFit) {
   if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
+  const ScopedEnv off("GAPFEM_DENSE_MULTIPLIERS", "0");
   ChangedRows c;
   c.memory_limit_between = "64"; // bytes: less than one dense column of the 8 equations, twice
   c.run();
   EXPECT_EQ(c.stats.factor_updates, 0);
   EXPECT_EQ(c.stats.factorizations, 2);
   c.expect_exact_step();
+}
+
+// The default path: the factor stays as it is; the multiplier matrix of the kept row, the new row
+// and the anti-row of the row gone is dense (one column L^-1 P c^T per row), and the step is one
+// forward and one backward solve.
+TEST(KktSolver, DenseMultipliersServeChangedRowsInOneSolve) {
+  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
+  ChangedRows c;
+  c.run();
+  EXPECT_TRUE(c.second.stale_factor);
+  EXPECT_EQ(c.stats.factorizations, 1);
+  EXPECT_EQ(c.second.schur_iterations, 0);
+  EXPECT_EQ(c.second.solves, 1);
+  EXPECT_EQ(c.stats.factor_updates, 3); // the columns of "keep", "a" (its anti-row) and "fresh"
+  c.expect_exact_step();
+}
+
+// Where the columns' scratch does not fit, the Krylov iteration with anti-rows serves the kept
+// factor: the same exact step, no factorisation.
+TEST(KktSolver, DenseMultipliersGiveWayToTheKrylovPathWhereTheirColumnsDoNotFit) {
+  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
+  ChangedRows c;
+  c.memory_limit_between = "64";
+  c.run();
+  EXPECT_EQ(c.stats.factor_updates, 0);
+  EXPECT_EQ(c.stats.factorizations, 1);
+  EXPECT_GT(c.second.schur_iterations, 0);
+  c.expect_exact_step();
+}
+
+// Without the current matrix (Newton evaluated the residual alone) the solver uses its kept
+// factor or asks for the matrix: it never reads the matrix's values.
+TEST(KktSolver, WithoutTheMatrixOnlyTheKeptFactorIsUsed) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row keep{{3}, {1.0}, -0.1, 11}, fresh{{5}, {1.0}, 0.05, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  std::vector<double> du(n), dl(2);
+  CsrMatrix K = to_csr(p);
+  opt.matrix_current = false;
+  EXPECT_FALSE(solver.matrix_optional()) << "no factor yet";
+  const KktStatistics none =
+      solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt);
+  EXPECT_TRUE(none.needs_matrix);
+  opt.matrix_current = true;
+  EXPECT_FALSE(
+      solver.solve(K, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt).needs_matrix);
+  // a matrix whose values would give any other answer: NaN
+  CsrMatrix junk = to_csr(p);
+  for (double& v : junk.values()) v = std::numeric_limits<double>::quiet_NaN();
+  opt.matrix_current = false;
+  const KktStatistics st =
+      solver.solve(junk, {b.data(), std::size_t(n)}, block({keep, fresh}), du, dl, true, opt);
+  EXPECT_FALSE(st.needs_matrix);
+  EXPECT_TRUE(st.stale_factor);
+  const Eigen::VectorXd ref = dense_kkt(p.K, b, {keep, fresh});
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+  EXPECT_NEAR(dl[0], ref[n], 1e-9);
+  EXPECT_NEAR(dl[1], ref[n + 1], 1e-9);
+  // refusing: a fresh factor was asked for
+  opt.force_fresh = true;
+  EXPECT_TRUE(solver.solve(junk, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt)
+                  .needs_matrix);
 }

@@ -6,9 +6,8 @@
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace gapfem;
 
@@ -17,7 +16,7 @@ namespace {
 /// r(u) = k u + c u^3 - f for one displacement unknown; optionally a fake contact status that flips
 /// at every evaluation.
 class ScalarProblem final : public NonlinearProblem {
-public:
+ public:
   ScalarProblem(double k, double c, double f, bool chatter = false)
       : _k(k), _c(c), _f(f), _chatter(chatter) {
     std::vector<std::span<const LocalIndex>> el{std::span<const LocalIndex>(_eq)};
@@ -26,13 +25,17 @@ public:
     _rhs.assign(1, 0.0);
   }
   std::shared_ptr<const SparsityPattern> pattern() const { return _pattern; }
-  Evaluation evaluate() override {
+  Evaluation evaluate(bool tangent) override {
     ++evaluations;
     Evaluation ev;
+    ev.tangent = tangent;
     const double r = _k * u + _c * u * u * u - _f;
     _rhs[0] = -r;
-    _K.set_zero();
-    _K.values()[0] = _k + 3 * _c * u * u;
+    if (tangent) {
+      ++tangents;
+      _K.set_zero();
+      _K.values()[0] = _k + 3 * _c * u * u;
+    }
     ev.has_field[0] = true;
     ev.residual_max[0] = std::abs(r);
     ev.flux[0] = std::abs(_f);
@@ -41,6 +44,12 @@ public:
       ev.changed = {7};
     }
     return ev;
+  }
+  Evaluation assemble_tangent() override {
+    ++tangents;
+    _K.set_zero();
+    _K.values()[0] = _k + 3 * _c * u * u;
+    return {};
   }
   CsrMatrix& matrix() override { return _K; }
   std::span<const double> rhs() const override { return _rhs; }
@@ -54,9 +63,9 @@ public:
   double constraint_tolerance() const override { return 1e-10; }
 
   double u = 0.0;
-  int evaluations = 0;
+  int evaluations = 0, tangents = 0;
 
-private:
+ private:
   double _k, _c, _f;
   bool _chatter;
   std::vector<LocalIndex> _eq{0};
@@ -102,6 +111,74 @@ TEST(Newton, ChatteringStatusIsDetected) {
   ASSERT_EQ(r.chattering.size(), 1u);
   EXPECT_EQ(r.chattering[0], 7);
   EXPECT_EQ(r.severe_iterations, NewtonControls{}.chatter_flips);
+}
+
+namespace {
+/// Modified Newton on one unknown: keeps the first matrix it is given and tells Newton that it can
+/// do without the matrix; with `refuse_once`, its first solve without the matrix asks for it.
+class KeptFactorSolver final : public ConstrainedSolver {
+ public:
+  explicit KeptFactorSolver(bool refuse_once) : _refuse(refuse_once) {}
+  std::string_view name() const override { return "kept factor"; }
+  void analyze(std::shared_ptr<const SparsityPattern>) override {}
+  void forget_factor() override { _k = 0.0; }
+  bool matrix_optional() const override { return _k != 0.0; }
+  KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock&,
+                      std::span<double> du, std::span<double>, bool, const KktOptions& opt,
+                      RunStatistics*) override {
+    KktStatistics st;
+    if (!opt.matrix_current) {
+      ++without_matrix;
+      if (_refuse) {
+        _refuse = false;
+        st.needs_matrix = true;
+        return st;
+      }
+    } else if (_k == 0.0) {
+      _k = K.values()[0];
+    }
+    du[0] = b[0] / _k;
+    return st;
+  }
+  int without_matrix = 0;
+
+ private:
+  bool _refuse;
+  double _k = 0.0;
+};
+} // namespace
+
+// While the solver keeps a factor it can reuse, Newton evaluates the residual alone: the tangent
+// is assembled once (the first evaluation), and modified Newton still reaches the answer.
+TEST(Newton, ResidualAloneWhileTheSolverKeepsItsFactor) {
+  ScalarProblem p(1.0, 0.01, 2.0); // u + 0.01 u^3 = 2
+  KeptFactorSolver s(false);
+  const NewtonResult r = solve_increment(p, s, NewtonControls{}, FluxHistory{}, nullptr);
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_NEAR(p.u + 0.01 * p.u * p.u * p.u, 2.0, 0.005 * 2.0);
+  EXPECT_GT(r.iterations, 2);
+  EXPECT_EQ(p.tangents, 1);
+  EXPECT_EQ(s.without_matrix, r.iterations - 1);
+  // switched off, every evaluation assembles it
+  ScalarProblem q(1.0, 0.01, 2.0);
+  KeptFactorSolver t(false);
+  NewtonControls c;
+  c.residual_only = false;
+  const NewtonResult rq = solve_increment(q, t, c, FluxHistory{}, nullptr);
+  ASSERT_TRUE(rq.converged);
+  EXPECT_EQ(q.tangents, q.evaluations);
+  EXPECT_EQ(t.without_matrix, 0);
+}
+
+// A solver that cannot do without the matrix after all gets it at the same state, and the step
+// is solved again.
+TEST(Newton, TheTangentIsAssembledWhenTheSolverAsksForIt) {
+  ScalarProblem p(1.0, 0.01, 2.0);
+  KeptFactorSolver s(true);
+  const NewtonResult r = solve_increment(p, s, NewtonControls{}, FluxHistory{}, nullptr);
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_EQ(p.tangents, 2);                      // the first evaluation, and the one asked for
+  EXPECT_EQ(s.without_matrix, r.iterations - 1); // the refused call, then iterations 3, 4, ...
 }
 
 TEST(IncrementControl, CutbackGrowthAndMinimum) {

@@ -1,0 +1,95 @@
+// The kept-factor paths of the solver (issue 16) change the Newton path, never the converged
+// answer. Full Newton (a fresh factorisation for every system, the tangent in every evaluation)
+// is the oracle; forced reuse of the factor, with
+//   - the dense multiplier matrix of the kept factor (linalg/multiplier_columns.hpp) and
+//     residual-only evaluations while the factor serves (the defaults),
+//   - the Woodbury-corrected factor instead of the dense multipliers (GAPFEM_DENSE_MULTIPLIERS=0),
+//   - the tangent in every evaluation (GAPFEM_RESIDUAL_ONLY=0),
+// must give the same displacements, reactions and gap forces to 1e-8 of their scales on the
+// random contact generators' networks (exact contact, NLGEOM steps among them), frictional
+// models (UMFPACK) and GAPCYL/GAPSPHER units, run with tight controls (R_n = 1e-8).
+#include "random/random_generators.hpp"
+#include "same_answer.hpp"
+#include "test_util.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <gtest/gtest.h>
+
+using namespace gapfem;
+using namespace gapfem::test;
+using namespace gapfem::test::random_contact;
+
+namespace {
+
+JobResult run_with(const std::filesystem::path& deck, FactorReuse reuse,
+                   const char* env = nullptr) {
+  if (env) ::setenv(env, "0", 1);
+  JobOptions o;
+  o.deck = deck;
+  o.write_files = false;
+  o.quiet = true;
+  o.factor_reuse = reuse;
+  JobResult r = run_job(o);
+  if (env) ::unsetenv(env);
+  return r;
+}
+
+/// The stiffest penalty of a model: a penalty gap's force is k times a penetration that is a
+/// small difference of large displacements (same_answer.hpp's round-off allowance).
+double max_penalty(const ModelDef& m) {
+  double k = 1.0;
+  for (const GapDef& g : m.gaps) k = std::max(k, g.penalty);
+  return k;
+}
+
+/// Runs every model of `make` (seeds 1..n) through the oracle and the three kept-factor paths.
+template <class Make>
+void compare_paths(Make make, int n, int min_compared) {
+  if (std::getenv("GAPFEM_FACTOR_REUSE") || std::getenv("GAPFEM_DENSE_MULTIPLIERS") ||
+      std::getenv("GAPFEM_RESIDUAL_ONLY"))
+    GTEST_SKIP() << "an environment switch overrides the paths this test compares";
+  int compared = 0;
+  long tangents = 0, evaluations = 0, reused_solves = 0;
+  for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(n); ++seed) {
+    ModelDef m = make(seed);
+    m.tight_controls = true;
+    m.residual_tolerance = 1e-8;
+    const auto deck =
+        gapfem::test::write_deck(random_contact::write_deck(m), "paths_" + std::to_string(seed));
+    const JobResult oracle = run_with(deck, FactorReuse::Never);
+    if (oracle.exit_code != 0) continue; // a model the increments cannot follow either way
+    const JobResult kept = run_with(deck, FactorReuse::Always);
+    const double k = max_penalty(m);
+    expect_same(oracle, kept, 1e-8, k, m.tag + " (dense multipliers, residual alone)");
+    expect_same(oracle, run_with(deck, FactorReuse::Always, "GAPFEM_DENSE_MULTIPLIERS"), 1e-8, k,
+                m.tag + " (Woodbury-corrected factor)");
+    expect_same(oracle, run_with(deck, FactorReuse::Always, "GAPFEM_RESIDUAL_ONLY"), 1e-8, k,
+                m.tag + " (the tangent in every evaluation)");
+    ++compared;
+    tangents += kept.run.stats.tangent_assemblies;
+    evaluations += kept.run.stats.evaluations;
+    reused_solves += kept.run.stats.iterations - kept.run.stats.factorizations;
+  }
+  EXPECT_GE(compared, min_compared);
+  // the paths were taken: most systems reused the factor, most evaluations had no tangent
+  EXPECT_GT(reused_solves, 0);
+  EXPECT_LT(tangents, evaluations);
+  std::printf("[ paths ] %d models; kept factor: %ld of %ld evaluations with the tangent\n",
+              compared, tangents, evaluations);
+}
+
+} // namespace
+
+TEST(SolverPaths, RandomNetworksGiveFullNewtonsAnswer) {
+  compare_paths([](std::uint64_t s) { return network_model(s, NormalMethod::Direct); }, 30, 25);
+}
+
+TEST(SolverPaths, RandomFrictionGivesFullNewtonsAnswer) {
+  compare_paths([](std::uint64_t s) { return friction_model(s); }, 20, 15);
+}
+
+TEST(SolverPaths, RandomRadialUnitsGiveFullNewtonsAnswer) {
+  compare_paths([](std::uint64_t s) { return radial_model(s, s % 2 == 0); }, 20, 15);
+}
