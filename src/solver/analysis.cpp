@@ -464,6 +464,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   for (int f = 0; f < kNumFields; ++f) r.flux.sum[f] += res.flux[f];
   ++r.flux.n;
   r.controls.nonlinear_step = res.iterations > 1;
+  if (res.fresh_contraction > 0) r.controls.fresh_contraction = res.fresh_contraction;
   ctrl.accept(res.iterations - res.severe_iterations, growth);
   r.heat->add_increment(disc.dofs(), dt, prob.reactions(), st.f_ext);
   ++stats.increments;

@@ -44,7 +44,8 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
   double residual_ratio_now = std::numeric_limits<double>::infinity(); ///< of the last evaluation
   int increases = 0, equilibrium_iterations = 0;
   bool last_stale = false, force_fresh = false;
-  double fresh_contraction = 0.0; ///< residual ratio over the last fresh-factor iteration
+  /// residual ratio over the last fresh-factor iteration (this increment's, or the step's before)
+  double fresh_contraction = c.fresh_contraction;
   Evaluation ev;
   // Evaluate at the trial state; the tangent only where the solver will use it (with a kept
   // factor of a stiffness that has barely drifted, modified Newton needs the residual alone).
@@ -235,7 +236,7 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
     if (std::isfinite(previous_ratio) && previous_ratio > 0 && ev.status_changes == 0) {
       const double contraction = worst_ratio / previous_ratio;
       if (!last_stale)
-        fresh_contraction = contraction;
+        fresh_contraction = res.fresh_contraction = contraction;
       else if (contraction > std::max(c.stale_contraction, 2.0 * fresh_contraction))
         force_fresh = true;
     }

@@ -47,6 +47,10 @@ struct NewtonControls {
   /// linear, so the first system of the next increment is solved to Newton's looser forcing term
   /// (an iterative backend) rather than in full. Set by the step driver.
   bool nonlinear_step = false;
+  /// The residual contraction of the last fresh-factor iteration in the step's earlier
+  /// increments (0: none; set by the step driver). The stale-factor check starts from it: where
+  /// full Newton itself contracts slowly (a penalty law's kinks), a stale factor is not blamed.
+  double fresh_contraction = 0.0;
 };
 
 struct FluxHistory {
@@ -78,6 +82,7 @@ struct NewtonResult {
   FailureCause cause = FailureCause::None;
   std::vector<ElemId> chattering;
   std::vector<double> residual_history; ///< worst residual/flux ratio after each iteration
+  double fresh_contraction = 0.0;       ///< of the attempt's last fresh-factor iteration (0: none)
   bool singular = false;
   std::vector<LocalIndex> singular_equations;
   /// The elements' time-increment request over the attempt's evaluations (ElementOutput::
