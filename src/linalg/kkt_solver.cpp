@@ -22,6 +22,10 @@ double norm_inf(std::span<const double> v) {
 /// A compliant row's spring in the factor must stay softer than the row itself (R E < 1, see
 /// solve()); half of it keeps the Schur system well away from that limit.
 constexpr double kCompliantSpringShare = 0.5;
+/// The dense multiplier matrix is used up to this many rows, where its factorisation costs less
+/// than the back-substitutions it saves (at kDenseFlopRate flop/s, what one core's BLAS does).
+constexpr int kMaxDenseRows = 4000;
+constexpr double kDenseFlopRate = 1e10;
 /// Below this factorisation time the measured costs are noise: no reuse.
 constexpr double kMinReusedFactorSeconds = 2e-3;
 bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb) {
@@ -335,6 +339,15 @@ bool KktSolver::reuse_pays(int changes) const {
   return (0.5 * changes + 5) * _t_solve < _t_factor;
 }
 
+bool KktSolver::dense_pays(int rows) const {
+  // the dense factorisation (rows^3 / 3 flops at a few GFlop/s) must cost less than the two
+  // back-substitutions it saves, and the Gram matrix must fit next to the factor
+  const double r = rows, flops = r * r * r / 3.0;
+  if (rows > kMaxDenseRows || flops / kDenseFlopRate > 2.0 * std::max(_t_solve, 1e-3)) return false;
+  const auto available = available_memory_bytes();
+  return !available || 3.0 * r * r * sizeof(double) < 0.25 * static_cast<double>(*available);
+}
+
 bool KktSolver::matrix_optional() const {
   // the drift grows by less per iteration as Newton converges: twice the last growth bounds it
   // (unknown right after a factorisation: the next system brings its matrix)
@@ -394,7 +407,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     // it (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
     const bool dense = _dense && !_dense_failed && (stale || exact_same) && m > 0 &&
                        _active == _cholmod.get() && !C.has_columns() &&
-                       _cholmod->has_split_solves();
+                       _cholmod->has_split_solves() &&
+                       dense_pays(m + static_cast<int>(gone.size()));
     if (stale && !dense && _modify && _active == _cholmod.get() &&
         (!gone.empty() || std::find(p_of.begin(), p_of.end(), -1) != p_of.end()) &&
         !modify_factor(C, R, ks, p_of, gone, stats)) {

@@ -72,6 +72,9 @@ class KktSolver final : public ConstrainedSolver {
   /// repeats (-1: a new row), `gone` the rows of _frows no longer present.
   Plan compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric, const KktOptions& opt,
                std::vector<int>& p_of, std::vector<int>& gone);
+  /// A dense multiplier matrix of `rows` rows pays (its factorisation against the solves it
+  /// saves) and fits in memory.
+  bool dense_pays(int rows) const;
   /// Reusing the factor for a system with `changes` changed rows costs less than a factorisation
   /// (from the measured times).
   bool reuse_pays(int changes) const;

@@ -1,5 +1,6 @@
 #include "linalg/multiplier_columns.hpp"
 
+#include "common/memory.hpp"
 #include "linalg/sparse_gram.hpp"
 
 #include <algorithm>
@@ -39,6 +40,11 @@ bool MultiplierColumns::add(LinearSolver& solver, const ConstraintBlock& B,
     W.ptr.push_back(static_cast<LocalIndex>(W.row.size()));
   }
   if (!solver.forward_sparse(W, Z)) return false;
+  // the columns are kept: they must leave room for the rest of the run
+  if (const auto available = available_memory_bytes();
+      available && 2.0 * static_cast<double>(Z.row.size()) * (sizeof(LocalIndex) + sizeof(double)) >
+                       static_cast<double>(*available))
+    return false;
   const int k0 = size();
   for (std::size_t j = 0; j < rows.size(); ++j) {
     const int r = rows[j];

@@ -509,17 +509,32 @@ TEST(KktSolver, DenseMultipliersServeChangedRowsInOneSolve) {
   c.expect_exact_step();
 }
 
-// Where the columns' scratch does not fit, the Krylov iteration with anti-rows serves the kept
-// factor: the same exact step, no factorisation.
-TEST(KktSolver, DenseMultipliersGiveWayToTheKrylovPathWhereTheirColumnsDoNotFit) {
-  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
-  ChangedRows c;
-  c.memory_limit_between = "64";
-  c.run();
-  EXPECT_EQ(c.stats.factor_updates, 0);
-  EXPECT_EQ(c.stats.factorizations, 1);
-  EXPECT_GT(c.second.schur_iterations, 0);
-  c.expect_exact_step();
+// Redundant rows (two gaps enforcing the same motion) make the dense multiplier matrix singular:
+// the Krylov iteration serves the kept factor instead (CG converges on the consistent system), with
+// the same step; the multipliers share the force.
+TEST(KktSolver, RedundantRowsGoToTheKrylovPath) {
+  const int n = 8;
+  Problem p = chain(n, true);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+  const Row keep{{3}, {1.0}, -0.1, 11}, twice{{3}, {2.0}, -0.2, 12};
+  KktSolver solver;
+  solver.analyze(p.pattern);
+  KktOptions opt;
+  opt.constraint_tolerance = 1e-14;
+  opt.reuse = FactorReuse::Always;
+  std::vector<double> du(n), dl(2);
+  CsrMatrix K1 = to_csr(p);
+  RunStatistics stats;
+  solver.solve(K1, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt, &stats);
+  CsrMatrix K2 = to_csr(p);
+  const KktStatistics st =
+      solver.solve(K2, {b.data(), std::size_t(n)}, block({keep, twice}), du, dl, true, opt, &stats);
+  EXPECT_TRUE(st.stale_factor);
+  EXPECT_EQ(stats.factorizations, 1);
+  EXPECT_GT(st.schur_iterations, 0) << "the Krylov path";
+  const Eigen::VectorXd ref = dense_kkt(p.K, b, {keep});
+  for (int i = 0; i < n; ++i) EXPECT_NEAR(du[i], ref[i], 1e-10) << i;
+  EXPECT_NEAR(dl[0] + 2.0 * dl[1], ref[n], 1e-9);
 }
 
 // Without the current matrix (Newton evaluated the residual alone) the solver uses its kept
