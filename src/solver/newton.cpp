@@ -231,13 +231,14 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
       return res;
     }
     // A stale factor that no longer contracts the residual well is replaced: "well" is 10x, or
-    // half as well as a fresh factor did in this increment when full Newton itself contracts
-    // slowly (a penalty law's kinks), so that the stale step is not blamed for the physics.
+    // half as well as a fresh factor did in this increment or the step's earlier ones when full
+    // Newton itself contracts slowly (a penalty law's kinks), so that the stale step is not
+    // blamed for the physics; a stale step that lets the residual grow is always replaced.
     if (std::isfinite(previous_ratio) && previous_ratio > 0 && ev.status_changes == 0) {
       const double contraction = worst_ratio / previous_ratio;
       if (!last_stale)
         fresh_contraction = res.fresh_contraction = contraction;
-      else if (contraction > std::max(c.stale_contraction, 2.0 * fresh_contraction))
+      else if (contraction > std::max(c.stale_contraction, std::min(2.0 * fresh_contraction, 1.0)))
         force_fresh = true;
     }
     if (ev.status_changes == 0) {
