@@ -7,7 +7,8 @@
 //   - the tangent in every evaluation (GAPFEM_RESIDUAL_ONLY=0),
 // must give the same displacements, reactions and gap forces to 1e-8 of their scales on the
 // random contact generators' networks (exact contact, NLGEOM steps among them), frictional
-// models (UMFPACK) and GAPCYL/GAPSPHER units, run with tight controls (R_n = 1e-8, C_n = 1e-9).
+// models (UMFPACK) and frictionless GAPCYL/GAPSPHER units, run with tight controls (R_n = 1e-8, C_n
+// = 1e-9).
 #include "random/random_generators.hpp"
 #include "same_answer.hpp"
 #include "test_util.hpp"
@@ -96,6 +97,10 @@ TEST(SolverPaths, RandomFrictionGivesFullNewtonsAnswer) {
   compare_paths([](std::uint64_t s) { return friction_model(s); }, 20, 15);
 }
 
+// Frictionless: with friction, rotating gaps can have more than one converged state (radial seed
+// 6 with friction, under the sanitizer build: both paths end in equilibrium to 1e-11 of the force
+// scale with the same stick/slip statuses, 1% apart in displacement, the stick point reached
+// along another path); RandomContact checks those against the Coulomb cone instead.
 TEST(SolverPaths, RandomRadialUnitsGiveFullNewtonsAnswer) {
-  compare_paths([](std::uint64_t s) { return radial_model(s, s % 2 == 0); }, 20, 15);
+  compare_paths([](std::uint64_t s) { return radial_model(s, false); }, 20, 15);
 }
