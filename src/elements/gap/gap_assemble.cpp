@@ -46,7 +46,6 @@ void MechanicalGapKernel::assemble(const ElementInput& in, ElementOutput& out, c
   if (L.friction_rows && L.projected) {
     // the stick forces act along q_a, not along their rows ds_a: the rows get their own columns
     out.has_columns = true;
-    out.unsymmetric = true;
     for (int c = 0; c < out.n_constraints; ++c) {
       const int slot = out.constraint_slot[c];
       if (slot == 0) continue;
@@ -60,14 +59,20 @@ void MechanicalGapKernel::assemble(const ElementInput& in, ElementOutput& out, c
       const int row = out.n_constraints - 1; // the normal row was added last
       for (int i = 0; i < nd; ++i)
         out.constraint_column[row * nd + i] += L.dtau_dN[0] * L.q[0][i] + L.dtau_dN[1] * L.q[1][i];
-      out.unsymmetric = true;
-    } else {
+    } else if (L.dFN_dg != 0.0) {
       for (int a = 0; a < 2; ++a) tan(L.q[a], L.dg, L.dtau_dN[a] * L.dFN_dg);
+      out.unsymmetric = true;
     }
   }
-  if (L.fl && !L.friction_rows &&
-      (L.dtau_ds(0, 1) != L.dtau_ds(1, 0) || L.dtau_dN.squaredNorm() > 0 ||
-       L.status == ContactStatus::Slip || L.projected))
+  // The tangent block itself (not the multiplier columns, which the constrained solver handles
+  // apart) is unsymmetric only where friction acts along q_a but moves with ds_a (a projected,
+  // rotating gap), where the slip tangent is (slip-rate dependence), and where the tangential
+  // damping depends on the clearance. A GAPUNI with constant mu keeps a symmetric K: its friction
+  // couples to the normal force only through the normal multiplier's column.
+  const bool slip_terms = L.fl && !L.friction_rows && L.dtau_ds.squaredNorm() > 0.0;
+  if ((L.projected && (slip_terms || L.dtd != 0.0)) ||
+      (slip_terms && L.dtau_ds(0, 1) != L.dtau_ds(1, 0)) ||
+      (L.dcoef_dh_t != 0.0 && L.dslip.squaredNorm() > 0.0))
     out.unsymmetric = true;
   if (G.degenerate || _base.shape == GapShape::Uni) return;
   // geometric stiffness of the rotating direction (GAPCYL, GAPSPHER): d(c)/dx1 = -H
@@ -75,7 +80,10 @@ void MechanicalGapKernel::assemble(const ElementInput& in, ElementOutput& out, c
   // and of the projection of the friction force v = f_a t_a on the plane normal to c:
   // d(P v)/dx1 = (c.v) H + c (H v)^T
   const Eigen::Vector3d v = f[0] * R.t1 + f[1] * R.t2;
-  if (v.squaredNorm() > 0.0) node_blocks(G.c.dot(v) * G.H + G.c * (G.H * v).transpose());
+  if (v.squaredNorm() > 0.0) {
+    node_blocks(G.c.dot(v) * G.H + G.c * (G.H * v).transpose());
+    out.unsymmetric = true;
+  }
   (void)in;
 }
 

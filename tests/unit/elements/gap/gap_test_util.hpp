@@ -127,6 +127,15 @@ inline /// Central differences of the residual against the tangent (multipliers 
   const auto cslot = std::vector<int>(el.cslot.begin(), el.cslot.end());
   const auto ccomp = el.ccomp;
   const auto nd = el.u.size();
+  // a tangent the kernel calls symmetric must be: the solver then factorises one triangle of it
+  if (!el.unsymmetric) {
+    double scale = 1e-300;
+    for (double v : K) scale = std::max(scale, std::abs(v));
+    for (std::size_t i = 0; i < nd; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        EXPECT_NEAR(K[i * nd + j], K[j * nd + i], 1e-12 * scale)
+            << "tangent called symmetric, entries (" << i << "," << j << ")";
+  }
   // A compliant row (a force law's stiffness as a row of compliance E, its multiplier the force
   // itself) stands for the tangent term D c^T / E: condensed into K, it is what the residual's
   // differences see. Its value is 0 and its multiplier is recomputed at every evaluation.
@@ -164,7 +173,7 @@ inline /// Central differences of the residual against the tangent (multipliers 
     for (int row = 0; row < n_rows; ++row)
       if (ccomp[row] == 0.0)
         EXPECT_NEAR((p.g[row] - m.g[row]) / (2 * h), ccoef0[row * nd + j], 1e-6)
-          << "constraint row " << row << " dof " << j;
+            << "constraint row " << row << " dof " << j;
   }
   // d r / d lambda for each active row
   for (int row = 0; row < n_rows; ++row) {
