@@ -56,9 +56,13 @@ void MechanicalGapKernel::assemble(const ElementInput& in, ElementOutput& out, c
     if (L.lagrange_normal) {
       // the friction force depends on the normal multiplier: d r / d lambda_N = dg + q dtau/dN
       out.has_columns = true;
-      const int row = out.n_constraints - 1; // the normal row was added last
-      for (int i = 0; i < nd; ++i)
-        out.constraint_column[row * nd + i] += L.dtau_dN[0] * L.q[0][i] + L.dtau_dN[1] * L.q[1][i];
+      int row = -1;
+      for (int c = 0; c < out.n_constraints; ++c)
+        if (out.constraint_slot[c] == 0) row = c;
+      if (row >= 0)
+        for (int i = 0; i < nd; ++i)
+          out.constraint_column[row * nd + i] +=
+              L.dtau_dN[0] * L.q[0][i] + L.dtau_dN[1] * L.q[1][i];
     } else if (L.dFN_dg != 0.0) {
       for (int a = 0; a < 2; ++a) tan(L.q[a], L.dg, L.dtau_dN[a] * L.dFN_dg);
       out.unsymmetric = true;

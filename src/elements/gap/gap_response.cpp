@@ -277,6 +277,44 @@ void MechanicalGapKernel::friction_penalty(const ElementInput& in, std::span<dou
   }
 }
 
+void MechanicalGapKernel::slip_rows(const ElementInput& in, std::span<double> mult,
+                                    const Response& R, Local& L) const {
+  // Only elastic-slip friction on a fixed slip plane (the rows' columns are the rows themselves;
+  // a projected, rotating gap's friction acts along q_a, and Lagrange friction keeps its
+  // multipliers for its own stick rows).
+  if (!_slip_rows || !L.fl || L.fl->lagrange() || L.projected || !L.is_closed) return;
+  L.slip_in_rows = true;
+  if (L.update) mult[1] = mult[2] = 0.0;
+  // The symmetric slip tangent S = sum_k s_k e_k e_k^T: a row along e_k (in the slip basis) with
+  // compliance 1/s_k, its multiplier the friction force along e_k. Stick (k I, or the attached
+  // stiffness at zero force) keeps the slip basis itself, so its rows stay the same rows from
+  // iteration to iteration; slip has one row, across the slip direction.
+  const Eigen::Matrix2d S = 0.5 * (L.dtau_ds + L.dtau_ds.transpose());
+  Eigen::Matrix2d E = Eigen::Matrix2d::Identity();
+  Eigen::Vector2d s = S.diagonal();
+  if (S(0, 1) != 0.0) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(S);
+    E = es.eigenvectors();
+    s = es.eigenvalues();
+  }
+  const double smax = s.cwiseAbs().maxCoeff();
+  if (!(smax > 0)) return;
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector2d e = E.col(k);
+    if (s[k] > kRowFraction * smax) {
+      const GapVec v = e[0] * L.ds[0] + e[1] * L.ds[1];
+      if (!enforceable(in, L, v)) continue;
+      const int j = L.n_slip_rows++;
+      L.slip_row[j] = v;
+      L.slip_row_compliance[j] = 1.0 / s[k];
+      if (L.update) mult[1 + j] = e.dot(R.friction);
+    }
+    L.dtau_ds -= s[k] * e * e.transpose();
+  }
+  // what is left is round-off or the slip-rate term (unsymmetric): kept in the tangent
+  if (L.dtau_ds.cwiseAbs().maxCoeff() <= 1e-12 * smax) L.dtau_ds.setZero();
+}
+
 void MechanicalGapKernel::damping(const ElementInput& in, Response& R, Local& L) const {
   const ContactDampingSpec& dmp = _section.damping;
   if (dmp.given && L.dt > 0) {
@@ -335,8 +373,9 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
   // conductance live in the tangent
   const bool normal_rows =
       _mode == NormalMode::Direct || (_mode == NormalMode::Force && _compliant_rows);
-  const bool friction_rows = !L.fl || (L.fl->lagrange() && L.status != ContactStatus::Slip &&
-                                       L.previous != ContactStatus::Slip);
+  const bool friction_rows =
+      !L.fl || L.slip_in_rows ||
+      (L.fl->lagrange() && L.status != ContactStatus::Slip && L.previous != ContactStatus::Slip);
   if (L.status != L.previous && !(normal_rows && friction_rows && !_thermal))
     out.stiffness_changed = true;
   const auto& s0 = in.state_start;
@@ -351,6 +390,9 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
   st[GapStateLayout::damping] = L.Fd;
   st[GapStateLayout::damping + 1] = L.td[0];
   st[GapStateLayout::damping + 2] = L.td[1];
+  for (int j = 0; j < L.n_slip_rows; ++j)
+    out.add_constraint(1 + j, 0.0, {L.slip_row[j].data(), static_cast<std::size_t>(L.nd)},
+                       L.slip_row_compliance[j]);
   // an exact row drives the overclosure to 0; a compliant row's multiplier is already the law's
   // force at this state, so its value is 0 (the row only carries the linearisation)
   if (L.lagrange_normal)
@@ -365,6 +407,7 @@ void MechanicalGapKernel::respond(const ElementInput& in, std::span<double> st,
   setup(in, st, R, L);
   normal(in, st, mult, R, L);
   friction(in, st, mult, out, R, L);
+  if (out) slip_rows(in, mult, R, L);
   damping(in, R, L);
   heat(in, R, L);
   R.status = L.status;

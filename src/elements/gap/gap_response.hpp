@@ -54,6 +54,11 @@ struct MechanicalGapKernel::Local {
   Eigen::Vector2d dtau_dN = Eigen::Vector2d::Zero();
   bool friction_rows = false;   ///< Lagrange stick rows are active
   bool predicted_stick = false; ///< penalty stick predicted after a slip reversal
+  /// elastic-slip stiffness carried by compliant rows (slots 1, 2): directions, compliances
+  int n_slip_rows = 0;
+  GapVec slip_row[2];
+  double slip_row_compliance[2] = {0.0, 0.0};
+  bool slip_in_rows = false; ///< the slip tangent went to rows (what is left in dtau_ds is ~0)
   Eigen::Vector2d dD_de = Eigen::Vector2d::Zero(); ///< d(dissipation)/d(elastic slip)
   double dD_dN = 0.0;                              ///< d(dissipation)/d(normal force)
   // contact damping

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <string_view>
 #include <fmt/format.h>
+#include <string_view>
 #include <unordered_map>
 
 namespace gapfem {
@@ -77,6 +77,8 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
     _mode = NormalMode::Augmented;
     _augmented_k = b.penalty_stiffness * _section.area;
   }
+  if (const char* env = std::getenv("GAPFEM_FRICTION_ROWS"))
+    _slip_rows = std::string_view(env) != "0" && std::string_view(env) != "off";
   // Friction laws: the section's, then every *CHANGE FRICTION that touches this block.
   std::unordered_map<ElemId, LocalIndex> index;
   for (std::size_t i = 0; i < ctx.elements.size(); ++i)

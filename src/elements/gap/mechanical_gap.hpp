@@ -72,6 +72,8 @@ class MechanicalGapKernel final : public ElementKernel {
   void friction_lagrange(const ElementInput& in, std::span<double> st, std::span<double> mult,
                          ElementOutput* out, Response& R, Local& L) const;
   void friction_penalty(const ElementInput& in, std::span<double> st, Response& R, Local& L) const;
+  /// Elastic-slip friction's stiffness as compliant rows (slots 1 and 2) instead of tangent terms.
+  void slip_rows(const ElementInput& in, std::span<double> mult, const Response& R, Local& L) const;
   void damping(const ElementInput& in, Response& R, Local& L) const;
   void heat(const ElementInput& in, Response& R, Local& L) const;
   void store(const ElementInput& in, std::span<double> st, ElementOutput& out, Response& R,
@@ -101,6 +103,11 @@ class MechanicalGapKernel final : public ElementKernel {
   /// Force laws: a gap whose slope is at least kRowFraction of the law's stiffness scale carries
   /// it as a compliant constraint row (GAPFEM_PENALTY_ROWS=0 keeps it in the tangent)
   bool _compliant_rows = true;
+  /// Elastic-slip friction on a fixed direction carries its stick and slip stiffness as compliant
+  /// rows along the eigenvectors of its slip tangent (GAPFEM_FRICTION_ROWS=0: in the tangent), so
+  /// that stick/slip changes and the stick stiffness's dependence on the normal force change rows,
+  /// not the matrix the solver factorises (docs/theory/gap_elements.md §4).
+  bool _slip_rows = true;
   static constexpr double kRowFraction = 1e-9;
   double _augmented_k = 0.0;          ///< 0: automatic
   std::vector<FrictionLaw> _friction; ///< [0] the section's (if any), then *CHANGE FRICTION

@@ -1,5 +1,6 @@
 // The constrained (KKT) solve against a dense solve of the saddle-point system.
 #include "linalg/kkt_solver.hpp"
+#include "scoped_env.hpp"
 
 #include <Eigen/Dense>
 #include <cstdlib>
@@ -454,16 +455,7 @@ struct ChangedRows {
 };
 } // namespace
 
-namespace {
-/// Sets an environment variable for a scope (the solver reads its switches when made).
-struct ScopedEnv {
-  ScopedEnv(const char* name, const char* value) : _name(name) { ::setenv(name, value, 1); }
-  ~ScopedEnv() { ::unsetenv(_name); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-  const char* _name;
-};
-} // namespace
+using test::ScopedEnv;
 
 // The Woodbury path (GAPFEM_DENSE_MULTIPLIERS=0): the kept factor is made exact for the
 // current rows, and the multipliers are solved by CG on it.

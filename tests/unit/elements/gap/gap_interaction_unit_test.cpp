@@ -6,11 +6,13 @@
 #include "elements/gap/mechanical_gap.hpp"
 #include "elements/gap/normal_law.hpp"
 #include "gap_test_util.hpp"
+#include "scoped_env.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gapfem;
+using gapfem::test::ScopedEnv;
 using gapfem::test::SingleElement;
 using gapfem::test::two_node_gap_model;
 
@@ -178,10 +180,35 @@ TEST(GapInteraction, FrictionWithExactNormalContactHasTheNormalColumn) {
     el.mult[0] = 100.0;
     el.u = {slipping ? 0.01 : 0.0002, 0.0, 0.0001, 0, 0, 0};
     el.evaluate();
-    ASSERT_EQ(el.n_constraints, 1);
+    // the exact normal row, and the elastic-slip stiffness as compliant rows: both slip
+    // directions in stick, the one across the slip direction in slip
+    ASSERT_EQ(el.n_constraints, slipping ? 2 : 3);
+    int exact = 0;
+    for (int r = 0; r < el.n_constraints; ++r) {
+      if (el.ccomp[r] == 0.0) {
+        ++exact;
+        EXPECT_EQ(el.cslot[r], 0);
+      } else {
+        EXPECT_GT(el.cslot[r], 0);
+      }
+    }
+    EXPECT_EQ(exact, 1);
     EXPECT_EQ(el.has_columns, true);
+    EXPECT_FALSE(el.unsymmetric); // the friction's coupling to the normal force is a column
     check_element_tangent(el, 0.001);
   }
+  // with GAPFEM_FRICTION_ROWS=0 the same stiffness is in the tangent: one row
+  ScopedEnv off("GAPFEM_FRICTION_ROWS", "0");
+  GapSection s = gapuni(0.0);
+  s.friction = coulomb(0.3, 1e-3);
+  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
+  SingleElement el(m);
+  set_state_closed(el, ContactStatus::Stick);
+  el.mult[0] = 100.0;
+  el.u = {0.0002, 0.0, 0.0001, 0, 0, 0};
+  el.evaluate();
+  EXPECT_EQ(el.n_constraints, 1);
+  check_element_tangent(el, 0.001);
 }
 
 TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {
