@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace gapfem {
 
@@ -15,16 +16,19 @@ namespace {
 /// the Krylov path, which copes with them, takes over.
 constexpr double kDensePivot = 1e-12;
 
-/// The multiplier matrix S = [S_cc S_ca; S_ac S_aa] of current rows (c, positive definite) and
-/// anti-rows (a, whose Schur complement is negative definite), symmetrically scaled by its
-/// diagonal and factorised by blocks.
+/// The multiplier matrix S = [S_cc S_ca; S_ac S_aa] of current rows (c) and anti-rows (a),
+/// diagonally scaled. Symmetric (every row its own column): S_cc is positive definite and the
+/// anti-rows' Schur complement negative definite, factorised by blocks with Cholesky, which also
+/// proves the rows independent. With force columns of their own (friction on the normal
+/// multiplier) S is unsymmetric: LU with partial pivoting, its condition estimate in place of the
+/// pivots.
 class DenseMultiplierSystem {
  public:
-  /// False when S_cc is not (numerically) positive definite or the anti-rows' complement is not
-  /// negative definite.
-  bool factorize(Eigen::MatrixXd S, int m) {
+  /// False when the rows are (nearly) redundant.
+  bool factorize(Eigen::MatrixXd S, int m, bool symmetric) {
     _S = std::move(S);
     _m = m;
+    _symmetric = symmetric;
     const auto mt = _S.rows();
     _scale.resize(mt);
     for (Eigen::Index i = 0; i < mt; ++i) {
@@ -33,6 +37,10 @@ class DenseMultiplierSystem {
       _scale(i) = 1.0 / std::sqrt(d);
     }
     const Eigen::MatrixXd Ss = _scale.asDiagonal() * _S * _scale.asDiagonal();
+    if (!symmetric) {
+      _lu.compute(Ss);
+      return _lu.rcond() > kDensePivot;
+    }
     const auto na = mt - m;
     _cc.compute(Ss.topLeftCorner(m, m));
     if (_cc.info() != Eigen::Success) return false;
@@ -56,6 +64,7 @@ class DenseMultiplierSystem {
  private:
   Eigen::VectorXd apply(const Eigen::VectorXd& h) const {
     const Eigen::VectorXd hs = _scale.cwiseProduct(h);
+    if (!_symmetric) return _scale.cwiseProduct(_lu.solve(hs));
     const auto na = hs.size() - _m;
     Eigen::VectorXd ws(hs.size());
     const Eigen::VectorXd w0 = _m > 0 ? Eigen::VectorXd(_cc.solve(hs.head(_m))) : Eigen::VectorXd();
@@ -75,61 +84,80 @@ class DenseMultiplierSystem {
   Eigen::MatrixXd _S;
   Eigen::VectorXd _scale;
   Eigen::Index _m = 0;
+  bool _symmetric = true;
   Eigen::LLT<Eigen::MatrixXd> _cc;
   Eigen::LLT<Eigen::MatrixXd> _aa;
   Eigen::MatrixXd _X;
+  Eigen::PartialPivLU<Eigen::MatrixXd> _lu;
 };
 } // namespace
 
-bool KktSolver::dense_columns(const ConstraintBlock& C, std::span<const int> gone,
-                              std::vector<int>& idx, RunStatistics* stats) {
-  const int m = C.n_rows();
-  const auto na = static_cast<int>(gone.size());
-  idx.assign(static_cast<std::size_t>(m + na), -1);
-  std::vector<int> missing_c, missing_f; // rows of C, rows of _frows
-  std::vector<int> missing_f_at;         // their places in idx
-  for (int r = 0; r < m; ++r)
-    if ((idx[r] = _mcols.find(C, r)) < 0) missing_c.push_back(r);
-  for (int k = 0; k < na; ++k)
-    if ((idx[m + k] = _mcols.find(_frows, gone[k])) < 0) {
-      missing_f.push_back(gone[k]);
-      missing_f_at.push_back(m + k);
-    }
-  const auto added = missing_c.size() + missing_f.size();
-  if (added == 0) return true;
+bool KktSolver::dense_columns(const ConstraintBlock& C, const ConstraintBlock& D,
+                              std::span<const int> gone, MultiplierColumns::Combination& rows,
+                              MultiplierColumns::Combination& cols, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization); // counted as the factor's updates
   const Stopwatch watch;
-  std::vector<int> got;
-  if (!_mcols.add(*_cholmod, C, missing_c, got)) return false;
-  for (std::size_t j = 0; j < got.size(); ++j) idx[missing_c[j]] = got[j];
-  if (!_mcols.add(*_cholmod, _frows, missing_f, got)) return false;
-  for (std::size_t j = 0; j < got.size(); ++j) idx[missing_f_at[j]] = got[j];
-  if (stats) stats->factor_updates += static_cast<long>(added);
-  const double per_row = watch.seconds() / static_cast<double>(added);
-  _t_update_row = _t_update_row > 0 ? 0.5 * (_t_update_row + per_row) : per_row;
-  log::debug("  multiplier columns: {} new ({:.2e} s each), {} kept", added, per_row,
-             _mcols.size() - static_cast<int>(added));
+  std::vector<int> all(static_cast<std::size_t>(C.n_rows()));
+  std::iota(all.begin(), all.end(), 0);
+  int total = 0;
+  auto express = [&](const ConstraintBlock& B, std::span<const int> which, bool columns,
+                     MultiplierColumns::Combination& out) {
+    int made = 0;
+    const bool ok = _mcols.express(*_cholmod, B, which, columns, out, made);
+    total += made;
+    return ok;
+  };
+  // rows: the current rows, then the anti-rows (the rows gone, whose columns are their rows)
+  if (!express(C, all, false, rows) || !express(_frows, gone, false, rows)) return false;
+  if (D.has_columns()) {
+    if (!express(D, all, true, cols)) return false;
+    const auto r0 = static_cast<std::size_t>(rows.ptr[C.n_rows()]);
+    for (std::size_t k = C.n_rows(); k + 1 < rows.ptr.size(); ++k)
+      cols.ptr.push_back(cols.ptr.back() + rows.ptr[k + 1] - rows.ptr[k]);
+    cols.unit.insert(cols.unit.end(), rows.unit.begin() + static_cast<std::ptrdiff_t>(r0),
+                     rows.unit.end());
+    cols.coef.insert(cols.coef.end(), rows.coef.begin() + static_cast<std::ptrdiff_t>(r0),
+                     rows.coef.end());
+  }
+  if (total == 0) return true;
+  if (stats) stats->factor_updates += total;
+  const double per_column = watch.seconds() / total;
+  _t_update_row = _t_update_row > 0 ? 0.5 * (_t_update_row + per_column) : per_column;
+  log::debug("  multiplier columns: {} new ({:.2e} s each), {} kept", total, per_column,
+             _mcols.size() - total);
   return true;
 }
 
-bool KktSolver::dense_step(const ConstraintBlock& C, std::span<const int> p_of,
-                           std::span<const int> gone, std::span<const double> d,
-                           std::span<const double> bb, std::span<const double> gg,
-                           std::span<double> x_u, std::span<double> x_l, RunStatistics* stats) {
+bool KktSolver::dense_step(const ConstraintBlock& C, const ConstraintBlock& D,
+                           std::span<const int> p_of, std::span<const int> gone,
+                           std::span<const double> d, std::span<const double> bb,
+                           std::span<const double> gg, std::span<double> x_u, std::span<double> x_l,
+                           RunStatistics* stats) {
   const int m = C.n_rows();
   const auto mt = static_cast<Eigen::Index>(m + gone.size());
   const auto n = static_cast<LocalIndex>(bb.size());
-  std::vector<int> idx;
-  if (!dense_columns(C, gone, idx, stats)) return false;
-  // S = Z^T Z - diag(d) over the extended rows (current rows, then anti-rows)
-  Eigen::MatrixXd S = _mcols.gram()(idx, idx);
+  MultiplierColumns::Combination rows, own_cols;
+  if (!dense_columns(C, D, gone, rows, own_cols, stats)) return false;
+  const bool symmetric = !D.has_columns();
+  MultiplierColumns::Combination& cols = symmetric ? rows : own_cols;
+  // S = Z_C^T Z_D - diag(d) over the extended rows (current rows, then anti-rows)
+  Eigen::MatrixXd S = _mcols.product(rows, cols);
+  if (symmetric) S = 0.5 * (S + S.transpose()).eval();
   for (Eigen::Index i = 0; i < mt; ++i) S(i, i) -= d[i];
   DenseMultiplierSystem system;
-  if (!system.factorize(std::move(S), m)) {
+  bool factored = false;
+  {
+    ScopedTimer timer(stats, TimeCategory::Factorization); // the multipliers' factor
+    const Stopwatch watch;
+    factored = system.factorize(std::move(S), m, symmetric);
+    log::debug("  dense multiplier matrix: {} rows ({}), {:.3f} s", mt,
+               symmetric ? "symmetric" : "unsymmetric", watch.seconds());
+  }
+  if (!factored) {
     log::debug("  dense multiplier matrix is singular (redundant rows): Krylov path");
     return false;
   }
-  // b1 = bb - C_P^T R_F gg;  t = L^-1 P b1;  rhs = Z^T t + gg
+  // b1 = bb - C_P^T R_F gg;  t = L^-1 P b1;  rhs = Z_C^T t + gg
   std::vector<double> b1(bb.begin(), bb.end());
   std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
   for (int r = 0; r < m; ++r)
@@ -143,10 +171,10 @@ bool KktSolver::dense_step(const ConstraintBlock& C, std::span<const int> p_of,
     ++_solves;
     _cholmod->forward(b1, t);
     Eigen::VectorXd rhs(mt), w;
-    _mcols.dot(idx, t, {rhs.data(), static_cast<std::size_t>(mt)});
+    _mcols.dot(rows, t, {rhs.data(), static_cast<std::size_t>(mt)});
     for (int r = 0; r < m; ++r) rhs(r) += gg[r];
     const double residual = system.solve(rhs, w);
-    _mcols.subtract(idx, {w.data(), static_cast<std::size_t>(mt)}, t);
+    _mcols.subtract(cols, {w.data(), static_cast<std::size_t>(mt)}, t);
     _cholmod->backward(t, x_u);
     const double dt = watch.seconds();
     _t_solve = _t_solve > 0 ? 0.8 * _t_solve + 0.2 * dt : dt;
@@ -158,12 +186,7 @@ bool KktSolver::dense_step(const ConstraintBlock& C, std::span<const int> p_of,
   C.multiply(x_u, cdu);
   for (int r = 0; r < m; ++r)
     if (p_of[r] >= 0) x_l[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
-  // keep the columns in use, and the others while they are few (a gap that opens often closes
-  // again in a later increment)
-  std::vector<int> used(idx.begin(), idx.end());
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
-  if (_mcols.size() > 2 * static_cast<int>(used.size()) + 64) _mcols.keep(used);
+  _mcols.prune(rows, cols);
   return true;
 }
 

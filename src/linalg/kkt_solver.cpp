@@ -328,22 +328,29 @@ bool KktSolver::reuse_pays(int changes) const {
   // a factorisation this cheap costs no more than the timer's noise: factorising every system
   // (full Newton) keeps small models' answers independent of the machine's timing
   if (!(_t_solve > 0) || _t_factor < kMinReusedFactorSeconds) return false;
+  const double per_row = _t_update_row > 0 ? _t_update_row : 0.002 * _t_factor;
+  if (_mcols.size() > 0 && !_dense_failed)
+    // the dense path serves this factor: a changed row costs at most a new column, and a fresh
+    // factor would make every kept column again
+    return 2 * _t_solve + changes * per_row < _t_factor + _mcols.size() * per_row;
   if (_modify && _active == _cholmod.get())
     // reuse pays when updating the factor for the changed rows and the multiplier iterations of
     // an exact factor (about 5; an update costs a few hundredths of a factorisation per row
     // until measured) cost less than a factorisation
-    return 5 * _t_solve + changes * (_t_update_row > 0 ? _t_update_row : 0.002 * _t_factor) <
-           _t_factor;
+    return 5 * _t_solve + changes * per_row < _t_factor;
   // reuse pays when the extra multiplier iterations (measured: about 5 + one per two changed
   // rows) cost less than a factorisation
   return (0.5 * changes + 5) * _t_solve < _t_factor;
 }
 
-bool KktSolver::dense_pays(int rows) const {
-  // the dense factorisation (rows^3 / 3 flops at a few GFlop/s) must cost less than the two
-  // back-substitutions it saves, and the Gram matrix must fit next to the factor
-  const double r = rows, flops = r * r * r / 3.0;
-  if (rows > kMaxDenseRows || flops / kDenseFlopRate > 2.0 * std::max(_t_solve, 1e-3)) return false;
+bool KktSolver::dense_pays(int rows, bool columns) const {
+  // the dense factorisation (rows^3 / 3 flops for Cholesky, twice that for LU, at a few
+  // GFlop/s) must cost less than the back-substitutions it saves (the Krylov path's CG takes a
+  // few, its GMRES with force columns of their own 10-20), and the Gram matrix must fit next to
+  // the factor
+  const double r = rows, flops = (columns ? 2.0 : 1.0) * r * r * r / 3.0;
+  const double saved = (columns ? 10.0 : 2.0) * std::max(_t_solve, 1e-3);
+  if (rows > kMaxDenseRows || flops / kDenseFlopRate > saved) return false;
   const auto available = available_memory_bytes();
   return !available || 3.0 * r * r * sizeof(double) < 0.25 * static_cast<double>(*available);
 }
@@ -405,10 +412,14 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     // its own rows, new rows and anti-rows (one forward and one backward solve per step), or,
     // where that cannot be used, is made exact for the current rows by updating and downdating
     // it (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
-    const bool dense = _dense && !_dense_failed && (stale || exact_same) && m > 0 &&
-                       _active == _cholmod.get() && !C.has_columns() &&
+    // A fresh factor that will be kept (reuse is allowed and a factorisation is not too cheap
+    // to keep) makes its columns at once: the next system needs them anyway.
+    const bool kept = stale || exact_same ||
+                      (opt.reuse == FactorReuse::Always ||
+                       (opt.reuse == FactorReuse::Auto && _t_factor >= kMinReusedFactorSeconds));
+    const bool dense = _dense && !_dense_failed && kept && m > 0 && _active == _cholmod.get() &&
                        _cholmod->has_split_solves() &&
-                       dense_pays(m + static_cast<int>(gone.size()));
+                       dense_pays(m + static_cast<int>(gone.size()), C.has_columns());
     if (stale && !dense && _modify && _active == _cholmod.get() &&
         (!gone.empty() || std::find(p_of.begin(), p_of.end(), -1) != p_of.end()) &&
         !modify_factor(C, R, ks, p_of, gone, stats)) {
@@ -477,7 +488,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
     auto step = [&](std::span<const double> bb, std::span<const double> gg, std::span<double> x_u,
                     std::span<double> x_l) {
       if (dense) {
-        if (dense_step(C, p_of, gone, d, bb, gg, x_u, x_l, stats)) {
+        if (dense_step(C, *Cs, p_of, gone, d, bb, gg, x_u, x_l, stats)) {
           SchurResult exact;
           exact.residual = _dense_residual;
           return exact;

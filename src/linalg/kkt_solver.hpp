@@ -72,9 +72,9 @@ class KktSolver final : public ConstrainedSolver {
   /// repeats (-1: a new row), `gone` the rows of _frows no longer present.
   Plan compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric, const KktOptions& opt,
                std::vector<int>& p_of, std::vector<int>& gone);
-  /// A dense multiplier matrix of `rows` rows pays (its factorisation against the solves it
-  /// saves) and fits in memory.
-  bool dense_pays(int rows) const;
+  /// A dense multiplier matrix of `rows` rows (unsymmetric with force `columns` of their own)
+  /// pays (its factorisation against the solves it saves) and fits in memory.
+  bool dense_pays(int rows, bool columns) const;
   /// Reusing the factor for a system with `changes` changed rows costs less than a factorisation
   /// (from the measured times).
   bool reuse_pays(int changes) const;
@@ -90,18 +90,21 @@ class KktSolver final : public ConstrainedSolver {
   bool modify_factor(const ConstraintBlock& C, std::span<const double> R,
                      std::span<const double> ks, std::vector<int>& p_of, std::vector<int>& gone,
                      RunStatistics* stats);
-  /// The columns (MultiplierColumns) of the rows of C and of the rows gone (`gone`, rows of
-  /// _frows), made where missing: idx[r] for r < m, idx[m + k] for gone[k]. False when the
-  /// backend declines.
-  bool dense_columns(const ConstraintBlock& C, std::span<const int> gone, std::vector<int>& idx,
+  /// The current rows of C and the anti-rows of the rows gone (`gone`, rows of _frows) as
+  /// combinations of kept columns (MultiplierColumns), made where missing; `cols` the same for
+  /// their force columns when D (C, or C with columns scaled for the factor's springs) has
+  /// columns of its own. False when the backend declines.
+  bool dense_columns(const ConstraintBlock& C, const ConstraintBlock& D, std::span<const int> gone,
+                     MultiplierColumns::Combination& rows, MultiplierColumns::Combination& cols,
                      RunStatistics* stats);
   /// The step for the right-hand side (bb, -gg) with the unmodified kept factor and the dense
-  /// multiplier matrix Z^T Z - diag(d) of the current rows and the anti-rows of the rows gone:
-  /// one forward and one backward solve. False (nothing solved) when it cannot be used: the
+  /// multiplier matrix Z_C^T Z_D - diag(d) of the current rows and the anti-rows of the rows
+  /// gone: one forward and one backward solve. False (nothing solved) when it cannot be used: the
   /// backend declines the columns, or the matrix is singular (redundant rows).
-  bool dense_step(const ConstraintBlock& C, std::span<const int> p_of, std::span<const int> gone,
-                  std::span<const double> d, std::span<const double> bb, std::span<const double> gg,
-                  std::span<double> x_u, std::span<double> x_l, RunStatistics* stats);
+  bool dense_step(const ConstraintBlock& C, const ConstraintBlock& D, std::span<const int> p_of,
+                  std::span<const int> gone, std::span<const double> d, std::span<const double> bb,
+                  std::span<const double> gg, std::span<double> x_u, std::span<double> x_l,
+                  RunStatistics* stats);
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
