@@ -568,3 +568,99 @@ TEST(KktSolver, WithoutTheMatrixOnlyTheKeptFactorIsUsed) {
   EXPECT_TRUE(solver.solve(junk, {b.data(), std::size_t(n)}, block({keep}), du, dl, true, opt)
                   .needs_matrix);
 }
+
+// Friction as rows (issue 16): a slipping gap's compliant row turns with its slip direction (the
+// same two equations, other coefficients, another compliance each iteration), and a normal row's
+// force column follows the friction it carries (D = c^T + q dtau/dN, unsymmetric). On a kept
+// factor the dense path gives the step (LU of Z_C^T Z_D - diag(d)), and the turning rows and the
+// columns are combinations of the equations' columns: no forward solve after the first system.
+// Against a dense solve of [K D; C -E] over random histories.
+namespace {
+struct GapRows {
+  Row row;
+  std::vector<double> column; ///< empty: D = C^T
+  double E = 0.0;
+};
+Eigen::VectorXd dense_columns(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
+                              const std::vector<GapRows>& rows) {
+  const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
+  A.topLeftCorner(n, n) = K;
+  Eigen::VectorXd rhs(n + m);
+  rhs.head(n) = b;
+  for (int r = 0; r < m; ++r) {
+    const Row& q = rows[r].row;
+    for (std::size_t k = 0; k < q.eqs.size(); ++k) {
+      A(n + r, q.eqs[k]) = q.c[k];
+      A(q.eqs[k], n + r) = rows[r].column.empty() ? q.c[k] : rows[r].column[k];
+    }
+    A(n + r, n + r) = -rows[r].E;
+    rhs[n + r] = -q.g;
+  }
+  return A.fullPivLu().solve(rhs);
+}
+} // namespace
+
+TEST(KktSolver, TurningRowsAndOwnColumnsMatchTheDenseSystem) {
+  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
+  std::mt19937 rng(16);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const int n = 12;
+  for (int trial = 0; trial < 20; ++trial) {
+    Problem p = chain(n, true);
+    KktSolver solver;
+    solver.analyze(p.pattern);
+    KktOptions opt;
+    opt.constraint_tolerance = 1e-15;
+    opt.reuse = FactorReuse::Always;
+    RunStatistics stats;
+    const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+    long columns_after_first = -1;
+    for (int step = 0; step < 6; ++step) {
+      std::vector<GapRows> rows;
+      ConstraintBlock C;
+      // gaps on equation pairs (i, i + 1): a normal row along i, exact, its column turned by
+      // the friction it carries; a compliant friction row across a random slip direction
+      for (int i = 0; i + 1 < n; i += 2) {
+        const std::vector<LocalIndex> eqs{i, i + 1};
+        if (u01(rng) < 0.7) {
+          GapRows g{{eqs, {1.0, 0.0}, 0.05 * (u01(rng) - 0.5), 100 + i}, {}, 0.0};
+          if (u01(rng) < 0.6) {
+            const double phi = 6.283 * u01(rng), mu = 0.5 * u01(rng);
+            g.column = {1.0 + mu * std::cos(phi), mu * std::sin(phi)};
+          }
+          rows.push_back(g);
+        }
+        if (u01(rng) < 0.6) {
+          const double theta = 6.283 * u01(rng);
+          rows.push_back({{eqs, {std::cos(theta), std::sin(theta)}, 0.0, 200 + i},
+                          {},
+                          std::pow(10.0, -3.0 + 4.0 * u01(rng))});
+        }
+      }
+      for (const GapRows& g : rows) C.add_row(g.row.eqs, g.row.c, g.row.g, g.row.id, g.column, g.E);
+      CsrMatrix K = to_csr(p);
+      std::vector<double> du(n), dl(rows.size());
+      const KktStatistics st =
+          solver.solve(K, {b.data(), std::size_t(n)}, C, du, dl, true, opt, &stats);
+      if (step > 0) {
+        EXPECT_TRUE(st.stale_factor);
+        EXPECT_EQ(st.schur_iterations, 0) << "the dense path, trial " << trial << " step " << step;
+      }
+      const Eigen::VectorXd ref = dense_columns(p.K, b, rows);
+      const double su = ref.head(n).cwiseAbs().maxCoeff();
+      for (int i = 0; i < n; ++i)
+        EXPECT_NEAR(du[i], ref[i], 1e-9 * su) << "trial " << trial << " step " << step << " " << i;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const double sl = std::max(1.0, std::abs(ref[n + static_cast<int>(r)]));
+        EXPECT_NEAR(dl[r], ref[n + static_cast<int>(r)], 1e-8 * sl)
+            << "trial " << trial << " step " << step << " row " << r;
+      }
+      if (step == 1) columns_after_first = stats.factor_updates;
+    }
+    EXPECT_EQ(stats.factorizations, 1);
+    // from the second system on, rows are combinations of the equations' columns; new columns
+    // only for equations no row touched before
+    EXPECT_LE(stats.factor_updates - columns_after_first, n) << "trial " << trial;
+  }
+}

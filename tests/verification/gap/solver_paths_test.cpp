@@ -5,9 +5,11 @@
 //     residual-only evaluations while the factor serves (the defaults),
 //   - the Woodbury-corrected factor instead of the dense multipliers (GAPFEM_DENSE_MULTIPLIERS=0),
 //   - the tangent in every evaluation (GAPFEM_RESIDUAL_ONLY=0),
-// must give the same displacements, reactions and gap forces to 1e-8 of their scales on the
+// and full Newton with elastic-slip friction's stiffness in the tangent instead of compliant rows
+// (GAPFEM_FRICTION_ROWS=0), must give the same displacements, reactions and gap forces to 1e-8
+// of their scales on the
 // random contact generators' networks (exact contact, NLGEOM steps among them), frictional
-// models (UMFPACK) and frictionless GAPCYL/GAPSPHER units, run with tight controls (R_n = 1e-8, C_n
+// models and frictionless GAPCYL/GAPSPHER units, run with tight controls (R_n = 1e-8, C_n
 // = 1e-9).
 #include "random/random_generators.hpp"
 #include "same_answer.hpp"
@@ -49,7 +51,7 @@ double max_penalty(const ModelDef& m) {
 template <class Make>
 void compare_paths(Make make, int n, int min_compared) {
   if (std::getenv("GAPFEM_FACTOR_REUSE") || std::getenv("GAPFEM_DENSE_MULTIPLIERS") ||
-      std::getenv("GAPFEM_RESIDUAL_ONLY"))
+      std::getenv("GAPFEM_RESIDUAL_ONLY") || std::getenv("GAPFEM_FRICTION_ROWS"))
     GTEST_SKIP() << "an environment switch overrides the paths this test compares";
   int compared = 0;
   long tangents = 0, evaluations = 0, reused_solves = 0;
@@ -74,6 +76,8 @@ void compare_paths(Make make, int n, int min_compared) {
                 m.tag + " (Woodbury-corrected factor)");
     expect_same(oracle, run_with(deck, FactorReuse::Always, "GAPFEM_RESIDUAL_ONLY"), 1e-8, k,
                 m.tag + " (the tangent in every evaluation)");
+    expect_same(oracle, run_with(deck, FactorReuse::Never, "GAPFEM_FRICTION_ROWS"), 1e-8, k,
+                m.tag + " (elastic-slip stiffness in the tangent, not in rows)");
     ++compared;
     tangents += kept.run.stats.tangent_assemblies;
     evaluations += kept.run.stats.evaluations;
