@@ -3,6 +3,7 @@
 // solve, instead of a Krylov iteration on the multipliers with one back-substitution per iteration.
 #include "common/log.hpp"
 #include "common/memory.hpp"
+#include "linalg/dense_factor.hpp"
 #include "linalg/kkt_solver.hpp"
 
 #include <algorithm>
@@ -36,21 +37,15 @@ class DenseMultiplierSystem {
       if (!(d > 0) || !std::isfinite(d)) return false;
       _scale(i) = 1.0 / std::sqrt(d);
     }
-    const Eigen::MatrixXd Ss = _scale.asDiagonal() * _S * _scale.asDiagonal();
-    if (!symmetric) {
-      _lu.compute(Ss);
-      return _lu.rcond() > kDensePivot;
-    }
+    Eigen::MatrixXd Ss = _scale.asDiagonal() * _S * _scale.asDiagonal();
+    if (!symmetric) return _lu.compute(std::move(Ss)) && _lu.rcond() > kDensePivot;
     const auto na = mt - m;
-    _cc.compute(Ss.topLeftCorner(m, m));
-    if (_cc.info() != Eigen::Success) return false;
-    if (m > 0 && !(_cc.matrixLLT().diagonal().cwiseAbs2().minCoeff() > kDensePivot)) return false;
+    if (!_cc.compute(Ss.topLeftCorner(m, m)) || !(_cc.min_pivot() > kDensePivot)) return false;
     if (na == 0) return true;
-    _X = _cc.solve(Ss.topRightCorner(m, na)); // S_cc^-1 S_ca
+    _X = Ss.topRightCorner(m, na);
+    _cc.solve_in_place(_X); // S_cc^-1 S_ca
     const Eigen::MatrixXd T = Ss.bottomLeftCorner(na, m) * _X - Ss.bottomRightCorner(na, na);
-    _aa.compute(T);
-    if (_aa.info() != Eigen::Success) return false;
-    return _aa.matrixLLT().diagonal().cwiseAbs2().minCoeff() > kDensePivot;
+    return _aa.compute(T) && _aa.min_pivot() > kDensePivot;
   }
   /// w = S^-1 h, refined once against S; returns max |S w - h|.
   double solve(const Eigen::VectorXd& h, Eigen::VectorXd& w) const {
@@ -67,7 +62,7 @@ class DenseMultiplierSystem {
     if (!_symmetric) return _scale.cwiseProduct(_lu.solve(hs));
     const auto na = hs.size() - _m;
     Eigen::VectorXd ws(hs.size());
-    const Eigen::VectorXd w0 = _m > 0 ? Eigen::VectorXd(_cc.solve(hs.head(_m))) : Eigen::VectorXd();
+    const Eigen::VectorXd w0 = _m > 0 ? _cc.solve(hs.head(_m)) : Eigen::VectorXd();
     if (na == 0) {
       ws = w0;
     } else {
@@ -85,10 +80,9 @@ class DenseMultiplierSystem {
   Eigen::VectorXd _scale;
   Eigen::Index _m = 0;
   bool _symmetric = true;
-  Eigen::LLT<Eigen::MatrixXd> _cc;
-  Eigen::LLT<Eigen::MatrixXd> _aa;
+  DenseCholesky _cc, _aa;
   Eigen::MatrixXd _X;
-  Eigen::PartialPivLU<Eigen::MatrixXd> _lu;
+  DenseLu _lu;
 };
 } // namespace
 
