@@ -259,6 +259,7 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
   _drift = 0.0;
   _drift_step = std::numeric_limits<double>::infinity();
   _last_changes = 0;
+  _last_rows = C.n_rows();
   _factored_scale = scale > 0 ? scale : 1.0;
   _factored_symmetric = symmetric;
   _frows = C;
@@ -293,6 +294,7 @@ KktSolver::Plan KktSolver::compare(const CsrMatrix& K, const ConstraintBlock& C,
     if (!used[f]) gone.push_back(f);
   plan.changes += static_cast<int>(gone.size());
   _last_changes = plan.changes;
+  _last_rows = m;
   // drift entry by entry relative to the diagonals of its row and column: a change that is
   // small against the stiffest DOF of the model can still be large where it happens (a
   // friction gap going from slip to a stiff stick in a model with stiffer gaps elsewhere).
@@ -320,19 +322,34 @@ KktSolver::Plan KktSolver::compare(const CsrMatrix& K, const ConstraintBlock& C,
   plan.exact_same = opt.matrix_current && drift == 0.0 && plan.changes == 0;
   if (!plan.exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
       drift <= opt.max_drift)
-    plan.stale = opt.reuse == FactorReuse::Always || reuse_pays(plan.changes);
+    plan.stale = opt.reuse == FactorReuse::Always || reuse_pays(plan.changes, m);
   return plan;
 }
 
-bool KktSolver::reuse_pays(int changes) const {
+bool KktSolver::dense_possible() const {
+  return _dense && !_dense_failed && _cholmod && _active == _cholmod.get() &&
+         _cholmod->has_split_solves();
+}
+
+double KktSolver::solve_seconds() const {
+  // before the first solve of a factor is timed: a solve costs about 1/40 of a factorisation on
+  // the 3-D meshes measured (1/27 at 11k equations, 1/42 at 50k, 1/35 at 200k)
+  return _t_solve > 0 ? _t_solve : _t_factor / 40.0;
+}
+
+bool KktSolver::reuse_pays(int changes, int rows) const {
   // a factorisation this cheap costs no more than the timer's noise: factorising every system
   // (full Newton) keeps small models' answers independent of the machine's timing
   if (!(_t_solve > 0) || _t_factor < kMinReusedFactorSeconds) return false;
-  const double per_row = _t_update_row > 0 ? _t_update_row : 0.002 * _t_factor;
-  if (_mcols.size() > 0 && !_dense_failed)
+  if (dense_possible()) {
     // the dense path serves this factor: a changed row costs at most a new column, and a fresh
-    // factor would make every kept column again
-    return 2 * _t_solve + changes * per_row < _t_factor + _mcols.size() * per_row;
+    // factor would make every column again (a column costs ~1/3000 of a factorisation at 50k
+    // equations until measured)
+    const double per_column = _t_update_row > 0 ? _t_update_row : 5e-4 * _t_factor;
+    return 2 * _t_solve + changes * per_column <
+           _t_factor + std::max(_mcols.size(), rows) * per_column;
+  }
+  const double per_row = _t_update_row > 0 ? _t_update_row : 0.002 * _t_factor;
   if (_modify && _active == _cholmod.get())
     // reuse pays when updating the factor for the changed rows and the multiplier iterations of
     // an exact factor (about 5; an update costs a few hundredths of a factorisation per row
@@ -349,7 +366,7 @@ bool KktSolver::dense_pays(int rows, bool columns) const {
   // few, its GMRES with force columns of their own 10-20), and the Gram matrix must fit next to
   // the factor
   const double r = rows, flops = (columns ? 2.0 : 1.0) * r * r * r / 3.0;
-  const double saved = (columns ? 10.0 : 2.0) * std::max(_t_solve, 1e-3);
+  const double saved = (columns ? 10.0 : 2.0) * std::max(solve_seconds(), 1e-3);
   if (rows > kMaxDenseRows || flops / kDenseFlopRate > saved) return false;
   const auto available = available_memory_bytes();
   return !available || 3.0 * r * r * sizeof(double) < 0.25 * static_cast<double>(*available);
@@ -360,7 +377,7 @@ bool KktSolver::matrix_optional() const {
   // (unknown right after a factorisation: the next system brings its matrix)
   return _active && !_factored.empty() && _reuse != FactorReuse::Never &&
          _drift + 2.0 * _drift_step <= _max_drift &&
-         (_reuse == FactorReuse::Always || reuse_pays(_last_changes));
+         (_reuse == FactorReuse::Always || reuse_pays(_last_changes, _last_rows));
 }
 
 KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,

@@ -75,9 +75,13 @@ class KktSolver final : public ConstrainedSolver {
   /// A dense multiplier matrix of `rows` rows (unsymmetric with force `columns` of their own)
   /// pays (its factorisation against the solves it saves) and fits in memory.
   bool dense_pays(int rows, bool columns) const;
-  /// Reusing the factor for a system with `changes` changed rows costs less than a factorisation
-  /// (from the measured times).
-  bool reuse_pays(int changes) const;
+  /// Reusing the factor for a system of `rows` rows, `changes` of them changed, costs less than
+  /// a factorisation (from the measured times).
+  bool reuse_pays(int changes, int rows) const;
+  /// The dense multiplier path can serve the current factor.
+  bool dense_possible() const;
+  /// The measured time of a solve with the current factor, or its estimate before one is timed.
+  double solve_seconds() const;
   void factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats);
   /// Factorise K augmented by the rows of C with weights R, remembering K and the rows.
   void fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R,
@@ -132,6 +136,7 @@ class KktSolver final : public ConstrainedSolver {
   double _drift_step = 0.0;   ///< its growth since the measurement before (infinity: unknown)
   double _max_drift = 1e-3;   ///< KktOptions::max_drift of that system
   int _last_changes = 0;      ///< changed rows of the last system
+  int _last_rows = 0;         ///< its rows
   FactorReuse _reuse = FactorReuse::Auto; ///< KktOptions::reuse of the last system
   /// the dense multiplier path (GAPFEM_DENSE_MULTIPLIERS=0: off): the columns of the current
   /// factor, and whether the path failed for it (the Krylov path then serves the factor)

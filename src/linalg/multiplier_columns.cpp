@@ -158,13 +158,15 @@ Eigen::MatrixXd MultiplierColumns::product(const Combination& A, const Combinati
         used.push_back(u);
       }
   const Eigen::MatrixXd GU = _G(used, used);
+  // column by column throughout (contiguous): T = G_U B^T, then S^T = T^T A^T
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(GU.rows(), B.rows());
   for (int s = 0; s < B.rows(); ++s)
     for (int k = B.ptr[s]; k < B.ptr[s + 1]; ++k) T.col(s) += B.coef[k] * GU.col(local[B.unit[k]]);
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(A.rows(), B.rows());
+  const Eigen::MatrixXd Tt = T.transpose();
+  Eigen::MatrixXd St = Eigen::MatrixXd::Zero(B.rows(), A.rows());
   for (int r = 0; r < A.rows(); ++r)
-    for (int k = A.ptr[r]; k < A.ptr[r + 1]; ++k) S.row(r) += A.coef[k] * T.row(local[A.unit[k]]);
-  return S;
+    for (int k = A.ptr[r]; k < A.ptr[r + 1]; ++k) St.col(r) += A.coef[k] * Tt.col(local[A.unit[k]]);
+  return St.transpose();
 }
 
 void MultiplierColumns::dot(const Combination& A, std::span<const double> t,
