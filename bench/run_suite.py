@@ -2,7 +2,9 @@
 """gapfem benchmark suite: generates the bench decks, runs gapfem (and CalculiX where it can run the
 deck), and prints one table with equations, gaps, wall time, peak memory, increments, Newton
 iterations, factorisations, linear solves, the time split, ccx's wall time and the ratio, and an
-agreement check (closed-gap count, sum of ground reactions to 1e-6).
+agreement check (closed-gap count, sum of ground reactions to 1e-6, and that sum per unit of the
+deformed loaded area: under NLGEOM the top pressure follows the face, whose area differs between
+the two codes' element formulations).
 
 Cases (generators in this directory):
   block-<size>        block of C3D8 on a GAPUNI foundation, exact hard contact (gapfem only)
@@ -111,6 +113,61 @@ def ccx_ground(dat):
     return out
 
 
+def deck_top(deck):
+    """Undeformed nodes of a block deck ({id: (x, y, z)}) and its top pressure (*DSLOAD P)."""
+    nodes, pressure, section = {}, None, None
+    lines = open(deck).read().splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("*"):
+            section = line.split(",")[0].strip().upper()
+            if section == "*DSLOAD" and i + 1 < len(lines):
+                f = [t.strip() for t in lines[i + 1].split(",")]
+                if len(f) >= 3 and f[1].upper() == "P":
+                    pressure = float(f[2])
+            continue
+        if section == "*NODE":
+            f = line.split(",")
+            if len(f) >= 4:
+                nodes[int(f[0])] = tuple(float(v) for v in f[1:4])
+    return nodes, pressure
+
+
+def ccx_displacements(frd):
+    """Last DISP block of a ccx .frd: {node: (ux, uy, uz)}."""
+    last, block, inside = {}, {}, False
+    for line in open(frd):
+        if line.startswith(" -4  DISP"):
+            inside, block = True, {}
+        elif inside and line.startswith(" -1"):
+            block[int(line[3:13])] = (float(line[13:25]), float(line[25:37]), float(line[37:49]))
+        elif inside and line.startswith(" -3"):
+            inside, last = False, block
+    return last
+
+
+def projected_top_area(nodes, disp):
+    """Area of the deformed top face (the nodes at the largest z, a structured grid) projected on
+    the x-y plane: a follower pressure P on it pushes down with P times this area."""
+    zmax = max(c[2] for c in nodes.values())
+    tol = 1e-9 * max(1.0, abs(zmax))
+    top = {(round(c[0], 9), round(c[1], 9)): n for n, c in nodes.items() if abs(c[2] - zmax) <= tol}
+    xs = sorted({k[0] for k in top})
+    ys = sorted({k[1] for k in top})
+
+    def xy(i, j):
+        n = top[(xs[i], ys[j])]
+        u = disp.get(n, (0.0, 0.0, 0.0))
+        return nodes[n][0] + u[0], nodes[n][1] + u[1]
+
+    area = 0.0
+    for i in range(len(xs) - 1):
+        for j in range(len(ys) - 1):
+            q = [xy(i, j), xy(i + 1, j), xy(i + 1, j + 1), xy(i, j + 1)]
+            area += 0.5 * sum(q[k][0] * q[(k + 1) % 4][1] - q[(k + 1) % 4][0] * q[k][1]
+                              for k in range(4))
+    return area
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--gapfem", default=os.path.join(HERE, "..", "build", "release", "gapfem"))
@@ -180,7 +237,10 @@ def main():
         if with_ccx and a.ccx and neq is not None and neq <= a.ccx_max_eq:
             cd = os.path.join(d, "ccx")
             os.makedirs(cd, exist_ok=True)
-            shutil.copy(deck, os.path.join(cd, "job.inp"))
+            # ccx's copy also writes its displacements (.frd), for the deformed loaded area
+            text = open(deck).read()
+            with open(os.path.join(cd, "job.inp"), "w") as f:
+                f.write(text.replace("*END STEP", "*NODE FILE\nU\n*END STEP"))
             env_rc, cwall, cmem, _ = timed([a.ccx, "-i", "job"], cd)
             row.update(ccx_wall=cwall, ccx_mem=cmem, ccx_rc=env_rc)
             ground = ccx_ground(os.path.join(cd, "job.dat"))
@@ -198,6 +258,15 @@ def main():
                 row["closed"] = sum(1 for v in ours.values() if v > thr)
                 row["ccx_rsum"] = sum(ground.values())
                 row["rsum"] = sum(ours.values())
+                # the follower pressure's resultant is P times the deformed top area, which
+                # depends on each code's element formulation: the reaction per unit of that area
+                # (the mean pressure each code carries) is what the two must share
+                nodes, pressure = deck_top(deck)
+                cdisp = ccx_displacements(os.path.join(cd, "job.frd"))
+                if pressure and cdisp:
+                    gdisp = {int(k): v["U"] for k, v in last.items() if "U" in v}
+                    row["ccx_area"] = projected_top_area(nodes, cdisp)
+                    row["area"] = projected_top_area(nodes, gdisp)
             print(f"   ccx:    exit {env_rc}, {cwall:.2f} s, {cmem:.0f} MB", file=sys.stderr, flush=True)
         rows.append(row)
 
@@ -222,6 +291,11 @@ def main():
             if r.get("ccx_rsum") is not None and r.get("rsum") is not None:
                 rel = abs(r["rsum"] - r["ccx_rsum"]) / max(abs(r["ccx_rsum"]), 1e-300)
                 ok.append(f"RF sum rel. diff {rel:.1e}")
+            if r.get("ccx_area") and r.get("area"):
+                pc = r["ccx_rsum"] / r["ccx_area"]
+                pg = r["rsum"] / r["area"]
+                ok.append(f"RF / loaded area rel. diff {abs(pg - pc) / abs(pc):.1e} "
+                          f"(areas {abs(r['area'] - r['ccx_area']) / r['ccx_area']:.1e} apart)")
             agree = ", ".join(ok)
         status = "" if r["rc"] == 0 else f" (exit {r['rc']})"
         lines.append(
