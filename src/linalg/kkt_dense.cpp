@@ -151,20 +151,17 @@ bool KktSolver::dense_step(const ConstraintBlock& C, const ConstraintBlock& D,
     log::debug("  dense multiplier matrix is singular (redundant rows): Krylov path");
     return false;
   }
-  // b1 = bb - C_P^T R_F gg;  t = L^-1 P b1;  rhs = Z_C^T t + gg
-  std::vector<double> b1(bb.begin(), bb.end());
-  std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
-  for (int r = 0; r < m; ++r)
-    if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * gg[r];
-  C.add_transpose_multiply(Rg, -1.0, b1);
+  // t = L^-1 P b1;  rhs = Z_C^T t + gg
+  const std::vector<double> b1 = spring_rhs(C, p_of, bb, gg);
   std::vector<double> t(static_cast<std::size_t>(n));
+  Eigen::VectorXd w;
   {
     ScopedTimer timer(stats, TimeCategory::Solve);
     const Stopwatch watch;
     if (stats) ++stats->linear_solves;
     ++_solves;
     _cholmod->forward(b1, t);
-    Eigen::VectorXd rhs(mt), w;
+    Eigen::VectorXd rhs(mt);
     _mcols.dot(rows, t, {rhs.data(), static_cast<std::size_t>(mt)});
     for (int r = 0; r < m; ++r) rhs(r) += gg[r];
     const double residual = system.solve(rhs, w);
@@ -173,13 +170,8 @@ bool KktSolver::dense_step(const ConstraintBlock& C, const ConstraintBlock& D,
     const double dt = watch.seconds();
     _t_solve = _t_solve > 0 ? 0.8 * _t_solve + 0.2 * dt : dt;
     _dense_residual = residual;
-    // the multipliers: dl = w + R_F (C du + g) on the rows whose springs are in the factor
-    std::copy(w.data(), w.data() + m, x_l.begin());
   }
-  std::vector<double> cdu(static_cast<std::size_t>(m));
-  C.multiply(x_u, cdu);
-  for (int r = 0; r < m; ++r)
-    if (p_of[r] >= 0) x_l[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
+  multipliers(C, p_of, {w.data(), static_cast<std::size_t>(mt)}, x_u, gg, x_l);
   _mcols.prune(rows, cols);
   return true;
 }

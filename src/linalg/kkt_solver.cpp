@@ -380,6 +380,34 @@ bool KktSolver::matrix_optional() const {
          (_reuse == FactorReuse::Always || reuse_pays(_last_changes, _last_rows));
 }
 
+std::vector<double> KktSolver::spring_rhs(const ConstraintBlock& C, std::span<const int> p_of,
+                                          std::span<const double> bb,
+                                          std::span<const double> gg) const {
+  std::vector<double> b1(bb.begin(), bb.end());
+  const int m = C.n_rows();
+  if (m == 0) return b1;
+  std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
+  for (int r = 0; r < m; ++r)
+    if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * gg[r];
+  C.add_transpose_multiply(Rg, -1.0, b1);
+  return b1;
+}
+
+void KktSolver::multipliers(const ConstraintBlock& C, std::span<const int> p_of,
+                            std::span<const double> w, std::span<const double> du,
+                            std::span<const double> gg, std::span<double> dl) const {
+  // M du + D w = b - C_P^T R_F g gives K du + C^T dl = b exactly with dl = w + R_F (C du + g) on
+  // the rows whose springs are in the factor: the multiplier iteration stops once C du + g is
+  // within the constraint tolerance, and the spring force R_F (C du + g) left over (large, R_F
+  // being stiff) belongs to the multiplier, not to the residual.
+  const int m = C.n_rows();
+  std::copy(w.begin(), w.begin() + m, dl.begin());
+  std::vector<double> cdu(static_cast<std::size_t>(m));
+  C.multiply(du, cdu);
+  for (int r = 0; r < m; ++r)
+    if (p_of[r] >= 0) dl[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
+}
+
 KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                                std::span<double> du, std::span<double> dl, bool symmetric,
                                const KktOptions& opt, RunStatistics* stats) {
@@ -512,14 +540,8 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
         }
         _dense_failed = true;
       }
-      // b1 = bb - C_P^T R_F gg ;  y = M^-1 b1
-      std::vector<double> b1(bb.begin(), bb.end());
-      if (m > 0) {
-        std::vector<double> Rg(static_cast<std::size_t>(m), 0.0);
-        for (int r = 0; r < m; ++r)
-          if (p_of[r] >= 0) Rg[r] = _fR[p_of[r]] * gg[r];
-        C.add_transpose_multiply(Rg, -1.0, b1);
-      }
+      // y = M^-1 b1
+      const std::vector<double> b1 = spring_rhs(C, p_of, bb, gg);
       std::vector<double> y(static_cast<std::size_t>(n));
       back_solve(b1, y, stats);
       SchurResult sr;
@@ -544,16 +566,7 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
       std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
       sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol_r, stats);
       for (LocalIndex i = 0; i < n; ++i) x_u[i] = y[i] - x[i];
-      // M du + D w = b - C_P^T R_F g gives K du + C^T dl = b exactly with
-      // dl = w + R_F (C du + g) on the rows whose springs are in the factor: the multiplier
-      // iteration stops once C du + g is within the constraint tolerance, and the spring force
-      // R_F (C du + g) left over (large, R_F being stiff) belongs to the multiplier, not to the
-      // residual.
-      std::copy(w.begin(), w.begin() + m, x_l.begin());
-      std::vector<double> cdu(static_cast<std::size_t>(m));
-      C.multiply(x_u, cdu);
-      for (int r = 0; r < m; ++r)
-        if (p_of[r] >= 0) x_l[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
+      multipliers(C, p_of, w, x_u, gg, x_l);
       return sr;
     };
     const SchurResult sr = step(b, C.g, du, dl);

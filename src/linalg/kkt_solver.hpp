@@ -109,6 +109,13 @@ class KktSolver final : public ConstrainedSolver {
                   std::span<const int> gone, std::span<const double> d, std::span<const double> bb,
                   std::span<const double> gg, std::span<double> x_u, std::span<double> x_l,
                   RunStatistics* stats);
+  /// b1 = bb - C_P^T R_F gg: the right-hand side with the factor's springs of the kept rows.
+  std::vector<double> spring_rhs(const ConstraintBlock& C, std::span<const int> p_of,
+                                 std::span<const double> bb, std::span<const double> gg) const;
+  /// dl = w + R_F (C du + gg) on the kept rows (w on the others), from the extended system's w.
+  void multipliers(const ConstraintBlock& C, std::span<const int> p_of, std::span<const double> w,
+                   std::span<const double> du, std::span<const double> gg,
+                   std::span<double> dl) const;
   /// Solves (Ch M^-1 Ch^T - diag(d)) w = rhs with preconditioner diag(p); x = M^-1 Ch^T w.
   SchurResult schur(const ConstraintBlock& Ch, std::span<const double> d, std::span<const double> p,
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
