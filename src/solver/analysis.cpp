@@ -465,7 +465,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   ++r.flux.n;
   r.controls.nonlinear_step = res.iterations > 1;
   if (res.fresh_contraction > 0) r.controls.fresh_contraction = res.fresh_contraction;
-  ctrl.accept(res.iterations - res.severe_iterations, growth);
+  ctrl.accept(res.iterations - res.severe_iterations - res.refinements, growth);
   r.heat->add_increment(disc.dofs(), dt, prob.reactions(), st.f_ext);
   ++stats.increments;
   ++r.sum.increments;

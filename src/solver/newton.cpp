@@ -36,6 +36,12 @@ double forcing_term(const NewtonControls& c, int iterations, double residual_rat
 }
 } // namespace
 
+/// The share of R_n a modified-Newton (stale-factor) iterate must meet (see the convergence
+/// check).
+constexpr double kStaleAcceptance = 1e-2;
+/// Stale iterations at most past R_n on the way to kStaleAcceptance.
+constexpr int kStaleRefinements = 2;
+
 NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
                              const NewtonControls& c, const FluxHistory& history,
                              RunStatistics* stats) {
@@ -177,6 +183,7 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
     // ---- convergence check
     const auto inc = p.increment_max();
     bool converged = ev.status_changes == 0 && ev.constraint_max <= p.constraint_tolerance();
+    bool within_stale_share = true; // every field also within kStaleAcceptance of its R_n
     double worst_ratio = 0.0;
     for (int f = 0; f < kNumFields; ++f) {
       if (!ev.has_field[f]) continue;
@@ -199,6 +206,18 @@ NewtonResult solve_increment(NonlinearProblem& p, ConstrainedSolver& solver,
       else
         ok = r <= fc.residual_ratio * qt && cmax[f] <= fc.correction_ratio * inc[f];
       converged &= ok;
+      within_stale_share &=
+          qt > 0 && r <= std::max(kStaleAcceptance * fc.residual_ratio, fc.linear_ratio) * qt;
+    }
+    // A modified-Newton iterate (from a stale factor) converges linearly: when it first meets R_n
+    // its error is of the order of the tolerance, where full Newton's quadratic step lands far
+    // below it. Such an iterate is accepted once it is also within kStaleAcceptance of R_n, or
+    // after kStaleRefinements more (cheap, residual-only) stale iterations while they still
+    // reduce the residual, so that the answer is about as converged as full Newton's.
+    if (converged && last_stale && !within_stale_share && res.refinements < kStaleRefinements &&
+        std::isfinite(previous_ratio) && worst_ratio < previous_ratio) {
+      converged = false;
+      ++res.refinements;
     }
     res.residual_history.push_back(worst_ratio);
     residual_ratio_now = worst_ratio;

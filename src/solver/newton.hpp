@@ -74,8 +74,11 @@ enum class FailureCause : std::uint8_t {
 
 struct NewtonResult {
   bool converged = false;
-  int iterations = 0;                    ///< linear solves of the Newton system
-  int severe_iterations = 0;             ///< iterations that changed contact status
+  int iterations = 0;        ///< linear solves of the Newton system
+  int severe_iterations = 0; ///< iterations that changed contact status
+  /// stale iterations taken past R_n toward full Newton's accuracy (not counted by automatic
+  /// incrementation: they say nothing of how hard the increment was)
+  int refinements = 0;
   int augmentations = 0;                 ///< augmented-Lagrange updates
   std::array<double, kNumFields> flux{}; ///< flux of the converged state (for the time average)
   std::string reason;                    ///< why it did not converge
