@@ -58,6 +58,10 @@ void compare_paths(Make make, int n, int min_compared) {
   long tangents = 0, evaluations = 0, reused_solves = 0;
   for (std::uint64_t seed = 1; seed <= static_cast<std::uint64_t>(n); ++seed) {
     ModelDef m = make(seed);
+    // a model whose stick stiffness puts its force round-off above 1e-6 of the loads (the
+    // generator raised its R_n: an elastic slip below 1e-6 of the node spacing) cannot be
+    // converged, nor compared, to 1e-8: its paths end on the round-off floor
+    if (m.residual_tolerance > 1e-6) continue;
     m.tight_controls = true;
     m.residual_tolerance = 1e-8;
     // the correction criterion tightened too (C_n = 1e-9): modified Newton converges linearly,
@@ -99,7 +103,7 @@ TEST(SolverPaths, RandomNetworksGiveFullNewtonsAnswer) {
 }
 
 TEST(SolverPaths, RandomFrictionGivesFullNewtonsAnswer) {
-  compare_paths([](std::uint64_t s) { return friction_model(s); }, 20, 15);
+  compare_paths([](std::uint64_t s) { return friction_model(s); }, 60, 15);
 }
 
 // Frictionless: with friction, rotating gaps can have more than one converged state (radial seed
