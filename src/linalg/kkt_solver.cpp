@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/memory.hpp"
+#include "linalg/norms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,31 +15,10 @@
 namespace gapfem {
 
 namespace {
-double norm_inf(std::span<const double> v) {
-  double s = 0.0;
-  for (double x : v) s = std::max(s, std::abs(x));
-  return s;
-}
 /// A compliant row's spring in the factor must stay softer than the row itself (R E < 1, see
 /// solve()); half of it keeps the Schur system well away from that limit.
 constexpr double kCompliantSpringShare = 0.5;
-/// The dense multiplier matrix is used up to this many rows, where its factorisation costs less
-/// than the back-substitutions it saves (at kDenseFlopRate flop/s, what one core's BLAS does).
-constexpr int kMaxDenseRows = 4000;
-constexpr double kDenseFlopRate = 1e10;
-/// Below this factorisation time the measured costs are noise: no reuse.
-constexpr double kMinReusedFactorSeconds = 2e-3;
-bool same_row(const ConstraintBlock& a, int ra, const ConstraintBlock& b, int rb) {
-  const LocalIndex a0 = a.row_ptr[ra], a1 = a.row_ptr[ra + 1];
-  const LocalIndex b0 = b.row_ptr[rb], b1 = b.row_ptr[rb + 1];
-  if (a1 - a0 != b1 - b0) return false;
-  for (LocalIndex k = 0; k < a1 - a0; ++k)
-    if (a.col[a0 + k] != b.col[b0 + k] || a.val[a0 + k] != b.val[b0 + k]) return false;
-  return true;
-}
-} // namespace
 
-namespace {
 /// augmentation_weights() from |diag K| given by diag(i), i < n
 template <class Diagonal>
 void weights_from_diagonal(LocalIndex n, Diagonal diag, const ConstraintBlock& C,
@@ -268,118 +248,6 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
   for (int r = 0; r < C.n_rows(); ++r) _frow_of[C.multiplier[r]] = r;
 }
 
-KktSolver::Plan KktSolver::compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric,
-                                   const KktOptions& opt, std::vector<int>& p_of,
-                                   std::vector<int>& gone) {
-  Plan plan;
-  const int m = C.n_rows();
-  const auto vals = K.values();
-  const bool comparable = _active && !_factored.empty() && symmetric == _factored_symmetric &&
-                          _factored.size() == vals.size();
-  if (!comparable) return plan;
-  std::vector<char> used(static_cast<std::size_t>(_frows.n_rows()), 0);
-  for (int r = 0; r < m; ++r) {
-    const auto it = _frow_of.find(C.multiplier[r]);
-    // a compliant row whose spring in the factor is no longer softer than the row (it got
-    // stiffer since) is replaced like a changed row
-    if (it != _frow_of.end() && !used[it->second] && same_row(C, r, _frows, it->second) &&
-        _fR[it->second] * C.row_compliance(r) <= 0.9) {
-      p_of[r] = it->second;
-      used[it->second] = 1;
-    } else {
-      ++plan.changes;
-    }
-  }
-  for (int f = 0; f < _frows.n_rows(); ++f)
-    if (!used[f]) gone.push_back(f);
-  plan.changes += static_cast<int>(gone.size());
-  _last_changes = plan.changes;
-  _last_rows = m;
-  // drift entry by entry relative to the diagonals of its row and column: a change that is
-  // small against the stiffest DOF of the model can still be large where it happens (a
-  // friction gap going from slip to a stiff stick in a model with stiffer gaps elsewhere).
-  // Without the current matrix, the drift is the one last measured.
-  double drift = _drift;
-  if (opt.matrix_current) {
-    const double before = _drift;
-    drift = 0.0;
-    const SparsityPattern& pat = K.pattern();
-    for (LocalIndex i = 0; i < pat.n; ++i)
-      for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k) {
-        const double change = std::abs(vals[k] - _factored[k]);
-        if (change != 0.0)
-          drift =
-              std::max(drift, change / std::sqrt(_factored_diag[i] * _factored_diag[pat.col[k]]));
-      }
-    _drift_step = std::max(drift - before, 0.0);
-    _drift = drift;
-    _max_drift = opt.max_drift;
-  }
-  log::debug(
-      "  system: drift {:.2e}{}, {} changed constraint rows, factor {:.3f} s, solve {:.4f} s",
-      drift, opt.matrix_current ? "" : " (last measured)", plan.changes, _t_factor, _t_solve);
-  // the same matrix (a linear model, an unchanged contact set): the step factorises once
-  plan.exact_same = opt.matrix_current && drift == 0.0 && plan.changes == 0;
-  if (!plan.exact_same && !opt.force_fresh && opt.reuse != FactorReuse::Never &&
-      drift <= opt.max_drift)
-    plan.stale = opt.reuse == FactorReuse::Always || reuse_pays(plan.changes, m);
-  return plan;
-}
-
-bool KktSolver::dense_possible() const {
-  return _dense && !_dense_failed && _cholmod && _active == _cholmod.get() &&
-         _cholmod->has_split_solves();
-}
-
-double KktSolver::solve_seconds() const {
-  // before the first solve of a factor is timed: a solve costs about 1/40 of a factorisation on
-  // the 3-D meshes measured (1/27 at 11k equations, 1/42 at 50k, 1/35 at 200k)
-  return _t_solve > 0 ? _t_solve : _t_factor / 40.0;
-}
-
-bool KktSolver::reuse_pays(int changes, int rows) const {
-  // a factorisation this cheap costs no more than the timer's noise: factorising every system
-  // (full Newton) keeps small models' answers independent of the machine's timing
-  if (!(_t_solve > 0) || _t_factor < kMinReusedFactorSeconds) return false;
-  if (dense_possible()) {
-    // the dense path serves this factor: a changed row costs at most a new column, and a fresh
-    // factor would make every column again (a column costs ~1/3000 of a factorisation at 50k
-    // equations until measured)
-    const double per_column = _t_update_row > 0 ? _t_update_row : 5e-4 * _t_factor;
-    return 2 * _t_solve + changes * per_column <
-           _t_factor + std::max(_mcols.size(), rows) * per_column;
-  }
-  const double per_row = _t_update_row > 0 ? _t_update_row : 0.002 * _t_factor;
-  if (_modify && _active == _cholmod.get())
-    // reuse pays when updating the factor for the changed rows and the multiplier iterations of
-    // an exact factor (about 5; an update costs a few hundredths of a factorisation per row
-    // until measured) cost less than a factorisation
-    return 5 * _t_solve + changes * per_row < _t_factor;
-  // reuse pays when the extra multiplier iterations (measured: about 5 + one per two changed
-  // rows) cost less than a factorisation
-  return (0.5 * changes + 5) * _t_solve < _t_factor;
-}
-
-bool KktSolver::dense_pays(int rows, bool columns) const {
-  // the dense factorisation (rows^3 / 3 flops for Cholesky, twice that for LU, at a few
-  // GFlop/s) must cost less than the back-substitutions it saves (the Krylov path's CG takes a
-  // few, its GMRES with force columns of their own 10-20), and the Gram matrix must fit next to
-  // the factor
-  const double r = rows, flops = (columns ? 2.0 : 1.0) * r * r * r / 3.0;
-  const double saved = (columns ? 10.0 : 2.0) * std::max(solve_seconds(), 1e-3);
-  if (rows > kMaxDenseRows || flops / kDenseFlopRate > saved) return false;
-  const auto available = available_memory_bytes();
-  return !available || 3.0 * r * r * sizeof(double) < 0.25 * static_cast<double>(*available);
-}
-
-bool KktSolver::matrix_optional() const {
-  // the drift grows by less per iteration as Newton converges: twice the last growth bounds it
-  // (unknown right after a factorisation: the next system brings its matrix)
-  return _active && !_factored.empty() && _reuse != FactorReuse::Never &&
-         _drift + 2.0 * _drift_step <= _max_drift &&
-         (_reuse == FactorReuse::Always || reuse_pays(_last_changes, _last_rows));
-}
-
 std::vector<double> KktSolver::spring_rhs(const ConstraintBlock& C, std::span<const int> p_of,
                                           std::span<const double> bb,
                                           std::span<const double> gg) const {
@@ -588,126 +456,6 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
                stale ? "stale" : (exact_same ? "same" : "new"), sr.iterations);
     return out;
   }
-}
-
-KktSolver::SchurResult KktSolver::schur(const ConstraintBlock& Ch, std::span<const double> d,
-                                        std::span<const double> p, std::span<const double> rhs,
-                                        std::span<double> w, std::span<double> x, bool cg,
-                                        int max_iterations, std::span<const double> tol,
-                                        RunStatistics* stats) {
-  SchurResult out;
-  const int m = Ch.n_rows();
-  const auto n = x.size();
-  std::vector<double> tmp(n), v_x(n);
-  // S v = Ch M^-1 D v - d v  (D = Ch^T unless the rows carry their own columns); Minv_D_v kept
-  auto apply_S = [&](std::span<const double> v, std::span<double> Sv, std::span<double> Minv_D_v) {
-    std::fill(tmp.begin(), tmp.end(), 0.0);
-    Ch.add_column_multiply(v, 1.0, tmp);
-    back_solve(tmp, Minv_D_v, stats);
-    Ch.multiply(Minv_D_v, Sv);
-    for (int r = 0; r < m; ++r) Sv[r] -= d[r] * v[r];
-  };
-  std::vector<double> res(rhs.begin(), rhs.end());
-  // the largest residual relative to its row's tolerance: converged at <= 1
-  auto ratio = [&] {
-    double q = 0.0;
-    for (int r = 0; r < m; ++r) q = std::max(q, std::abs(res[r]) / tol[r]);
-    return q;
-  };
-  std::fill(w.begin(), w.end(), 0.0);
-  std::fill(x.begin(), x.end(), 0.0);
-
-  if (cg) {
-    // Preconditioned CG (S symmetric positive (semi)definite, diagonal preconditioner p > 0).
-    std::vector<double> z(static_cast<std::size_t>(m)), pv(static_cast<std::size_t>(m)),
-        Sp(static_cast<std::size_t>(m));
-    for (int r = 0; r < m; ++r) z[r] = p[r] * res[r];
-    pv = z;
-    double rz = std::inner_product(res.begin(), res.end(), z.begin(), 0.0);
-    for (int it = 0; it < max_iterations && ratio() > 1.0; ++it) {
-      apply_S(pv, Sp, v_x);
-      const double pSp = std::inner_product(pv.begin(), pv.end(), Sp.begin(), 0.0);
-      if (!(pSp > 0)) break; // redundant constraints exhausted
-      const double alpha = rz / pSp;
-      for (int r = 0; r < m; ++r) {
-        w[r] += alpha * pv[r];
-        res[r] -= alpha * Sp[r];
-      }
-      for (std::size_t i = 0; i < n; ++i) x[i] += alpha * v_x[i];
-      ++out.iterations;
-      for (int r = 0; r < m; ++r) z[r] = p[r] * res[r];
-      const double rz_new = std::inner_product(res.begin(), res.end(), z.begin(), 0.0);
-      const double beta = rz_new / rz;
-      rz = rz_new;
-      for (int r = 0; r < m; ++r) pv[r] = z[r] + beta * pv[r];
-    }
-    out.residual = norm_inf(res);
-    out.ratio = ratio();
-    return out;
-  }
-  // Right-preconditioned restarted GMRES.
-  const int restart = std::min(m, 50);
-  std::vector<std::vector<double>> V(static_cast<std::size_t>(restart) + 1,
-                                     std::vector<double>(static_cast<std::size_t>(m)));
-  std::vector<double> H(static_cast<std::size_t>((restart + 1) * restart), 0.0), cs(restart),
-      sn(restart), s(restart + 1), zv(static_cast<std::size_t>(m)), Sz(static_cast<std::size_t>(m));
-  while (ratio() > 1.0 && out.iterations < max_iterations) {
-    const double beta = std::sqrt(std::inner_product(res.begin(), res.end(), res.begin(), 0.0));
-    if (!(beta > 0)) break;
-    for (int r = 0; r < m; ++r) V[0][r] = res[r] / beta;
-    std::fill(s.begin(), s.end(), 0.0);
-    s[0] = beta;
-    int k = 0;
-    for (; k < restart && out.iterations < max_iterations; ++k, ++out.iterations) {
-      for (int r = 0; r < m; ++r) zv[r] = p[r] * V[k][r];
-      apply_S(zv, Sz, v_x);
-      auto& vn = V[k + 1];
-      vn = Sz;
-      for (int j = 0; j <= k; ++j) {
-        const double h = std::inner_product(vn.begin(), vn.end(), V[j].begin(), 0.0);
-        H[j * restart + k] = h;
-        for (int r = 0; r < m; ++r) vn[r] -= h * V[j][r];
-      }
-      const double hn = std::sqrt(std::inner_product(vn.begin(), vn.end(), vn.begin(), 0.0));
-      H[(k + 1) * restart + k] = hn;
-      if (hn > 0)
-        for (int r = 0; r < m; ++r) vn[r] /= hn;
-      for (int j = 0; j < k; ++j) {
-        const double a = H[j * restart + k], bb = H[(j + 1) * restart + k];
-        H[j * restart + k] = cs[j] * a + sn[j] * bb;
-        H[(j + 1) * restart + k] = -sn[j] * a + cs[j] * bb;
-      }
-      const double a = H[k * restart + k], bb = H[(k + 1) * restart + k];
-      const double dd = std::hypot(a, bb);
-      cs[k] = dd > 0 ? a / dd : 1.0;
-      sn[k] = dd > 0 ? bb / dd : 0.0;
-      H[k * restart + k] = dd;
-      H[(k + 1) * restart + k] = 0.0;
-      s[k + 1] = -sn[k] * s[k];
-      s[k] = cs[k] * s[k];
-      if (std::abs(s[k + 1]) <= 1e-15 * beta || hn == 0) {
-        ++k;
-        ++out.iterations;
-        break;
-      }
-    }
-    // back substitution for the Krylov coefficients, then w += p V c
-    std::vector<double> c(static_cast<std::size_t>(k), 0.0);
-    for (int i = k - 1; i >= 0; --i) {
-      double v = s[i];
-      for (int j = i + 1; j < k; ++j) v -= H[i * restart + j] * c[j];
-      c[i] = H[i * restart + i] != 0 ? v / H[i * restart + i] : 0.0;
-    }
-    for (int j = 0; j < k; ++j)
-      for (int r = 0; r < m; ++r) w[r] += p[r] * V[j][r] * c[j];
-    // true residual rhs - S w, and x = M^-1 D w from the same evaluation
-    apply_S(w, Sz, x);
-    for (int r = 0; r < m; ++r) res[r] = rhs[r] - Sz[r];
-    if (k == 0) break;
-  }
-  out.residual = norm_inf(res);
-  out.ratio = ratio();
-  return out;
 }
 
 } // namespace gapfem

@@ -121,6 +121,14 @@ class KktSolver final : public ConstrainedSolver {
                     std::span<const double> rhs, std::span<double> w, std::span<double> x, bool cg,
                     int max_iterations, std::span<const double> tol, RunStatistics* stats);
 
+  /// The dense multiplier matrix is used up to this many rows, where its factorisation costs
+  /// less than the back-substitutions it saves (at kDenseFlopRate flop/s, what one core's BLAS
+  /// does).
+  static constexpr int kMaxDenseRows = 4000;
+  static constexpr double kDenseFlopRate = 1e10;
+  /// Below this factorisation time the measured costs are noise: no reuse.
+  static constexpr double kMinReusedFactorSeconds = 2e-3;
+
   std::shared_ptr<const SparsityPattern> _pattern;
   std::unique_ptr<LinearSolver> _cholmod, _umfpack;
   LinearSolver* _active = nullptr;
