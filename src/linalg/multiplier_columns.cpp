@@ -148,15 +148,23 @@ bool MultiplierColumns::express(LinearSolver& solver, const ConstraintBlock& B,
   return true;
 }
 
-Eigen::MatrixXd MultiplierColumns::product(const Combination& A, const Combination& B) const {
-  // the units in use, their Gram block, then T = G_U B^T and S = A T
-  std::vector<int> local(_units.size(), -1), used;
+std::vector<int> MultiplierColumns::used_units(const Combination& A, const Combination& B,
+                                               std::vector<int>& local) const {
+  local.assign(_units.size(), -1);
+  std::vector<int> used;
   for (const auto* X : {&A, &B})
     for (int u : X->unit)
       if (local[u] < 0) {
         local[u] = static_cast<int>(used.size());
         used.push_back(u);
       }
+  return used;
+}
+
+Eigen::MatrixXd MultiplierColumns::product(const Combination& A, const Combination& B) const {
+  // the units in use, their Gram block, then T = G_U B^T and S = A T
+  std::vector<int> local;
+  const std::vector<int> used = used_units(A, B, local);
   const Eigen::MatrixXd GU = _G(used, used);
   // column by column throughout (contiguous): T = G_U B^T, then S^T = T^T A^T
   Eigen::MatrixXd T = Eigen::MatrixXd::Zero(GU.rows(), B.rows());
@@ -204,13 +212,8 @@ void MultiplierColumns::subtract(const Combination& B, std::span<const double> w
 }
 
 void MultiplierColumns::prune(Combination& A, Combination& B) {
-  std::vector<int> renumber(_units.size(), -1), keep;
-  for (const auto* X : {&A, &B})
-    for (int u : X->unit)
-      if (renumber[u] < 0) {
-        renumber[u] = static_cast<int>(keep.size());
-        keep.push_back(u);
-      }
+  std::vector<int> renumber;
+  const std::vector<int> keep = used_units(A, B, renumber);
   if (size() <= 2 * static_cast<int>(keep.size()) + 64) return;
   std::vector<Unit> units;
   units.reserve(keep.size());

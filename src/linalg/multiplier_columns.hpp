@@ -68,6 +68,9 @@ class MultiplierColumns {
   /// The row unit of these coefficients for this multiplier, or -1.
   int find_row(std::int64_t multiplier, std::span<const LocalIndex> col,
                std::span<const double> val) const;
+  /// The units A and B use, in order of first use; local[u] is u's place among them (-1: unused).
+  std::vector<int> used_units(const Combination& A, const Combination& B,
+                              std::vector<int>& local) const;
   /// Add units (their c_col/c_val set) with one batch of sparse forward solves.
   bool make(LinearSolver& solver, std::vector<Unit>& fresh);
   void index_unit(int u);

@@ -111,19 +111,30 @@ struct Row {
   double g;
   std::int64_t id;
 };
-Eigen::VectorXd dense_kkt(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
-                          const std::vector<Row>& rows) {
+/// Dense solution of [K D; C -E] [du; dl] = [b; -g]: E[r] the rows' compliances (none: 0),
+/// columns[r] row r's own column D_r (none, or empty: D_r = C_r^T).
+Eigen::VectorXd dense_bordered(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
+                               const std::vector<Row>& rows, const std::vector<double>& E = {},
+                               const std::vector<std::vector<double>>& columns = {}) {
   const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
   A.topLeftCorner(n, n) = K;
   Eigen::VectorXd rhs(n + m);
   rhs.head(n) = b;
   for (int r = 0; r < m; ++r) {
-    for (std::size_t k = 0; k < rows[r].eqs.size(); ++k)
-      A(n + r, rows[r].eqs[k]) = A(rows[r].eqs[k], n + r) = rows[r].c[k];
+    const bool own = static_cast<std::size_t>(r) < columns.size() && !columns[r].empty();
+    for (std::size_t k = 0; k < rows[r].eqs.size(); ++k) {
+      A(n + r, rows[r].eqs[k]) = rows[r].c[k];
+      A(rows[r].eqs[k], n + r) = own ? columns[r][k] : rows[r].c[k];
+    }
+    if (static_cast<std::size_t>(r) < E.size()) A(n + r, n + r) = -E[r];
     rhs[n + r] = -rows[r].g;
   }
   return A.fullPivLu().solve(rhs);
+}
+Eigen::VectorXd dense_kkt(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
+                          const std::vector<Row>& rows) {
+  return dense_bordered(K, b, rows);
 }
 ConstraintBlock block(const std::vector<Row>& rows) {
   ConstraintBlock C;
@@ -269,18 +280,7 @@ TEST(KktSolver, LooseConstraintToleranceKeepsTheStepInEquilibrium) {
 namespace {
 Eigen::VectorXd dense_compliant(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
                                 const std::vector<Row>& rows, const std::vector<double>& E) {
-  const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
-  A.topLeftCorner(n, n) = K;
-  Eigen::VectorXd rhs(n + m);
-  rhs.head(n) = b;
-  for (int r = 0; r < m; ++r) {
-    for (std::size_t k = 0; k < rows[r].eqs.size(); ++k)
-      A(n + r, rows[r].eqs[k]) = A(rows[r].eqs[k], n + r) = rows[r].c[k];
-    A(n + r, n + r) = -E[r];
-    rhs[n + r] = -rows[r].g;
-  }
-  return A.fullPivLu().solve(rhs);
+  return dense_bordered(K, b, rows, E);
 }
 } // namespace
 
@@ -583,21 +583,15 @@ struct GapRows {
 };
 Eigen::VectorXd dense_columns(const Eigen::MatrixXd& K, const Eigen::VectorXd& b,
                               const std::vector<GapRows>& rows) {
-  const int n = static_cast<int>(K.rows()), m = static_cast<int>(rows.size());
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + m, n + m);
-  A.topLeftCorner(n, n) = K;
-  Eigen::VectorXd rhs(n + m);
-  rhs.head(n) = b;
-  for (int r = 0; r < m; ++r) {
-    const Row& q = rows[r].row;
-    for (std::size_t k = 0; k < q.eqs.size(); ++k) {
-      A(n + r, q.eqs[k]) = q.c[k];
-      A(q.eqs[k], n + r) = rows[r].column.empty() ? q.c[k] : rows[r].column[k];
-    }
-    A(n + r, n + r) = -rows[r].E;
-    rhs[n + r] = -q.g;
+  std::vector<Row> r;
+  std::vector<double> E;
+  std::vector<std::vector<double>> columns;
+  for (const GapRows& g : rows) {
+    r.push_back(g.row);
+    E.push_back(g.E);
+    columns.push_back(g.column);
   }
-  return A.fullPivLu().solve(rhs);
+  return dense_bordered(K, b, r, E, columns);
 }
 } // namespace
 

@@ -170,45 +170,45 @@ TEST(GapInteraction, PenaltyFrictionTangentStickAndSlip) {
 }
 
 TEST(GapInteraction, FrictionWithExactNormalContactHasTheNormalColumn) {
-  for (bool slipping : {false, true}) {
-    SCOPED_TRACE(slipping ? "slip" : "stick");
+  // a closed GAPUNI with elastic-slip friction moved sideways by ux (small: stick; large: slip)
+  auto closed_gap = [](double ux, auto check) {
     GapSection s = gapuni(0.0);
     s.friction = coulomb(0.3, 1e-3);
     Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
     SingleElement el(m);
     set_state_closed(el, ContactStatus::Stick);
     el.mult[0] = 100.0;
-    el.u = {slipping ? 0.01 : 0.0002, 0.0, 0.0001, 0, 0, 0};
+    el.u = {ux, 0.0, 0.0001, 0, 0, 0};
     el.evaluate();
-    // the exact normal row, and the elastic-slip stiffness as compliant rows: both slip
-    // directions in stick, the one across the slip direction in slip
-    ASSERT_EQ(el.n_constraints, slipping ? 2 : 3);
-    int exact = 0;
-    for (int r = 0; r < el.n_constraints; ++r) {
-      if (el.ccomp[r] == 0.0) {
-        ++exact;
-        EXPECT_EQ(el.cslot[r], 0);
-      } else {
-        EXPECT_GT(el.cslot[r], 0);
+    check(el);
+  };
+  for (bool slipping : {false, true}) {
+    SCOPED_TRACE(slipping ? "slip" : "stick");
+    closed_gap(slipping ? 0.01 : 0.0002, [&](SingleElement& el) {
+      // the exact normal row, and the elastic-slip stiffness as compliant rows: both slip
+      // directions in stick, the one across the slip direction in slip
+      ASSERT_EQ(el.n_constraints, slipping ? 2 : 3);
+      int exact = 0;
+      for (int r = 0; r < el.n_constraints; ++r) {
+        if (el.ccomp[r] == 0.0) {
+          ++exact;
+          EXPECT_EQ(el.cslot[r], 0);
+        } else {
+          EXPECT_GT(el.cslot[r], 0);
+        }
       }
-    }
-    EXPECT_EQ(exact, 1);
-    EXPECT_EQ(el.has_columns, true);
-    EXPECT_FALSE(el.unsymmetric); // the friction's coupling to the normal force is a column
-    check_element_tangent(el, 0.001);
+      EXPECT_EQ(exact, 1);
+      EXPECT_EQ(el.has_columns, true);
+      EXPECT_FALSE(el.unsymmetric); // the friction's coupling to the normal force is a column
+      check_element_tangent(el, 0.001);
+    });
   }
   // with GAPFEM_FRICTION_ROWS=0 the same stiffness is in the tangent: one row
   ScopedEnv off("GAPFEM_FRICTION_ROWS", "0");
-  GapSection s = gapuni(0.0);
-  s.friction = coulomb(0.3, 1e-3);
-  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-  SingleElement el(m);
-  set_state_closed(el, ContactStatus::Stick);
-  el.mult[0] = 100.0;
-  el.u = {0.0002, 0.0, 0.0001, 0, 0, 0};
-  el.evaluate();
-  EXPECT_EQ(el.n_constraints, 1);
-  check_element_tangent(el, 0.001);
+  closed_gap(0.0002, [](SingleElement& el) {
+    EXPECT_EQ(el.n_constraints, 1);
+    check_element_tangent(el, 0.001);
+  });
 }
 
 TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {
