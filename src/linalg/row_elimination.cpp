@@ -6,6 +6,20 @@
 
 namespace gapfem {
 
+namespace {
+/// Append row r of C to `to`.
+void append_row(ConstraintBlock& to, const ConstraintBlock& C, int r) {
+  const LocalIndex k0 = C.row_ptr[r], k1 = C.row_ptr[r + 1];
+  to.col.insert(to.col.end(), C.col.begin() + k0, C.col.begin() + k1);
+  to.val.insert(to.val.end(), C.val.begin() + k0, C.val.begin() + k1);
+  if (C.has_columns()) to.dval.insert(to.dval.end(), C.dval.begin() + k0, C.dval.begin() + k1);
+  to.row_ptr.push_back(static_cast<LocalIndex>(to.col.size()));
+  to.g.push_back(C.g[r]);
+  if (!C.compliance.empty()) to.compliance.push_back(C.row_compliance(r));
+  to.multiplier.push_back(C.multiplier[r]);
+}
+} // namespace
+
 void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                             bool pin) {
   const SparsityPattern& pat = K.pattern();
@@ -78,17 +92,20 @@ void RowElimination::reduce(CsrMatrix& K, std::span<const double> b, const Const
   }
 
   // the rows left
-  for (int r : _kept) {
-    const LocalIndex k0 = C.row_ptr[r], k1 = C.row_ptr[r + 1];
-    _rows.col.insert(_rows.col.end(), C.col.begin() + k0, C.col.begin() + k1);
-    _rows.val.insert(_rows.val.end(), C.val.begin() + k0, C.val.begin() + k1);
-    if (C.has_columns())
-      _rows.dval.insert(_rows.dval.end(), C.dval.begin() + k0, C.dval.begin() + k1);
-    _rows.row_ptr.push_back(static_cast<LocalIndex>(_rows.col.size()));
-    _rows.g.push_back(C.g[r]);
-    if (!C.compliance.empty()) _rows.compliance.push_back(C.row_compliance(r));
-    _rows.multiplier.push_back(C.multiplier[r]);
+  for (int r : _kept) append_row(_rows, C, r);
+}
+
+ConstraintBlock RowElimination::unpinned_rows(const ConstraintBlock& C) const {
+  ConstraintBlock out;
+  std::size_t p = 0;
+  for (int r = 0; r < C.n_rows(); ++r) {
+    if (p < _pin_row.size() && _pin_row[p] == r) {
+      ++p;
+      continue;
+    }
+    append_row(out, C, r);
   }
+  return out;
 }
 
 void RowElimination::recover(std::span<const double> b, const ConstraintBlock& C,

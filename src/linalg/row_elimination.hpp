@@ -41,6 +41,10 @@ class RowElimination {
   const ConstraintBlock& reduced_rows() const { return _rows; }
   /// Equations fixed by pinned rows (their reduced equation is K_jj du_j = K_jj du_j*).
   std::size_t pinned_count() const { return _pin_eq.size(); }
+  std::span<const LocalIndex> pinned_equations() const { return _pin_eq; }
+  /// The rows of C (given to reduce()) that are not pinned: those left in the bordered system and
+  /// the compliant rows folded into K, each a spring in the reduced K.
+  ConstraintBlock unpinned_rows(const ConstraintBlock& C) const;
   /// Rows removed from the bordered system.
   int eliminated_rows() const { return _n_rows - _rows.n_rows(); }
   /// Complete the solution: du at the pinned equations set exactly, dl of every original row from

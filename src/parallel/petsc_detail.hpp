@@ -19,6 +19,10 @@ constexpr double kDefaultRtol = 1e-10;
 constexpr int kGmresRestart = 100;
 constexpr int kMaxIterations = 2000;
 constexpr int kRowsAbsorbed = 20;
+/// Pinned equations that may change (as a share of the equations) before the AMG is rebuilt.
+constexpr double kPinnedShareAbsorbed = 0.005;
+/// After CG failed on a system, the solves that use GMRES before CG is tried again.
+constexpr int kGmresAfterCgFailure = 2;
 /// Nodal aggregation from this many equations on: below, GAMG's hierarchy has a level or two and
 /// aggregating nodes rather than equations changes nothing but the round-off.
 constexpr int kNodalBlocksFrom = 1000;
@@ -72,6 +76,11 @@ struct RowLists {
 };
 void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt global_rows,
                    PetscInt global_cols, PetscInt block = 1);
+/// An AIJ matrix with this rank's rows preallocated (entries per row in the diagonal block and
+/// off it), values to be set; returns the global number of this rank's first row.
+PetscInt create_preallocated(Mat* out, std::span<const PetscInt> diagonal_block,
+                             std::span<const PetscInt> off_diagonal, PetscInt local_cols,
+                             PetscInt global_rows, PetscInt global_cols, PetscInt block);
 /// The whole of a distributed vector on every rank.
 void gather_all(Vec x, std::vector<double>& out);
 /// A = K + C^T R C in place (the springs lie inside each row's own block of the pattern).
@@ -114,9 +123,13 @@ struct PetscKktSolver::Impl {
   /// GMRES iterations per decade of residual reduction, after the last build and in the last solve
   /// (solves to different forcing terms compare so)
   double per_decade_after_build = 0.0, per_decade_last = 0.0;
-  ConstraintBlock amg_rows;     ///< the rows whose springs were in A when its AMG was built
-  bool direct_fallback = false; ///< GMRES failed in this step: MUMPS solves until the next step
-  bool no_cg = false; ///< CG failed in this step (the AMG cycle was not definite): GMRES instead
+  ConstraintBlock amg_rows;         ///< the spring rows (not pinned) in A when its AMG was built
+  std::vector<LocalIndex> amg_pins; ///< the pinned equations then, sorted
+  bool direct_fallback = false;     ///< GMRES failed in this step: MUMPS solves until the next step
+  /// CG found the cycle or the tangent indefinite: the solves left on GMRES before CG is tried
+  /// again (a tangent is indefinite for an iteration or two, e.g. after a first step in which
+  /// almost no gap held a plate, not for the rest of the step)
+  int gmres_before_cg = 0;
 
   KktStatistics solve_mumps(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                             std::span<double> du, std::span<double> dl, bool symmetric,
@@ -134,7 +147,8 @@ struct PetscKktSolver::Impl {
   /// Schur estimate); the AMG hierarchy, returning whether it was built anew; the Krylov solve.
   void build_rows(BorderedSystem& sys, const ConstraintBlock& Cr, std::span<const double> R,
                   std::span<const double> ks, double s) const;
-  bool prepare_amg(const ConstraintBlock& C, const KktOptions& opt, RunStatistics* stats);
+  bool prepare_amg(const ConstraintBlock& springs, std::span<const LocalIndex> pinned, LocalIndex n,
+                   const KktOptions& opt, RunStatistics* stats);
   struct KrylovRun {
     PetscInt iterations = 0;
     KSPConvergedReason reason{};

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <iterator>
 
 namespace gapfem {
 
@@ -120,27 +121,27 @@ constexpr auto shell_precondition =
 void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L, double padding) {
   const SparsityPattern& pat = K.pattern();
   const auto vals = K.values();
-  if (!A) {
-    RowLists rows(L.u_local());
-    for (PetscInt p = L.u0(); p < L.u1(); ++p) {
-      const LocalIndex i = eq_of(p);
-      if (i < 0)
-        rows.add(p - L.u0(), p, padding);
-      else
-        for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k)
-          rows.add(p - L.u0(), row_of(pat.col[k]), vals[k]);
-    }
-    create_matrix(A.out(), rows, L.u_local(), L.n, L.n, block);
-    petsc_check(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
-    attach_near_null_space(L);
-    amg.reset(); // a new matrix: a new hierarchy
-    amg_ready = false;
-    return;
+  const bool create = !A;
+  if (create) { // preallocated from K's pattern, without a copy of this rank's rows
+    std::vector<PetscInt> d(static_cast<std::size_t>(L.u_local()), 1), o(d.size(), 0);
+    for (PetscInt p = L.u0(); p < L.u1(); ++p)
+      if (const LocalIndex i = eq_of(p); i >= 0) {
+        d[p - L.u0()] = 0;
+        for (LocalIndex k = pat.row_ptr[i]; k < pat.row_ptr[i + 1]; ++k) {
+          const PetscInt c = row_of(pat.col[k]);
+          ++(c >= L.u0() && c < L.u1() ? d : o)[p - L.u0()];
+        }
+      }
+    create_preallocated(A.out(), d, o, L.u_local(), L.n, L.n, block);
   }
   std::vector<PetscInt> cols;
   for (PetscInt p = L.u0(); p < L.u1(); ++p) {
     const LocalIndex i = eq_of(p);
-    if (i < 0) continue; // a padding row keeps its diagonal
+    if (i < 0) { // a padding row: its diagonal, set once
+      if (create)
+        petsc_check(MatSetValues(A, 1, &p, 1, &p, &padding, INSERT_VALUES), "MatSetValues");
+      continue;
+    }
     const LocalIndex k0 = pat.row_ptr[i], k1 = pat.row_ptr[i + 1];
     cols.resize(static_cast<std::size_t>(k1 - k0));
     for (LocalIndex k = k0; k < k1; ++k) cols[k - k0] = row_of(pat.col[k]);
@@ -149,6 +150,11 @@ void PetscKktSolver::Impl::fill_a(const CsrMatrix& K, const KktLayout& L, double
   }
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  if (!create) return;
+  petsc_check(MatSetOption(A, MAT_NEW_NONZERO_LOCATION_ERR, PETSC_TRUE), "MatSetOption");
+  attach_near_null_space(L);
+  amg.reset(); // a new matrix: a new hierarchy
+  amg_ready = false;
 }
 
 void PetscKktSolver::Impl::attach_near_null_space(const KktLayout& L) {
@@ -223,15 +229,27 @@ void PetscKktSolver::Impl::build_rows(BorderedSystem& sys, const ConstraintBlock
   petsc_check(VecRestoreArray(sys.Sinv, &p), "VecRestoreArray");
 }
 
-bool PetscKktSolver::Impl::prepare_amg(const ConstraintBlock& C, const KktOptions& opt,
-                                       RunStatistics* stats) {
-  // the AMG cycle: rebuilt when asked, when the iterations it takes have doubled, or when more
-  // rows changed than GMRES absorbs cheaply (each changed row moves A by a stiff spring at its
-  // DOFs, an outlier eigenvalue of the preconditioned system: about one iteration each)
-  const int changed = changed_rows(amg_rows, C);
-  const bool rebuild = !amg_ready || opt.force_fresh || opt.reuse == FactorReuse::Never ||
-                       per_decade_last > 2 * per_decade_after_build + 0.5 ||
-                       changed > kRowsAbsorbed;
+bool PetscKktSolver::Impl::prepare_amg(const ConstraintBlock& springs,
+                                       std::span<const LocalIndex> pinned, LocalIndex n,
+                                       const KktOptions& opt, RunStatistics* stats) {
+  // the AMG cycle: rebuilt when asked, when the iterations it takes have doubled, when more
+  // spring rows changed than the Krylov method absorbs cheaply (each moves A by a stiff spring at
+  // its DOFs, an outlier eigenvalue of the preconditioned system: about one iteration each), or
+  // when the pinned equations changed by more than a share of the equations (a pinned row and
+  // column become a diagonal: a local change that a cycle built for the other pinned set
+  // preconditions nearly as well; measured on a 362k slab whose contact set changes by 100-25,000
+  // gaps an iteration: 307 CG iterations with 15 hierarchies at 2,000 changes, 306 with 27 at 20,
+  // 670 with 3 at none)
+  std::vector<LocalIndex> pins(pinned.begin(), pinned.end());
+  std::sort(pins.begin(), pins.end());
+  std::vector<LocalIndex> moved;
+  std::set_symmetric_difference(pins.begin(), pins.end(), amg_pins.begin(), amg_pins.end(),
+                                std::back_inserter(moved));
+  const bool rebuild =
+      !amg_ready || opt.force_fresh || opt.reuse == FactorReuse::Never ||
+      per_decade_last > 2 * per_decade_after_build + 0.5 ||
+      changed_rows(amg_rows, springs) > kRowsAbsorbed ||
+      static_cast<double>(moved.size()) > std::max<double>(kRowsAbsorbed, kPinnedShareAbsorbed * n);
   if (!amg) {
     petsc_check(KSPCreate(PETSC_COMM_WORLD, amg.out()), "KSPCreate");
     petsc_check(KSPSetOptionsPrefix(amg, "inner_"), "KSPSetOptionsPrefix");
@@ -239,6 +257,12 @@ bool PetscKktSolver::Impl::prepare_amg(const ConstraintBlock& C, const KktOption
     PC pc = nullptr;
     petsc_check(KSPGetPC(amg, &pc), "KSPGetPC");
     petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
+    // A rebuilt hierarchy keeps its interpolation (GAMG's default) and recomputes the Galerkin
+    // products. The eigenvalue bounds of the Chebyshev smoothers are then estimated on each new
+    // operator: the estimate made while smoothing the first prolongator (PETSc's default since
+    // 3.17) is stale once gaps pin other equations, and the cycle became indefinite (CG failed on
+    // every system of a 362k slab; GMRES took 20-38 iterations a system on the 1M slab).
+    petsc_check(PCGAMGSetUseSAEstEig(pc, PETSC_FALSE), "PCGAMGSetUseSAEstEig");
     petsc_check(KSPSetFromOptions(amg), "KSPSetFromOptions");
   }
   petsc_check(KSPSetOperators(amg, A, A), "KSPSetOperators");
@@ -249,7 +273,8 @@ bool PetscKktSolver::Impl::prepare_amg(const ConstraintBlock& C, const KktOption
     if (stats) ++stats->factorizations;
     petsc_check(KSPSetUp(amg), "KSPSetUp (AMG)");
     amg_ready = true;
-    amg_rows = C;
+    amg_rows = springs;
+    amg_pins = std::move(pins);
   }
   return rebuild;
 }
@@ -332,52 +357,71 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   if (m > 0) build_rows(sys, Cr, R, ks, s);
   sys.make_views();
 
-  const bool rebuild = prepare_amg(C, opt, stats);
+  const ConstraintBlock springs = elim.unpinned_rows(C);
+  bool rebuild = prepare_amg(springs, elim.pinned_equations(), K.n(), opt, stats);
   sys.inner = amg;
 
   // K' alone and symmetric: CG (the AMG cycle is symmetric), otherwise GMRES
-  const bool cg = m == 0 && symmetric && !C.has_columns() && !no_cg;
+  bool cg = m == 0 && symmetric && !C.has_columns();
+  if (cg && gmres_before_cg > 0) {
+    cg = false;
+    --gmres_before_cg;
+  }
   const double rtol = opt.relative_tolerance > 0 ? opt.relative_tolerance : kDefaultRtol;
   const double decades = std::max(1.0, -std::log10(rtol));
-  // a reused hierarchy gets a few times the iterations of a new one before it is replaced
-  const int max_it =
-      rebuild ? kMaxIterations : static_cast<int>((3 * per_decade_after_build + 3) * decades);
   VecH rhs, x;
   const PetscInt local = L.u_local() + L.l_local(), N = L.n + L.m;
   petsc_check(VecCreateMPI(PETSC_COMM_WORLD, local, N, rhs.out()), "VecCreateMPI");
   petsc_check(VecDuplicate(rhs, x.out()), "VecDuplicate");
   fill_rhs(rhs, br, Cr, R, s, L, false, unpad);
-  const KrylovRun run = run_krylov(sys, rhs, x, cg, rtol, max_it, stats);
+  // a reused hierarchy gets a few times the iterations of a new one before it is replaced
+  const auto attempt = [&] {
+    const int max_it =
+        rebuild ? kMaxIterations : static_cast<int>((3 * per_decade_after_build + 3) * decades);
+    const KrylovRun run = run_krylov(sys, rhs, x, cg, rtol, max_it, stats);
+    if (stats) stats->linear_solves += run.iterations;
+    log::debug("  {}: {} iterations ({} AMG), {} equations ({} pinned) and {} rows ({} left), "
+               "true residual {:.1e}, reason {}",
+               cg ? "CG" : "GMRES", run.iterations, rebuild ? "new" : "reused", K.n(),
+               elim.pinned_count(), C.n_rows(), L.m, run.true_ratio, static_cast<int>(run.reason));
+    return run;
+  };
+  const auto renew_hierarchy = [&] {
+    amg_ready = false;
+    rebuild = prepare_amg(springs, elim.pinned_equations(), K.n(), opt, stats);
+    sys.inner = amg;
+  };
+  KrylovRun run = attempt();
+  if (run.reason < 0 && cg) {
+    // CG found the cycle or the tangent indefinite (the Chebyshev smoothers' eigenvalue bounds can
+    // miss; an NLGEOM tangent can be indefinite): GMRES, on a new hierarchy unless this one is
+    // new, for this solve and the next few
+    cg = false;
+    gmres_before_cg = kGmresAfterCgFailure;
+    if (!rebuild) renew_hierarchy();
+    run = attempt();
+  } else if (run.reason < 0 && !rebuild) { // the old hierarchy may be what failed
+    renew_hierarchy();
+    run = attempt();
+  }
   const PetscInt its = run.iterations;
-  const KSPConvergedReason reason = run.reason;
-  const double true_ratio = run.true_ratio;
-  if (stats) stats->linear_solves += its;
-  per_decade_last = static_cast<double>(its) / decades;
-  if (rebuild) per_decade_after_build = per_decade_last;
-  log::debug("  {}: {} iterations ({} AMG), {} equations ({} pinned) and {} rows ({} left), true "
-             "residual {:.1e}, reason {}",
-             cg ? "CG" : "GMRES", its, rebuild ? "new" : "reused", K.n(), elim.pinned_count(),
-             C.n_rows(), L.m, true_ratio, static_cast<int>(reason));
-  if (reason < 0) {
+  if (run.reason < 0) {
     augment(K, Cr, R, -1.0); // back to K
     elim.restore(K);
-    if (!rebuild || cg) {  // the old hierarchy, or CG, may be what failed: once more with a new
-      amg_ready = false;   // hierarchy, and GMRES for the rest of the step if CG found the cycle
-      no_cg = no_cg || cg; // indefinite (its Chebyshev smoothing bounds can miss)
-      return solve_iterative(K, b, C, du, dl, symmetric, opt, stats);
-    }
     // GMRES cannot solve this system with this preconditioner (an indefinite tangent that the
     // Chebyshev smoother does not expect, rotations of beams and shells, or a singular system):
     // it and the rest of the step are factorised, which also diagnoses a singular system
     const std::string what =
         fmt::format("{} did not converge on a system of {} equations and {} constraint rows ({} "
                     "iterations, PETSc reason {})",
-                    cg ? "CG" : "GMRES", K.n(), C.n_rows(), its, static_cast<int>(reason));
+                    cg ? "CG" : "GMRES", K.n(), C.n_rows(), its, static_cast<int>(run.reason));
     require_direct_fits(what);
     log::warning("--solver iterative: {}; the rest of the step is solved by MUMPS", what);
     direct_fallback = true;
     return solve_mumps(K, b, C, du, dl, symmetric, opt, stats);
   }
+  per_decade_last = static_cast<double>(its) / decades;
+  if (rebuild) per_decade_after_build = per_decade_last;
   std::vector<double> all;
   gather_all(x, all);
   for (LocalIndex i = 0; i < K.n(); ++i) du[i] = all[L.kkt_u(row_of(i))];

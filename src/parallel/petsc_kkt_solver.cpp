@@ -55,24 +55,38 @@ double multiplier_scale(const CsrMatrix& K) {
   return s > 0 && std::isfinite(s) ? s : 1.0;
 }
 
-void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt global_rows,
-                   PetscInt global_cols, PetscInt block) {
-  const auto nloc = static_cast<PetscInt>(rows.cols.size());
-  PetscInt first = 0; // global number of this rank's first row and column
-  PetscInt first_col = 0;
+PetscInt create_preallocated(Mat* out, std::span<const PetscInt> diagonal_block,
+                             std::span<const PetscInt> off_diagonal, PetscInt local_cols,
+                             PetscInt global_rows, PetscInt global_cols, PetscInt block) {
+  const auto nloc = static_cast<PetscInt>(diagonal_block.size());
+  PetscInt first = 0; // global number of this rank's first row
   MPI_Exscan(&nloc, &first, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
-  MPI_Exscan(&local_cols, &first_col, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
-  if (parallel::rank() == 0) first = first_col = 0;
-  std::vector<PetscInt> d(rows.cols.size(), 0), o(rows.cols.size(), 0);
-  for (std::size_t i = 0; i < rows.cols.size(); ++i)
-    for (PetscInt c : rows.cols[i]) ++(c >= first_col && c < first_col + local_cols ? d[i] : o[i]);
+  if (parallel::rank() == 0) first = 0;
   petsc_check(MatCreate(PETSC_COMM_WORLD, out), "MatCreate");
   petsc_check(MatSetSizes(*out, nloc, local_cols, global_rows, global_cols), "MatSetSizes");
   petsc_check(MatSetType(*out, MATAIJ), "MatSetType");
   if (block > 1) petsc_check(MatSetBlockSize(*out, block), "MatSetBlockSize");
-  petsc_check(MatSeqAIJSetPreallocation(*out, 0, d.data()), "MatSeqAIJSetPreallocation");
-  petsc_check(MatMPIAIJSetPreallocation(*out, 0, d.data(), 0, o.data()),
+  petsc_check(MatSeqAIJSetPreallocation(*out, 0, diagonal_block.data()),
+              "MatSeqAIJSetPreallocation");
+  petsc_check(MatMPIAIJSetPreallocation(*out, 0, diagonal_block.data(), 0, off_diagonal.data()),
               "MatMPIAIJSetPreallocation");
+  return first;
+}
+
+PetscInt first_column(PetscInt local_cols) {
+  PetscInt first_col = 0;
+  MPI_Exscan(&local_cols, &first_col, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  return parallel::rank() == 0 ? 0 : first_col;
+}
+
+void create_matrix(Mat* out, const RowLists& rows, PetscInt local_cols, PetscInt global_rows,
+                   PetscInt global_cols, PetscInt block) {
+  const PetscInt first_col = first_column(local_cols);
+  std::vector<PetscInt> d(rows.cols.size(), 0), o(rows.cols.size(), 0);
+  for (std::size_t i = 0; i < rows.cols.size(); ++i)
+    for (PetscInt c : rows.cols[i]) ++(c >= first_col && c < first_col + local_cols ? d[i] : o[i]);
+  const PetscInt first =
+      create_preallocated(out, d, o, local_cols, global_rows, global_cols, block);
   for (std::size_t i = 0; i < rows.cols.size(); ++i) {
     const PetscInt row = first + static_cast<PetscInt>(i);
     if (rows.cols[i].empty()) continue;
@@ -150,7 +164,7 @@ void PetscKktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _impl->pad.clear();
   _impl->unpad.clear();
   _impl->direct_fallback = false;
-  _impl->no_cg = false;
+  _impl->gmres_before_cg = 0;
   forget_factor();
   _impl->A.reset();
 }

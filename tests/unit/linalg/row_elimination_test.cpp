@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 #include <random>
+#include <set>
 
 using namespace gapfem;
 
@@ -121,6 +122,23 @@ TEST(RowElimination, TheReducedSystemHasTheSolutionOfTheWholeOne) {
     EXPECT_EQ(elim.eliminated_rows(), pinned + 2) << "trial " << trial;
     const ConstraintBlock& Cr = elim.reduced_rows();
     EXPECT_EQ(Cr.n_rows(), 3); // the shared single row, its partner and the exact row of three
+    // the rows that are springs in the reduced K (AMG's rebuild test): all but the pinned ones,
+    // in their order; each pinned equation is its row's single column
+    const ConstraintBlock springs = elim.unpinned_rows(s.C);
+    ASSERT_EQ(springs.n_rows(), s.C.n_rows() - pinned) << "trial " << trial;
+    std::set<LocalIndex> pinned_eqs(elim.pinned_equations().begin(), elim.pinned_equations().end());
+    for (int r = 0, q = 0; r < s.C.n_rows(); ++r) {
+      const LocalIndex k0 = s.C.row_ptr[r];
+      const bool is_pinned = s.C.row_ptr[r + 1] - k0 == 1 && s.C.row_compliance(r) == 0 &&
+                             pinned_eqs.count(s.C.col[k0]) == 1;
+      if (is_pinned) continue;
+      ASSERT_LT(q, springs.n_rows());
+      EXPECT_EQ(springs.multiplier[q], s.C.multiplier[r]) << "trial " << trial << " row " << r;
+      EXPECT_EQ(springs.row_compliance(q), s.C.row_compliance(r));
+      EXPECT_TRUE(std::equal(s.C.val.begin() + k0, s.C.val.begin() + s.C.row_ptr[r + 1],
+                             springs.val.begin() + springs.row_ptr[q]));
+      ++q;
+    }
 
     Eigen::MatrixXd Kr(n, n);
     Kr.setZero();
