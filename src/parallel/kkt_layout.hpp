@@ -25,6 +25,12 @@ struct KktLayout {
       : n(n_equations), m(n_rows), rank(this_rank), size(n_ranks),
         u(split(n_equations, n_ranks, block)), l(split(n_rows, n_ranks)) {}
 
+  /// Equations split at the given first equation of each rank (size + 1 entries).
+  KktLayout(std::vector<int> u_starts, int n_rows, int this_rank = parallel::rank(),
+            int n_ranks = parallel::size())
+      : n(u_starts.back()), m(n_rows), rank(this_rank), size(n_ranks), u(std::move(u_starts)),
+        l(split(n_rows, n_ranks)) {}
+
   static std::vector<int> split(int count, int ranks, int block = 1) {
     std::vector<int> start(static_cast<std::size_t>(ranks) + 1, 0);
     const int blocks = count / block;

@@ -26,6 +26,9 @@ constexpr int kGmresAfterCgFailure = 2;
 /// Nodal aggregation from this many equations on: below, GAMG's hierarchy has a level or two and
 /// aggregating nodes rather than equations changes nothing but the round-off.
 constexpr int kNodalBlocksFrom = 1000;
+/// A graph partitioner chooses the ranks' rows from this many equations on; below, contiguous
+/// blocks of the numbering.
+constexpr int kPartitionFrom = 10000;
 /// MUMPS's factor (with its pivoting and workspace) against CHOLMOD's symbolic estimate.
 constexpr double kDirectMemoryFactor = 1.5;
 /// A solve whose true relative residual exceeds this many times the tolerance has failed.
@@ -116,6 +119,14 @@ struct PetscKktSolver::Impl {
   LocalIndex a_size(LocalIndex n) const {
     return unpad.empty() ? n : static_cast<LocalIndex>(unpad.size());
   }
+  /// First row of A of each rank (size + 1) when a graph partitioner chose them (pad then numbers
+  /// each rank's blocks contiguously); empty: A's rows split as PETSc splits a vector.
+  std::vector<int> u_starts;
+  /// Rank p's blocks of A after partitioning (see petsc_partition.cpp); empty when one rank or a
+  /// small model.
+  void partition_blocks();
+  /// The blocks of A coupled to blocks first..first+count-1 in K's pattern (without themselves).
+  std::vector<std::vector<PetscInt>> block_adjacency(PetscInt first, PetscInt count) const;
   petsc_detail::MatH A;
   NearNullSpace modes; ///< the rigid-body modes A's AMG interpolates (set per step)
   petsc_detail::KspH amg;

@@ -344,7 +344,10 @@ KktStatistics PetscKktSolver::Impl::solve_iterative(CsrMatrix& K, std::span<cons
   elim.reduce(K, b, C);
   const ConstraintBlock& Cr = elim.reduced_rows();
   const auto br = elim.reduced_b();
-  const KktLayout L(a_size(K.n()), Cr.n_rows(), parallel::rank(), parallel::size(), block);
+  if (!A) partition_blocks(); // the first system of a step
+  const KktLayout L = u_starts.empty() ? KktLayout(a_size(K.n()), Cr.n_rows(), parallel::rank(),
+                                                   parallel::size(), block)
+                                       : KktLayout(u_starts, Cr.n_rows());
   const double s = multiplier_scale(K);
   std::vector<double> R, ks;
   augmentation_weights(K, Cr, opt.augmentation, R, ks);

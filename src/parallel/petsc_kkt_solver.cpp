@@ -163,6 +163,7 @@ void PetscKktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _impl->block = 1;
   _impl->pad.clear();
   _impl->unpad.clear();
+  _impl->u_starts.clear();
   _impl->direct_fallback = false;
   _impl->gmres_before_cg = 0;
   forget_factor();
@@ -177,6 +178,7 @@ void PetscKktSolver::set_near_null_space(NearNullSpace modes) {
   m.block = 1;
   m.pad.clear();
   m.unpad.clear();
+  m.u_starts.clear();
   if (modes.block_size > 1 && m.pattern && m.pattern->n >= kNodalBlocksFrom &&
       modes.padded.size() == static_cast<std::size_t>(m.pattern->n)) {
     m.block = modes.block_size;

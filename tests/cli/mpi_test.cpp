@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 using namespace gapfem;
 using namespace gapfem::test;
@@ -143,6 +144,31 @@ TEST(Mpi, TwoRanksGiveTheSerialAnswer) {
       expect_same_results(one / (stem + ".results.json"), two / (stem + ".results.json"), tol,
                           deck + " with " + solver);
     }
+}
+
+TEST(Mpi, AGraphPartitionerChoosesTheRanksRows) {
+  REQUIRE_MPI();
+  // a slab of 14,640 equations (from 10,000 on, PT-Scotch chooses each rank's nodes): the serial
+  // answer to 1e-8, and fewer couplings between the ranks than contiguous blocks of the node
+  // numbering (which runs layer by layer, so that those blocks meet across a whole layer)
+  const fs::path dir = test_dir() / "partition", slab = dir / "slab.inp";
+  fs::create_directories(dir);
+  std::ofstream(slab) << slab_on_gaps(40, 2);
+  const std::string args = "--solver iterative --no-vtu -v -ksp_rtol 1e-13";
+  ASSERT_EQ(run(slab, dir / "1", args, 0), 0);
+  std::string out;
+  ASSERT_EQ(run(slab, dir / "2", args, 2, &out), 0) << out;
+  const std::regex line(R"(partition \((\w+)\): (\d+) blocks of 3 over 2 ranks, (\d+) to (\d+) a )"
+                        R"(rank; (\d+) couplings between ranks \(contiguous blocks: (\d+)\))");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(out, m, line)) << out;
+  const long blocks = std::stol(m[2]), fewest = std::stol(m[3]), most = std::stol(m[4]);
+  const long cut = std::stol(m[5]), contiguous = std::stol(m[6]);
+  EXPECT_EQ(fewest + most, blocks);
+  EXPECT_LE(most - fewest, blocks / 20) << "the ranks' shares are balanced";
+  EXPECT_LT(3 * cut, contiguous) << m[0];
+  expect_same_results(dir / "1" / "slab.results.json", dir / "2" / "slab.results.json", 1e-8,
+                      "partitioned slab");
 }
 
 TEST(Mpi, RankZeroAloneWritesTheFilesAndTheTerminal) {
