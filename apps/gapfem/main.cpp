@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
   options.deck = deck;
   options.write_vtu = !no_vtu;
   options.keep_frames = false;
+  options.keep_step_ends = false;
   options.factor_reuse = reuse == "always"  ? gapfem::FactorReuse::Always
                          : reuse == "never" ? gapfem::FactorReuse::Never
                                             : gapfem::FactorReuse::Auto;

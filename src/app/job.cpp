@@ -23,16 +23,17 @@ namespace {
 /// Keeps every frame and increment in memory for the caller (tests, tools).
 class MemoryWriter final : public ResultWriter {
  public:
-  explicit MemoryWriter(JobResult& r, bool keep) : _r(r), _keep(keep) {}
+  MemoryWriter(JobResult& r, bool keep, bool keep_step_ends)
+      : _r(r), _keep(keep), _keep_step_ends(keep_step_ends) {}
   void increment(const IncrementInfo& info) override { _r.increments.push_back(info); }
   void frame(const Model&, int, const Frame& f) override {
-    if (_keep || f.last_in_step) _r.frames.push_back(f);
+    if (_keep || (_keep_step_ends && f.last_in_step)) _r.frames.push_back(f);
   }
   void end_step(const Model&, int, const StepSummary& s) override { _r.steps.push_back(s); }
 
  private:
   JobResult& _r;
-  bool _keep;
+  bool _keep, _keep_step_ends;
 };
 
 /// "step 1 increments 2, 4; step 2 increments 1" (the records of a restart file).
@@ -272,7 +273,7 @@ JobResult run_job(const JobOptions& given) {
     wo.terminal = true;
     writers = make_result_writers(wo);
   }
-  MemoryWriter memory(result, options.keep_frames);
+  MemoryWriter memory(result, options.keep_frames, options.keep_step_ends);
   std::vector<ResultWriter*> ptrs;
   for (auto& w : writers) ptrs.push_back(w.get());
   ptrs.push_back(&memory);

@@ -26,6 +26,10 @@ struct JobOptions {
   bool verbose = false;    ///< debug messages (Newton iterations, solver decisions)
   bool silent = false;     ///< nothing on the terminal, errors included (ranks other than 0)
   bool keep_frames = true; ///< keep every output frame in JobResult (tests)
+  /// keep each step's last frame in JobResult (JobResult::step_end) even without keep_frames;
+  /// the command line does not, which spares a copy of the largest frame (a 1M-equation model's
+  /// nodal and element results) at the end of every step
+  bool keep_step_ends = true;
   FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
   /// residual-only evaluations while a factor is reused (GAPFEM_RESIDUAL_ONLY=0: off)
   bool residual_only = true;
