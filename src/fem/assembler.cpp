@@ -126,6 +126,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
         }
         res.unsymmetric |= out.unsymmetric;
         res.stiffness_changed |= out.stiffness_changed;
+        res.branch_changes += out.branch_changes;
         res.friction |= out.friction;
         res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
         if (out.status_changes) {
@@ -181,6 +182,7 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
   if (K) K->close();
   for (auto& p : partial) {
     total.status_changes += p.status_changes;
+    total.branch_changes += p.branch_changes;
     total.unsymmetric |= p.unsymmetric;
     total.stiffness_changed |= p.stiffness_changed;
     total.friction |= p.friction;

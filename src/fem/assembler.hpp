@@ -15,6 +15,7 @@ namespace gapfem {
 
 struct AssemblyResult {
   int status_changes = 0;
+  int branch_changes = 0;         ///< sum of ElementOutput::branch_changes
   bool stiffness_changed = false; ///< ElementOutput::stiffness_changed of some element
   bool unsymmetric = false;
   bool friction = false; ///< some element has a closed gap with friction (ElementOutput::friction)

@@ -21,6 +21,7 @@ struct Evaluation {
   std::array<bool, kNumFields> has_field{}; ///< the field has free equations
   double constraint_max = 0.0;              ///< max |g| of the active constraint rows
   int status_changes = 0;
+  int branch_changes = 0; ///< force-law gaps that opened or closed (AssemblyResult)
   /// a status change altered the tangent itself (ElementOutput::stiffness_changed)
   bool stiffness_changed = false;
   std::vector<ElemId> changed; ///< elements whose contact status changed

@@ -113,6 +113,7 @@ Evaluation StepProblem::evaluate(bool tangent) {
   }
   Evaluation ev;
   ev.status_changes = ar.status_changes;
+  ev.branch_changes = ar.branch_changes;
   ev.stiffness_changed = ar.stiffness_changed;
   ev.changed = std::move(ar.changed);
   ev.symmetric = !ar.unsymmetric && !follower;

@@ -368,6 +368,8 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
                                 L.previous != ContactStatus::Closed;
   if ((_mode == NormalMode::Direct && normal_changed) || friction_changed || L.predicted_stick)
     out.status_changes = 1;
+  else if (normal_changed)
+    out.branch_changes = 1;
   // open/closed changes only rows with exact or compliant-row normal contact, stick changes only
   // rows with Lagrange friction; slip terms, augmented and in-matrix penalties, and GAPUNIT's
   // conductance live in the tangent

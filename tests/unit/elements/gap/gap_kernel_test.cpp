@@ -177,3 +177,31 @@ TEST(GapKernel, CcxPenaltyLawMatchesItsFormula) {
   const double F = 1e7 * 1e-4 * (0.5 + std::atan(1e-4 / eps) / 3.141592653589793);
   EXPECT_NEAR(el.record().normal_force, F, 1e-9 * F);
 }
+
+TEST(GapKernel, PenaltyGapOpeningOrClosingIsABranchChangeNotAStatusChange) {
+  // A force law's gap that opens or closes changes no severe-discontinuity status (Abaqus counts
+  // none for softened or penalty contact), but reports the kink it crossed, so that Newton does
+  // not blame a kept factor for the slow contraction of that iteration.
+  GapSection s = section(0.0, {0, -1, 0});
+  s.ccx_penalty = true;
+  s.ccx_stiffness = 1e7;
+  s.ccx_tension = 1e-3;
+  Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
+  SingleElement el(m, kernel_for(m));
+  el.u = {0, 1e-4, 0, 0, 0, 0}; // open by 1e-4 (the zero clearance starts it closed)
+  el.evaluate();
+  el.evaluate();
+  EXPECT_EQ(el.status_changes, 0);
+  EXPECT_EQ(el.branch_changes, 0) << "open before, open now";
+  el.u[1] = -1e-4; // overclosed by 1e-4: closes
+  el.evaluate();
+  EXPECT_EQ(el.status_changes, 0);
+  EXPECT_EQ(el.branch_changes, 1);
+  el.u[1] = -2e-4; // closed before, closed now
+  el.evaluate();
+  EXPECT_EQ(el.branch_changes, 0);
+  el.u[1] = 1e-4; // opens again
+  el.evaluate();
+  EXPECT_EQ(el.status_changes, 0);
+  EXPECT_EQ(el.branch_changes, 1);
+}

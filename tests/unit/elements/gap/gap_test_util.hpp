@@ -45,6 +45,7 @@ struct SingleElement {
   std::vector<int> cslot;
   int n_constraints = 0;
   int status_changes = 0;
+  int branch_changes = 0;
   double interference = 0.0;
 
   static inline const std::vector<ElemId> kFirst{0};
@@ -100,6 +101,7 @@ struct SingleElement {
     kernel->evaluate(in, out);
     n_constraints = out.n_constraints;
     status_changes = out.status_changes;
+    branch_changes = out.branch_changes;
     has_columns = out.has_columns;
     unsymmetric = out.unsymmetric;
   }
