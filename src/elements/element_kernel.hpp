@@ -103,7 +103,8 @@ struct ElementOutput {
 
   int status_changes = 0; ///< contact status flips decided in this evaluation
   /// a force law's gap (penalty, softened contact) opened or closed: no severe discontinuity,
-  /// but a kink the Newton iteration crossed, so its residual need not contract (Newton)
+  /// but a kink the Newton iteration crossed (`-v` prints the count: it is why such decks
+  /// converge linearly while gaps still open and close)
   int branch_changes = 0;
   /// a status change in this evaluation altered the tangent itself, not only the constraint rows
   /// (a penalty or augmented gap in the matrix opened or closed, a gap started or stopped
