@@ -1,6 +1,7 @@
 #include "app/job.hpp"
 
 #include "app/check.hpp"
+#include "app/job_files.hpp"
 #include "app/user_code.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -156,37 +157,6 @@ void require_steps(const Model& model, const std::filesystem::path& deck) {
                    "*STEP / *STATIC / loads and boundary conditions / *END STEP");
 }
 
-void prepare_output(const std::filesystem::path& dir, const std::string& job) {
-  namespace fs = std::filesystem;
-  if (job.empty() || job == "." || job == ".." || job.find_first_of("/\\") != std::string::npos)
-    throw InputError(SourceLocation{}, fmt::format("job name '{}'", job),
-                     "a job name is a file name without a directory (job.dat, job.sta, ... are "
-                     "written into the output directory); choose the directory with -o");
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
-                     "it exists and is not a directory; choose another with -o");
-  fs::create_directories(dir, ec);
-  if (ec)
-    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
-                     fmt::format("cannot create it: {}; choose another with -o", ec.message()));
-  // Probe before solving: a read-only or full directory is reported now, not after the analysis.
-  const fs::path probe = dir / fmt::format(".{}.write-test", job);
-  output::OutputFile f;
-  try {
-    f.open(probe);
-    f.write("gapfem\n");
-    f.close();
-  } catch (const AnalysisError&) {
-    fs::remove(probe, ec);
-    throw InputError(SourceLocation{}, fmt::format("output directory '{}'", dir.string()),
-                     fmt::format("cannot write into it: {}; free space there or choose another "
-                                 "directory with -o",
-                                 std::strerror(f.error_number())));
-  }
-  fs::remove(probe, ec);
-}
-
 JobResult run_job(const JobOptions& given) {
   JobOptions options = given;
   options.deck = resolve_deck(given.deck);
@@ -209,6 +179,7 @@ JobResult run_job(const JobOptions& given) {
 
   std::shared_ptr<Model> model;
   std::optional<AnalysisOptions::Resume> resume;
+  JobLock lock; // held until every writer is gone (declared before them)
   try {
     ReadOptions ro;
     ro.ignore_unknown = options.ignore_unknown;
@@ -239,8 +210,11 @@ JobResult run_job(const JobOptions& given) {
                        "the deck has no *RESTART, READ, so there is nothing to continue; add "
                        "*RESTART, READ (with STEP= and INC= of the restart point) or run without "
                        "--oldjob");
+    if (options.write_files) {
+      prepare_output(dir, job);
+      lock = JobLock::take(dir, job); // before the restart file is read: --restart respects it
+    }
     if (options.restart) resume = own_restart_point(*model, options.deck, dir, job);
-    if (options.write_files) prepare_output(dir, job);
     if (!options.user_code.empty())
       model->user_code = load_user_code(
           options.user_code, dir / (job + ".scratch" +

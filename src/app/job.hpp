@@ -73,8 +73,5 @@ JobResult run_job(const JobOptions& options);
 
 /// Throws InputError when the model has no *STEP (nothing to analyse).
 void require_steps(const struct Model& model, const std::filesystem::path& deck);
-/// Checks the job name (a plain file name), creates the output directory and probes that a file
-/// can be written there; throws InputError (exit 1) before any solving when it cannot.
-void prepare_output(const std::filesystem::path& dir, const std::string& job);
 
 } // namespace gapfem

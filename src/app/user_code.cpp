@@ -2,16 +2,19 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/safe_file.hpp"
 #include "elements/user/user_code.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <dlfcn.h>
 #include <fmt/format.h>
-#include <fstream>
 #include <optional>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -77,13 +80,27 @@ bool on_path(const std::string& program) {
   return run("command -v " + program + " >/dev/null").first == 0;
 }
 
-/// Writes the files a source may include: ABA_PARAM.INC (both cases) and gapfem/plugin.hpp.
-void write_includes(const fs::path& dir) {
-  fs::create_directories(dir / "gapfem");
-  for (const char* name : {"ABA_PARAM.INC", "aba_param.inc"})
-    std::ofstream(dir / name) << kAbaParamInc;
-  std::ofstream(dir / "gapfem" / "plugin.hpp")
-      .write(embedded::plugin_hpp, static_cast<std::streamsize>(embedded::plugin_hpp_size));
+/// Writes the files a source may include: ABA_PARAM.INC (both cases) and gapfem/plugin.hpp, into
+/// the fresh private scratch folder (never through a link: common/safe_file.hpp).
+void write_includes(const fs::path& dir, const SourceLocation& at) {
+  auto failed = [&](const fs::path& what) {
+    return InputError(at, "--user",
+                      fmt::format("cannot write '{}' in the scratch folder: {}; check that the "
+                                  "output directory is writable",
+                                  what.string(), std::strerror(errno)));
+  };
+  try {
+    if (!files::fresh_private_directory(dir)) throw failed(dir);
+    if (::mkdir((dir / "gapfem").c_str(), 0700) != 0) throw failed(dir / "gapfem");
+    for (const char* name : {"ABA_PARAM.INC", "aba_param.inc"})
+      if (!files::write_new(dir / name, kAbaParamInc)) throw failed(dir / name);
+    const fs::path plugin = dir / "gapfem" / "plugin.hpp";
+    if (!files::write_new(plugin,
+                          std::string_view(embedded::plugin_hpp, embedded::plugin_hpp_size)))
+      throw failed(plugin);
+  } catch (const AnalysisError& e) { // a link, pipe or another user's folder in its place
+    throw InputError(at, "--user", e.what());
+  }
 }
 
 /// Compiles `source` into scratch/libuser.so; InputError with the compiler's messages on failure.
@@ -94,8 +111,7 @@ fs::path compile(const fs::path& source, Language lang, const fs::path& scratch)
                      fmt::format("{} is needed to compile this file but is not installed; install "
                                  "it (apt-get install {}) or give a compiled .so",
                                  compiler, compiler));
-  fs::create_directories(scratch);
-  write_includes(scratch);
+  write_includes(scratch, SourceLocation{source.string(), 0, {}});
   // a name of its own: dlopen would hand back a library already loaded under the same name
   static int count = 0;
   const fs::path lib = scratch / fmt::format("libuser-{}-{}.so", getpid(), ++count);

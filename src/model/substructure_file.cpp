@@ -1,10 +1,12 @@
 #include "model/substructure_file.hpp"
 
 #include "common/archive.hpp"
+#include "common/error.hpp"
+#include "common/safe_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fmt/format.h>
-#include <fstream>
-#include <sstream>
 
 namespace gapfem {
 namespace {
@@ -53,26 +55,32 @@ void write_substructure_file(const std::filesystem::path& file, const Substructu
   head.bytes(kMagic.data(), kMagic.size());
   head.pod(kVersion);
   head.pod(fnv1a(body));
-  // written aside and renamed: a run killed while writing leaves the old library (if any) intact
-  const std::filesystem::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(head.data().data(), static_cast<std::streamsize>(head.data().size()));
-    out.write(body.data(), static_cast<std::streamsize>(body.size()));
-    if (!out) throw SubstructureFileError(fmt::format("cannot write '{}'", tmp.string()));
+  // written aside and renamed: a run killed while writing leaves the old library (if any) intact;
+  // never through a link or into a pipe (common/safe_file.hpp)
+  std::string bytes = head.take();
+  bytes += body;
+  bool written = false;
+  try {
+    written = files::write_replace(file, bytes);
+  } catch (const Error& e) {
+    throw SubstructureFileError(e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec)
-    throw SubstructureFileError(fmt::format("cannot write '{}': {}", file.string(), ec.message()));
+  if (!written)
+    throw SubstructureFileError(
+        fmt::format("cannot write '{}': {}", file.string(), std::strerror(errno)));
 }
 
 SubstructureLibrary read_substructure_file(const std::filesystem::path& file, bool recovery) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw SubstructureFileError(fmt::format("cannot read '{}'", file.string()));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string data = ss.str();
+  std::string data;
+  bool read = false;
+  try {
+    read = files::read_all(file, data); // a regular file only: a pipe would never end
+  } catch (const Error& e) {
+    throw SubstructureFileError(e.what());
+  }
+  if (!read)
+    throw SubstructureFileError(
+        fmt::format("cannot read '{}': {}", file.string(), std::strerror(errno)));
   if (data.compare(0, kMagic.size(), kMagic) != 0)
     throw SubstructureFileError(
         fmt::format("'{}' is not a gapfem substructure file (gapfem cannot read Abaqus's .sim or "

@@ -1,6 +1,7 @@
 #include "output/output_file.hpp"
 
 #include "common/error.hpp"
+#include "common/safe_file.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -71,8 +72,7 @@ void OutputFile::open(const std::filesystem::path& path, Mode mode) {
   _staging = path;
   if (mode == Mode::Replace) _staging += ".tmp";
   _buffer.clear();
-  _file = std::fopen(_staging.c_str(), "wb");
-  if (!_file) fail("cannot create");
+  adopt(files::create_new(_staging), "wb");
 }
 
 void OutputFile::open_update(const std::filesystem::path& file, std::uintmax_t keep,
@@ -84,9 +84,9 @@ void OutputFile::open_update(const std::filesystem::path& file, std::uintmax_t k
   _failed = false;
   _errno = 0;
   _buffer.clear();
-  _file = std::fopen(file.c_str(), "r+b");
-  if (!_file) _file = std::fopen(file.c_str(), "w+b");
-  if (!_file) fail("cannot create");
+  int fd = files::open_own(file);
+  if (fd < 0 && errno == ENOENT) fd = files::create_new(file);
+  adopt(fd, "r+b");
   if (::ftruncate(fileno(_file), static_cast<off_t>(keep)) != 0 ||
       std::fseek(_file, 0, SEEK_END) != 0)
     fail("cannot write");
@@ -107,6 +107,14 @@ void OutputFile::open_resumed(const std::filesystem::path& path,
   }
   open(path);
   append_file_range(source, 0, keep);
+}
+
+void OutputFile::adopt(int fd, const char* mode) {
+  if (fd >= 0) {
+    _file = ::fdopen(fd, mode);
+    if (!_file) ::close(fd);
+  }
+  if (!_file) fail("cannot create");
 }
 
 std::uintmax_t OutputFile::position() {
@@ -165,8 +173,12 @@ void OutputFile::append_file_range(const std::filesystem::path& source, std::uin
   if (!_file || to <= from) return;
   drain();
   if (g_write_budget.load() < 0 && copy_in_kernel(source, from, to)) return;
-  std::FILE* in = std::fopen(source.c_str(), "rb");
-  if (!in) fail("cannot read the staged part of the");
+  const int in_fd = files::open_read(source);
+  std::FILE* in = in_fd >= 0 ? ::fdopen(in_fd, "rb") : nullptr;
+  if (!in) {
+    if (in_fd >= 0) ::close(in_fd);
+    fail("cannot read the staged part of the");
+  }
   if (from > 0 && std::fseek(in, static_cast<long>(from), SEEK_SET) != 0) {
     std::fclose(in);
     fail("cannot read the staged part of the");
@@ -193,7 +205,7 @@ bool OutputFile::copy_in_kernel(const std::filesystem::path& source, std::uintma
                                 std::uintmax_t to) {
   // copy_file_range: the bytes move inside the kernel (no round trip through this process)
   if (std::fflush(_file) != 0) fail("cannot write");
-  const int in = ::open(source.c_str(), O_RDONLY);
+  const int in = files::open_read(source);
   if (in < 0) fail("cannot read the staged part of the");
   auto off = static_cast<off_t>(from);
   const int out = fileno(_file);
@@ -234,7 +246,15 @@ void OutputFile::close() {
   _file = nullptr;
   if (rc != 0) fail("cannot close");
   if (_mode != Mode::Replace) return;
-  if (std::rename(_staging.c_str(), _path.c_str()) != 0) fail("cannot replace");
+  bool replaced = false;
+  try {
+    replaced = files::replace(_staging, _path);
+  } catch (...) { // _path is not a file gapfem may replace: the staged copy goes
+    std::error_code ec;
+    std::filesystem::remove(_staging, ec);
+    throw;
+  }
+  if (!replaced) fail("cannot replace");
   sync_directory(_path.parent_path());
 }
 

@@ -84,6 +84,8 @@ class OutputFile {
 
  private:
   void drain();
+  /// Takes a descriptor from files:: (-1: fail with its errno) as the stream.
+  void adopt(int fd, const char* mode);
   void put(const void* data, std::size_t n);
   /// append_file_range by copy_file_range; false (nothing copied) where that is not available.
   bool copy_in_kernel(const std::filesystem::path& source, std::uintmax_t from, std::uintmax_t to);

@@ -1,6 +1,7 @@
 #include "output/shadow_document.hpp"
 
 #include "common/error.hpp"
+#include "common/safe_file.hpp"
 #include "output/output_file.hpp"
 
 #include <cerrno>
@@ -30,9 +31,9 @@ void ShadowDocument::begin(const std::filesystem::path& final) {
   _exists[0] = _exists[1] = false;
   _live = -1;
   _links = true;
-  std::error_code ec;
-  for (int k = 0; k < 2; ++k) std::filesystem::remove(shadow(k), ec);
-  std::filesystem::remove(with_suffix(_final, ".tmp"), ec);
+  // leftovers of a killed run; anything but a regular file there is refused when it is opened
+  for (int k = 0; k < 2; ++k) files::remove_regular(shadow(k));
+  files::remove_regular(with_suffix(_final, ".tmp"));
 }
 
 void ShadowDocument::publish(const std::filesystem::path& body, std::uintmax_t body_size,
@@ -68,7 +69,14 @@ void ShadowDocument::publish(const std::filesystem::path& body, std::uintmax_t b
                                     "directory is writable and has free space",
                                     _final.string(), std::strerror(err)));
   }
-  if (std::rename(tmp.c_str(), _final.c_str()) != 0) {
+  bool replaced = false;
+  try {
+    replaced = files::replace(tmp, _final);
+  } catch (...) {
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
+  if (!replaced) {
     const int err = errno;
     std::filesystem::remove(tmp, ec);
     throw AnalysisError(fmt::format("cannot replace results file '{}': {}; check that the output "

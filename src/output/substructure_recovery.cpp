@@ -1,6 +1,7 @@
 #include "output/substructure_recovery.hpp"
 
 #include "common/log.hpp"
+#include "common/safe_file.hpp"
 #include "fem/assembler.hpp"
 #include "fem/discretization.hpp"
 #include "io/inp/reader.hpp"
@@ -10,9 +11,10 @@
 #include "output/output_file.hpp"
 #include "solver/analysis.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fmt/format.h>
-#include <fstream>
 #include <map>
 
 namespace gapfem {
@@ -265,17 +267,10 @@ void SubstructureRecoveryWriter::write(const Recovered& r) const {
   doc.append(std::string_view(",\"frames\":["));
   doc.append(r.frames.data(), r.frames.data() + r.frames.size());
   doc.append(std::string_view("\n]}\n"));
-  // aside, then renamed: the file is always one complete document
-  const std::filesystem::path tmp = r.file.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(doc.data(), static_cast<std::streamsize>(doc.size()));
-    if (!out)
-      throw AnalysisError(fmt::format("cannot write '{}'; free space and run again", tmp.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, r.file, ec);
-  if (ec) throw AnalysisError(fmt::format("cannot write '{}': {}", r.file.string(), ec.message()));
+  // aside, then renamed: the file is always one complete document (never through a link)
+  if (!files::write_replace(r.file, std::string_view(doc.data(), doc.size())))
+    throw AnalysisError(fmt::format("cannot write '{}': {}; free space and run again",
+                                    r.file.string(), std::strerror(errno)));
 }
 
 void SubstructureRecoveryWriter::end(const Model&, const RunSummary&) {}

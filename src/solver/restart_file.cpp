@@ -1,5 +1,7 @@
 #include "solver/restart_file.hpp"
 
+#include "common/safe_file.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -72,27 +74,32 @@ void write_all(int fd, std::string_view bytes, const std::filesystem::path& path
   }
 }
 
-/// Replace `path` by `bytes` atomically (staged, synced, renamed).
+/// Replace `path` by `bytes` atomically (staged as a new file, synced, renamed).
 void replace_file(const std::filesystem::path& path, std::string_view bytes) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (!files::write_replace(path, bytes)) write_failed(path);
+}
+
+/// The restart file of ours, opened to be continued (a regular file of this user: never through a
+/// link, never a pipe).
+int open_own_or_fail(const std::filesystem::path& path) {
+  const int fd = files::open_own(path);
   if (fd < 0) write_failed(path);
-  try {
-    write_all(fd, bytes, path);
-  } catch (...) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw;
-  }
-  ::fsync(fd);
-  ::close(fd);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) write_failed(path);
+  return fd;
 }
 
 class FileIn {
  public:
-  explicit FileIn(const std::filesystem::path& p) : _f(std::fopen(p.c_str(), "rb")) {}
+  /// Only a regular file is opened (a pipe would block): RestartDataError otherwise.
+  explicit FileIn(const std::filesystem::path& p) {
+    int fd = -1;
+    try {
+      fd = files::open_read(p);
+    } catch (const AnalysisError& e) {
+      throw RestartDataError(e.what());
+    }
+    _f = fd >= 0 ? ::fdopen(fd, "rb") : nullptr;
+    if (!_f && fd >= 0) ::close(fd);
+  }
   ~FileIn() {
     if (_f) std::fclose(_f);
   }
@@ -108,7 +115,7 @@ class FileIn {
   void seek(std::uintmax_t at) { std::fseek(_f, static_cast<long>(at), SEEK_SET); }
 
  private:
-  std::FILE* _f;
+  std::FILE* _f = nullptr;
 };
 
 /// Reads the record at the current position; false when it is missing, cut short or damaged.
@@ -221,7 +228,12 @@ void RestartFileWriter::resume(const std::filesystem::path& path, const RestartH
                                std::uintmax_t keep) {
   _path = path;
   _header = header;
-  if (::truncate(path.c_str(), static_cast<off_t>(keep)) != 0) write_failed(path);
+  const int fd = open_own_or_fail(path);
+  const bool cut = ::ftruncate(fd, static_cast<off_t>(keep)) == 0;
+  const int err = errno;
+  ::close(fd);
+  errno = err;
+  if (!cut) write_failed(path);
   _size = keep;
 }
 
@@ -235,8 +247,7 @@ void RestartFileWriter::write(const RestartRecordInfo& info, std::string_view pa
     _size = h.size() + rec.size();
     return;
   }
-  const int fd = ::open(_path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) write_failed(_path);
+  const int fd = open_own_or_fail(_path);
   if (::lseek(fd, static_cast<off_t>(_size), SEEK_SET) < 0) {
     ::close(fd);
     write_failed(_path);
