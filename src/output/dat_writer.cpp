@@ -699,7 +699,7 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     append_e12(buf, c.force_scale);
     fmt::format_to(out, "\n   RELATIVE ERROR                    ");
     if (c.force_scale > 0)
-      append_e12(buf, c.equilibrium_error / c.force_scale);
+      append_e12(buf, c.relative_equilibrium);
     else
       fmt::format_to(out, "{:>12}", "N/A");
     fmt::format_to(out, "\n\n");
@@ -718,7 +718,7 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
     append_e12(buf, c.heat_scale);
     fmt::format_to(out, "\n   RELATIVE ERROR                    ");
     if (c.heat_scale > 0)
-      append_e12(buf, c.heat_balance_error / c.heat_scale);
+      append_e12(buf, c.relative_heat_balance);
     else
       fmt::format_to(out, "{:>12}", "N/A");
     fmt::format_to(out, "\n\n");

@@ -77,7 +77,7 @@ void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
   number_field(b, "force_scale", c.force_scale);
   b.append(std::string_view(",\"relative_error\":"));
   if (c.force_scale > 0)
-    append_json_number(b, c.equilibrium_error / c.force_scale);
+    append_json_number(b, c.relative_equilibrium);
   else
     b.append(std::string_view("null"));
   b.append(std::string_view("},\"heat_balance\":"));
@@ -90,7 +90,7 @@ void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
     number_field(b, "heat_scale", c.heat_scale);
     b.append(std::string_view(",\"relative_error\":"));
     if (c.heat_scale > 0)
-      append_json_number(b, c.heat_balance_error / c.heat_scale);
+      append_json_number(b, c.relative_heat_balance);
     else
       b.append(std::string_view("null"));
     b.push_back('}');

@@ -74,13 +74,18 @@ struct StepChecks {
   std::array<double, 3> applied_sum{};  ///< sum of applied concentrated + distributed loads
   double equilibrium_error = 0.0;       ///< |RF_sum + applied_sum| (translational)
   double force_scale = 0.0;             ///< for judging equilibrium_error
+  /// equilibrium_error / force_scale, formed in extended precision so that loads up to the double
+  /// range never make it overflow (0 when force_scale is 0: see has_force_scale)
+  double relative_equilibrium = 0.0;
+  bool has_force_scale() const { return force_scale > 0.0; }
   /// Heat balance (heat transfer and coupled steps, solver/thermal_step.hpp): transient steps
   /// integrate the fluxes over the step (heat), steady-state steps give the fluxes at its end.
   bool thermal = false;
   double reaction_flux_sum = 0.0, applied_flux_sum = 0.0, stored_heat = 0.0,
          heat_balance_error = 0.0;
-  double heat_scale = 0.0;        ///< sum of |RFL| + |applied| (+ |stored|), for judging the error
-  double max_damping_force = 0.0; ///< largest gap damping force in any increment of the step
+  double heat_scale = 0.0; ///< sum of |RFL| + |applied| (+ |stored|), for judging the error
+  double relative_heat_balance = 0.0; ///< heat_balance_error / heat_scale (extended precision)
+  double max_damping_force = 0.0;     ///< largest gap damping force in any increment of the step
   /// Automatic stabilization (*STATIC, STABILIZE): the damping factor at the step end and the
   /// energies since the analysis start, as Abaqus reports them (ALLSD dissipated by the
   /// stabilization, ALLIE the internal energy)

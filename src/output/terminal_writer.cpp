@@ -50,7 +50,7 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
   if (mechanical) {
     if (c.force_scale > 0)
       log::info("  equilibrium error {:.3e} ({:.2e} of force scale {:.4g})", c.equilibrium_error,
-                c.equilibrium_error / c.force_scale, c.force_scale);
+                c.relative_equilibrium, c.force_scale);
     else
       log::info("  equilibrium error {:.3e}", c.equilibrium_error);
   }
@@ -61,7 +61,7 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
                 c.heat_balance_error, c.heat_scale);
     else if (c.heat_scale > 0)
       log::info("  heat balance error {:.3e} ({:.2e} of heat scale {:.4g})", c.heat_balance_error,
-                c.heat_balance_error / c.heat_scale, c.heat_scale);
+                c.relative_heat_balance, c.heat_scale);
     else
       log::info("  heat balance error {:.3e}", c.heat_balance_error);
   }

@@ -10,6 +10,7 @@
 #include "model/model.hpp"
 #include "solver/analysis_impl.hpp"
 #include "solver/diagnostics.hpp"
+#include "solver/finite_check.hpp"
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
 #include "solver/stabilization.hpp"
@@ -452,6 +453,10 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   r.last_t0 = t_prev;
   r.last_dt = dt;
   r.attempts_log.clear();
+  // a converged state that overflowed somewhere stops the run before it is committed or written
+  if (const std::string bad = first_non_finite_state(model, disc, st.u, prob.reactions());
+      !bad.empty())
+    throw AnalysisError(non_finite_message(ctrl.increment() + 1, bad));
   r.predictor.record(st.u, st.u_start, dt);
   r.extrapolate = true;
   prob.commit();

@@ -1,4 +1,5 @@
 #include "solver/analysis_impl.hpp"
+#include "solver/finite_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -164,6 +165,8 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
     fr.elements.push_back({e, {}});
     assembler.recover(e, fields, prob.context(), fr.elements.back().data);
   }
+  if (const std::string bad = first_non_finite_output(model, fr); !bad.empty())
+    throw AnalysisError(non_finite_message(increment, bad));
   for (auto* w : writers) w->frame(model, index, fr);
 }
 
@@ -256,13 +259,14 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
   // Equilibrium: reactions + applied loads + forces of springs to ground.
   const DofMap& dofs = disc.dofs();
   const std::vector<double> reaction = prob.reactions();
-  double scale = 0.0;
+  long double scale = 0.0; // extended range: loads near 1e308 do not overflow
+  std::array<long double, 3> reaction_sum{}, applied_sum{};
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
     const int d = static_cast<int>(dofs.slot_dof(s));
     if (d >= 3) continue;
-    c.reaction_sum[d] += reaction[s];
-    c.applied_sum[d] += st.f_ext[s];
-    scale += std::abs(reaction[s]) + std::abs(st.f_ext[s]);
+    reaction_sum[d] += reaction[s];
+    applied_sum[d] += st.f_ext[s];
+    scale += std::fabs(static_cast<long double>(reaction[s])) + std::fabs(st.f_ext[s]);
   }
   // reactions of boundary conditions in local systems: -lambda along each held local axis
   const ConstraintSet& rows = disc.constraints();
@@ -273,11 +277,11 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
       const int row = rows.bc_row(n, d + 1);
       if (row < 0 || !rows.active(row)) continue;
       const double R = -rows.mult_trial[row];
-      for (int j = 0; j < 3; ++j) c.reaction_sum[j] += R * (*Q)[3 * d + j];
+      for (int j = 0; j < 3; ++j) reaction_sum[j] += static_cast<long double>(R) * (*Q)[3 * d + j];
       scale += std::abs(R);
     }
   }
-  std::array<double, 3> ground{};
+  std::array<long double, 3> ground{};
   // the stabilization's viscous forces hold the model like springs to ground
   const auto fstab = prob.stabilization_forces();
   for (std::size_t k = 0; k < fstab.size(); ++k) {
@@ -301,13 +305,17 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
       }
     }
   }
-  double err2 = 0.0;
+  long double err2 = 0.0;
   for (int d = 0; d < 3; ++d) {
-    const double e = c.reaction_sum[d] + c.applied_sum[d] - ground[d];
+    const long double e = reaction_sum[d] + applied_sum[d] - ground[d];
     err2 += e * e;
+    c.reaction_sum[d] = static_cast<double>(reaction_sum[d]);
+    c.applied_sum[d] = static_cast<double>(applied_sum[d]);
   }
-  c.equilibrium_error = std::sqrt(err2);
-  c.force_scale = scale;
+  const long double err = std::sqrt(err2);
+  c.equilibrium_error = static_cast<double>(err);
+  c.force_scale = static_cast<double>(scale);
+  c.relative_equilibrium = scale > 0 ? static_cast<double>(err / scale) : 0.0;
   return c;
 }
 

@@ -104,24 +104,29 @@ void HeatBalance::finish(Discretization& disc, const StepContext& ctx,
                          std::span<const double> f_ext, StepChecks& c) const {
   if (!_active) return;
   c.thermal = true;
+  // extended precision: fluxes near the double range do not overflow the sums
+  long double rfl = 0.0, applied = 0.0, stored = 0.0, scale = 0.0;
   if (_transient) {
-    c.reaction_flux_sum = _reaction;
-    c.applied_flux_sum = _applied;
-    c.stored_heat = total_stored_heat(disc, ctx, u_now, _u_begin);
-    c.heat_scale = _scale + std::abs(c.stored_heat);
+    rfl = _reaction;
+    applied = _applied;
+    stored = total_stored_heat(disc, ctx, u_now, _u_begin);
+    scale = static_cast<long double>(_scale) + std::fabs(stored);
   } else {
     const DofMap& dofs = disc.dofs();
-    double scale = 0.0;
     for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
       if (!dofs.slot_is_temperature(s)) continue;
-      c.reaction_flux_sum += reaction[s];
-      c.applied_flux_sum += f_ext[s];
-      scale += std::abs(reaction[s]) + std::abs(f_ext[s]);
+      rfl += reaction[s];
+      applied += f_ext[s];
+      scale += std::fabs(static_cast<long double>(reaction[s])) + std::fabs(f_ext[s]);
     }
-    c.stored_heat = 0.0;
-    c.heat_scale = scale;
   }
-  c.heat_balance_error = std::abs(c.reaction_flux_sum + c.applied_flux_sum - c.stored_heat);
+  const long double error = std::fabs(rfl + applied - stored);
+  c.reaction_flux_sum = static_cast<double>(rfl);
+  c.applied_flux_sum = static_cast<double>(applied);
+  c.stored_heat = static_cast<double>(stored);
+  c.heat_scale = static_cast<double>(scale);
+  c.heat_balance_error = static_cast<double>(error);
+  c.relative_heat_balance = scale > 0 ? static_cast<double>(error / scale) : 0.0;
 }
 
 double total_stored_heat(Discretization& disc, const StepContext& ctx, std::span<const double> u,

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <type_traits>
 
 namespace gapfem::rotation {
 
@@ -96,6 +97,17 @@ T asin_ratio(const T& s) {
 template <class T>
 Quat<T> quat_exp(const V3<T>& v) {
   const T x = dot3(v, v);
+  if constexpr (std::is_same_v<T, double>) {
+    // theta^2 overflows before theta does (rotations of a linear analysis under loads near the
+    // double range): the angle from a scaled norm keeps the quaternion finite
+    if (!std::isfinite(x)) {
+      const double t = std::hypot(v[0], v[1], v[2]);
+      if (std::isfinite(t) && t > 0.0) {
+        const double s = std::sin(0.5 * t) / t;
+        return {std::cos(0.5 * t), s * v[0], s * v[1], s * v[2]};
+      }
+    }
+  }
   const T s = sinc_half(x);
   return {cos_half(x), s * v[0], s * v[1], s * v[2]};
 }

@@ -276,6 +276,7 @@ TEST(OutputDat, ThermalAndDampingChecks) {
   s.checks.applied_flux_sum = 500.0;
   s.checks.heat_balance_error = 1e-10;
   s.checks.heat_scale = 1000.0;
+  s.checks.relative_heat_balance = 1e-13;
   s.checks.max_damping_force = 0.125;
   w.end_step(m, 0, s);
   w.end(m, make_run());

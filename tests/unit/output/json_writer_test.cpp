@@ -172,6 +172,7 @@ TEST(OutputJson, HeatBalanceWithScaleAndRelativeError) {
   s.checks.applied_flux_sum = 500.0;
   s.checks.heat_balance_error = 1e-10;
   s.checks.heat_scale = 1000.0;
+  s.checks.relative_heat_balance = 1e-13;
   w.end_step(m, 0, s);
   w.begin_step(m, 0); // a second step in which no heat flows: scale 0
   s.checks.heat_balance_error = 0.0;

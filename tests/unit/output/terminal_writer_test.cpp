@@ -69,6 +69,7 @@ TEST(OutputTerminal, DeltmxRepeatAndHeatBalance) {
   s.checks.thermal = true;
   s.checks.heat_balance_error = 2e-9;
   s.checks.heat_scale = 1000.0;
+  s.checks.relative_heat_balance = 2e-12;
   w.end_step(m, 0, s);
   log::set_sink(std::move(old));
   log::set_level(old_level);

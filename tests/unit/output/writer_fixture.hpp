@@ -199,6 +199,7 @@ inline StepSummary make_summary() {
   c.applied_sum = {0.0, 0.0, -100.0};
   c.equilibrium_error = 1e-9;
   c.force_scale = 100.0;
+  c.relative_equilibrium = 1e-11; // equilibrium_error / force_scale
   return s;
 }
 
