@@ -290,19 +290,41 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
     ground[d] += fstab[k];
     scale += std::abs(fstab[k]);
   }
+  // Elements that may hold the model to ground themselves: springs to ground, substructures
+  // (their internal supports are condensed away), the deck's own elements and *MATRIX ASSEMBLE
+  // terms. Their net force is a force to ground; a free element's is zero and adds nothing.
   std::vector<double> r;
   std::vector<LocalIndex> slots;
   for (auto& b : disc.blocks()) {
-    if (b.type != ElementType::SPRING1) continue;
+    const bool grounded = b.type == ElementType::SPRING1 || b.type == ElementType::SUBSTRUCTURE ||
+                          b.type == ElementType::USER;
+    if (!grounded) continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
       assembler.element_residual(b.elements[i], fields, prob.context(), r, slots);
+      std::array<long double, 3> net{};
       for (std::size_t k = 0; k < r.size(); ++k) {
         const int d = static_cast<int>(dofs.slot_dof(slots[k]));
-        if (d < 3) {
-          ground[d] += r[k];
-          scale += std::abs(r[k]);
-        }
+        if (d < 3) net[d] += r[k];
       }
+      for (int d = 0; d < 3; ++d) {
+        ground[d] += net[d];
+        scale += std::fabs(net[d]);
+      }
+    }
+  }
+  if (!disc.matrix_terms().empty()) {
+    std::vector<double> f(static_cast<std::size_t>(dofs.n_slots()), 0.0);
+    std::array<double, kNumFields> flux{};
+    std::array<long, kNumFields> count{};
+    disc.matrix_terms().assemble(st.u_start, f, nullptr, dofs, flux, count);
+    std::array<long double, 3> net{};
+    for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+      const int d = static_cast<int>(dofs.slot_dof(s));
+      if (d < 3) net[d] += f[static_cast<std::size_t>(s)];
+    }
+    for (int d = 0; d < 3; ++d) {
+      ground[d] += net[d];
+      scale += std::fabs(net[d]);
     }
   }
   long double err2 = 0.0;
