@@ -6,10 +6,27 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace {
+
+/// Under an address-space limit (ulimit -v, as batch systems set it) OpenBLAS's worker threads
+/// retry a failed buffer allocation forever, inside a factorisation or in the library's shutdown
+/// at exit (docs/robustness.md, "Memory limits"). The threads start when the library loads, before
+/// main, so the program runs itself again with one BLAS thread (OPENBLAS_NUM_THREADS=1) before
+/// anything else; a thread count the user sets is kept. Nothing happens without such a limit.
+void one_blas_thread_under_address_limit(char** argv) {
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY) return;
+  if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return; // the user's (or ours, run again)
+  if (setenv("OPENBLAS_NUM_THREADS", "1", 1) != 0) return;
+  execv("/proc/self/exe", argv); // returns only when it failed: carry on as we are
+  unsetenv("OPENBLAS_NUM_THREADS");
+}
 
 /// `gapfem check deck.inp`: validate and summarise without solving (Abaqus's datacheck).
 int check_main(int argc, char** argv) {
@@ -89,6 +106,7 @@ bool start_processes(const std::vector<std::string>& petsc_options, bool petsc_s
 } // namespace
 
 int main(int argc, char** argv) {
+  one_blas_thread_under_address_limit(argv);
   if (argc >= 2 && std::strcmp(argv[1], "check") == 0) return check_main(argc - 1, argv + 1);
   // PETSc's own options (-ksp_rtol 1e-12, -inner_pc_type hypre, ...) are not gapfem's
   const std::vector<std::string> petsc_options = gapfem::parallel::take_petsc_options(argc, argv);

@@ -217,6 +217,11 @@ class CholmodSolver final : public LinearSolver {
       return fmt::format("CHOLMOD {} ran out of memory on {} equations (the factor needs about "
                          "{:.1f} GiB); use a coarser mesh or run on a machine with more memory",
                          what, _n, _c.lnz * sizeof(double) / 1073741824.0);
+    if (_c.status == CHOLMOD_INVALID && what == "ordering/analysis") // CHOLMOD's input is ours
+      return fmt::format("CHOLMOD's ordering (METIS) failed on {} equations, which happens when "
+                         "memory runs out; use a coarser mesh, raise the memory limit (ulimit -v) "
+                         "or run on a machine with more memory",
+                         _n);
     return fmt::format("CHOLMOD {} failed (status {}) on {} equations", what, _c.status, _n);
   }
 
