@@ -99,9 +99,13 @@ double Model::model_size() const {
       lo[i] = std::min(lo[i], x[i]);
       hi[i] = std::max(hi[i], x[i]);
     }
-  const double d = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                             (hi[2] - lo[2]) * (hi[2] - lo[2]));
-  return d > 0 ? d : 1.0;
+  // the diagonal without overflow: hypot, on halves where a span itself overflows (1e308 apart)
+  double d = std::hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  if (!std::isfinite(d))
+    d = std::min(2.0 * std::hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1],
+                                  0.5 * hi[2] - 0.5 * lo[2]),
+                 std::numeric_limits<double>::max());
+  return d > 0 && std::isfinite(d) ? d : 1.0;
 }
 
 } // namespace gapfem

@@ -123,7 +123,8 @@ struct Model {
   EntityLabel node_label(NodeId n) const { return {mesh.node_labels[n], &instances}; }
   EntityLabel element_label(ElemId e) const { return {mesh.elem_labels[e], &instances}; }
   EntityLabel label_of_key(Label key) const { return {key, &instances}; }
-  /// Characteristic model size: the diagonal of the bounding box of all nodes (>0).
+  /// Characteristic model size: the diagonal of the bounding box of all nodes (> 0 and finite,
+  /// also for coordinates near the double range: at most the largest double).
   double model_size() const;
 };
 

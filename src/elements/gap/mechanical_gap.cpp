@@ -1,6 +1,7 @@
 #include "elements/gap/mechanical_gap.hpp"
 
 #include "elements/gap/gap_response.hpp"
+#include "elements/reference_scale.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -182,7 +183,9 @@ double MechanicalGapKernel::augmented_stiffness(const ElementInput& in) const {
 std::string MechanicalGapKernel::validate(const ElementInput& in) const {
   const Eigen::Vector3d d(in.X[1][0] - in.X[0][0], in.X[1][1] - in.X[0][1],
                           in.X[1][2] - in.X[0][2]);
-  if (_base.shape == GapShape::Uni && _computed_direction && d.norm() <= 1e-12 * _length_scale)
+  // (lengths by hypot, reference_scale.hpp: nodes 1e300 apart do not coincide)
+  if (_base.shape == GapShape::Uni && _computed_direction &&
+      point_distance(in.X[0], in.X[1]) <= 1e-12 * _length_scale)
     return "the two nodes coincide and *GAP gives no direction, so the contact direction cannot be "
            "computed; give the direction cosines (fields 2-4 of the *GAP data line)";
   if (_base.shape == GapShape::Cyl && _dim == 2 && std::abs(std::abs(_base.a.z()) - 1.0) > 1e-12)
@@ -190,7 +193,7 @@ std::string MechanicalGapKernel::validate(const ElementInput& in) const {
   if (_base.shape != GapShape::Uni && _base.d < 0) {
     Eigen::Vector3d r = -d;
     if (_base.shape == GapShape::Cyl) r -= _base.a * _base.a.dot(r);
-    if (r.norm() <= 1e-12 * _length_scale)
+    if (std::hypot(r.x(), r.y(), r.z()) <= 1e-12 * _length_scale)
       return fmt::format(
           "the nodes lie on the {} of the gap with d < 0, so the gap is closed with an "
           "undefined contact direction; offset node 1 from node 2",

@@ -25,6 +25,7 @@
 /// (axisymmetric). Everything is allocation-free; the object is immutable and thread-safe.
 #include "elements/element_kernel.hpp"
 #include "elements/heat/heat_material.hpp"
+#include "elements/reference_scale.hpp"
 #include "fem/element_faces.hpp"
 #include "fem/quadrature.hpp"
 #include "fem/shape_functions.hpp"
@@ -201,7 +202,9 @@ class HeatCore {
   double section() const { return _section; }
 
   /// An empty string, or a sentence about the geometry (caller adds element and deck location).
-  std::string validate(std::span<const Vec3> X) const {
+  std::string validate(std::span<const Vec3> given) const {
+    std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
+    const std::span<const Vec3> X = scaled_nodes(given, xs);
     if ((G == HeatGeometry::Line || G == HeatGeometry::Planar) && !(_section > 0.0))
       return G == HeatGeometry::Line ? "the cross-section area on *SOLID SECTION must be positive"
                                      : "the *SOLID SECTION thickness must be positive";

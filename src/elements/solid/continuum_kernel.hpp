@@ -16,6 +16,7 @@
 /// same substitution is applied to the Green-Lagrange strain; the element energy is a function of
 /// Ebar(u), so the tangent is its Hessian and stays symmetric.
 #include "elements/element_kernel.hpp"
+#include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_law.hpp"
 #include "elements/solid/continuum_loads.hpp"
 #include "fem/element_faces.hpp"
@@ -228,7 +229,10 @@ class ContinuumKernel final : public ElementKernel {
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
 
-  std::string validate(const ElementInput& in) const override {
+  std::string validate(const ElementInput& given) const override {
+    std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
+    ElementInput in = given;
+    in.X = scaled_nodes(given.X, xs);
     for (int q = 0; q < NIP; ++q) {
       MatG g;
       double detJ = 0.0;

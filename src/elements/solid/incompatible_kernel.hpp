@@ -18,6 +18,7 @@
 /// under NLGEOM), so the element keeps no history, and returns r_u at that alpha with the
 /// condensed tangent K_uu - K_ua K_aa^-1 K_au, the exact derivative of r_u(u, alpha(u)).
 #include "elements/element_kernel.hpp"
+#include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_kernel.hpp"
 
 #include <Eigen/Dense>
@@ -75,7 +76,10 @@ class IncompatibleKernel final : public ElementKernel {
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
 
-  std::string validate(const ElementInput& in) const override {
+  std::string validate(const ElementInput& given) const override {
+    std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
+    ElementInput in = given;
+    in.X = scaled_nodes(given.X, xs);
     Geometry g;
     for (int q = 0; q < NIP; ++q)
       if (!geometry(in, q, g))

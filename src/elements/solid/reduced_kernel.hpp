@@ -16,6 +16,7 @@
 /// recover() reports S and E at the single point and the element's artificial (hourglass) energy
 /// 1/2 u^T K_hg u, summed into ALLAE.
 #include "elements/element_kernel.hpp"
+#include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_kernel.hpp"
 #include "elements/solid/hourglass.hpp"
 
@@ -52,7 +53,10 @@ class ReducedKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
   bool has_artificial_energy() const override { return true; }
 
-  std::string validate(const ElementInput& in) const override {
+  std::string validate(const ElementInput& given) const override {
+    std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
+    ElementInput in = given;
+    in.X = scaled_nodes(given.X, xs);
     Geo g;
     int bad = 0;
     if (!g.build(in.X, _setup.thickness, bad)) {

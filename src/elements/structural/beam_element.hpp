@@ -4,6 +4,7 @@
 /// section, orientation), the reference geometry of the integration points, and the output of
 /// section forces and section-point stresses.
 #include "elements/element_kernel.hpp"
+#include "elements/reference_scale.hpp"
 #include "elements/structural/beam_kinematics.hpp"
 #include "elements/structural/beam_section.hpp"
 #include "model/material.hpp"
@@ -68,10 +69,21 @@ BeamGeometry beam_geometry(std::span<const Vec3> X, const Vec3& n1a, double size
   };
   const Vec3 chord{X[NN - 1][0] - X[0][0], X[NN - 1][1] - X[0][1], X[NN - 1][2] - X[0][2]};
   if (why != nullptr) {
+    // on the nodes scaled to an extent near 1 (reference_scale.hpp): no product of coordinates
+    // overflows or underflows, so nodes 1e300 apart do not "coincide"
+    const double f = unit_scale(X);
+    std::array<Vec3, NN> Xs{};
+    for (int a = 0; a < NN; ++a)
+      for (int i = 0; i < 3; ++i) Xs[a][i] = f * X[a][i];
+    const Vec3 c{Xs[NN - 1][0] - Xs[0][0], Xs[NN - 1][1] - Xs[0][1], Xs[NN - 1][2] - Xs[0][2]};
+    const double c_len = std::hypot(c[0], c[1], c[2]), tol = 1e-12 * f * size;
     std::array<double, 3> N{}, dN{};
-    for (double xi : {-1.0, 0.0, 1.0})
-      if (!(dot3(tangent(xi, N, dN), chord) > 1e-12 * size * std::sqrt(dot3(chord, chord)) &&
-            std::sqrt(dot3(chord, chord)) > 1e-12 * size)) {
+    for (double xi : {-1.0, 0.0, 1.0}) {
+      line_shape<NN>(xi, N, dN);
+      Vec3 t{};
+      for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < 3; ++i) t[i] += dN[a] * Xs[a][i];
+      if (!(dot3(t, c) > tol * c_len && c_len > tol)) {
         *why = NN == 2 ? "the two nodes of this beam coincide, so it has no length; check the node "
                          "coordinates"
                        : "this beam has no length or folds back on itself (its middle node is not "
@@ -79,19 +91,20 @@ BeamGeometry beam_geometry(std::span<const Vec3> X, const Vec3& n1a, double size
                          "(end, middle, end)";
         return g;
       }
+    }
   }
   for (int p = 0; p < g.n_points; ++p) {
     BeamPoint& bp = g.pts[p];
     std::array<double, 3> dNxi{};
     const Vec3 d = tangent(xis[p], bp.N, dNxi);
-    const double J = std::sqrt(dot3(d, d));
+    const double J = std::hypot(d[0], d[1], d[2]);
     bp.weight = w * J;
     g.length += bp.weight;
     for (int a = 0; a < NN; ++a) bp.dN[a] = dNxi[a] / J;
     const Vec3 t{d[0] / J, d[1] / J, d[2] / J};
     bp.dX = t;
     const Vec3 c = cross3(t, n1a);
-    const double cn = std::sqrt(dot3(c, c)), n1n = std::sqrt(dot3(n1a, n1a));
+    const double cn = std::hypot(c[0], c[1], c[2]), n1n = std::hypot(n1a[0], n1a[1], n1a[2]);
     if (!(cn > 1e-6 * n1n)) {
       if (why != nullptr)
         *why = fmt::format("the approximate n1 direction ({}, {}, {}) of the beam section is "

@@ -1,5 +1,7 @@
 #include "elements/structural/shell_geometry.hpp"
 
+#include "common/error.hpp"
+#include "elements/reference_scale.hpp"
 #include "elements/structural/structural_common.hpp"
 
 #include <cmath>
@@ -152,17 +154,30 @@ std::array<double, 3> centre_point(int n_nodes) {
   return {0.0, 0.0, 4.0};
 }
 
-std::string check_geometry(std::span<const Vec3> X, std::span<const Vec3> directors,
-                           std::span<const double> thickness, double model_size) {
-  const int nn = static_cast<int>(X.size());
+std::string check_geometry(std::span<const Vec3> X_given, std::span<const Vec3> directors,
+                           std::span<const double> thickness_given, double model_size_given) {
+  // the check sees the shell scaled by a power of two to an extent near 1 (reference_scale.hpp),
+  // lengths and thicknesses alike: areas and normals of coordinates near 1e200 do not overflow
+  const int nn = static_cast<int>(X_given.size());
+  FE_CHECK(nn <= 9, "check_geometry: a shell element has at most 9 nodes");
+  const double f = unit_scale(X_given);
+  std::array<Vec3, 9> Xs{};
+  std::array<double, 9> ts{};
+  for (int a = 0; a < nn; ++a) {
+    for (int i = 0; i < 3; ++i) Xs[a][i] = f * X_given[a][i];
+    ts[a] = f * thickness_given[a];
+  }
+  const std::span<const Vec3> X(Xs.data(), static_cast<std::size_t>(nn));
+  const std::span<const double> thickness(ts.data(), static_cast<std::size_t>(nn));
+  const double model_size = f * model_size_given;
   for (int a = 0; a < nn; ++a)
-    if (!(thickness[a] > 0.0))
+    if (!(thickness_given[a] > 0.0))
       return fmt::format("the shell thickness at its node {} is {}; give a positive thickness "
                          "(*SHELL SECTION or *NODAL THICKNESS)",
-                         a + 1, thickness[a]);
+                         a + 1, thickness_given[a]);
   for (int a = 0; a < nn; ++a)
     for (int b = a + 1; b < nn; ++b)
-      if (norm(structural::sub(X[a], X[b])) <= 1e-12 * model_size)
+      if (point_distance(X[a], X[b]) <= 1e-12 * model_size)
         return fmt::format("its nodes {} and {} coincide; a shell needs distinct nodes", a + 1,
                            b + 1);
   // the area element must keep its sign over the element (no folded or inverted corners)

@@ -1,5 +1,6 @@
 #include "elements/structural/spring.hpp"
 
+#include "elements/reference_scale.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "model/model.hpp"
 
@@ -38,8 +39,9 @@ std::span<const DofType> SpringKernel::node_dofs(int local_node) const {
 
 std::string SpringKernel::validate(const ElementInput& in) const {
   if (_type != ElementType::SPRINGA) return {};
-  const AxialKinematics k = axial_reference(_ndim, in.X);
-  if (!(k.L > 1e-12 * (in.ctx ? in.ctx->model_size : 1.0)))
+  Vec3 b = in.X[1]; // (the length without overflow: reference_scale.hpp)
+  if (_ndim == 2) b[2] = in.X[0][2];
+  if (!(point_distance(in.X[0], b) > 1e-12 * (in.ctx ? in.ctx->model_size : 1.0)))
     return "the two nodes of this SPRINGA element coincide, so its line of action is undefined; "
            "move one node or use SPRING2 with explicit degrees of freedom";
   return {};

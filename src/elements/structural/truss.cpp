@@ -1,5 +1,6 @@
 #include "elements/structural/truss.hpp"
 
+#include "elements/reference_scale.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "elements/structural/structural_factory.hpp"
 #include "model/model.hpp"
@@ -34,8 +35,9 @@ bool TrussKernel::uses_temperature_field() const {
 }
 
 std::string TrussKernel::validate(const ElementInput& in) const {
-  const AxialKinematics k = axial_reference(_ndim, in.X);
-  if (!(k.L > 1e-12 * (in.ctx ? in.ctx->model_size : 1.0)))
+  Vec3 b = in.X[1]; // (the length without overflow: reference_scale.hpp)
+  if (_ndim == 2) b[2] = in.X[0][2];
+  if (!(point_distance(in.X[0], b) > 1e-12 * (in.ctx ? in.ctx->model_size : 1.0)))
     return _ndim == 2 ? "the two nodes of this truss coincide in the x-y plane, so it has no "
                         "length; check the node coordinates"
                       : "the two nodes of this truss coincide, so it has no length; check the node "

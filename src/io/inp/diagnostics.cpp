@@ -1,16 +1,25 @@
 #include "io/inp/diagnostics.hpp"
 
+#include "io/inp/deck_text.hpp"
+
 #include <fmt/format.h>
 #include <map>
 
 namespace gapfem::inp {
+
+InputError printable(const InputError& e) {
+  SourceLocation loc = e.location();
+  loc.file = printable(loc.file);
+  loc.keyword = printable(loc.keyword);
+  return InputError(std::move(loc), printable(e.entity()), printable(e.message()));
+}
 
 void Diagnostics::error(const InputError& e) {
   if (_muted) {
     ++_suppressed;
     return;
   }
-  _errors.push_back(e);
+  _errors.push_back(printable(e));
   if (static_cast<int>(_errors.size()) >= _max_errors) throw TooManyErrors{};
 }
 
@@ -20,7 +29,7 @@ void Diagnostics::warning(const SourceLocation& loc, const std::string& message)
     out += loc.file + (loc.line > 0 ? fmt::format(":{}", loc.line) : "") + ": ";
   if (!loc.keyword.empty()) out += loc.keyword + ": ";
   out += message;
-  _warnings.push_back(std::move(out));
+  _warnings.push_back(printable(out));
 }
 
 void Diagnostics::throw_if_errors() const {

@@ -13,7 +13,12 @@ namespace gapfem::inp {
 /// InputError. Never escapes read_deck().
 struct TooManyErrors {};
 
-/// Error and warning collector with a cap on the number of errors.
+/// `e` with every part made printable (deck_text.hpp): NUL and control bytes of the deck text it
+/// quotes are shown as \xNN, never cutting or garbling the message.
+InputError printable(const InputError& e);
+
+/// Error and warning collector with a cap on the number of errors. Every error and warning is
+/// stored printable.
 class Diagnostics {
  public:
   /// `max_errors`: after this many errors, error() throws TooManyErrors.

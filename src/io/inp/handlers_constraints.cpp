@@ -20,14 +20,8 @@ std::vector<NodeId> nodes_by_label(BuildState& s, const FieldReader& r, std::siz
 }
 
 DofType equation_dof(const FieldReader& r, std::size_t field) {
-  const long long n = r.integer(field, "degree of freedom");
   DofType d{};
-  if (n < 1 || n > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(n), d))
-    r.fail(fmt::format("field {} (degree of freedom)", field + 1),
-           fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, "
-                       "rotations) and 11-25 (temperatures: 11, and 12-25 through the thickness of "
-                       "heat-transfer shells)",
-                       n));
+  dof_from_abaqus(dof_number(r, field, "degree of freedom"), d);
   return d;
 }
 
@@ -90,15 +84,13 @@ void handle_equation(BuildState& s, const Keyword& kw) {
     long long n = 0;
     try {
       head.at_most(1, "number of terms");
-      n = head.integer(0, "number of terms");
-      if (n < 1 || n > 10000)
-        head.fail("field 1 (number of terms)",
-                  fmt::format("an equation needs at least one term (got {}); the first line of "
-                              "each equation gives its number of terms",
-                              n));
+      n = head.integer(0, "number of terms", 1, 10000,
+                       "an equation has 1 to 10000 terms, not {}; the first line of each equation "
+                       "gives its number of terms");
     } catch (const InputError& e) {
       s.diag.error(e);
-      return; // the rest of the block cannot be read reliably
+      kw.mark_read(); // the rest of the block cannot be read reliably
+      return;
     }
     std::vector<TermSpec> terms;
     try {

@@ -52,11 +52,7 @@ double positive(const FieldReader& r, std::size_t i, double def, const Slot& slo
 }
 
 int count(const FieldReader& r, std::size_t i, int def, const Slot& slot) {
-  const long long v = r.integer_or(i, def, slot.symbol);
-  if (v < 1 || v > 1000000)
-    r.fail(fmt::format("field {} ({})", i + 1, slot.symbol),
-           fmt::format("must be a whole number of at least 1, not {}", v));
-  return static_cast<int>(v);
+  return static_cast<int>(r.integer_or(i, def, slot.symbol, 1, 1000000));
 }
 
 double factor(const FieldReader& r, std::size_t i, double def, const Slot& slot, bool above_one) {
@@ -72,7 +68,8 @@ void read_field(BuildState& s, const Keyword& kw, SolutionControls& c) {
       enum_param(kw, "FIELD", {"GLOBAL", "DISPLACEMENT", "ROTATION", "TEMPERATURE"}, 0);
   const DataLine* line = nullptr;
   for (const DataLine& l : kw.data)
-    if (!l.empty()) {
+    if (!l.blank()) { // (a line of only commas: the defaults)
+      l.read = true;
       if (line)
         s.error(s.loc(kw, l), "", "*CONTROLS, PARAMETERS=FIELD has one data line; remove this one");
       else
@@ -100,7 +97,8 @@ void read_field(BuildState& s, const Keyword& kw, SolutionControls& c) {
 void read_time_incrementation(BuildState& s, const Keyword& kw, SolutionControls& c) {
   int index = 0;
   for (const DataLine& l : kw.data) {
-    if (l.empty() && index == 0) continue;
+    if (l.blank()) continue; // (a line of only commas keeps its place: the defaults)
+    if (index == 3) break;   // three lines at most: the parser reports any further ones
     const FieldReader r = s.reader(kw, l);
     if (index == 0) {
       r.at_most(std::size(kIterationSlots), "I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T, …");
@@ -156,6 +154,7 @@ void handle_controls(BuildState& s, const Keyword& kw) {
     read_time_incrementation(s, kw, c);
     break;
   default:
+    kw.mark_read(); // (ignored with this warning)
     s.warn(kw.loc, "*CONTROLS, PARAMETERS=LINE SEARCH has no effect in gapfem: its Newton method "
                    "has no line search (contact and friction use active-set and stick predictors "
                    "instead)");
@@ -169,11 +168,8 @@ void handle_restart(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "",
                      "give WRITE (write restart data, in model or history data) or "
                      "READ (continue an earlier job, first in a restart deck)");
-  auto positive = [&](std::string_view name) -> std::optional<int> {
-    const auto v = int_param(kw, name);
-    if (v && (*v < 0 || *v > 1000000000))
-      throw InputError(kw.loc, fmt::format("{}={}", name, *v),
-                       "give a whole number from 0 up (0: none)");
+  auto positive = [&](std::string_view name, std::string_view what) -> std::optional<int> {
+    const auto v = int_param(kw, name, what, 0, kMaxInt);
     return v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
   };
   if (read) {
@@ -187,8 +183,8 @@ void handle_restart(BuildState& s, const Keyword& kw) {
                        "*RESTART, READ comes before the first *STEP of a restart deck (the steps "
                        "after it are the new ones)");
     RestartRead r;
-    r.step = positive("STEP").value_or(0);
-    r.increment = positive("INC").value_or(0);
+    r.step = positive("STEP", "the step to continue from").value_or(0);
+    r.increment = positive("INC", "the increment to continue from").value_or(0);
     r.end_step = kw.has("END STEP");
     r.loc = kw.loc;
     if (s.model.restart_read)
@@ -204,8 +200,10 @@ void handle_restart(BuildState& s, const Keyword& kw) {
                        "NUMBER INTERVAL, OVERLAY and TIME MARKS");
   RestartWrite w;
   w.loc = kw.loc;
-  const auto frequency = positive("FREQUENCY");
-  const auto interval = positive("NUMBER INTERVAL");
+  const auto frequency =
+      positive("FREQUENCY", "the restart frequency (every n-th increment; 0: none)");
+  const auto interval =
+      positive("NUMBER INTERVAL", "the number of restart intervals per step (0: none)");
   if (frequency && interval)
     throw InputError(kw.loc, "NUMBER INTERVAL",
                      "give FREQUENCY (every n-th increment) or NUMBER INTERVAL (n times per step), "

@@ -27,9 +27,10 @@ double norm(const Vec3& v) {
 /// first = all of 1-6.
 std::vector<int> dof_range(const FieldReader& r, std::size_t first_field) {
   if (r.blank(first_field)) return {1, 2, 3, 4, 5, 6};
-  const long long a = r.integer(first_field, "first DOF");
-  const long long b = r.integer_or(first_field + 1, a, "last DOF");
-  if (a < 1 || b > 6 || b < a)
+  constexpr std::string_view rule = "DOF {}: give DOFs within 1-6, the first not above the last";
+  const long long a = r.integer(first_field, "first DOF", 1, 6, rule);
+  const long long b = r.integer_or(first_field + 1, a, "last DOF", 1, 6, rule);
+  if (b < a)
     r.fail(fmt::format("DOFs {}-{}", a, b), "give DOFs within 1-6, the first not above the last");
   std::vector<int> out;
   for (long long d = a; d <= b; ++d) out.push_back(static_cast<int>(d));

@@ -8,10 +8,11 @@
 namespace gapfem::inp {
 namespace {
 
+/// The data lines that hold more than blanks (a line of only commas counts: its fields are blank).
 std::vector<const DataLine*> lines_of(const Keyword& kw) {
   std::vector<const DataLine*> out;
   for (const auto& d : kw.data)
-    if (!d.empty()) out.push_back(&d);
+    if (!d.blank()) out.push_back(&d);
   return out;
 }
 
@@ -196,8 +197,8 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
   reject_param(kw, "EXPONENTIAL DECAY", "give a constant (or tabulated) friction coefficient");
   reject_param(kw, "ANISOTROPIC", "gap friction is isotropic");
   reject_param(kw, "USER", "user friction subroutines are not available");
-  if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
-    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
+  if (const auto dep = dependencies_param(kw); dep > 0)
+    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
                      "field-variable dependencies are not supported by gapfem");
   FrictionSpec f;
   f.given = true;
@@ -225,6 +226,7 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
   if (f.rough) {
     if (!lines_of(kw).empty())
       s.warn(kw.loc, "ROUGH friction takes no data lines; the friction coefficients were ignored");
+    kw.mark_read(); // (ignored with the warning above)
     return f;
   }
   const int failed = for_each_line(s, kw, [&](const DataLine& line) {
@@ -306,8 +308,8 @@ void handle_gap_conductance(BuildState& s, const Keyword& kw) {
         kw.loc, "*GAP, ELSET=" + gap.elset,
         "this *GAP already has both a clearance- and a pressure-dependent conductance");
   reject_param(kw, "USER", "tabulate the conductance on data lines");
-  if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
-    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
+  if (const auto dep = dependencies_param(kw); dep > 0)
+    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
                      "field-variable dependencies are not supported by gapfem");
   GapConductanceSpec c;
   c.given = true;

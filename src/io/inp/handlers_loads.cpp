@@ -64,21 +64,10 @@ bool bc_type_dofs(const std::string& name, std::vector<int>& dofs) {
   return true;
 }
 
-DofType to_dof(const FieldReader& r, long long n, std::size_t field) {
-  DofType d{};
-  if (n < 0 || n > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(n), d))
-    r.fail(
-        fmt::format("field {} (degree of freedom)", field + 1),
-        fmt::format("DOF {} is not available; gapfem knows DOFs 1-6 (displacements, rotations) "
-                    "and 11-25 (temperatures: 11, and 12-25 through the thickness of heat-transfer "
-                    "shells)",
-                    n));
-  return d;
-}
-
 /// Element label written in field `field` (an element number rather than a set name)?
 bool is_label(const FieldReader& r, std::size_t field) {
-  return parse_integer(r.text(field)).has_value();
+  long long v = 0;
+  return check_integer(r.text(field), 0, 0, v) != IntCheck::NotWhole; // digits (of any size)
 }
 
 std::string elem_entity(const BuildState& s, ElemId e) {
@@ -204,10 +193,8 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
       r.at_most(2, "node or node set, boundary type");
     } else {
       r.at_most(4, "node or node set, first DOF, last DOF, value");
-      const long long first = r.integer(1, "first DOF");
-      const long long last = r.integer_or(2, first, "last DOF");
-      to_dof(r, first, 1);
-      to_dof(r, last, 2);
+      const int first = dof_number(r, 1, "degree of freedom");
+      const int last = r.blank(2) ? first : dof_number(r, 2, "degree of freedom");
       if (last < first)
         r.fail("field 3 (last DOF)",
                fmt::format("the last DOF {} is smaller than the first DOF {}", last, first));
@@ -215,7 +202,7 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
         r.fail(fmt::format("DOFs {}-{}", first, last),
                "this range includes DOFs 7-10, which gapfem does not have; give DOFs 1-6 and 11 on "
                "separate lines");
-      for (long long d = first; d <= last; ++d) dofs.push_back(static_cast<int>(d));
+      for (int d = first; d <= last; ++d) dofs.push_back(d);
       value = r.real_or(3, 0.0, "value");
       if (!history && value != 0.0 && !s.model_boundary_value_warned) {
         // Abaqus allows only zero values here; CalculiX decks give non-zero ones, meaning the
@@ -256,20 +243,15 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
     r.at_most(3, "node or node set, DOF, magnitude");
     DofType dof = DofType::NT;
     if (flux) {
-      const long long d = r.blank(1) ? 11 : r.integer(1, "DOF");
-      if (d < 11 || d > kMaxAbaqusDof)
-        r.fail("field 2 (DOF)",
-               fmt::format("a concentrated heat flux acts on a temperature DOF: 11 (or 12-{} "
-                           "through the thickness of a heat-transfer shell), not {}; write 11 or "
-                           "leave it blank",
-                           kMaxAbaqusDof, d));
+      constexpr std::string_view rule =
+          "a concentrated heat flux acts on a temperature DOF: 11 (or 12-25 through the thickness "
+          "of a heat-transfer shell), not {}; write 11 or leave it blank";
+      const long long d = r.blank(1) ? 11 : r.integer(1, "DOF", 11, kMaxAbaqusDof, rule);
       dof_from_abaqus(static_cast<int>(d), dof);
     } else {
-      const long long d = r.integer(1, "DOF");
-      if (d >= 11 && d <= kMaxAbaqusDof)
-        r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
-      if (d < 1 || d > 6)
-        r.fail("field 2 (DOF)", fmt::format("*CLOAD acts on DOFs 1-6, not {}", d));
+      const long long d = r.integer(1, "DOF", 1, kMaxAbaqusDof, "*CLOAD acts on DOFs 1-6, not {}");
+      if (d >= 11) r.fail("field 2 (DOF)", "use *CFLUX for concentrated heat fluxes on DOF 11");
+      if (d > 6) r.fail("field 2 (DOF)", fmt::format("*CLOAD acts on DOFs 1-6, not {}", d));
       dof_from_abaqus(static_cast<int>(d), dof);
     }
     const double value = r.real(2, "magnitude");

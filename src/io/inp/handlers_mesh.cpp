@@ -25,12 +25,10 @@ Range read_range(const FieldReader& r) {
   if (r.text(1).empty())
     r.fail("field 2 (last)", "with GENERATE each data line gives first, last and an optional "
                              "increment; add the last label, or remove GENERATE to list labels");
-  Range g{r.integer(0, "first"), r.integer_or(1, r.integer(0, "first"), "last"),
-          r.integer_or(2, 1, "increment")};
-  if (g.step <= 0)
-    r.fail("field 3 (increment)",
-           fmt::format("the increment must be a positive integer, not {}", g.step));
-  if (g.first <= 0) r.fail("field 1 (first)", "labels must be positive integers");
+  const long long first = r.integer(0, "first", 1, kMaxLabel, kLabelRule);
+  Range g{first, r.integer(1, "last", 1, kMaxLabel, kLabelRule),
+          r.integer_or(2, 1, "increment", 1, kMaxLabel,
+                       "the increment must be a whole number from 1 to 999999999, not {}")};
   if (g.last < g.first)
     r.fail(fmt::format("range {}-{}", g.first, g.last),
            "with GENERATE the last label must not be smaller than the first; write first, last, "
@@ -38,6 +36,37 @@ Range read_range(const FieldReader& r) {
   if ((g.last - g.first) / g.step > kMaxGenerate)
     r.fail(fmt::format("range {}-{}", g.first, g.last), "this range is too large");
   return g;
+}
+
+/// Why an element may not list the same node twice, or "". A cell (continuum, shell, truss,
+/// two-node beam), a three-node beam, a gap and a SPRINGA list distinct nodes; SPRING2 may couple
+/// two DOFs of one node (its DOFs are checked with its *SPRING), user elements and substructures
+/// are what the user makes them.
+std::string repeated_node(const BuildState& s, ElementType type, const std::vector<Label>& keys,
+                          const std::vector<NodeId>& nodes, std::string_view type_name) {
+  const ElementTypeInfo& info = element_info(type);
+  const bool gap = info.family == ElementFamily::Gap;
+  if (!info.cell && !gap && type != ElementType::SPRINGA && info.family != ElementFamily::Beam)
+    return {};
+  for (std::size_t a = 0; a < nodes.size(); ++a)
+    for (std::size_t b = a + 1; b < nodes.size(); ++b) {
+      if (nodes[a] != nodes[b]) continue;
+      const EntityLabel node = s.model.label_of_key(keys[a]);
+      if (gap)
+        return fmt::format("node {} is both nodes of this gap, so its clearance never changes "
+                           "from d whatever the model does; a {} connects two distinct nodes: "
+                           "give the node on the other side (for a gap against a fixed surface, "
+                           "a node held by *BOUNDARY)",
+                           node, type_name);
+      if (nodes.size() == 2)
+        return fmt::format("node {} is both nodes of this {} element, so it has no length or "
+                           "direction; give two distinct nodes",
+                           node, type_name);
+      return fmt::format("node {} is given twice (positions {} and {} of the {} nodes); each node "
+                         "of a {} element is a distinct node: check the connectivity",
+                         node, a + 1, b + 1, nodes.size(), type_name);
+    }
+  return {};
 }
 
 /// A deck with parts defines nodes and elements in parts, instances or the assembly only.
@@ -54,6 +83,7 @@ void check_outside_parts(const BuildState& s, const Keyword& kw, const char* wha
 
 void handle_heading(BuildState& s, const Keyword& kw) {
   std::vector<std::string> lines;
+  kw.mark_read(); // every line is heading text
   for (const auto& d : kw.data) lines.emplace_back(trim(d.text));
   while (!lines.empty() && lines.back().empty()) lines.pop_back();
   std::size_t total = 0;
@@ -80,11 +110,9 @@ void handle_node(BuildState& s, const Keyword& kw) {
   std::vector<NodeId> added;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    const long long label = r.integer(0, "node number");
+    const long long label = read_label(s, r, "node number");
     const Label key = s.key(label);
     try {
-      if (label <= 0 || label > kLocalLabelMask)
-        r.fail(fmt::format("node {}", label), "node numbers must be positive integers below 2^40");
       r.at_most(4, "node number, x, y, z");
       const Vec3 x =
           s.place({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")});
@@ -129,6 +157,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
       const auto it = std::find_if(defs.begin(), defs.end(),
                                    [&](const UserElementType& t) { return t.name == upper; });
       if (it == defs.end() && s.bad_user_types.count(upper)) { // its definition was reported
+        kw.mark_read();
         for (const auto& d : kw.data)
           if (!d.fields.empty())
             if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
@@ -172,6 +201,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
   std::vector<ElemId> added;
   for (std::size_t i = 0; i < kw.data.size(); ++i) {
     if (kw.data[i].empty()) continue;
+    kw.data[i].read = true; // (a continued line is read through a joined copy)
     // a line ending with a comma continues on the next line until all nodes are given
     const SourceRef first_line = s.ref(kw.data[i]);
     // (copied only when it is continued: most element lines are complete)
@@ -183,6 +213,7 @@ void handle_element(BuildState& s, const Keyword& kw) {
              i + 1 < kw.data.size()) {
         ++i;
         const DataLine& next = kw.data[i];
+        next.read = true;
         joined.fields.insert(joined.fields.end(), next.fields.begin(), next.fields.end());
         joined.trailing_comma = next.trailing_comma;
       }
@@ -192,11 +223,9 @@ void handle_element(BuildState& s, const Keyword& kw) {
     long long label = 0;
     Label key = 0;
     try {
-      label = r.integer(0, "element number");
+      label = read_label(s, r, "element number");
       key = s.key(label);
       const std::string ent = fmt::format("element {}", s.model.label_of_key(key));
-      if (label <= 0 || label > kLocalLabelMask)
-        r.fail(ent, "element numbers must be positive integers below 2^40");
       if (const ElemId old = mesh.find_element(key); old >= 0)
         r.fail(ent, fmt::format("this element number is defined twice (first at {}); give each "
                                 "element its own number",
@@ -243,15 +272,9 @@ void handle_element(BuildState& s, const Keyword& kw) {
         s.bad_elements.insert(key);
         continue;
       }
-      if (info.cell) // a cell lists distinct nodes (a repeated midside node is a typing error)
-        for (std::size_t a = 0; a < nodes.size(); ++a)
-          for (std::size_t b = a + 1; b < nodes.size(); ++b)
-            if (nodes[a] == nodes[b])
-              r.fail(ent, fmt::format("node {} is given twice (positions {} and {} of the {} "
-                                      "nodes); each node of a {} element is a distinct node: "
-                                      "check the connectivity",
-                                      s.model.label_of_key(node_keys[a]), a + 1, b + 1, n_nodes,
-                                      type_name));
+      if (const std::string why = repeated_node(s, *type, node_keys, nodes, type_name);
+          !why.empty())
+        r.fail(ent, why);
       const ElemId id = mesh.n_elements();
       mesh.elem_labels.push_back(key);
       mesh.elem_types.push_back(*type);
@@ -290,6 +313,7 @@ static void handle_set(BuildState& s, const Keyword& kw) {
     const auto it = s.instance_index.find(inst);
     if (it == s.instance_index.end() && s.bad_instances.count(inst)) {
       s.bad_sets.insert(name); // the instance's *INSTANCE was in error (reported)
+      kw.mark_read();
       return;
     }
     if (it == s.instance_index.end())
@@ -361,6 +385,12 @@ static void handle_set(BuildState& s, const Keyword& kw) {
     }
     for (std::size_t f = 0; f < line.fields.size(); ++f) {
       if (line.fields[f].empty()) continue;
+      if (!(Nodes ? find_nset(s, name) : find_elset(s, name)) &&
+          parse_reference(s, r, f).set == name)
+        r.fail(fmt::format("{} set {}", what, name),
+               fmt::format("the set lists itself; a set cannot be defined in terms of itself: list "
+                           "its {}s by number, or sets defined before it",
+                           what));
       const auto ids = Nodes ? resolve_nodes(s, r, f) : resolve_elements(s, r, f);
       members.insert(members.end(), ids.begin(), ids.end());
     }

@@ -43,39 +43,41 @@ void add_unique(std::vector<T>& list, T v) {
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
 constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC";
 
-/// A data line of positive integers only (a list of section points), else nullopt.
-std::optional<std::vector<int>> number_line(const DataLine& line) {
-  std::vector<int> out;
+/// A data line of whole numbers only (a list of section points, read by read_vars)?
+bool number_line(const DataLine& line) {
+  bool any = false;
   for (const auto& f : line.fields) {
     if (f.empty()) continue;
-    const auto n = parse_integer(f);
-    if (!n) return std::nullopt;
-    out.push_back(static_cast<int>(std::clamp<long long>(*n, -1, 1 << 20)));
+    long long v = 0;
+    if (check_integer(f, 0, 0, v) == IntCheck::NotWhole) return false;
+    any = true;
   }
-  if (out.empty()) return std::nullopt;
-  return out;
+  return any;
 }
 
 /// Reads variable names from all data lines; unknown names are errors (`strict`) or warnings.
 /// A line of numbers is a list of section points: appended to `points` when given (each must be
 /// positive), otherwise reported by `points_note`.
+/// `failed` (when given) counts the lines in error, so that a request whose only variable was
+/// unknown gets no false "no output variables are listed" as well.
 template <typename V, typename Parse>
 std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool strict,
                          const char* known, std::vector<int>* points = nullptr,
-                         const char* points_note = nullptr) {
+                         const char* points_note = nullptr, int* failed = nullptr) {
   std::vector<V> vars;
-  for_each_line(s, kw, [&](const DataLine& line) {
+  const int n_failed = for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
-    if (const auto numbers = number_line(line); numbers && (points || points_note)) {
+    if (number_line(line) && (points || points_note)) {
       if (!points) {
         s.warn(r.loc(), points_note);
         return;
       }
-      for (int n : *numbers) {
-        if (n < 1)
-          r.fail(fmt::format("section point {}", n),
-                 "section points are numbered from 1 (the SNEG side of a shell, the first "
-                 "point of a beam section)");
+      constexpr std::string_view rule =
+          "section point {}: section points are numbered from 1 (the SNEG side of a shell, the "
+          "first point of a beam section)";
+      for (std::size_t i = 0; i < line.fields.size(); ++i) {
+        if (r.blank(i)) continue;
+        const int n = static_cast<int>(r.integer(i, "section point", 1, kMaxInt, rule));
         if (std::find(points->begin(), points->end(), n) == points->end()) points->push_back(n);
       }
       return;
@@ -93,14 +95,30 @@ std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool str
       s.warn(r.loc(), msg + "; the variable was left out");
     }
   });
+  if (failed) *failed = n_failed;
+  return vars;
+}
+
+/// The variables of a print or file request: those of read_vars in strict mode; a request
+/// without any is an error, unless its lines were reported already (an unknown variable).
+template <typename V, typename Parse>
+std::vector<V> request_vars(BuildState& s, const Keyword& kw, Parse parse, const char* known,
+                            const char* example, std::vector<int>* points = nullptr) {
+  int failed = 0;
+  std::vector<V> vars = read_vars<V>(s, kw, parse, true, known, points, nullptr, &failed);
+  if (vars.empty() && failed == 0)
+    throw InputError(kw.loc, "",
+                     fmt::format("no output variables are listed; add a data line such as {} "
+                                 "(known: {})",
+                                 example, known));
   return vars;
 }
 
 int frequency_param(const Keyword& kw) {
   // FREQ: the abbreviation CalculiX decks use; FREQUENCYF (CalculiX's frequency of its fluid
   // results) has no meaning here and is left aside
-  const auto f = kw.has("FREQUENCY") ? int_param(kw, "FREQUENCY") : int_param(kw, "FREQ");
-  if (f && *f < 0) throw InputError(kw.loc, "FREQUENCY", "the frequency must not be negative");
+  constexpr std::string_view what = "the output frequency (every n-th increment; 0: none)";
+  const auto f = int_param(kw, kw.has("FREQUENCY") ? "FREQUENCY" : "FREQ", what, 0, kMaxInt);
   return f ? static_cast<int>(*f) : 1;
 }
 
@@ -119,18 +137,17 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
     for (NodeId n = 0; n < s.model.mesh.n_nodes(); ++n) req.nodes[n] = n;
   } else {
     const auto* set = find_nset(s, req.nset);
-    if (!set && s.bad_sets.count(req.nset)) return; // its definition failed (reported)
+    if (!set && s.bad_sets.count(req.nset)) { // its definition failed (reported)
+      kw.mark_read();
+      return;
+    }
     if (!set)
       throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
                        "this node set is not defined; define it with *NSET in the model data");
     req.nodes = *set;
   }
-  req.vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
-  if (req.vars.empty())
-    throw InputError(
-        kw.loc, "",
-        fmt::format("no output variables are listed; add a data line such as U, RF (known: {})",
-                    kNodeVarList));
+  req.vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, "U, RF");
+  if (req.vars.empty()) return; // its unknown variables were reported
   s.scratch.node_print_given = true;
   s.step.node_prints.push_back(std::move(req));
 }
@@ -155,7 +172,10 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
     for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) req.elements[e] = e;
   } else {
     const auto* set = find_elset(s, req.elset);
-    if (!set && s.bad_sets.count(req.elset)) return; // its definition failed (reported)
+    if (!set && s.bad_sets.count(req.elset)) { // its definition failed (reported)
+      kw.mark_read();
+      return;
+    }
     if (!set)
       throw InputError(kw.loc, fmt::format("ELSET={}", req.elset),
                        "this element set is not defined; define it with *ELSET in the model data");
@@ -171,13 +191,9 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
                                    element_info(s.model.mesh.elem_types[e]).name));
         break;
       }
-  req.vars = read_vars<ElemVar>(s, kw, elem_var, true, kElemVarList, &req.section_points);
+  req.vars = request_vars<ElemVar>(s, kw, elem_var, kElemVarList, "S, E", &req.section_points);
   std::sort(req.section_points.begin(), req.section_points.end());
-  if (req.vars.empty())
-    throw InputError(
-        kw.loc, "",
-        fmt::format("no output variables are listed; add a data line such as S, E (known: {})",
-                    kElemVarList));
+  if (req.vars.empty()) return; // its unknown variables were reported
   s.scratch.el_print_given = true;
   s.step.el_prints.push_back(std::move(req));
 }
@@ -254,7 +270,10 @@ void add_field_vars(const std::vector<V>& vars, const std::vector<std::int32_t>*
 void handle_node_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<true>(s, kw, failed);
-  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) {
+    kw.mark_read(); // a failed set or request (reported), or history output (a warning)
+    return;
+  }
   auto& req = s.step.field_outputs[s.current_field];
   add_field_vars(read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList), set, req.node_vars,
                  req.node_vars_everywhere, req.node_sets);
@@ -263,7 +282,10 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
 void handle_element_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<false>(s, kw, failed);
-  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) return;
+  if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) {
+    kw.mark_read(); // a failed set or request (reported), or history output (a warning)
+    return;
+  }
   auto& req = s.step.field_outputs[s.current_field];
   std::vector<ElemVar> vars =
       read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
@@ -285,12 +307,13 @@ void handle_monitor(BuildState& s, const Keyword& kw) {
   m.loc = kw.loc;
   m.node = param_node(s, kw, "NODE");
   const Parameter* dof = kw.find("DOF");
-  const auto d = dof && dof->has_value ? parse_integer(dof->value) : std::nullopt;
+  long long d = 0;
   DofType type{};
-  if (!d || !dof_from_abaqus(static_cast<int>(*d), type))
+  if (!dof || !dof->has_value || check_integer(dof->value, 1, kMaxAbaqusDof, d) != IntCheck::Ok ||
+      !dof_from_abaqus(static_cast<int>(d), type))
     throw InputError(kw.loc, fmt::format("DOF={}", dof ? dof->value : ""),
                      "give the degree of freedom to monitor: DOF=1 … 6, or 11 (temperature)");
-  m.dof = static_cast<int>(*d);
+  m.dof = static_cast<int>(d);
   m.frequency = frequency_param(kw);
   (s.in_step ? s.step.monitor : s.model_monitor) = m;
 }
@@ -323,13 +346,9 @@ void handle_node_file(BuildState& s, const Keyword& kw) {
     req.set = set_param(s, kw, "NSET", true);
     req.members = *set;
   }
-  if (failed) return;
-  req.node_vars = read_vars<NodeVar>(s, kw, node_var, true, kNodeVarList);
-  if (req.node_vars.empty())
-    throw InputError(
-        kw.loc, "",
-        fmt::format("no output variables are listed; add a data line such as U, RF (known: {})",
-                    kNodeVarList));
+  if (failed) return kw.mark_read(); // its set's definition failed (reported)
+  req.node_vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, "U, RF");
+  if (req.node_vars.empty()) return; // its unknown variables were reported
   s.scratch.node_file_given = true;
   s.step.file_outputs.push_back(std::move(req));
 }
@@ -348,8 +367,8 @@ void handle_el_file(BuildState& s, const Keyword& kw) {
     req.set = set_param(s, kw, "ELSET", true);
     req.members = *set;
   }
-  if (failed) return;
-  req.elem_vars = read_vars<ElemVar>(s, kw, elem_var, true, "S, E, HFL");
+  if (failed) return kw.mark_read(); // its set's definition failed (reported)
+  req.elem_vars = request_vars<ElemVar>(s, kw, elem_var, "S, E, HFL", "S, E");
   for (ElemVar v : req.elem_vars)
     if (v == ElemVar::SF || v == ElemVar::NFORC)
       throw InputError(kw.loc, fmt::format("variable {}", elem_var_name(v)),
@@ -359,15 +378,13 @@ void handle_el_file(BuildState& s, const Keyword& kw) {
                              "*ELEMENT OUTPUT"
                            : "element nodal forces are not written to job.frd; print them with "
                              "*EL PRINT (job.dat and job.results.json)");
-  if (req.elem_vars.empty())
-    throw InputError(kw.loc, "",
-                     "no output variables are listed; add a data line such as S, E (known: S, E, "
-                     "HFL)");
+  if (req.elem_vars.empty()) return; // its unknown variables were reported
   s.scratch.el_file_given = true;
   s.step.file_outputs.push_back(std::move(req));
 }
 
 void handle_print_control(BuildState& s, const Keyword& kw) {
+  kw.mark_read();                                      // (ignored with the note below)
   if (!s.noted_keywords.insert(kw.key).second) return; // one note per keyword and deck
   s.warn(kw.loc, fmt::format("{} controls Abaqus's printed or results-file output; gapfem writes "
                              "its own job.dat, job.results.json and ParaView files, so it was "
@@ -378,6 +395,7 @@ void handle_print_control(BuildState& s, const Keyword& kw) {
 void handle_output_suboption(BuildState& s, const Keyword& kw) {
   // history requests were ignored with the *OUTPUT, HISTORY remark; in a field request these
   // (energy, contact-pair) variables do not exist in gapfem
+  kw.mark_read();
   if (s.parent != Parent::FieldOutput) return;
   handle_print_control(s, kw);
 }

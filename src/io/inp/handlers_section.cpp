@@ -8,20 +8,14 @@
 namespace gapfem::inp {
 namespace {
 
-/// Non-empty data lines of a keyword.
+/// The data lines of a keyword that hold more than blanks (a line of only commas counts: its
+/// fields are blank, the defaults). Lines after the ones a handler reads stay unread, and the
+/// parser reports them.
 std::vector<const DataLine*> lines_of(const Keyword& kw) {
   std::vector<const DataLine*> out;
   for (const auto& d : kw.data)
-    if (!d.empty()) out.push_back(&d);
+    if (!d.blank()) out.push_back(&d);
   return out;
-}
-
-void extra_lines_warning(BuildState& s, const Keyword& kw, std::size_t used) {
-  const auto lines = lines_of(kw);
-  if (lines.size() > used)
-    s.warn(s.loc(kw, *lines[used]),
-           fmt::format("{} uses only {} data line(s) here; the data from this line on was ignored",
-                       kw.name, used));
 }
 
 } // namespace
@@ -44,7 +38,6 @@ void handle_solid_section(BuildState& s, const Keyword& kw) {
       sec.thickness = *t;
       sec.thickness_given = true;
     }
-    extra_lines_warning(s, kw, 1);
   }
   s.model.solid_sections.push_back(std::move(sec));
   s.solid_material.push_back(material);
@@ -103,7 +96,6 @@ void handle_section_controls(BuildState& s, const Keyword& kw) {
                fmt::format("field {} of *SECTION CONTROLS scales the hourglass control of shell "
                            "elements; gapfem's solid elements do not use it",
                            i + 1));
-    extra_lines_warning(s, kw, 1);
   }
   s.controls_index[c.name] = static_cast<int>(s.model.section_controls.size());
   s.model.section_controls.push_back(std::move(c));
@@ -194,6 +186,7 @@ void read_beam_geometry(BuildState& s, const Keyword& kw, BeamSection& sec, bool
            fmt::format("the wall thickness {} must be smaller than the outer radius {} (use "
                        "SECTION=CIRC for a solid circle)",
                        sec.dims[1], sec.dims[0]));
+  if (lines.size() > 1) lines[1]->read = true; // (blank: the default n1 direction)
   if (lines.size() > 1 && !lines[1]->empty()) {
     const FieldReader r2 = s.reader(kw, *lines[1]);
     r2.at_most(3, "n1 direction x, y, z");
@@ -243,9 +236,6 @@ void read_general_constants(BuildState& s, const Keyword& kw, BeamSection& sec) 
   sec.alpha = r.real_or(2, 0.0, "thermal expansion coefficient");
   if (!(sec.E > 0.0)) r.fail("field 1 (E)", fmt::format("must be positive, not {}", sec.E));
   if (!(sec.G > 0.0)) r.fail("field 2 (G)", fmt::format("must be positive, not {}", sec.G));
-  if (lines.size() > 3)
-    s.warn(s.loc(kw, *lines[3]), "*BEAM GENERAL SECTION uses at most 3 data lines here; the data "
-                                 "from this line on was ignored");
 }
 
 } // namespace
@@ -261,13 +251,12 @@ void handle_beam_section(BuildState& s, const Keyword& kw) {
     read_beam_geometry(s, kw, sec, false);
   });
   const auto lines = positional_lines(kw);
-  if (lines.size() > 2)
+  if (lines.size() > 2) {
+    lines[2]->read = true; // Abaqus's third line: accepted with a remark
     s.warn(s.loc(kw, *lines[2]),
            "the number of section integration points has no effect in gapfem: elastic sections "
            "are integrated exactly and stresses are reported at the section's corner points");
-  if (lines.size() > 3)
-    s.warn(s.loc(kw, *lines[3]),
-           "*BEAM SECTION uses at most 3 data lines here; the data from this line on was ignored");
+  }
   s.model.beam_sections.push_back(std::move(sec));
   s.beam_material.push_back(material);
   s.beam_section_ok = true;
@@ -342,7 +331,6 @@ void handle_beam_transverse_shear(BuildState& s, const Keyword& kw) {
              fmt::format("must not be negative, not {}", scf));
     sec.slenderness = scf;
   }
-  extra_lines_warning(s, kw, 1);
 }
 
 void handle_spring(BuildState& s, const Keyword& kw) {
@@ -365,6 +353,7 @@ void handle_spring(BuildState& s, const Keyword& kw) {
                      "holds the DOFs, blank for SPRINGA)");
   sec.stiffness = read_property_table(s, kw, rows, {"stiffness"}, nullptr);
   s.model.spring_sections.push_back(std::move(sec));
+  kw.data[0].read = true; // (read by check_spring once the element types are known)
   s.spring_dof_line.push_back(kw.data[0]);
 }
 
@@ -432,14 +421,12 @@ void read_shell_section(BuildState& s, const Keyword& kw, bool general) {
     if (!(sec.thickness > 0.0) && !(sec.nodal_thickness && sec.thickness == 0.0))
       r.fail("field 1 (thickness)",
              fmt::format("the shell thickness must be positive, not {}", sec.thickness));
-    const long long n = general ? 3 : r.integer_or(1, 5, "number of integration points");
-    if (n < 1 || n % 2 == 0 || n > 15)
-      r.fail("field 2 (integration points)",
-             fmt::format("Simpson's rule needs an odd number of points from 3 to 15 (1 for a "
-                         "heat-transfer shell without a gradient through its thickness), not {}",
-                         n));
+    constexpr std::string_view rule =
+        "Simpson's rule needs an odd number of points from 3 to 15 (1 for a heat-transfer shell "
+        "without a gradient through its thickness), not {}";
+    const long long n = general ? 3 : r.integer_or(1, 5, "integration points", 1, 15, rule);
+    if (n % 2 == 0) r.fail("field 2 (integration points)", fmt::format(fmt::runtime(rule), n));
     sec.n_points = static_cast<int>(n);
-    extra_lines_warning(s, kw, 1);
   } catch (const InputError&) {
     sec.invalid = true;
     s.model.shell_sections.push_back(sec);
@@ -491,7 +478,6 @@ void handle_transverse_shear(BuildState& s, const Keyword& kw) {
              fmt::format("shear stiffnesses must be positive, not {}, {}", sec.k11, sec.k22));
     if (r.real_or(2, 0.0, "K12") != 0.0)
       r.fail("field 3 (K12)", "gapfem shells are isotropic: K12 must be 0 or blank");
-    extra_lines_warning(s, kw, 1);
     return;
   }
   handle_beam_transverse_shear(s, kw);

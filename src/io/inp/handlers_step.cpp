@@ -20,7 +20,7 @@ std::vector<T> carried(const std::vector<T>& prev) {
 void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_fields) {
   Incrementation& inc = s.step.inc;
   for (const DataLine& line : kw.data) {
-    if (line.empty()) continue;
+    if (line.blank()) continue; // (a line of only commas is the data line: all defaults)
     const FieldReader r = s.reader(kw, line);
     r.at_most(max_fields, "initial increment, time period, minimum increment, maximum increment");
     inc.initial = r.real_or(0, 0.0, "initial increment");
@@ -49,7 +49,7 @@ void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_field
       r.fail("field 1 (initial increment)",
              fmt::format("the initial increment {} is larger than the maximum increment {}",
                          inc.initial, inc.maximum));
-    return; // one data line; further lines are not part of the procedure
+    return; // one data line: the parser reports any further ones
   }
 }
 
@@ -67,6 +67,21 @@ void read_thermal_procedure(BuildState& s, const Keyword& kw) {
     s.step.inc.deltmx = *d;
   }
   read_incrementation(s, kw, 5);
+}
+
+/// The optional data line of *STEP, Abaqus's step title (printed nowhere by gapfem). A title that
+/// reads as numbers is more likely a data line whose keyword line went missing: a warning.
+void read_step_title(BuildState& s, const Keyword& kw) {
+  for (const DataLine& line : kw.data) {
+    if (line.blank()) continue;
+    line.read = true; // one line; the parser reports any further ones
+    if (!line.fields.empty() && parse_real(line.fields[0]))
+      s.warn(s.loc(kw, line),
+             fmt::format("the data line under *STEP is the step's title (Abaqus), but '{}' reads "
+                         "as numbers: is a keyword line (such as *CLOAD) missing above it?",
+                         trim(line.text)));
+    return;
+  }
 }
 
 } // namespace
@@ -135,15 +150,13 @@ void handle_step(BuildState& s, const Keyword& kw) {
   }
   st.extrapolation =
       static_cast<Extrapolation>(enum_param(kw, "EXTRAPOLATION", {"LINEAR", "PARABOLIC", "NO"}, 0));
-  if (auto inc = int_param(kw, "INC")) {
-    if (*inc < 1)
-      throw InputError(kw.loc, "INC", "the maximum number of increments must be at least 1");
+  if (auto inc = int_param(kw, "INC", "the maximum number of increments", 1, kMaxInt))
     st.max_increments = static_cast<int>(*inc);
-  }
   if (kw.has("AMPLITUDE")) {
     s.scratch.amplitude_given = true;
     st.ramp_default = enum_param(kw, "AMPLITUDE", {"RAMP", "STEP"}, 0) == 0;
   }
+  read_step_title(s, kw);
 }
 
 void close_step(BuildState& s) {

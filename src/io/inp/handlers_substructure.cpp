@@ -16,12 +16,7 @@ namespace {
 
 /// An Abaqus DOF number gapfem knows (1-6, 11-25) from field f.
 int dof_field(const FieldReader& r, std::size_t f, const char* what) {
-  const long long d = r.integer(f, what);
-  DofType t{};
-  if (d < 1 || d > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(d), t))
-    r.fail(fmt::format("field {} ({})", f + 1, what),
-           fmt::format("gapfem knows the DOFs 1-6 and 11-{}, not {}", kMaxAbaqusDof, d));
-  return static_cast<int>(d);
+  return dof_number(r, f, what);
 }
 
 /// Rotation about the axis a -> b by `degrees` (right hand), row-major.
@@ -72,10 +67,11 @@ void handle_matrix_input(BuildState& s, const Keyword& kw) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(5, "row node, row DOF, column node, column DOF, value");
     MatrixInput::Term t;
-    const long long rn = r.integer(0, "row node"), cn = r.integer(2, "column node");
-    if (rn <= 0 || cn <= 0)
-      r.fail("", "node numbers are positive (gapfem does not read Abaqus's internal nodes, whose "
-                 "numbers are negative or zero)");
+    constexpr std::string_view rule =
+        "node {}: node numbers run from 1 to 999999999 (gapfem does not read Abaqus's internal "
+        "nodes, whose numbers are negative or zero)";
+    const long long rn = r.integer(0, "row node", 1, kMaxLabel, rule);
+    const long long cn = r.integer(2, "column node", 1, kMaxLabel, rule);
     t.row_node = rn;
     t.col_node = cn;
     t.row_dof = dof_field(r, 1, "row DOF");
@@ -281,6 +277,7 @@ void handle_substructure_property(BuildState& s, const Keyword& kw) {
                      "give a translation line; a rotation line (points a, b on the axis, angle "
                      "in degrees); and, to reflect, two lines with three points of the mirror "
                      "plane (a blank rotation line before them for a reflection alone)");
+  for (const DataLine* l : lines) l->read = true; // (a blank rotation line keeps its place)
   auto vec = [&](const FieldReader& r, std::size_t f, const char* what) {
     return Vec3{r.real_or(f, 0.0, what), r.real_or(f + 1, 0.0, what), r.real_or(f + 2, 0.0, what)};
   };

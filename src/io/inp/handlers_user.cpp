@@ -19,17 +19,11 @@ std::vector<int> read_dofs(const FieldReader& r, std::size_t first) {
   std::vector<int> dofs;
   for (std::size_t f = first; f < r.size(); ++f) {
     if (r.blank(f)) continue;
-    const long long d = r.integer(f, "DOF");
-    DofType t{};
-    if (d < 1 || d > kMaxAbaqusDof || !dof_from_abaqus(static_cast<int>(d), t))
-      r.fail(fmt::format("field {} (DOF)", f + 1),
-             fmt::format("gapfem knows the DOFs 1-6 (displacements, rotations) and 11-{} "
-                         "(temperatures), not {}",
-                         kMaxAbaqusDof, d));
-    if (std::find(dofs.begin(), dofs.end(), static_cast<int>(d)) != dofs.end())
+    const int d = dof_number(r, f, "DOF");
+    if (std::find(dofs.begin(), dofs.end(), d) != dofs.end())
       r.fail(fmt::format("field {} (DOF)", f + 1),
              fmt::format("DOF {} is listed twice for this node; list each active DOF once", d));
-    dofs.push_back(static_cast<int>(d));
+    dofs.push_back(d);
   }
   if (dofs.empty()) r.fail("", "no DOF is listed; give the active DOF numbers, e.g. 1, 2, 3");
   return dofs;
@@ -51,11 +45,9 @@ std::vector<std::vector<int>> read_node_dofs(BuildState& s, const Keyword& kw, i
   int last = 1;
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const FieldReader r = s.reader(kw, *lines[k]);
-    const long long pos = r.integer(0, "node position");
-    if (pos < 1 || pos > n_nodes)
-      r.fail("field 1 (node position)",
-             fmt::format("{} has {} nodes, so a node position is 1 to {}, not {}", type, n_nodes,
-                         n_nodes, pos));
+    const std::string rule = fmt::format("{} has {} nodes, so a node position is 1 to {}, not {{}}",
+                                         type, n_nodes, n_nodes);
+    const long long pos = r.integer(0, "node position", 1, n_nodes, rule);
     if (pos <= last)
       r.fail("field 1 (node position)",
              fmt::format("node position {} comes after position {}; give the positions where the "
@@ -119,33 +111,32 @@ void handle_user_element(BuildState& s, const Keyword& kw) {
   t.linear = kw.has("LINEAR");
   t.unsymmetric = kw.has("UNSYMM");
   // (bounds far beyond any real element keep a typing error from asking for gigabytes)
-  auto count = [&](std::string_view p, long long def, long long min, long long max) {
-    const long long v = int_param(kw, p).value_or(def);
-    if (v < min || v > max)
-      throw InputError(kw.loc, fmt::format("{}={}", p, v),
-                       fmt::format("give a whole number from {} to {}", min, max));
-    return static_cast<int>(v);
+  auto count = [&](std::string_view p, std::string_view what, long long def, long long min,
+                   long long max) {
+    return static_cast<int>(int_param(kw, p, what, min, max).value_or(def));
   };
   if (!kw.has("NODES"))
     throw InputError(kw.loc, fmt::format("TYPE={}", type),
                      "NODES= is missing: give the number of nodes of each element");
-  t.n_nodes = count("NODES", 0, 1, 10000);
+  t.n_nodes = count("NODES", "the number of nodes", 0, 1, 10000);
   if (t.linear)
     for (const char* p : {"PROPERTIES", "I PROPERTIES", "VARIABLES"})
       if (kw.has(p))
         throw InputError(kw.loc, p,
                          "a LINEAR user element is defined by its *MATRIX alone; remove this "
                          "parameter, or remove LINEAR to call the UEL subroutine");
-  t.n_properties = count("PROPERTIES", 0, 0, 100000);
-  t.n_int_properties = count("I PROPERTIES", 0, 0, 100000);
-  t.n_variables = t.linear ? 0 : count("VARIABLES", 1, 1, 1000000);
+  t.n_properties = count("PROPERTIES", "the number of real properties", 0, 0, 100000);
+  t.n_int_properties = count("I PROPERTIES", "the number of integer properties", 0, 0, 100000);
+  t.n_variables =
+      t.linear ? 0
+               : count("VARIABLES", "the number of solution-dependent variables", 1, 1, 1000000);
   t.node_dofs = read_node_dofs(s, kw, t.n_nodes, type);
   // COORDS holds max(COORDINATES, the largest active DOF up to 3) values per node
   int largest = 0;
   for (const auto& d : t.node_dofs)
     for (int x : d)
       if (x <= 3) largest = std::max(largest, x);
-  t.n_coords = std::max(count("COORDINATES", 1, 1, 3), largest);
+  t.n_coords = std::max(count("COORDINATES", "the number of coordinates", 1, 1, 3), largest);
   s.model.user_elements.push_back(std::move(t));
   s.current_user_element = static_cast<int>(s.model.user_elements.size()) - 1;
   s.user_element_replayed = false;

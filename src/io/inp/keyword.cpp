@@ -54,6 +54,10 @@ bool DataLine::empty() const {
   return true;
 }
 
+bool DataLine::blank() const {
+  return trim(text).empty();
+}
+
 const Parameter* Keyword::find(std::string_view param) const {
   const std::string k = canonical(param);
   for (const auto& p : params)

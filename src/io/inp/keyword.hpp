@@ -29,9 +29,15 @@ struct DataLine {
   std::int32_t file = 0;           ///< index into the deck's file list
   std::int32_t line = 0;           ///< 1-based line number in that file
   bool trailing_comma = false;     ///< the line ended with a comma (continuation of *ELEMENT data)
+  /// A handler read the line (FieldReader, for_each_line, Keyword::mark_read). After a keyword's
+  /// handler has run, the parser reports every line of it that is not blank and was not read:
+  /// each data line belongs to a keyword that reads it (parser.cpp, report_unread_lines).
+  mutable bool read = false;
 
   /// True for a line without any non-empty field (blank line or only commas).
   bool empty() const;
+  /// True for a line without any character but blanks (only commas is not blank).
+  bool blank() const;
   /// True when field i exists and is not empty.
   bool has(std::size_t i) const { return i < fields.size() && !fields[i].empty(); }
 };
@@ -56,6 +62,15 @@ struct Keyword {
   /// The keyword line itself is in error (reported by the lexer): the keyword is not run, only
   /// the names it would define are noted, so that their uses raise no follow-on errors.
   bool failed = false;
+  /// Data lines the lexer reported and left out of `data` (too long, NUL bytes): the keyword runs
+  /// without them, and the names they would define are noted as failed definitions.
+  std::vector<DataLine> rejected;
+
+  /// Marks every data line as read: for a handler that skips its data on purpose (its definition
+  /// failed and was reported, or a warning says that the data is ignored).
+  void mark_read() const {
+    for (const DataLine& d : data) d.read = true;
+  }
 
   /// The parameter with this name (compared canonically), or nullptr.
   const Parameter* find(std::string_view param) const;

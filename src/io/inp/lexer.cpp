@@ -1,10 +1,10 @@
 #include "io/inp/lexer.hpp"
 
+#include "io/inp/deck_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <fmt/format.h>
-#include <fstream>
-#include <sstream>
 
 namespace gapfem::inp {
 namespace fs = std::filesystem;
@@ -18,26 +18,6 @@ bool takes_input_file(std::string_view key) {
 }
 
 constexpr int kMaxIncludeDepth = 16;
-
-/// Lines of a text, with CR and trailing blanks removed (Windows line ends are fine).
-std::vector<std::string_view> split_lines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(start, end - start);
-    std::size_t e = line.size();
-    while (e > 0 && (line[e - 1] == '\r' || line[e - 1] == ' ' || line[e - 1] == '\t')) --e;
-    lines.push_back(line.substr(0, e));
-    if (end == text.size()) break;
-    start = end + 1;
-  }
-  // a final newline does not start another (empty) line
-  if (!lines.empty() && lines.back().empty() && !text.empty() && text.back() == '\n')
-    lines.pop_back();
-  return lines;
-}
 
 bool is_comment(std::string_view line) {
   const std::string_view t = trim(line);
@@ -78,32 +58,21 @@ std::string unquote(std::string_view v) {
   return std::string(v);
 }
 
-/// Why a file cannot be read as deck text, or "" when `out` holds its contents. Only regular
-/// files are read (a directory, FIFO, socket or device such as /dev/zero is refused before it is
-/// opened), and at most `limit` bytes: a larger file is refused rather than exhausting memory.
-std::string read_file(const fs::path& path, std::string& out, std::uintmax_t limit) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) return "it does not exist; check the name and the directory";
-  if (fs::is_directory(st)) return "it is a directory, not an input file; name a .inp file in it";
-  if (!fs::is_regular_file(st))
-    return "it is not a regular file (a device, FIFO or socket); give the path of a deck file";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "cannot open it; check that you may read it";
-  out.clear();
-  char chunk[1 << 16];
-  while (in) {
-    in.read(chunk, sizeof chunk);
-    const auto got = static_cast<std::size_t>(in.gcount());
-    if (out.size() + got > limit)
-      return fmt::format("it is larger than {} MiB, the most gapfem reads from one deck and its "
-                         "included files; split the model or check that this is the right file",
-                         limit >> 20);
-    out.append(chunk, got);
-  }
-  if (in.bad()) return "reading it failed (an input/output error)";
-  return {};
+/// A line as a message quotes it: at most 80 characters.
+std::string excerpt(std::string_view line) {
+  line = trim(line);
+  return line.size() <= 80 ? std::string(line) : std::string(line.substr(0, 77)) + "...";
 }
+
+/// A data line the lexer rejected, split for the names it would define (its NUL bytes dropped).
+DataLine rejected_line(std::string_view line) {
+  std::string text(line);
+  std::erase(text, '\0');
+  return split_data_line(text);
+}
+
+/// A file with NUL bytes on this many lines or more is binary, not a deck with a few damaged lines.
+constexpr std::size_t kBinaryLines = 4;
 
 class Lexer {
  public:
@@ -114,7 +83,12 @@ class Lexer {
     _stack.push_back(identity(name));
     _shown.push_back(name);
     _bytes = text.size();
-    lex_text(text, 0, dir, 0);
+    const std::string problem = text_problem(text, name, "the deck");
+    if (!problem.empty()) { // the one message: nothing of the file is read
+      _diag.error(SourceLocation{name, 0, {}}, "", problem);
+      return std::move(_deck);
+    }
+    lex_text(skip_utf8_bom(text), 0, dir, 0);
     if (_deck.keywords.empty() && _diag.n_errors() == 0)
       _diag.error(SourceLocation{name, 0, {}}, "",
                   "the deck has no keyword lines (it is empty or holds only ** comments); a deck "
@@ -140,14 +114,50 @@ class Lexer {
     return (ec ? path.lexically_normal() : c).string();
   }
 
-  /// Reports a line longer than kMaxLineLength; true when the line is to be skipped.
-  bool too_long(std::string_view line, int file, int lineno) {
-    if (line.size() <= kMaxLineLength) return false;
-    _diag.error(loc(file, lineno), "",
-                fmt::format("the line is {} characters long; gapfem reads lines of up to {} "
-                            "characters (Abaqus reads 256): break the data over several lines",
-                            line.size(), kMaxLineLength));
-    return true;
+  /// Why the text of a file is not deck text at all ("" when it is): UTF-16 or UTF-32, or binary
+  /// data (NUL bytes on many lines). `what` names the file in the sentence ("the deck").
+  static std::string text_problem(std::string_view text, const std::string& name,
+                                  std::string_view what) {
+    if (const std::string enc = foreign_encoding(text); !enc.empty())
+      return fmt::format("{} is {} text; gapfem reads ASCII or UTF-8 (as Abaqus does): save it "
+                         "as ASCII or UTF-8 (in Notepad: Save as, Encoding UTF-8)",
+                         what, enc);
+    std::size_t nul_lines = 0, first = 0, line = 1;
+    bool counted = false;
+    for (char c : text) {
+      if (c == '\n') {
+        ++line;
+        counted = false;
+      } else if (c == '\0' && !counted) {
+        counted = true;
+        if (nul_lines++ == 0) first = line;
+      }
+    }
+    if (nul_lines < kBinaryLines) return {};
+    return fmt::format("{} ('{}') holds binary data, not text: {} of its lines hold NUL bytes, "
+                       "the first line {}; check that this is the right file",
+                       what, name, nul_lines, first);
+  }
+
+  /// Reports a line the lexer cannot take (longer than kMaxLineLength, or holding a NUL byte);
+  /// true when the line is to be left out.
+  bool reject(std::string_view line, int file, int lineno) {
+    if (line.size() > kMaxLineLength) {
+      _diag.error(loc(file, lineno), "",
+                  fmt::format("the line is {} characters long; gapfem reads lines of up to {} "
+                              "characters (Abaqus reads 256): break the data over several lines",
+                              line.size(), kMaxLineLength));
+      return true;
+    }
+    if (line.find('\0') != std::string_view::npos) {
+      _diag.error(loc(file, lineno), "",
+                  fmt::format("the line holds a NUL byte (shown as \\x00), which is not text: "
+                              "'{}'; delete it (the file was damaged there, or a program wrote "
+                              "binary data into it)",
+                              excerpt(line)));
+      return true;
+    }
+    return false;
   }
 
   SourceLocation loc(int file, int line, std::string keyword = {}) const {
@@ -159,29 +169,56 @@ class Lexer {
     return static_cast<int>(_deck.files.size()) - 1;
   }
 
+  /// A keyword line that was rejected (reported): read for the names it would define, without
+  /// further messages, and not run (Keyword::failed); its data lines stay with it.
+  void add_rejected_keyword(std::string_view line, int file, int lineno) {
+    std::string text(trim(line));
+    std::erase(text, '\0'); // (the best guess of the names it would define)
+    _diag.set_muted(true);
+    Keyword kw = parse_keyword_line(text, file, lineno);
+    _diag.set_muted(false);
+    _drop_data = kw.key.empty() || kw.key == "INCLUDE";
+    if (_drop_data) return;
+    kw.failed = true;
+    _deck.keywords.push_back(std::move(kw));
+    _current = static_cast<int>(_deck.keywords.size()) - 1;
+  }
+
   void lex_text(std::string_view text, int file, const fs::path& dir, int depth) {
     const auto lines = split_lines(text);
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const std::string_view line = lines[i];
       const int lineno = static_cast<int>(i) + 1;
-      if (too_long(line, file, lineno)) {
-        if (is_keyword_line(line)) _drop_data = true;
+      if (reject(line, file, lineno)) {
+        if (is_keyword_line(line))
+          add_rejected_keyword(line, file, lineno);
+        else
+          add_data_line(line, file, lineno, true);
         continue;
       }
       if (is_comment(line)) continue;
       if (!is_keyword_line(line)) {
-        add_data_line(line, file, lineno);
+        add_data_line(line, file, lineno, false);
         continue;
       }
       // keyword line, possibly continued on following lines (trailing comma)
       std::string full(trim(line));
+      bool continuation_rejected = false;
       while (!full.empty() && full.back() == ',' && i + 1 < lines.size()) {
         std::size_t j = i + 1;
         while (j < lines.size() && is_comment(lines[j])) ++j;
         if (j >= lines.size() || !is_parameter_line(lines[j])) break;
+        i = j;
+        if (reject(lines[j], file, static_cast<int>(j) + 1)) {
+          continuation_rejected = true;
+          break;
+        }
         full += ' ';
         full += trim(lines[j]);
-        i = j;
+      }
+      if (continuation_rejected) {
+        add_rejected_keyword(full, file, lineno);
+        continue;
       }
       Keyword kw = parse_keyword_line(full, file, lineno);
       _drop_data = kw.key.empty(); // reported; its data lines would only add false errors
@@ -199,19 +236,22 @@ class Lexer {
     }
   }
 
-  void add_data_line(std::string_view line, int file, int lineno) {
+  /// A data line for the current keyword; a `rejected` one (reported) is kept aside, for the
+  /// names it would define.
+  void add_data_line(std::string_view line, int file, int lineno, bool rejected) {
     if (_drop_data) return;
     if (_current < 0) {
-      if (trim(line).empty()) return;
+      if (trim(line).empty() || rejected) return;
       _diag.error(loc(file, lineno), "",
                   "data line before the first keyword; start the deck with a keyword line such as "
                   "*HEADING");
       return;
     }
-    DataLine d = split_data_line(line);
+    DataLine d = rejected ? rejected_line(line) : split_data_line(line);
     d.file = file;
     d.line = lineno;
-    _deck.keywords[_current].data.push_back(std::move(d));
+    Keyword& kw = _deck.keywords[_current];
+    (rejected ? kw.rejected : kw.data).push_back(std::move(d));
   }
 
   Keyword parse_keyword_line(const std::string& text, int file, int lineno) {
@@ -283,6 +323,12 @@ class Lexer {
       return false;
     }
     _bytes += text.size();
+    const std::string problem =
+        text_problem(text, path.lexically_normal().string(), fmt::format("file '{}'", p->value));
+    if (!problem.empty()) { // the one message: nothing of the file is read
+      _diag.error(at, fmt::format("INPUT={}", p->value), problem);
+      return false;
+    }
     return true;
   }
 
@@ -317,7 +363,7 @@ class Lexer {
     const int file = add_file(path);
     _stack.push_back(identity(path));
     _shown.push_back(path.lexically_normal().string());
-    lex_text(text, file, path.parent_path(), depth + 1);
+    lex_text(skip_utf8_bom(text), file, path.parent_path(), depth + 1);
     _stack.pop_back();
     _shown.pop_back();
   }
@@ -328,10 +374,16 @@ class Lexer {
     std::string text;
     if (!open_relative(&p, dir, kw.loc, path, text)) return;
     const int file = add_file(path);
-    const auto lines = split_lines(text);
+    const auto lines = split_lines(skip_utf8_bom(text));
     for (std::size_t i = 0; i < lines.size(); ++i) {
       const int lineno = static_cast<int>(i) + 1;
-      if (too_long(lines[i], file, lineno)) continue;
+      if (reject(lines[i], file, lineno)) {
+        DataLine d = rejected_line(lines[i]);
+        d.file = file;
+        d.line = lineno;
+        kw.rejected.push_back(std::move(d));
+        continue;
+      }
       if (is_comment(lines[i])) continue;
       if (is_keyword_line(lines[i])) {
         _diag.error(loc(file, lineno), "",

@@ -22,16 +22,45 @@ Vec3 BuildState::place(const Vec3& x) const {
   return out;
 }
 
+// ---------------------------------------------------------------- numbers
+
+int dof_number(const FieldReader& r, std::size_t i, std::string_view what) {
+  const long long n = r.integer(i, what, 1, kMaxAbaqusDof, kUnknownDof);
+  DofType d{};
+  if (!dof_from_abaqus(static_cast<int>(n), d))
+    r.fail(fmt::format("field {} ({})", i + 1, what), fmt::format(fmt::runtime(kUnknownDof), n));
+  return static_cast<int>(n);
+}
+
+long long read_label(BuildState& s, const FieldReader& r, std::string_view what) {
+  long long v = 0;
+  if (!r.blank(0) && check_integer(r.text(0), 1, kMaxLabel, v) == IntCheck::OutOfRange)
+    s.label_out_of_range = true;
+  return r.integer(0, what, 1, kMaxLabel, kLabelRule);
+}
+
 // ---------------------------------------------------------------- references
 
 EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field) {
   const std::string t = std::string(trim(r.text(field)));
   EntityRef ref;
+  // a number out of range names nothing: reported, unless its definition was (read_label)
+  auto label = [&](std::string_view text) -> std::optional<long long> {
+    long long v = 0;
+    const IntCheck c = check_integer(text, 1, kMaxLabel, v);
+    if (c == IntCheck::Ok) return v;
+    if (c == IntCheck::NotWhole) return std::nullopt;
+    if (s.label_out_of_range) {
+      ref.failed = true;
+      return std::nullopt;
+    }
+    r.fail(fmt::format("field {}", field + 1), fmt::format(fmt::runtime(kLabelRule), text));
+  };
   const auto dot = t.find('.');
   if (dot == std::string::npos) {
-    if (const auto label = parse_integer(t))
-      ref.key = s.key(*label);
-    else
+    if (const auto l = label(t))
+      ref.key = s.key(*l);
+    else if (!ref.failed)
       ref.set = s.set_name(to_upper(t));
     return ref;
   }
@@ -52,9 +81,9 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
                : fmt::format("instance {} is not defined; define it with *INSTANCE, NAME={} inside "
                              "*ASSEMBLY before it is used, or check the spelling",
                              inst, inst));
-  if (const auto label = parse_integer(rest))
-    ref.key = make_key(it->second, *label);
-  else
+  if (const auto l = label(rest))
+    ref.key = make_key(it->second, *l);
+  else if (!ref.failed)
     ref.set = inst + "." + to_upper(rest);
   return ref;
 }
@@ -217,18 +246,28 @@ std::optional<double> real_param(const Keyword& kw, std::string_view param) {
   const auto x = parse_real(v);
   if (!x)
     throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), v),
-                     "the value is not a number; write it like 0.5 or 1.E-3");
+                     real_out_of_range(v)
+                         ? "the value is out of range (larger than 1.8E308 in "
+                           "magnitude, the largest number gapfem holds)"
+                         : "the value is not a number; write it like 0.5 or 1.E-3");
   return x;
 }
 
-std::optional<long long> int_param(const Keyword& kw, std::string_view param) {
+std::optional<long long> int_param(const Keyword& kw, std::string_view param, std::string_view what,
+                                   long long min, long long max) {
   if (!kw.has(param)) return std::nullopt;
   const std::string v = param_value(kw, param, true);
-  const auto x = parse_integer(v);
-  if (!x)
+  long long x = 0;
+  const IntCheck c = check_integer(v, min, max, x);
+  if (c != IntCheck::Ok)
     throw InputError(kw.loc, fmt::format("{}={}", display_upper(param), v),
-                     "the value is not an integer; write a whole number such as 10");
+                     fmt::format("{} must be a whole number from {} to {}{}", what, min, max,
+                                 c == IntCheck::NotWhole ? " (digits only)" : ""));
   return x;
+}
+
+long long dependencies_param(const Keyword& kw) {
+  return int_param(kw, "DEPENDENCIES", "the number of field variables", 0, kMaxInt).value_or(0);
 }
 
 void reject_param(const Keyword& kw, std::string_view param, std::string_view why) {
@@ -239,8 +278,8 @@ void reject_param(const Keyword& kw, std::string_view param, std::string_view wh
 
 PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
                                   std::vector<std::string_view> names, RowCheck check) {
-  if (const auto dep = int_param(kw, "DEPENDENCIES"); dep && *dep > 0)
-    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", *dep),
+  if (const auto dep = dependencies_param(kw); dep > 0)
+    throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
                      "field-variable dependencies are not supported by gapfem; tabulate the data "
                      "against temperature only");
   const int nv = static_cast<int>(names.size());

@@ -63,6 +63,8 @@ struct BuildState {
   // failed definitions: later references to these labels are skipped without another error
   std::unordered_set<Label> bad_nodes, bad_elements;
   std::unordered_set<std::string> bad_sets;
+  /// a node or element number out of range was reported at its definition (read_label)
+  bool label_out_of_range = false;
   /// node and element sets defined with UNSORTED (gapfem keeps every set sorted)
   std::unordered_set<std::string> unsorted_sets;
   /// names that a keyword in error would have defined (note_failed_definition): amplitudes,
@@ -205,7 +207,8 @@ template <typename F>
 int for_each_line(BuildState& s, std::span<const DataLine> lines, F&& f) {
   int failed = 0;
   for (const DataLine& line : lines) {
-    if (line.empty()) continue;
+    if (line.empty()) continue; // (a line of only commas stays unread: the parser reports it)
+    line.read = true;
     try {
       f(line);
     } catch (const InputError& e) {
@@ -228,12 +231,31 @@ using RowCheck = std::string (*)(const std::vector<double>& values);
 PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
                                   std::vector<std::string_view> names, RowCheck check);
 
+// ---------------------------------------------------------------- numbers
+/// The sentence for a DOF number gapfem does not have, {} standing for the number as written.
+inline constexpr std::string_view kUnknownDof =
+    "DOF {} is not available; gapfem knows DOFs 1-6 (displacements, rotations) and 11-25 "
+    "(temperatures: 11, and 12-25 through the thickness of heat-transfer shells)";
+static_assert(kMaxAbaqusDof == 25, "kUnknownDof names the DOFs");
+/// An Abaqus DOF number gapfem has (1-6, 11-25) from field i; kUnknownDof otherwise.
+int dof_number(const FieldReader& r, std::size_t i, std::string_view what);
+/// The sentence for a node or element number out of range ({}: the number as written).
+inline constexpr std::string_view kLabelRule =
+    "{} is out of range: node and element numbers run from 1 to 999999999 (Abaqus's limit)";
+static_assert(kMaxLabel == 999'999'999, "kLabelRule names the limit");
+/// The node or element number that field 0 of a *NODE or *ELEMENT line defines (1 to kMaxLabel).
+/// One out of range is reported here, and later references to numbers out of range are then
+/// skipped quietly (BuildState::label_out_of_range) instead of repeating it.
+long long read_label(BuildState& s, const FieldReader& r, std::string_view what);
+
 // ---------------------------------------------------------------- references
 /// What a node or element reference names: a label key, or a set name (upper case, qualified).
 struct EntityRef {
   std::optional<Label> key;
   std::string set;
-  bool failed = false; ///< qualified by an instance whose definition failed (reported there)
+  /// qualified by an instance whose definition failed (reported there), or a number out of
+  /// range after one was reported at its definition (read_label)
+  bool failed = false;
 };
 /// Reads a reference of the current scope: `12`, `SET-1`, or qualified by an instance,
 /// `PART-1-1.12` or `PART-1-1.SET-1` (the instance must exist). `what` names the field for errors.
@@ -270,8 +292,12 @@ int enum_param(const Keyword& kw, std::string_view param,
 bool yes_no_param(const Keyword& kw, std::string_view param, bool def);
 /// Real-valued parameter; nullopt when absent.
 std::optional<double> real_param(const Keyword& kw, std::string_view param);
-/// Integer-valued parameter; nullopt when absent.
-std::optional<long long> int_param(const Keyword& kw, std::string_view param);
+/// Integer-valued parameter, a whole number from `min` to `max`; nullopt when absent. `what` names
+/// it in the message of a value out of range ("the maximum number of increments").
+std::optional<long long> int_param(const Keyword& kw, std::string_view param, std::string_view what,
+                                   long long min, long long max);
+/// DEPENDENCIES= (the number of field variables a table depends on; 0 when absent).
+long long dependencies_param(const Keyword& kw);
 /// Throws "PARAM is not supported by gapfem" for a parameter that is present.
 void reject_param(const Keyword& kw, std::string_view param, std::string_view why);
 

@@ -132,11 +132,8 @@ void check_spring(BuildState& s, int index) {
   const FieldReader r(line, loc);
   try {
     auto dof = [&](std::size_t f) {
-      const long long d = r.integer(f, f == 0 ? "DOF at node 1" : "DOF at node 2");
-      if (d < 1 || d > 6)
-        r.fail(fmt::format("field {} (DOF)", f + 1),
-               fmt::format("springs act on DOFs 1-6, not {}", d));
-      return static_cast<int>(d);
+      return static_cast<int>(r.integer(f, f == 0 ? "DOF at node 1" : "DOF at node 2", 1, 6,
+                                        "springs act on DOFs 1-6, not {}"));
     };
     if (type == ElementType::SPRINGA) {
       if (!line.empty())
@@ -150,6 +147,15 @@ void check_spring(BuildState& s, int index) {
       r.at_most(2, "DOF at node 1, DOF at node 2");
       sec.dof1 = dof(0);
       sec.dof2 = dof(1);
+      if (sec.dof1 == sec.dof2)
+        for (ElemId e : *set)
+          if (const auto n = s.model.mesh.element_nodes(e); n[0] == n[1])
+            s.error(
+                s.model.element_location(e), elem_name(s, e),
+                fmt::format("node {} is both nodes of this spring and both DOFs are {} (*SPRING "
+                            "at {}), so it never stretches and carries no force; give two "
+                            "distinct nodes, or two DOFs of the node to couple",
+                            s.model.node_label(n[0]), sec.dof1, sec.loc.str()));
     }
   } catch (const InputError& e) {
     s.diag.error(e);
@@ -296,10 +302,11 @@ void check_uel_property(BuildState& s, UelProperty& p) {
   p.properties.assign(values.begin(), values.begin() + t.n_properties);
   for (std::size_t k = static_cast<std::size_t>(t.n_properties); k < values.size(); ++k) {
     const double x = values[k];
-    if (x != std::floor(x) || std::abs(x) > 2147483647.0) {
+    if (x != std::floor(x) || !(x >= -2147483648.0 && x <= 2147483647.0)) {
       s.error(p.loc, fmt::format("ELSET={}", p.elset),
               fmt::format("value {} is integer property {} of {} (after its {} real properties), "
-                          "but {} is not a whole number",
+                          "which must be a whole number from -2147483648 to 2147483647 (UEL's "
+                          "JPROPS are 32-bit integers), not {}",
                           k + 1, k + 1 - t.n_properties, t.name, t.n_properties, x));
       return;
     }

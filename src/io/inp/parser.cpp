@@ -270,6 +270,64 @@ void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
 
 void dispatch(BuildState& s, Keyword& kw);
 
+/// The text of a data line for a message: as written, shortened beyond 80 characters.
+std::string quoted_line(const DataLine& line) {
+  const std::string_view t = trim(line.text);
+  return t.size() <= 80 ? fmt::format("'{}'", t) : fmt::format("'{}...'", t.substr(0, 77));
+}
+
+/// After a keyword's handler has run: a data line it did not read belongs to no keyword, and the
+/// user thinks it was read. One error names the first such line (and counts the others).
+void report_unread_lines(BuildState& s, const Keyword& kw) {
+  int n_read = 0, n_unread = 0;
+  const DataLine* first = nullptr;
+  int first_index = 0; // 1-based among the keyword's non-blank lines
+  for (const DataLine& line : kw.data) {
+    if (line.blank()) continue;
+    if (line.read) {
+      ++n_read;
+      continue;
+    }
+    if (n_unread++ == 0) {
+      first = &line;
+      first_index = n_read + n_unread;
+    }
+  }
+  // a keyword that read nothing in a deck with errors may skip its data on purpose (what it
+  // refers to failed, reported): its lines are reported once the deck has no other error
+  if (!first || (n_read == 0 && s.diag.n_errors() > 0)) return;
+  const std::string others =
+      n_unread > 1 ? fmt::format(" ({} more lines after it are not read either)", n_unread - 1)
+                   : "";
+  std::string head;
+  if (first->empty())
+    head = fmt::format("line {} holds only commas ({}), no value{}: {} reads nothing from it",
+                       first->line, trim(first->text), others, kw.name);
+  else if (n_read == 0)
+    head = fmt::format("{} takes no data lines; line {} is one{}: {}", kw.name, first->line, others,
+                       quoted_line(*first));
+  else
+    head = fmt::format("{} takes {} data line{}; line {} is {}{}: {}", kw.name,
+                       n_read == 1 ? "one" : std::to_string(n_read), n_read == 1 ? "" : "s",
+                       first->line, first_index == 2 ? "a second one" : "one more", others,
+                       quoted_line(*first));
+  s.error(s.loc(kw, *first), "",
+          head + ". Remove it, or put the keyword line it belongs to above it");
+}
+
+/// The node (*NODE) or element (*ELEMENT) numbers that `lines` of `kw` would have defined, noted
+/// as failed definitions: their uses raise no false "is not defined".
+void note_failed_labels(BuildState& s, const Keyword& kw, const std::vector<DataLine>& lines) {
+  const bool nodes = kw.key == "NODE";
+  if (!nodes && kw.key != "ELEMENT") return;
+  for (const DataLine& d : lines) {
+    long long label = 0;
+    if (d.fields.empty() || check_integer(d.fields[0], 1, kMaxLabel, label) != IntCheck::Ok)
+      continue;
+    (nodes ? s.bad_nodes : s.bad_elements).insert(s.key(label));
+  }
+}
+
 /// After `kw` failed as a whole (an InputError left its handler, or the lexer reported its
 /// keyword line): the names it would have
 /// defined are remembered, so that their uses raise no false "is not defined", and the sub-options
@@ -294,8 +352,14 @@ void note_failed_definition(BuildState& s, const Keyword& kw) {
   if (kw.key == "PART") add(s.bad_parts, name("NAME"));
   if (kw.key == "INSTANCE") add(s.bad_instances, name("NAME"));
   if (kw.key == "USERELEMENT") add(s.bad_user_types, name("TYPE"));
-  if (kw.key == "NSET" || kw.key == "NODE") add_set("NSET");
-  if (kw.key == "ELSET" || kw.key == "ELEMENT") add_set("ELSET");
+  const bool known = find_spec(kw.key) != nullptr; // (a garbled keyword line: any of its names)
+  if (kw.key == "NSET" || kw.key == "NODE" || !known) add_set("NSET");
+  if (kw.key == "ELSET" || kw.key == "ELEMENT" || !known) add_set("ELSET");
+  if (!known)
+    for (auto* names : {&s.bad_amplitudes, &s.bad_materials, &s.bad_parts, &s.bad_instances})
+      add(*names, name("NAME"));
+  note_failed_labels(s, kw, kw.data);
+  note_failed_labels(s, kw, kw.rejected);
   if (const KeywordSpec* spec = find_spec(kw.key);
       spec && spec->opens != Parent::None && (s.parent == spec->opens || kw.failed))
     s.parent = Parent::Unsupported;
@@ -341,8 +405,17 @@ void dispatch(BuildState& s, Keyword& kw) {
   if (record_keyword(s, kw)) return; // inside *PART or *INSTANCE: read per instance
   if (kw.failed) {                   // its keyword line was reported by the lexer
     note_failed_definition(s, kw);
+    kw.mark_read();
+    if (kw.key == "STEP" || kw.key == "ENDSTEP") { // the steps keep their place all the same
+      try {
+        (kw.key == "STEP" ? handle_step : handle_end_step)(s, kw);
+      } catch (const InputError&) { // about the line reported already
+      }
+    }
     return;
   }
+  // data lines the lexer rejected (reported): the names they would define are failed ones
+  if (!kw.rejected.empty()) note_failed_labels(s, kw, kw.rejected);
   const KeywordSpec* spec = find_spec(kw.key);
   if (!spec) {
     // unknown keyword: the current block stays open (an ignored *PLASTIC keeps its *MATERIAL)
@@ -395,6 +468,7 @@ void dispatch(BuildState& s, Keyword& kw) {
     if (!accepts(*spec, p.key))
       unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name), kw.key, true);
   spec->handler(s, kw);
+  report_unread_lines(s, kw);
   if (spec->handler == handle_end_instance) expand_instance(s);
 }
 

@@ -17,17 +17,6 @@ const inp::Keyword* restart_read(const inp::Deck& deck) {
   return nullptr;
 }
 
-/// STEP= / INC= of a READ line as far as they are plain numbers (the handler checks them).
-int loose_int(const inp::Keyword& kw, std::string_view param) {
-  const auto v = kw.value(param);
-  if (!v) return 0;
-  try {
-    return std::max(0, std::stoi(*v));
-  } catch (const std::exception&) {
-    return 0;
-  }
-}
-
 /// A restart deck after the old job's deck cut after its first `steps` steps: one deck whose files
 /// are the old deck's, then the restart deck's (*HEADING of the restart deck dropped).
 inp::Deck splice_restart(inp::Deck old_deck, int steps, inp::Deck deck) {
@@ -60,8 +49,10 @@ inp::Deck with_restart_base(inp::Deck deck, const ReadOptions& opts, inp::Diagno
                      "OLDJOB (Abaqus's oldjob=), OLDJOB being the job whose *RESTART, WRITE "
                      "wrote OLDJOB.res");
   RestartRead request;
-  request.step = loose_int(*kw, "STEP");
-  request.increment = loose_int(*kw, "INC");
+  request.step = static_cast<int>(
+      inp::int_param(*kw, "STEP", "the step to continue from", 0, inp::kMaxInt).value_or(0));
+  request.increment = static_cast<int>(
+      inp::int_param(*kw, "INC", "the increment to continue from", 0, inp::kMaxInt).value_or(0));
   request.end_step = kw->has("END STEP");
   request.loc = kw->loc;
   const ReadOptions::RestartBase base = opts.restart_base(request);
@@ -88,29 +79,35 @@ Model build(inp::Deck deck, const ReadOptions& opts, inp::Diagnostics& diag) {
   return std::move(state.model);
 }
 
-} // namespace
-
-Model read_deck(const std::filesystem::path& deck, const ReadOptions& opts) {
+/// Reads the deck `lex` lexes. Every input error leaves printable (deck_text.hpp): those the
+/// diagnostics collected are so already, and one thrown directly is made so here.
+template <typename Lex>
+Model read(Lex&& lex, const ReadOptions& opts) {
   inp::Diagnostics diag;
   try {
-    inp::Deck lexed = with_restart_base(inp::lex_file(deck, diag), opts, diag);
+    inp::Deck lexed = lex(diag);
+    // a deck whose text could not be read at all (its encoding, binary data) ends with that
+    if (lexed.keywords.empty()) diag.throw_if_errors();
+    lexed = with_restart_base(std::move(lexed), opts, diag);
     return build(std::move(lexed), opts, diag);
   } catch (const inp::TooManyErrors&) {
     diag.throw_if_errors();
     throw;
+  } catch (const InputError& e) {
+    throw inp::printable(e);
   }
+}
+
+} // namespace
+
+Model read_deck(const std::filesystem::path& deck, const ReadOptions& opts) {
+  return read([&](inp::Diagnostics& diag) { return inp::lex_file(deck, diag); }, opts);
 }
 
 Model read_deck_string(std::string_view text, const std::string& name, const ReadOptions& opts,
                        const std::filesystem::path& base_dir) {
-  inp::Diagnostics diag;
-  try {
-    inp::Deck lexed = with_restart_base(inp::lex_string(text, name, base_dir, diag), opts, diag);
-    return build(std::move(lexed), opts, diag);
-  } catch (const inp::TooManyErrors&) {
-    diag.throw_if_errors();
-    throw;
-  }
+  return read([&](inp::Diagnostics& diag) { return inp::lex_string(text, name, base_dir, diag); },
+              opts);
 }
 
 } // namespace gapfem

@@ -238,7 +238,7 @@ TEST(ReaderMaterial, Springs) {
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1, NONLINEAR\n2\n1.\n" + ok),
                   "deck.inp:10: *SPRING: NONLINEAR");
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n7\n1.\n" + ok),
-                  "deck.inp:11: *SPRING: field 1 (DOF): springs act on DOFs 1-6, not 7");
+                  "deck.inp:11: *SPRING: field 1 (DOF at node 1): springs act on DOFs 1-6, not 7");
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n2\n" + ok), "the stiffness is missing");
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n2\n1.\n*SPRING, ELSET=S2\n1\n5.\n"
                                     "*SPRING, ELSET=SA\n\n1.\n"),

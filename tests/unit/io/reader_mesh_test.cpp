@@ -48,9 +48,11 @@ TEST(ReaderMesh, NodeErrors) {
   EXPECT_CONTAINS(
       error_text("*NODE\n1\n1, 2.\n"),
       "deck.inp:3: *NODE: node 1: this node number is defined twice (first at deck.inp:2)");
-  EXPECT_CONTAINS(error_text("*NODE\n0, 1.\n"),
-                  "deck.inp:2: *NODE: node 0: node numbers must be positive");
-  EXPECT_CONTAINS(error_text("*NODE\nA, 1.\n"), "field 1 (node number): 'A' is not an integer");
+  EXPECT_CONTAINS(
+      error_text("*NODE\n0, 1.\n"),
+      "deck.inp:2: *NODE: field 1 (node number): 0 is out of range: node and element numbers run "
+      "from 1 to 999999999");
+  EXPECT_CONTAINS(error_text("*NODE\nA, 1.\n"), "field 1 (node number): 'A' is not a whole number");
   EXPECT_CONTAINS(error_text("*NODE\n1, 1., 2., 3., 4.\n"), "at most 4 fields");
 }
 
@@ -92,7 +94,8 @@ TEST(ReaderMesh, ElementErrors) {
   EXPECT_CONTAINS(error_text(nodes + "*ELEMENT, TYPE=T3D2\n1, 1, 2\n1, 2, 3\n"),
                   "deck.inp:7: *ELEMENT: element 1: this element number is defined twice (first at "
                   "deck.inp:6)");
-  EXPECT_CONTAINS(error_text(nodes + "*ELEMENT, TYPE=T3D2\n-4, 1, 2\n"), "element -4");
+  EXPECT_CONTAINS(error_text(nodes + "*ELEMENT, TYPE=T3D2\n-4, 1, 2\n"),
+                  "field 1 (element number): -4 is out of range");
 }
 
 TEST(ReaderMesh, SetReferencesToUndefinedLabels) {

@@ -45,7 +45,10 @@ TEST(ReaderOutput, NodePrintErrors) {
   EXPECT_CONTAINS(error_text(step("*NODE PRINT, NSET=NONE\nU\n")),
                   "deck.inp:13: *NODE PRINT: NSET=NONE: this node set is not defined");
   EXPECT_CONTAINS(error_text(step("*NODE PRINT\n")), "no output variables are listed");
-  EXPECT_CONTAINS(error_text(step("*NODE PRINT, FREQUENCY=-1\nU\n")), "must not be negative");
+  EXPECT_CONTAINS(
+      error_text(step("*NODE PRINT, FREQUENCY=-1\nU\n")),
+      "FREQUENCY=-1: the output frequency (every n-th increment; 0: none) must be a whole "
+      "number from 0 to 2147483647");
 }
 
 TEST(ReaderOutput, ElPrint) {

@@ -125,7 +125,9 @@ TEST(ReaderStep, StructureErrors) {
   EXPECT_CONTAINS(error_text(with("*STEP\n*STATIC, RIKS\n*END STEP\n")),
                   "deck.inp:12: *STATIC: RIKS");
   EXPECT_CONTAINS(error_text(with("*STEP\n*HEAT TRANSFER, END=SS\n*END STEP\n")), "END=SS");
-  EXPECT_CONTAINS(error_text(with("*STEP, INC=0\n*STATIC\n*END STEP\n")), "at least 1");
+  EXPECT_CONTAINS(
+      error_text(with("*STEP, INC=0\n*STATIC\n*END STEP\n")),
+      "INC=0: the maximum number of increments must be a whole number from 1 to 2147483647");
   EXPECT_CONTAINS(error_text(with("*STEP, NLGEOM=MAYBE\n*STATIC\n*END STEP\n")),
                   "NLGEOM=MAYBE: write YES or NO");
   EXPECT_CONTAINS(error_text(with("*STEP, EXTRAPOLATION=CUBIC\n*STATIC\n*END STEP\n")),

@@ -329,7 +329,7 @@ TEST(ReaderSyntax, GenerateBadRangesAreErrors) {
   EXPECT_CONTAINS(error_text(base + "*NSET, NSET=A, GENERATE\n5, 1\n"),
                   "deck.inp:5: *NSET: range 5-1");
   EXPECT_CONTAINS(error_text(base + "*NSET, NSET=A, GENERATE\n1, 5, 0\n"),
-                  "the increment must be a positive integer");
+                  "the increment must be a whole number from 1 to 999999999, not 0");
   EXPECT_CONTAINS(error_text(base + "*NSET, NSET=A, GENERATE\n1, 5, -1\n"), "field 3 (increment)");
   EXPECT_CONTAINS(error_text(base + "*NSET, NSET=A, GENERATE\n1, 2, 1, 4\n"), "at most 3 fields");
 }
