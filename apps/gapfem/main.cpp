@@ -2,6 +2,7 @@
 #include "app/check.hpp"
 #include "app/job.hpp"
 #include "common/log.hpp"
+#include "linalg/blas_workspace.hpp"
 #include "parallel/parallel.hpp"
 
 #include <CLI/CLI.hpp>
@@ -107,6 +108,10 @@ bool start_processes(const std::vector<std::string>& petsc_options, bool petsc_s
 
 int main(int argc, char** argv) {
   one_blas_thread_under_address_limit(argv);
+  if (const auto no_room = gapfem::reserve_blas_workspace()) {
+    std::fprintf(stderr, "error: %s\n", no_room->c_str());
+    return gapfem::kExitNoConvergence;
+  }
   if (argc >= 2 && std::strcmp(argv[1], "check") == 0) return check_main(argc - 1, argv + 1);
   // PETSc's own options (-ksp_rtol 1e-12, -inner_pc_type hypre, ...) are not gapfem's
   const std::vector<std::string> petsc_options = gapfem::parallel::take_petsc_options(argc, argv);
