@@ -146,6 +146,7 @@ long long FieldReader::integer(std::size_t i, std::string_view what, long long m
     fail(field_entity(i, what), "this value is required but the field is missing or blank");
   long long v = 0;
   const std::string& t = _line.fields[i];
+  mark_integer(i);
   const IntCheck c = check_integer(t, min, max, v);
   if (c == IntCheck::OutOfRange && !rule.empty())
     fail(field_entity(i, what), fmt::format(fmt::runtime(rule), t));

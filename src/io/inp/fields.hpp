@@ -79,6 +79,10 @@ class FieldReader {
   /// Throws when a field after the first `n` is non-empty (the keyword has no such field).
   void at_most(std::size_t n, std::string_view layout) const;
 
+  /// Notes that field i is read as a whole number (DataLine::integer_fields).
+  void mark_integer(std::size_t i) const {
+    if (i < 64) _line.integer_fields |= std::uint64_t{1} << i;
+  }
   const SourceLocation& loc() const { return _loc; }
   const DataLine& line() const { return _line; }
   /// Throws an InputError at this line.

@@ -85,8 +85,8 @@ void handle_equation(BuildState& s, const Keyword& kw) {
     try {
       head.at_most(1, "number of terms");
       n = head.integer(0, "number of terms", 1, 10000,
-                       "an equation has 1 to 10000 terms, not {}; the first line of each equation "
-                       "gives its number of terms");
+                       "{} terms is out of range: an equation has 1 to 10000 terms, and the first "
+                       "line of each equation gives their number");
     } catch (const InputError& e) {
       s.diag.error(e);
       kw.mark_read(); // the rest of the block cannot be read reliably

@@ -68,8 +68,8 @@ void handle_matrix_input(BuildState& s, const Keyword& kw) {
     r.at_most(5, "row node, row DOF, column node, column DOF, value");
     MatrixInput::Term t;
     constexpr std::string_view rule =
-        "node {}: node numbers run from 1 to 999999999 (gapfem does not read Abaqus's internal "
-        "nodes, whose numbers are negative or zero)";
+        "node {} is out of range: node numbers run from 1 to 999999999 (gapfem does not read "
+        "Abaqus's internal nodes, whose numbers are negative or zero)";
     const long long rn = r.integer(0, "row node", 1, kMaxLabel, rule);
     const long long cn = r.integer(2, "column node", 1, kMaxLabel, rule);
     t.row_node = rn;

@@ -33,6 +33,10 @@ struct DataLine {
   /// handler has run, the parser reports every line of it that is not blank and was not read:
   /// each data line belongs to a keyword that reads it (parser.cpp, report_unread_lines).
   mutable bool read = false;
+  /// Bit i: field i was read as a whole number (FieldReader::integer, a node or element number).
+  /// What a keyword reads is thereby known from its lines: the integer sweep test
+  /// (tests/unit/io/reader_integers_test.cpp) finds every integer field this way.
+  mutable std::uint64_t integer_fields = 0;
 
   /// True for a line without any non-empty field (blank line or only commas).
   bool empty() const;
@@ -48,6 +52,8 @@ struct Parameter {
   std::string name;  ///< display name (upper case, single blanks), used in messages
   std::string value; ///< trimmed value with its case kept (quotes removed)
   bool has_value = false;
+  /// The value was read as a whole number (int_param): see DataLine::integer_fields.
+  mutable bool integer = false;
 };
 
 /// A keyword line with its parameters and the data lines that follow it.

@@ -48,8 +48,9 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
   auto label = [&](std::string_view text) -> std::optional<long long> {
     long long v = 0;
     const IntCheck c = check_integer(text, 1, kMaxLabel, v);
-    if (c == IntCheck::Ok) return v;
     if (c == IntCheck::NotWhole) return std::nullopt;
+    r.mark_integer(field);
+    if (c == IntCheck::Ok) return v;
     if (s.label_out_of_range) {
       ref.failed = true;
       return std::nullopt;
@@ -257,6 +258,7 @@ std::optional<long long> int_param(const Keyword& kw, std::string_view param, st
                                    long long min, long long max) {
   if (!kw.has(param)) return std::nullopt;
   const std::string v = param_value(kw, param, true);
+  kw.find(param)->integer = true;
   long long x = 0;
   const IntCheck c = check_integer(v, min, max, x);
   if (c != IntCheck::Ok)
