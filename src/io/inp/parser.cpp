@@ -296,21 +296,21 @@ void report_unread_lines(BuildState& s, const Keyword& kw) {
   // a keyword that read nothing in a deck with errors may skip its data on purpose (what it
   // refers to failed, reported): its lines are reported once the deck has no other error
   if (!first || (n_read == 0 && s.diag.n_errors() > 0)) return;
-  const std::string others =
-      n_unread > 1 ? fmt::format(" ({} more lines after it are not read either)", n_unread - 1)
-                   : "";
+  const std::string others = n_unread == 1 ? ""
+                                           : fmt::format(" (and {} more line{} after it)",
+                                                         n_unread - 1, n_unread == 2 ? "" : "s");
   std::string head;
   if (first->empty())
-    head = fmt::format("line {} holds only commas ({}), no value{}: {} reads nothing from it",
-                       first->line, trim(first->text), others, kw.name);
+    head = fmt::format("line {} holds only commas ({}), no value: {} reads nothing from it{}",
+                       first->line, trim(first->text), kw.name, others);
   else if (n_read == 0)
-    head = fmt::format("{} takes no data lines; line {} is one{}: {}", kw.name, first->line, others,
-                       quoted_line(*first));
+    head = fmt::format("{} takes no data lines; line {} is one: {}{}", kw.name, first->line,
+                       quoted_line(*first), others);
   else
-    head = fmt::format("{} takes {} data line{}; line {} is {}{}: {}", kw.name,
+    head = fmt::format("{} takes {} data line{}; line {} is {}: {}{}", kw.name,
                        n_read == 1 ? "one" : std::to_string(n_read), n_read == 1 ? "" : "s",
-                       first->line, first_index == 2 ? "a second one" : "one more", others,
-                       quoted_line(*first));
+                       first->line, first_index == 2 ? "a second one" : "one more",
+                       quoted_line(*first), others);
   s.error(s.loc(kw, *first), "",
           head + ". Remove it, or put the keyword line it belongs to above it");
 }
