@@ -19,4 +19,14 @@ inline bool names_a_file(std::string_view text) {
   return squeezed.find("INPUT") != std::string::npos;
 }
 
+/// True when `text` has no NUL or other control byte but tab and newline: what every input error
+/// must be, since the reader shows the deck bytes it quotes as \xNN (io/inp/deck_text.hpp).
+inline bool printable(std::string_view text) {
+  for (const char c : text) {
+    const auto b = static_cast<unsigned char>(c);
+    if ((b < 0x20 && b != '\n' && b != '\t') || b == 0x7F) return false;
+  }
+  return true;
+}
+
 } // namespace gapfem::fuzz

@@ -18,7 +18,9 @@ for target in fuzz_deck_reader fuzz_model_builder; do
   corpus="$build/fuzz-corpus/$target"
   mkdir -p "$corpus"
   echo "== $target: ${seconds} s"
-  "$build/fuzz/$target" "$corpus" "$seeds" -max_total_time="$seconds" -max_len=16384 -entropic=0 \
-    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+  # -max_len above the reader's line limit (65,536), so that lines over it can be mutated too;
+  # -dict: byte-order marks, NUL and control bytes, huge integers (fuzz/deck.dict)
+  "$build/fuzz/$target" "$corpus" "$seeds" -max_total_time="$seconds" -max_len=70000 -entropic=0 \
+    -dict=fuzz/deck.dict -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
     -artifact_prefix="$build/fuzz-findings/$target-" "$@" 2>&1 | tail -n 25
 done
