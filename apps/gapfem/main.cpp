@@ -1,5 +1,6 @@
 // gapfem: run an Abaqus input deck.  Usage: gapfem [options] job.inp
 #include "app/check.hpp"
+#include "app/environment.hpp"
 #include "app/job.hpp"
 #include "common/log.hpp"
 #include "linalg/blas_workspace.hpp"
@@ -92,8 +93,7 @@ bool choose_solver(const std::string& name, gapfem::JobOptions& options) {
 /// Start MPI and PETSc when mpirun started us or a PETSc solver is asked for; false (with a
 /// message) when this build cannot.
 bool start_processes(const std::vector<std::string>& petsc_options, bool petsc_solver) {
-  if (!gapfem::parallel::launched_by_mpirun() && !petsc_solver && petsc_options.empty())
-    return true;
+  if (!gapfem::launched_by_mpirun() && !petsc_solver && petsc_options.empty()) return true;
   if (!gapfem::parallel::available()) {
     std::fprintf(stderr, "gapfem: this gapfem was built without PETSc, so it cannot run under "
                          "mpirun nor take PETSc options: install Debian's petsc-dev "

@@ -1,6 +1,7 @@
 // gapfem check: validate a deck and summarise the model without solving (check.hpp).
 #include "app/check.hpp"
 
+#include "app/environment.hpp"
 #include "app/user_code.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -70,7 +71,9 @@ CheckResult check_job(const JobOptions& given) {
           load_user_code(options.user_code,
                          std::filesystem::temp_directory_path() /
                              fmt::format("gapfem-check-{}.scratch", static_cast<long>(getpid())));
-    Analysis analysis(model, {});
+    AnalysisOptions ao;
+    apply_environment(ao); // the GAPFEM_* switches, as for a run
+    Analysis analysis(model, {}, ao);
     const ModelCheck c = analysis.check(options.time_factorization);
     result.summary = summary_of(model, c, options.deck.string());
     if (!options.quiet)

@@ -1,6 +1,7 @@
 #include "app/job.hpp"
 
 #include "app/check.hpp"
+#include "app/environment.hpp"
 #include "app/job_files.hpp"
 #include "app/user_code.hpp"
 #include "common/error.hpp"
@@ -266,15 +267,7 @@ JobResult run_job(const JobOptions& given) {
       aopt.restart_header.job = job;
     }
     aopt.resume = resume;
-    // GAPFEM_FACTOR_REUSE=always|never overrides (used to run whole test suites both ways)
-    if (const char* env = std::getenv("GAPFEM_FACTOR_REUSE")) {
-      const std::string v(env);
-      if (v == "always") aopt.factor_reuse = FactorReuse::Always;
-      if (v == "never") aopt.factor_reuse = FactorReuse::Never;
-    }
-    // GAPFEM_RESIDUAL_ONLY=0 assembles the tangent in every evaluation (docs/performance.md)
-    if (const char* env = std::getenv("GAPFEM_RESIDUAL_ONLY"))
-      aopt.residual_only = std::string(env) != "0" && std::string(env) != "off";
+    apply_environment(aopt); // the GAPFEM_* switches (app/environment.hpp)
     Analysis analysis(*model, ptrs, aopt);
     result.run = analysis.run();
     result.exit_code = kExitOk;

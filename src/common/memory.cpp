@@ -1,6 +1,7 @@
 #include "common/memory.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <fstream>
@@ -66,15 +67,21 @@ std::optional<std::uint64_t> cgroup_room() {
   return room;
 }
 
+constexpr std::uint64_t kNoLimit = ~std::uint64_t{0};
+std::atomic<std::uint64_t> g_limit{kNoLimit}; ///< set_memory_limit
+
 } // namespace
+
+void set_memory_limit(std::optional<std::uint64_t> bytes) {
+  g_limit = bytes.value_or(kNoLimit);
+}
 
 std::uint64_t resident_memory_bytes() {
   return proc_kb("/proc/self/status", "VmRSS:").value_or(0);
 }
 
 std::optional<std::uint64_t> available_memory_bytes() {
-  if (const char* limit = std::getenv("GAPFEM_MEMORY_LIMIT")) // tests: a small machine
-    return std::strtoull(limit, nullptr, 10);
+  if (const auto limit = g_limit.load(); limit != kNoLimit) return limit; // a small machine
   std::optional<std::uint64_t> avail = proc_kb("/proc/meminfo", "MemAvailable:");
   auto bound = [&](std::uint64_t b) { avail = avail ? std::min(*avail, b) : b; };
   if (const auto room = cgroup_room()) bound(*room);

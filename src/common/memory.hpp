@@ -10,6 +10,10 @@
 
 namespace gapfem {
 
+/// Sets (or with nullopt removes) a limit on the bytes of the whole process, standing in for a
+/// small machine (tests; the application layer sets it from GAPFEM_MEMORY_LIMIT).
+void set_memory_limit(std::optional<std::uint64_t> bytes);
+
 /// Bytes the process can still allocate, or nullopt when nothing is known.
 std::optional<std::uint64_t> available_memory_bytes();
 

@@ -248,6 +248,17 @@ class ElementKernel {
   virtual void recover(const ElementInput& in, ElementRecovery& out) const {}
 };
 
+/// How kernels formulate what they compute, never what (docs/performance.md). Set by the
+/// application layer from the GAPFEM_* environment (app/environment.cpp) and passed down through
+/// AnalysisOptions and the Discretization.
+struct KernelOptions {
+  /// force-law gaps (penalty, softened contact) emit compliant constraint rows; off: their
+  /// stiffness goes into K (GAPFEM_PENALTY_ROWS=0)
+  bool penalty_rows = true;
+  /// elastic-slip friction on a fixed slip plane as compliant rows (GAPFEM_FRICTION_ROWS=0: off)
+  bool friction_rows = true;
+};
+
 /// What a kernel factory receives.
 struct KernelContext {
   const Model& model;
@@ -256,6 +267,7 @@ struct KernelContext {
   std::span<const ElemId> elements; ///< the block's elements, for per-element precomputation
   /// USER / SUBSTRUCTURE: which of the deck's types (Mesh::elem_variant); -1 otherwise
   std::int32_t variant = -1;
+  KernelOptions options{};
 };
 
 /// Element type + property → kernel; InputError for unsupported combinations.

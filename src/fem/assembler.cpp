@@ -13,19 +13,10 @@
 
 namespace gapfem {
 
-int default_thread_count() {
-  if (const char* env = std::getenv("GAPFEM_THREADS")) {
-    const int n = std::atoi(env);
-    if (n > 0) return n;
-  }
-  // under mpirun the ranks on this machine share its cores (Open MPI and MPICH say how many)
-  unsigned ranks_here = 1;
-  for (const char* name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
-    if (const char* env = std::getenv(name); env && std::atoi(env) > 0) {
-      ranks_here = static_cast<unsigned>(std::atoi(env));
-      break;
-    }
-  const unsigned hw = std::thread::hardware_concurrency() / ranks_here;
+int default_thread_count(int ranks_here) {
+  // the ranks of a run on this machine share its cores
+  const unsigned hw =
+      std::thread::hardware_concurrency() / static_cast<unsigned>(std::max(ranks_here, 1));
   return static_cast<int>(std::clamp(hw, 1u, 2u));
 }
 

@@ -70,8 +70,8 @@ class Assembler {
   std::vector<std::vector<double>> _thread_f;
 };
 
-/// Threads to use by default: GAPFEM_THREADS if set, else min(hardware threads / ranks on this
-/// machine under mpirun, 2), at least 1.
-int default_thread_count();
+/// Threads to use by default: min(hardware threads / the run's processes on this machine, 2), at
+/// least 1 (GAPFEM_THREADS, read by the application layer, overrides it: AnalysisOptions::threads).
+int default_thread_count(int ranks_here = 1);
 
 } // namespace gapfem

@@ -11,7 +11,7 @@
 
 namespace gapfem {
 
-Discretization::Discretization(const Model& model) : _model(model) {
+Discretization::Discretization(const Model& model, const KernelOptions& options) : _model(model) {
   const Mesh& mesh = model.mesh;
   const ElemId ne = mesh.n_elements();
   // Group elements by (type, property), keeping deck order within a block.
@@ -39,7 +39,8 @@ Discretization::Discretization(const Model& model) : _model(model) {
   // Kernels and DOF masks.
   std::vector<DofMask> masks(static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (auto& b : _blocks) {
-    b.kernel = make_element_kernel(KernelContext{model, b.type, b.property, b.elements, b.variant});
+    b.kernel = make_element_kernel(
+        KernelContext{model, b.type, b.property, b.elements, b.variant, options});
     const ElementKernel& k = *b.kernel;
     b.n_nodes = k.n_nodes();
     b.n_dofs = k.n_dofs();

@@ -43,7 +43,7 @@ struct ElementBlock {
 class Discretization {
  public:
   /// Builds kernels, the DOF map and the storage; validates every element (InputError).
-  explicit Discretization(const Model& model);
+  explicit Discretization(const Model& model, const KernelOptions& options = {});
 
   const Model& model() const { return _model; }
   const DofMap& dofs() const { return _dofs; }

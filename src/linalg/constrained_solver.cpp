@@ -22,12 +22,13 @@ std::string_view backend_name(SolverBackend backend) {
   return "?";
 }
 
-std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend) {
+std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend,
+                                                           const KktTuning& tuning) {
   if (backend == SolverBackend::Cholmod) {
     if (parallel::size() > 1)
       throw std::runtime_error("--solver cholmod solves on one process, but this run has several "
                                "(mpirun): use --solver mumps or --solver iterative");
-    return std::make_unique<KktSolver>();
+    return std::make_unique<KktSolver>(tuning);
   }
 #ifdef GAPFEM_HAVE_PETSC
   parallel::start();

@@ -99,9 +99,17 @@ class ConstrainedSolver {
                               const KktOptions& options, RunStatistics* stats = nullptr) = 0;
 };
 
+/// How the serial backend (KktSolver) works, never what it solves (docs/performance.md). Set by the
+/// application layer from GAPFEM_FACTOR_UPDATES and GAPFEM_DENSE_MULTIPLIERS (app/environment).
+struct KktTuning {
+  bool factor_updates = true; ///< correct a kept factor for changed rows (Woodbury); off: refactor
+  bool dense_multipliers = true; ///< the dense multiplier system of a kept factor; off: Krylov
+};
+
 /// Throws std::runtime_error when the backend is not in this build (no PETSc) or cannot run here
 /// (the serial CHOLMOD backend under mpirun with more than one rank).
-std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend);
+std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend,
+                                                           const KktTuning& tuning = {});
 /// The backend's name as the CLI spells it (cholmod, mumps, iterative).
 std::string_view backend_name(SolverBackend backend);
 

@@ -54,12 +54,8 @@ void augmentation_weights(const CsrMatrix& K, const ConstraintBlock& C, double a
       K.n(), [&](LocalIndex i) { return std::abs(K.diagonal(i)); }, C, augmentation, R, ks);
 }
 
-KktSolver::KktSolver() {
-  if (const char* env = std::getenv("GAPFEM_FACTOR_UPDATES"))
-    _modify = std::string_view(env) != "0" && std::string_view(env) != "off";
-  if (const char* env = std::getenv("GAPFEM_DENSE_MULTIPLIERS"))
-    _dense = std::string_view(env) != "0" && std::string_view(env) != "off";
-}
+KktSolver::KktSolver(const KktTuning& tuning)
+    : _modify(tuning.factor_updates), _dense(tuning.dense_multipliers) {}
 KktSolver::~KktSolver() = default;
 
 void KktSolver::forget_factor() {

@@ -34,7 +34,7 @@ namespace gapfem {
 
 class KktSolver final : public ConstrainedSolver {
  public:
-  KktSolver();
+  explicit KktSolver(const KktTuning& tuning = {});
   ~KktSolver() override;
   std::string_view name() const override { return "cholmod"; }
   /// AnalysisError when a factor of `factor_bytes` (the symbolic analysis's prediction) cannot
@@ -146,14 +146,14 @@ class KktSolver final : public ConstrainedSolver {
   std::unordered_map<std::int64_t, int> _frow_of; ///< multiplier index -> row of _frows
   double _t_factor = 0.0, _t_solve = 0.0;         ///< measured seconds (last / running mean)
   double _t_update_row = 0.0; ///< measured seconds per row added to or removed from the factor
-  bool _modify = true;        ///< modify the factor for changed rows (GAPFEM_FACTOR_UPDATES=0: no)
+  bool _modify = true;        ///< modify the factor for changed rows (KktTuning::factor_updates)
   double _drift = 0.0;        ///< of the last system with its matrix, against the factored one
   double _drift_step = 0.0;   ///< its growth since the measurement before (infinity: unknown)
   double _max_drift = 1e-3;   ///< KktOptions::max_drift of that system
   int _last_changes = 0;      ///< changed rows of the last system
   int _last_rows = 0;         ///< its rows
   FactorReuse _reuse = FactorReuse::Auto; ///< KktOptions::reuse of the last system
-  /// the dense multiplier path (GAPFEM_DENSE_MULTIPLIERS=0: off): the columns of the current
+  /// the dense multiplier path (KktTuning::dense_multipliers): the columns of the current
   /// factor, and whether the path failed for it (the Krylov path then serves the factor)
   bool _dense = true;
   bool _dense_failed = false;

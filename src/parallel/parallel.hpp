@@ -14,8 +14,6 @@ namespace gapfem::parallel {
 
 /// True when this build has the PETSc backend (and MPI).
 bool available();
-/// True when the environment says the process was started by mpirun/mpiexec (Open MPI, MPICH).
-bool launched_by_mpirun();
 /// Start MPI and PETSc (once; later calls do nothing). `petsc_options` are PETSc's own command-line
 /// options (`-ksp_rtol 1e-12`, `-inner_pc_type hypre`, …), inserted into its options database.
 /// Throws std::runtime_error when the build has no PETSc.

@@ -69,9 +69,9 @@ const std::vector<StepSummary>& Analysis::step_summaries() const {
 }
 
 Analysis::Impl::Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
-    : model(m), writers(std::move(w)), disc(m),
-      assembler(disc, o.threads > 0 ? o.threads : default_thread_count()),
-      solver(make_constrained_solver(o.solver)), options(std::move(o)) {
+    : model(m), writers(std::move(w)), disc(m, o.kernels),
+      assembler(disc, o.threads > 0 ? o.threads : default_thread_count(o.ranks_here)),
+      solver(make_constrained_solver(o.solver, o.kkt)), options(std::move(o)) {
   const LocalIndex ns = disc.dofs().n_slots();
   st.u.assign(static_cast<std::size_t>(ns), 0.0);
   set_initial_temperatures(m, disc.dofs(), st.u);
@@ -83,8 +83,7 @@ Analysis::Impl::Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptio
   st.T = st.T_start = st.T_initial;
   check_step_procedures(m);
   for (LocalIndex s = 0; s < ns; ++s) has_temperature_dofs |= disc.dofs().slot_is_temperature(s);
-  if (const char* kill = std::getenv("GAPFEM_TEST_KILL_AFTER_INCREMENT"))
-    kill_after_increments = std::atol(kill);
+  kill_after_increments = options.kill_after_increments;
 }
 
 RunSummary Analysis::run() {

@@ -3,6 +3,7 @@
 /// Runs all steps of a model: per step the equation numbering, sparsity pattern and symbolic
 /// factorisation, the increment loop (Newton + automatic incrementation), output frames and the
 /// self-checks; carries the committed state, load history and contact status between steps.
+#include "elements/element_kernel.hpp"
 #include "linalg/constrained_solver.hpp"
 #include "output/results.hpp"
 #include "solver/restart_file.hpp"
@@ -18,7 +19,13 @@ namespace gapfem {
 struct Model;
 
 struct AnalysisOptions {
-  int threads = 0;                              ///< 0: default_thread_count()
+  int threads = 0;       ///< assembly threads; 0: default_thread_count(ranks_here)
+  int ranks_here = 1;    ///< the run's processes on this machine (they share its cores)
+  KernelOptions kernels; ///< how the element kernels formulate (penalty and friction rows)
+  KktTuning kkt;         ///< how the serial solver works (factor updates, dense multipliers)
+  /// tests of durable results: the process kills itself (SIGKILL) after this many converged
+  /// increments (GAPFEM_TEST_KILL_AFTER_INCREMENT; -1: never)
+  long kill_after_increments = -1;
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
   /// evaluate the residual alone while the solver reuses its factor (NewtonControls::residual_only)
   bool residual_only = true;

@@ -72,14 +72,12 @@ MechanicalGapKernel::MechanicalGapKernel(const KernelContext& ctx)
   _no_separation = b.given && b.no_separation;
   if (_law) {
     _mode = NormalMode::Force;
-    if (const char* env = std::getenv("GAPFEM_PENALTY_ROWS"))
-      _compliant_rows = std::string_view(env) != "0" && std::string_view(env) != "off";
+    _compliant_rows = ctx.options.penalty_rows;
   } else if (b.given && b.method == ContactMethod::AugmentedLagrange) {
     _mode = NormalMode::Augmented;
     _augmented_k = b.penalty_stiffness * _section.area;
   }
-  if (const char* env = std::getenv("GAPFEM_FRICTION_ROWS"))
-    _slip_rows = std::string_view(env) != "0" && std::string_view(env) != "off";
+  _slip_rows = ctx.options.friction_rows;
   // Friction laws: the section's, then every *CHANGE FRICTION that touches this block.
   std::unordered_map<ElemId, LocalIndex> index;
   for (std::size_t i = 0; i < ctx.elements.size(); ++i)

@@ -1,11 +1,12 @@
 // The constrained (KKT) solve against a dense solve of the saddle-point system.
+#include "common/memory.hpp"
 #include "linalg/kkt_solver.hpp"
-#include "scoped_env.hpp"
 
 #include <Eigen/Dense>
 #include <cstdlib>
 #include <gtest/gtest.h>
 #include <limits>
+#include <optional>
 #include <random>
 
 using namespace gapfem;
@@ -429,11 +430,12 @@ struct ChangedRows {
   KktStatistics second;
   std::vector<double> du = std::vector<double>(n), dl = std::vector<double>(2);
   Eigen::VectorXd ref;
-  const char* memory_limit_between = nullptr; ///< GAPFEM_MEMORY_LIMIT for the second solve
+  std::optional<std::uint64_t> memory_limit_between; ///< set_memory_limit for the second solve
+  KktTuning tuning;
   void run() {
     const Row a{{0, n - 1}, {1.0, -1.0}, 0.2, 10}, keep{{3}, {1.0}, -0.1, 11},
         fresh{{5}, {1.0}, 0.05, 12};
-    KktSolver solver;
+    KktSolver solver(tuning);
     solver.analyze(p.pattern);
     KktOptions opt;
     opt.constraint_tolerance = 1e-14;
@@ -442,9 +444,9 @@ struct ChangedRows {
     solver.solve(K1, {b.data(), std::size_t(n)}, block({a, keep}), du, dl, true, opt, &stats);
     const std::vector<Row> rows{keep, fresh};
     CsrMatrix K2 = to_csr(p);
-    if (memory_limit_between) ::setenv("GAPFEM_MEMORY_LIMIT", memory_limit_between, 1);
+    if (memory_limit_between) set_memory_limit(memory_limit_between);
     second = solver.solve(K2, {b.data(), std::size_t(n)}, block(rows), du, dl, true, opt, &stats);
-    ::unsetenv("GAPFEM_MEMORY_LIMIT");
+    set_memory_limit(std::nullopt);
     ref = dense_kkt(p.K, b, rows);
   }
   void expect_exact_step() const {
@@ -455,14 +457,11 @@ struct ChangedRows {
 };
 } // namespace
 
-using test::ScopedEnv;
-
-// The Woodbury path (GAPFEM_DENSE_MULTIPLIERS=0): the kept factor is made exact for the
-// current rows, and the multipliers are solved by CG on it.
+// The Woodbury path (no dense multipliers, GAPFEM_DENSE_MULTIPLIERS=0): the kept factor is made
+// exact for the current rows, and the multipliers are solved by CG on it.
 TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
-  if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
-  const ScopedEnv off("GAPFEM_DENSE_MULTIPLIERS", "0");
   ChangedRows c;
+  c.tuning.dense_multipliers = false;
   c.run();
   EXPECT_TRUE(c.second.stale_factor);
   EXPECT_EQ(c.stats.factorizations, 1);
@@ -472,14 +471,13 @@ TEST(KktSolver, AReusedFactorIsUpdatedForChangedRows) {
 }
 
 // Keeping a factor exact for changed rows needs scratch memory next to it (linalg/
-// low_rank_correction.hpp): where that does not fit (GAPFEM_MEMORY_LIMIT stands in for a machine
+// low_rank_correction.hpp): where that does not fit (set_memory_limit stands in for a machine
 // that has filled up since the factorisation) the solver factorises afresh instead, with the same
 // exact step.
 TEST(KktSolver, NoFactorUpdateWhereItsScratchDoesNotFit) {
-  if (std::getenv("GAPFEM_FACTOR_UPDATES")) GTEST_SKIP() << "GAPFEM_FACTOR_UPDATES is set";
-  const ScopedEnv off("GAPFEM_DENSE_MULTIPLIERS", "0");
   ChangedRows c;
-  c.memory_limit_between = "64"; // bytes: less than one dense column of the 8 equations, twice
+  c.tuning.dense_multipliers = false;
+  c.memory_limit_between = 64; // bytes: less than one dense column of the 8 equations, twice
   c.run();
   EXPECT_EQ(c.stats.factor_updates, 0);
   EXPECT_EQ(c.stats.factorizations, 2);
@@ -490,7 +488,6 @@ TEST(KktSolver, NoFactorUpdateWhereItsScratchDoesNotFit) {
 // and the anti-row of the row gone is dense (one column L^-1 P c^T per row), and the step is one
 // forward and one backward solve.
 TEST(KktSolver, DenseMultipliersServeChangedRowsInOneSolve) {
-  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
   ChangedRows c;
   c.run();
   EXPECT_TRUE(c.second.stale_factor);
@@ -596,7 +593,6 @@ Eigen::VectorXd dense_columns(const Eigen::MatrixXd& K, const Eigen::VectorXd& b
 } // namespace
 
 TEST(KktSolver, TurningRowsAndOwnColumnsMatchTheDenseSystem) {
-  if (std::getenv("GAPFEM_DENSE_MULTIPLIERS")) GTEST_SKIP() << "GAPFEM_DENSE_MULTIPLIERS is set";
   std::mt19937 rng(16);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   const int n = 12;

@@ -1,5 +1,6 @@
 // Rank-one changes of a CHOLMOD factor (LinearSolver::modify: the Woodbury correction of
 // linalg/low_rank_correction.hpp with sparse forward solves) against dense solves.
+#include "common/memory.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/low_rank_correction.hpp"
 
@@ -164,9 +165,9 @@ TEST(CholmodModify, DeclinesWhereItsScratchDoesNotFit) {
   W.row = {3};
   W.val = {1.0};
   W.ptr = {0, 1};
-  ::setenv("GAPFEM_MEMORY_LIMIT", "64", 1);
+  set_memory_limit(64); // bytes: no room for the correction's scratch
   const bool modified = solver->modify(true, W);
-  ::unsetenv("GAPFEM_MEMORY_LIMIT");
+  set_memory_limit(std::nullopt);
   EXPECT_FALSE(modified);
   EXPECT_TRUE(solver->modify(true, W));
 }

@@ -6,13 +6,11 @@
 #include "elements/gap/mechanical_gap.hpp"
 #include "elements/gap/normal_law.hpp"
 #include "gap_test_util.hpp"
-#include "scoped_env.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
 
 using namespace gapfem;
-using gapfem::test::ScopedEnv;
 using gapfem::test::SingleElement;
 using gapfem::test::two_node_gap_model;
 
@@ -171,11 +169,11 @@ TEST(GapInteraction, PenaltyFrictionTangentStickAndSlip) {
 
 TEST(GapInteraction, FrictionWithExactNormalContactHasTheNormalColumn) {
   // a closed GAPUNI with elastic-slip friction moved sideways by ux (small: stick; large: slip)
-  auto closed_gap = [](double ux, auto check) {
+  auto closed_gap = [](double ux, auto check, KernelOptions options = {}) {
     GapSection s = gapuni(0.0);
     s.friction = coulomb(0.3, 1e-3);
     Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-    SingleElement el(m);
+    SingleElement el(m, options);
     set_state_closed(el, ContactStatus::Stick);
     el.mult[0] = 100.0;
     el.u = {ux, 0.0, 0.0001, 0, 0, 0};
@@ -203,12 +201,14 @@ TEST(GapInteraction, FrictionWithExactNormalContactHasTheNormalColumn) {
       check_element_tangent(el, 0.001);
     });
   }
-  // with GAPFEM_FRICTION_ROWS=0 the same stiffness is in the tangent: one row
-  ScopedEnv off("GAPFEM_FRICTION_ROWS", "0");
-  closed_gap(0.0002, [](SingleElement& el) {
-    EXPECT_EQ(el.n_constraints, 1);
-    check_element_tangent(el, 0.001);
-  });
+  // without friction rows (GAPFEM_FRICTION_ROWS=0) the same stiffness is in the tangent: one row
+  closed_gap(
+      0.0002,
+      [](SingleElement& el) {
+        EXPECT_EQ(el.n_constraints, 1);
+        check_element_tangent(el, 0.001);
+      },
+      KernelOptions{.penalty_rows = true, .friction_rows = false});
 }
 
 TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {

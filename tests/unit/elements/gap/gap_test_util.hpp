@@ -49,9 +49,10 @@ struct SingleElement {
   double interference = 0.0;
 
   static inline const std::vector<ElemId> kFirst{0};
-  explicit SingleElement(const Model& m)
-      : SingleElement(m, make_element_kernel(KernelContext{m, m.mesh.elem_types[0],
-                                                           m.element_property[0], kFirst})) {}
+  explicit SingleElement(const Model& m, const KernelOptions& options = {})
+      : SingleElement(
+            m, make_element_kernel(KernelContext{m, m.mesh.elem_types[0], m.element_property[0],
+                                                 kFirst, -1, options})) {}
   SingleElement(const Model& m, std::unique_ptr<ElementKernel> k) : kernel(std::move(k)) {
     X = m.mesh.coords;
     const int nd = kernel->n_dofs();
