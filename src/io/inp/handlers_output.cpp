@@ -73,8 +73,8 @@ std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool str
         return;
       }
       constexpr std::string_view rule =
-          "section point {} is out of range: section points are whole numbers from 1 (the SNEG "
-          "side of a shell, the first point of a beam section) to 2147483647";
+          "section point {} is out of range: section points are numbered from 1 (the SNEG side "
+          "of a shell, the first point of a beam section) up to 2147483647";
       for (std::size_t i = 0; i < line.fields.size(); ++i) {
         if (r.blank(i)) continue;
         const int n = static_cast<int>(r.integer(i, "section point", 1, kMaxInt, rule));
