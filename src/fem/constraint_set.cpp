@@ -12,6 +12,29 @@
 namespace gapfem {
 
 namespace {
+
+/// The sentence for a DOF that two constraints make dependent: what it means for the keywords
+/// that made them (a tie's slave node, a coupling's node, an equation's first term).
+std::string dependent_twice(const LinearConstraint& lc, const LinearConstraint& other, int dof) {
+  const bool tie = lc.kind == ConstraintKind::Tie && other.kind == ConstraintKind::Tie;
+  if (tie)
+    return fmt::format("DOF {} of this slave node is already tied by {}; a node can be the slave "
+                       "of one tie only: remove one of the ties, or take the node out of one "
+                       "slave surface",
+                       dof, other.where());
+  const bool equations = lc.kind != ConstraintKind::Tie && other.kind != ConstraintKind::Tie &&
+                         lc.kind != ConstraintKind::Coupling &&
+                         other.kind != ConstraintKind::Coupling &&
+                         lc.kind != ConstraintKind::KinematicCoupling &&
+                         other.kind != ConstraintKind::KinematicCoupling;
+  return fmt::format("DOF {} is already the dependent DOF of the constraint at {}; a DOF can be "
+                     "the dependent (first) DOF of one constraint only: {}",
+                     dof, other.where(),
+                     equations ? "remove one of them, or write one of them with another DOF as "
+                                 "its first term"
+                               : "remove one of them");
+}
+
 /// The global DOFs (slots) and coefficients of c u(node, dof): one slot, or for a DOF of a node
 /// with a *TRANSFORM (terms written in its local system) the three global components.
 bool expand_term(const Model& model, const DofMap& dofs, const ConstraintTerm& t, bool local,
@@ -70,10 +93,7 @@ ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
     if (!fresh) {
       const LinearConstraint& other = model.constraints[it->second];
       throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),
-                       fmt::format("DOF {} is already the dependent DOF of the constraint at {}; a "
-                                   "DOF can be the dependent (first) DOF of one constraint only: "
-                                   "remove one of them or reorder the terms",
-                                   abaqus_number(t.dof), other.where()));
+                       dependent_twice(lc, other, abaqus_number(t.dof)));
     }
     _ptr.push_back(static_cast<LocalIndex>(_slot.size()));
     _value.push_back(0.0);

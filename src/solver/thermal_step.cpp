@@ -9,19 +9,67 @@
 
 namespace gapfem {
 
+namespace {
+
+/// The stress/displacement type with the same shape as a heat-transfer or coupled type ("" when
+/// there is no obvious one): C3D8T -> C3D8, GAPUNIT -> GAPUNI, DC3D8 -> C3D8, DS4 -> S4.
+std::string stress_twin(std::string_view t, bool coupled) {
+  if (coupled && t.ends_with('T')) return std::string(t.substr(0, t.size() - 1));
+  if (t.starts_with("DC3D")) return "C" + std::string(t.substr(2));
+  if (t.starts_with("DS")) return std::string(t.substr(1));
+  if (t == "DGAP") return "GAPUNI";
+  return {};
+}
+
+/// The heat-transfer type with the same shape as a stress or coupled type ("" when none is
+/// obvious): C3D8 -> DC3D8, C3D8T -> DC3D8, GAPUNIT -> DGAP.
+std::string heat_twin(std::string_view t, bool coupled) {
+  std::string s(coupled && t.ends_with('T') ? t.substr(0, t.size() - 1) : t);
+  if (s.starts_with("C3D")) return "D" + s;
+  if (s == "GAPUNI") return "DGAP";
+  return {};
+}
+
+std::string twin_text(const std::string& from, const std::string& to) {
+  return to.empty() ? std::string() : fmt::format(" ({} -> {})", from, to);
+}
+
+/// Why an element of type `t` with these fields cannot be used in a step of procedure `p`, with
+/// what to do ("" when it can).
+std::string procedure_mismatch(Procedure p, const Model::ElementFields& f, std::string_view t) {
+  const std::string step = fmt::format("*{}", procedure_name(p)), type(t);
+  if (!is_thermal(p) && f.temperature)
+    return f.displacement
+               ? fmt::format("is a coupled temperature-displacement element and cannot be used "
+                             "in a {} step; use *COUPLED TEMPERATURE-DISPLACEMENT, or its "
+                             "stress/displacement twin{}",
+                             step, twin_text(type, stress_twin(t, true)))
+               : fmt::format("is a heat-transfer element and cannot be used in a {} step; use "
+                             "*HEAT TRANSFER for a thermal analysis, or a stress/displacement "
+                             "element type{} for a stress analysis",
+                             step, twin_text(type, stress_twin(t, false)));
+  if (p == Procedure::HeatTransfer && f.displacement)
+    return f.temperature
+               ? fmt::format("is a coupled temperature-displacement element and cannot be used "
+                             "in a *HEAT TRANSFER step; use *COUPLED TEMPERATURE-DISPLACEMENT, "
+                             "or its heat-transfer twin{}",
+                             twin_text(type, heat_twin(t, true)))
+               : fmt::format("is a stress/displacement element and cannot be used in a *HEAT "
+                             "TRANSFER step; use *STATIC for a stress analysis, or a "
+                             "heat-transfer element type{} for a thermal analysis",
+                             twin_text(type, heat_twin(t, false)));
+  return {};
+}
+
+} // namespace
+
 void check_step_procedures(const Model& model) {
   const Mesh& mesh = model.mesh;
   for (const Step& s : model.steps) {
     if (s.procedure == Procedure::CoupledTempDisp) continue;
     for (ElemId e = 0; e < mesh.n_elements(); ++e) {
-      const Model::ElementFields info = model.element_fields(e);
-      std::string why;
-      if (!is_thermal(s.procedure) && info.temperature)
-        why = "has temperature DOFs and cannot be used in a *STATIC step; use *COUPLED "
-              "TEMPERATURE-DISPLACEMENT, or the stress/displacement element type";
-      else if (s.procedure == Procedure::HeatTransfer && info.displacement)
-        why = "has displacement DOFs and cannot be used in a *HEAT TRANSFER step; use *COUPLED "
-              "TEMPERATURE-DISPLACEMENT, or a heat-transfer (DC…) element type";
+      const std::string why =
+          procedure_mismatch(s.procedure, model.element_fields(e), model.element_type_name(e));
       if (!why.empty())
         throw InputError(s.loc, fmt::format("step {}", s.number),
                          fmt::format("element {} ({}) {}", model.element_label(e),

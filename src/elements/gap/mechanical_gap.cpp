@@ -192,10 +192,12 @@ std::string MechanicalGapKernel::validate(const ElementInput& in) const {
     Eigen::Vector3d r = -d;
     if (_base.shape == GapShape::Cyl) r -= _base.a * _base.a.dot(r);
     if (std::hypot(r.x(), r.y(), r.z()) <= 1e-12 * _length_scale)
-      return fmt::format(
-          "the nodes lie on the {} of the gap with d < 0, so the gap is closed with an "
-          "undefined contact direction; offset node 1 from node 2",
-          _base.shape == GapShape::Cyl ? "same axis line" : "same centre");
+      return _base.shape == GapShape::Cyl
+                 ? "its first node lies on the axis line through its second node and d < 0, so "
+                   "the gap starts closed with no contact direction; move the first node off "
+                   "that axis or give a positive d"
+                 : "its two nodes coincide and d < 0, so the gap starts closed with no contact "
+                   "direction; move one node away from the other or give a positive d";
   }
   return {};
 }
