@@ -236,7 +236,8 @@ TEST(VerificationGapStructures, GapInputErrorsNameTheElementAndTheRemedy) {
 )");
   EXPECT_EQ(r2.exit_code, 1);
   EXPECT_NE(r2.error.find("element 8 (GAPSPHER)"), std::string::npos) << r2.error;
-  EXPECT_NE(r2.error.find("offset node 1"), std::string::npos) << r2.error;
+  EXPECT_NE(r2.error.find("its two nodes coincide and d < 0"), std::string::npos) << r2.error;
+  EXPECT_NE(r2.error.find("move one node away from the other"), std::string::npos) << r2.error;
   // gap elements without *GAP
   const JobResult r3 = run_deck(R"(*NODE
 1, 0., 0., 0.
