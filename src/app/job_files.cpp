@@ -185,7 +185,8 @@ InputError lock_error(const fs::path& file, const std::string& job, std::string 
 } // namespace
 
 void prepare_output(const fs::path& dir, const std::string& job) {
-  if (job.empty() || job == "." || job == ".." || job.find_first_of("/\\") != std::string::npos)
+  // '/' is the only directory separator here: a backslash is a character of a Linux file name
+  if (job.empty() || job == "." || job == ".." || job.find('/') != std::string::npos)
     throw InputError(SourceLocation{}, fmt::format("job name '{}'", job),
                      "a job name is a file name without a directory (job.dat, job.sta, ... are "
                      "written into the output directory); choose the directory with -o");

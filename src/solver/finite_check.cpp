@@ -81,12 +81,14 @@ std::string first_non_finite_output(const Model& model, const Frame& frame) {
 }
 
 std::string non_finite_message(int increment, const std::string& where) {
+  const std::string when = increment > 0 ? fmt::format("increment {}", increment)
+                                         : std::string("at the start of the step");
   return fmt::format(
-      "increment {}: the results hold a number that is not finite: {}; numbers beyond "
+      "{}: the results hold a number that is not finite: {}; numbers beyond "
       "double precision (about 1.8E308) overflowed, so the loads, prescribed values or material "
       "constants are far too large for the model's units: check their magnitudes and units "
       "(the results of the increments before are written)",
-      increment, where);
+      when, where);
 }
 
 } // namespace gapfem
