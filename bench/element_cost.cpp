@@ -5,7 +5,7 @@
 //
 //   build/release/bench/element_cost [--min-time 0.2]
 #include "elements/element_kernel.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/model.hpp"
 
 #include <CLI/CLI.hpp>

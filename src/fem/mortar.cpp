@@ -1,6 +1,6 @@
 #include "fem/mortar.hpp"
 
-#include "fem/quadrature.hpp"
+#include "fe/quadrature.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "fem/surface_geometry.hpp"
 
-#include "fem/quadrature.hpp"
+#include "fe/quadrature.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>

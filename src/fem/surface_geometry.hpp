@@ -5,7 +5,7 @@
 /// tributary area of each surface node (distributing couplings), and the closest point of a
 /// facet to a point (the slave-node search of *TIE).
 #include "common/types.hpp"
-#include "fem/element_faces.hpp"
+#include "fe/element_faces.hpp"
 #include "model/element_types.hpp"
 
 #include <array>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file cell_shape.hpp
 /// The reference cells of the continuum and heat-transfer elements (the element type table names
-/// each type's cell; fem/shape_functions.hpp defines their shape functions and node positions).
+/// each type's cell; fe/shape_functions.hpp defines their shape functions and node positions).
 ///
 ///   Line2/Line3    xi in [-1, 1]; the Line3 midside node is node 3
 ///   Tri3/Tri6      area coordinates (xi, eta), N1 = 1 - xi - eta; Tri6 midsides 4: 1-2, 5: 2-3,

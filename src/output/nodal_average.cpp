@@ -1,7 +1,7 @@
 #include "output/nodal_average.hpp"
 
-#include "fem/quadrature.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/quadrature.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/element_types.hpp"
 #include "output/output_file.hpp"
 

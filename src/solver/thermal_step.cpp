@@ -15,7 +15,7 @@ namespace {
 /// there is no obvious one): C3D8T -> C3D8, GAPUNIT -> GAPUNI, DC3D8 -> C3D8, DS4 -> S4.
 std::string stress_twin(std::string_view t, bool coupled) {
   if (coupled && t.ends_with('T')) return std::string(t.substr(0, t.size() - 1));
-  if (t.starts_with("DC3D")) return "C" + std::string(t.substr(2));
+  if (t.starts_with("DC3D")) return std::string(t.substr(1)); // DC3D8 -> C3D8
   if (t.starts_with("DS")) return std::string(t.substr(1));
   if (t == "DGAP") return "GAPUNI";
   return {};
@@ -25,7 +25,7 @@ std::string stress_twin(std::string_view t, bool coupled) {
 /// obvious): C3D8 -> DC3D8, C3D8T -> DC3D8, GAPUNIT -> DGAP.
 std::string heat_twin(std::string_view t, bool coupled) {
   std::string s(coupled && t.ends_with('T') ? t.substr(0, t.size() - 1) : t);
-  if (s.starts_with("C3D")) return "D" + s;
+  if (s.starts_with("C3D")) return s.insert(0, 1, 'D');
   if (s == "GAPUNI") return "DGAP";
   return {};
 }

@@ -26,9 +26,9 @@
 #include "elements/element_kernel.hpp"
 #include "elements/heat/heat_material.hpp"
 #include "elements/reference_scale.hpp"
-#include "fem/element_faces.hpp"
-#include "fem/quadrature.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/element_faces.hpp"
+#include "fe/quadrature.hpp"
+#include "fe/shape_functions.hpp"
 
 #include <Eigen/Dense>
 #include <array>
@@ -147,7 +147,7 @@ constexpr std::span<const QuadraturePoint> capacity_rule(Shape s) {
 constexpr int capacity_points(Shape s) {
   return static_cast<int>(capacity_rule(s).size());
 }
-/// Points of the conduction (full) rule (fem/quadrature.hpp, full_integration_rule).
+/// Points of the conduction (full) rule (fe/quadrature.hpp, full_integration_rule).
 constexpr int conduction_points(Shape s) {
   switch (s) {
   case Shape::Line2:

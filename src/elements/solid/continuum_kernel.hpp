@@ -19,9 +19,9 @@
 #include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_law.hpp"
 #include "elements/solid/continuum_loads.hpp"
-#include "fem/element_faces.hpp"
-#include "fem/quadrature.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/element_faces.hpp"
+#include "fe/quadrature.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/material.hpp"
 #include "model/section.hpp"
 
@@ -45,7 +45,7 @@ struct ContinuumSetup {
 };
 
 /// Compile-time description of one continuum element type.
-/// Reduced: the reduced rule of the R types (fem/quadrature.hpp; only for the quadratic shapes,
+/// Reduced: the reduced rule of the R types (fe/quadrature.hpp; only for the quadratic shapes,
 /// which need no hourglass control).
 template <ElementType T, Shape S, Kinematics K, bool BBar, bool Reduced = false>
 struct ContinuumTraits {

@@ -1,8 +1,8 @@
 #include "elements/solid/continuum_loads.hpp"
 
 #include "common/error.hpp"
-#include "fem/element_faces.hpp"
-#include "fem/quadrature.hpp"
+#include "fe/element_faces.hpp"
+#include "fe/quadrature.hpp"
 
 #include <array>
 #include <cmath>

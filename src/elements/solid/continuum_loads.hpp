@@ -6,7 +6,7 @@
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
 #include "elements/solid/continuum_law.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/material.hpp"
 
 #include <span>

@@ -1,6 +1,6 @@
 #include "io/inp/model_builder.hpp"
 
-#include "fem/element_faces.hpp"
+#include "fe/element_faces.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>

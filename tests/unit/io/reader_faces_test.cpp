@@ -2,7 +2,7 @@
 // the face counts of io/inp n_faces() are exactly the faces the kernel accepts for pressure and for
 // heat loads, and the ends of the heat-conducting links (DC1D2, T2D2T, T3D2T) take S1/S2, F1/F2.
 #include "elements/element_kernel.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "io/inp/model_builder.hpp"
 #include "unit/io/reader_test_util.hpp"
 

@@ -2,8 +2,8 @@
 // against the field it must reproduce: a random linear field a + b . xi sampled at the points of
 // each element's rule comes back exactly at every node (corners and mid-side nodes) wherever the
 // rule has at least one point per corner; with fewer points the element's mean is used.
-#include "fem/quadrature.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/quadrature.hpp"
+#include "fe/shape_functions.hpp"
 #include "output/nodal_average.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // VtuWriter: well-formed VTK XML UnstructuredGrid with raw appended data
 // (UInt64 headers), values as handed over, and the .pvd collection.
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "output/vtu_writer.hpp"
 #include "test_util.hpp"
 #include "writer_fixture.hpp"

@@ -134,7 +134,7 @@ DeckMesh plate_mesh(const std::string& type, double L, double W, double H) {
 /// *DLOAD lines putting pressure p on every element face whose corner nodes satisfy `on`.
 template <class Pred>
 std::string face_loads(const DeckMesh& m, double p, Pred on) {
-  // Abaqus face corner nodes (0-based), see src/fem/element_faces.hpp.
+  // Abaqus face corner nodes (0-based), see src/fe/element_faces.hpp.
   static const std::vector<std::vector<int>> hex{{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1},
                                                  {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
   static const std::vector<std::vector<int>> tet{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};

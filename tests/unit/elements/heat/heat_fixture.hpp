@@ -3,7 +3,7 @@
 // (and elastic) material data, the kernel from the real factory, an ElementInput over test-owned
 // buffers, and the position of the temperature DOFs.
 #include "elements/element_kernel.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/model.hpp"
 #include "unit/elements/solid/continuum_fixture.hpp"
 

@@ -2,7 +2,7 @@
 // Helpers for the continuum element unit tests: a one-element model, the kernel built by the real
 // factory, an ElementInput over test-owned buffers, and finite-difference utilities.
 #include "elements/element_kernel.hpp"
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 #include "model/model.hpp"
 
 #include <cmath>

@@ -1,8 +1,8 @@
 // Distributed loads on continuum elements (equivalent nodal forces of pressure, GRAV and body
 // forces), the factory's input checks, and the shape functions / quadrature in src/fem.
 #include "continuum_fixture.hpp"
-#include "fem/element_faces.hpp"
-#include "fem/quadrature.hpp"
+#include "fe/element_faces.hpp"
+#include "fe/quadrature.hpp"
 
 #include <Eigen/Dense>
 #include <numbers>

@@ -1,7 +1,7 @@
 // Finite-difference checks of the continuum element tangents (internal forces and follower
 // pressure) for every element type, small strain and NLGEOM, with and without thermal strain.
 #include "continuum_fixture.hpp"
-#include "fem/element_faces.hpp"
+#include "fe/element_faces.hpp"
 
 #include <fmt/format.h>
 

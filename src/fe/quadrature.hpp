@@ -4,7 +4,7 @@
 /// Points are listed in Abaqus integration-point order (first parametric coordinate fastest for the
 /// Gauss product rules). Weights sum to the measure of the reference cell: 2 (line), 4 (quad),
 /// 8 (hex), 1/2 (triangle), 1/6 (tetrahedron), 1 (wedge).
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 
 #include <array>
 #include <span>

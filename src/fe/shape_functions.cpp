@@ -1,8 +1,8 @@
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 
 #include "common/error.hpp"
-#include "fem/element_faces.hpp"
-#include "fem/quadrature.hpp"
+#include "fe/element_faces.hpp"
+#include "fe/quadrature.hpp"
 
 namespace gapfem {
 

@@ -11,7 +11,7 @@
 /// With these orderings the face parametrisation x(xi, eta) has dx/dxi x dx/deta pointing INTO the
 /// element (3-D), and for a counter-clockwise 2-D element the edge tangent rotated by +90 degrees,
 /// (-dy/dxi, dx/dxi), points into the element.
-#include "fem/shape_functions.hpp"
+#include "fe/shape_functions.hpp"
 
 #include <array>
 #include <span>
