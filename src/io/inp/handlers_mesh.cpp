@@ -86,6 +86,7 @@ void handle_heading(BuildState& s, const Keyword& kw) {
   kw.mark_read(); // every line is heading text
   for (const auto& d : kw.data) lines.emplace_back(trim(d.text));
   while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  s.heading_untitled = lines.empty();
   std::size_t total = 0;
   for (const auto& l : lines) total += l.size() + 1;
   for (const auto& l : lines) {

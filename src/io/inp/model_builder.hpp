@@ -133,6 +133,9 @@ struct BuildState {
   bool in_step = false;
   bool history_warned = false; ///< the *OUTPUT, HISTORY warning was given (once per deck)
   std::unordered_set<std::string> noted_keywords; ///< print controls already remarked
+  /// The keyword just read was a *HEADING without a title line (a title written with a * reads
+  /// as an unknown keyword: its message says so)
+  bool heading_untitled = false;
   Step step;
   StepScratch scratch;
 
@@ -312,7 +315,7 @@ enum class FaceUse : std::uint8_t {
   Thermal   ///< Sn, Fn, *DSFLUX, *SFILM: elements with the temperature DOF 11
 };
 /// Number of faces S1..Sn (Pn, Fn) of an element type for a use (0: none). The counts match the
-/// kernels' supports_load: faces of continuum cells in Abaqus numbering (fem/element_faces.hpp:
+/// kernels' supports_load: faces of continuum cells in Abaqus numbering (fe/element_faces.hpp:
 /// bricks 6, tetrahedra 4, quadrilaterals 4, triangles 3) for pressure and heat loads, and the two
 /// ends of the heat-conducting links DC1D2, T2D2T, T3D2T (S1 at node 1, S2 at node 2) for heat
 /// loads only. Springs, beams, gaps and mechanical trusses have none.

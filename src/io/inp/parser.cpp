@@ -1,10 +1,12 @@
 #include "io/inp/parser.hpp"
 
 #include "io/inp/handlers.hpp"
+#include "io/inp/spelling.hpp"
 
 #include <array>
 #include <fmt/format.h>
 #include <unordered_map>
+#include <utility>
 
 namespace gapfem::inp {
 namespace {
@@ -249,11 +251,60 @@ bool unsupported_block(const std::string& key) {
          key == "CONTACTPAIR" || key == "CONTACTINTERFERENCE";
 }
 
-/// An unknown keyword (`keyword` empty) or an unknown parameter of `keyword`.
+/// The keyword a sub-option's block starts with (*OUTPUT for *NODE OUTPUT), or nullptr.
+const KeywordSpec* block_spec(Parent p) {
+  switch (p) {
+  case Parent::Material:
+    return find_spec("MATERIAL");
+  case Parent::Gap:
+    return find_spec("GAP");
+  case Parent::FieldOutput:
+  case Parent::HistoryOutput:
+    return find_spec("OUTPUT");
+  case Parent::ChangeFriction:
+    return find_spec("CHANGEFRICTION");
+  case Parent::Coupling:
+    return find_spec("COUPLING");
+  case Parent::BeamSection:
+    return find_spec("BEAMSECTION");
+  case Parent::ShellSection:
+    return find_spec("SHELLSECTION");
+  case Parent::UserElement:
+    return find_spec("USERELEMENT");
+  case Parent::None:
+  case Parent::Unsupported:
+    break;
+  }
+  return nullptr;
+}
+
+/// The parameters a keyword accepts (display names).
+std::vector<std::string> spec_params(const KeywordSpec& spec) {
+  std::vector<std::string> out;
+  if (spec.params == "*") return out;
+  std::string_view list = spec.params;
+  while (!list.empty()) {
+    const auto bar = list.find('|');
+    out.emplace_back(list.substr(0, bar));
+    if (bar == std::string_view::npos) break;
+    list = list.substr(bar + 1);
+  }
+  return out;
+}
+
+/// Reports a keyword or parameter the table does not have: `what` names it ("the keyword *X",
+/// "the parameter P of *X"), `sentence`, when given, says what it is instead (a misspelling, a
+/// parameter of the block keyword). Output requests and unused definitions are skipped with a
+/// warning under --ignore-unknown; everything else is an error.
 void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
-             const std::string& key, bool parameter) {
+             const std::string& key, bool parameter, const std::string& sentence = {}) {
   const bool skippable = parameter ? output_keyword(key) : skippable_keyword(key);
-  if (s.opts.ignore_unknown && skippable) {
+  if (!sentence.empty()) {
+    if (s.opts.ignore_unknown && skippable)
+      s.warn(loc, sentence + "; it was ignored (--ignore-unknown)");
+    else
+      s.error(loc, "", sentence);
+  } else if (s.opts.ignore_unknown && skippable) {
     s.warn(loc, what + " is not supported by gapfem and was ignored (--ignore-unknown)");
   } else if (s.opts.ignore_unknown) {
     s.error(loc, "",
@@ -266,6 +317,68 @@ void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
                 (skippable ? std::string(", or run with --ignore-unknown to skip it with a warning")
                            : std::string(" or replace it with what gapfem supports")));
   }
+}
+
+/// An unknown parameter of `spec`: a parameter of the block keyword above (FREQUENCY on *NODE
+/// OUTPUT belongs on *OUTPUT), a misspelling of one of its own (NODESET for NSET), or a parameter
+/// gapfem does not support.
+void unknown_parameter(BuildState& s, const Keyword& kw, const KeywordSpec& spec,
+                       const Parameter& p) {
+  std::string sentence;
+  if (const KeywordSpec* block = spec.parents != 0 ? block_spec(s.parent) : nullptr;
+      block && accepts(*block, p.key))
+    sentence = fmt::format("{} is a parameter of {}, not of {}; give it on the {} line above",
+                           p.name, block->name, kw.name, block->name);
+  else if (const auto near = foreign_parameter(p.key) ? std::vector<std::string>{}
+                                                      : misspelling_of(p.key, spec_params(spec));
+           !near.empty())
+    sentence = fmt::format("unknown parameter {}; did you mean {}?", p.name, one_of(near));
+  unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name), kw.key, true,
+          sentence);
+}
+
+/// An unknown keyword: a real Abaqus or CalculiX keyword gapfem lacks, a misspelling of a keyword
+/// (gapfem's or Abaqus's), or text written after a single star (a title or a comment).
+void unknown_keyword(BuildState& s, const Keyword& kw, bool after_empty_heading) {
+  if (foreign_keyword(kw.key)) {
+    unknown(s, kw.loc, fmt::format("the keyword {}", kw.name), kw.key, false);
+    if (unsupported_block(kw.key)) s.parent = Parent::Unsupported;
+    return;
+  }
+  // gapfem's keywords and Abaqus's, the closest wins
+  static const std::vector<std::string> known = [] {
+    std::vector<std::string> names;
+    for (const auto& spec : table()) names.emplace_back(spec.name);
+    for (const std::string& n : foreign_keyword_names())
+      if (!find_spec(canonical(n))) names.push_back("*" + n);
+    return names;
+  }();
+  const std::vector<std::string> near = misspelling_of(kw.key, known);
+  if (near.empty()) {
+    s.error(kw.loc, "",
+            after_empty_heading
+                ? "unknown keyword; the *HEADING above has no title line, and a line starting "
+                  "with a single * is a keyword line: write the title without the * (comments "
+                  "start with **)"
+                : "unknown keyword; if this line is a title or a comment: a line starting with a "
+                  "single * is a keyword line; a title or comment must not start with * "
+                  "(comments start with **)");
+    return;
+  }
+  std::string unsupported;
+  for (const std::string& n : near)
+    if (const KeywordSpec* spec = find_spec(canonical(n.substr(1))); spec) {
+      // what the meant keyword would have opened or given: no false follow-on errors
+      if (spec->opens != Parent::None) s.parent = Parent::Unsupported;
+      if (s.in_step && (spec->handler == handle_static || spec->handler == handle_heat_transfer ||
+                        spec->handler == handle_coupled))
+        s.scratch.procedure_given = true;
+    } else {
+      unsupported = fmt::format(" ({} is an Abaqus keyword gapfem does not support)", n);
+    }
+  s.error(kw.loc, "",
+          fmt::format("unknown keyword; did you mean {}?{}", one_of(near),
+                      near.size() == 1 ? unsupported : std::string()));
 }
 
 void dispatch(BuildState& s, Keyword& kw);
@@ -402,6 +515,7 @@ void expand_instance(BuildState& s) {
 }
 
 void dispatch(BuildState& s, Keyword& kw) {
+  const bool after_empty_heading = std::exchange(s.heading_untitled, false);
   if (record_keyword(s, kw)) return; // inside *PART or *INSTANCE: read per instance
   if (kw.failed) {                   // its keyword line was reported by the lexer
     note_failed_definition(s, kw);
@@ -429,8 +543,7 @@ void dispatch(BuildState& s, Keyword& kw) {
                           kw.name));
       return;
     }
-    unknown(s, kw.loc, fmt::format("the keyword {}", kw.name), kw.key, false);
-    if (unsupported_block(kw.key)) s.parent = Parent::Unsupported;
+    unknown_keyword(s, kw, after_empty_heading);
     return;
   }
   kw.name = std::string(spec->name);
@@ -465,8 +578,7 @@ void dispatch(BuildState& s, Keyword& kw) {
     return;
   }
   for (const auto& p : kw.params)
-    if (!accepts(*spec, p.key))
-      unknown(s, kw.loc, fmt::format("the parameter {} of {}", p.name, kw.name), kw.key, true);
+    if (!accepts(*spec, p.key)) unknown_parameter(s, kw, *spec, p);
   spec->handler(s, kw);
   report_unread_lines(s, kw);
   if (spec->handler == handle_end_instance) expand_instance(s);

@@ -476,5 +476,50 @@ TEST(ReaderSyntax, UnsupportedProcedureIsOneError) {
   EXPECT_EQ(e.find("no procedure"), std::string::npos) << e;
 }
 
+TEST(ReaderSyntax, AMisspeltKeywordOrParameterIsNamedWithWhatWasMeant) {
+  // a misspelling of a keyword gapfem knows; its block's sub-options raise nothing more
+  const std::string e = error_text(std::string(kTrussModel) + "*MATERAL, NAME=M2\n*ELASTIC\n1., "
+                                                              "0.3\n*SURFACE BEHAVIOUR\n");
+  EXPECT_CONTAINS(e, "*MATERAL: unknown keyword; did you mean *MATERIAL?");
+  EXPECT_CONTAINS(e, "*SURFACE BEHAVIOUR: unknown keyword; did you mean *SURFACE BEHAVIOR?");
+  EXPECT_EQ(e.find("*ELASTIC"), std::string::npos) << e;
+  // a misspelling of an Abaqus keyword gapfem lacks says so
+  EXPECT_CONTAINS(error_text(std::string(kTrussModel) + "*PLASTC\n100., 0.\n"),
+                  "*PLASTC: unknown keyword; did you mean *PLASTIC? (*PLASTIC is an Abaqus "
+                  "keyword gapfem does not support)");
+  // a real Abaqus keyword is never taken for a misspelling (*PLASTIC is one letter from *ELASTIC)
+  EXPECT_CONTAINS(error_text(std::string(kTrussModel) + "*PLASTIC\n100., 0.\n"),
+                  "*PLASTIC: the keyword *PLASTIC is not supported by gapfem");
+  // a misspelt procedure is the step's procedure: no "the step has no procedure" after it
+  const std::string p = error_text(std::string(kTrussModel) + "*STEP\n*STATC\n*END STEP\n");
+  EXPECT_CONTAINS(p, "*STATC: unknown keyword; did you mean *STATIC?");
+  EXPECT_EQ(p.find("procedure"), std::string::npos) << p;
+  // parameters: a misspelling or synonym of the keyword's own, or one of the block keyword above
+  const std::string steps = std::string(kTrussModel) + "*STEP\n*STATIC\n";
+  EXPECT_CONTAINS(error_text(steps + "*NODE PRINT, NODESET=ALL\nU\n*END STEP\n"),
+                  "*NODE PRINT: unknown parameter NODESET; did you mean NSET?");
+  EXPECT_CONTAINS(error_text(steps + "*EL PRINT, ELSTE=TRUSS\nS\n*END STEP\n"),
+                  "*EL PRINT: unknown parameter ELSTE; did you mean ELSET?");
+  EXPECT_CONTAINS(error_text(steps + "*OUTPUT, FIELD\n*NODE OUTPUT, FREQUENCY=2\nU\n*END STEP\n"),
+                  "*NODE OUTPUT: FREQUENCY is a parameter of *OUTPUT, not of *NODE OUTPUT; give "
+                  "it on the *OUTPUT line above");
+  EXPECT_CONTAINS(error_text(std::string(kTrussModel) + "*MATERIAL, NAME=M2\n*DENSITY, NAME=X\n1."
+                                                        "\n"),
+                  "NAME is a parameter of *MATERIAL, not of *DENSITY");
+  // with --ignore-unknown an output request's misspelt parameter is skipped with the same words
+  const Model m = read(steps + "*NODE PRINT, NODESET=ALL\nU\n*END STEP\n", ReadOptions{true});
+  EXPECT_EQ(
+      test::count_warnings(m, "unknown parameter NODESET; did you mean NSET?; it was ignored"), 1);
+}
+
+TEST(ReaderSyntax, TextAfterASingleStarIsSaidToBeOne) {
+  EXPECT_CONTAINS(error_text("*HEADING\n*Block on gap supports\n" + std::string(kTrussModel)),
+                  "deck.inp:2: *BLOCK ON GAP SUPPORTS: unknown keyword; the *HEADING above has no "
+                  "title line");
+  EXPECT_CONTAINS(error_text(std::string(kTrussModel) + "* the supports of the block\n"),
+                  "*THE SUPPORTS OF THE BLOCK: unknown keyword; if this line is a title or a "
+                  "comment: a line starting with a single * is a keyword line");
+}
+
 } // namespace
 } // namespace gapfem
