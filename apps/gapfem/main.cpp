@@ -4,6 +4,7 @@
 #include "app/job.hpp"
 #include "common/log.hpp"
 #include "linalg/blas_workspace.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "parallel/parallel.hpp"
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -59,34 +62,30 @@ int check_main(int argc, char** argv) {
   }
 }
 
-/// The backend --solver names, or the default: CHOLMOD on one process, MUMPS under mpirun.
-/// Returns false (with a message) for a choice this build or this run cannot honour.
+/// The backend --solver names (from the registry: linalg's and parallel's backends), or the
+/// default: cholmod on one process, mumps under mpirun. Returns false (with a message) for a choice
+/// this build or this run cannot honour.
 bool choose_solver(const std::string& name, gapfem::JobOptions& options) {
-  using gapfem::SolverBackend;
   const bool ranks = gapfem::parallel::size() > 1;
-  if (name == "auto") {
-    options.solver = ranks ? SolverBackend::Mumps : SolverBackend::Cholmod;
-    return true;
-  }
-  if (name == "cholmod") {
-    if (ranks) {
-      std::fprintf(stderr,
-                   "gapfem: --solver cholmod solves on one process, but mpirun started "
-                   "%d: use --solver mumps or --solver iterative\n",
-                   gapfem::parallel::size());
-      return false;
-    }
-    options.solver = SolverBackend::Cholmod;
-    return true;
-  }
-  if (!gapfem::parallel::available()) {
-    std::fprintf(stderr,
-                 "gapfem: --solver %s needs PETSc, and this gapfem was built without it: "
-                 "install Debian's petsc-dev (scripts/install-deps.sh) and build again\n",
-                 name.c_str());
+  options.solver = name == "auto" ? (ranks ? "mumps" : "cholmod") : name;
+  const gapfem::SolverBackend* b = gapfem::find_solver_backend(options.solver);
+  if (!b) {
+    std::fprintf(stderr, "gapfem: there is no solver '%s'; this gapfem has: %s\n", name.c_str(),
+                 fmt::format("{}", fmt::join(gapfem::solver_backend_names(), ", ")).c_str());
     return false;
   }
-  options.solver = name == "mumps" ? SolverBackend::Mumps : SolverBackend::Iterative;
+  if (!b->unavailable.empty()) {
+    std::fprintf(stderr, "gapfem: --solver %s: %s\n", options.solver.c_str(),
+                 b->unavailable.c_str());
+    return false;
+  }
+  if (ranks && b->one_process) {
+    std::fprintf(stderr,
+                 "gapfem: --solver %s solves on one process, but mpirun started %d: use "
+                 "--solver mumps or --solver iterative\n",
+                 options.solver.c_str(), gapfem::parallel::size());
+    return false;
+  }
   return true;
 }
 
@@ -150,12 +149,15 @@ int main(int argc, char** argv) {
                  "the job a deck with *RESTART, READ continues (Abaqus's oldjob=): a job name or "
                  "the path of its .res file");
   std::string solver = "auto";
+  gapfem::parallel::register_backends(); // the registry's names are --solver's choices
+  std::vector<std::string> solvers{"auto"};
+  for (const std::string& name : gapfem::solver_backend_names()) solvers.push_back(name);
   app.add_option("--solver", solver,
                  "the linear solver: cholmod (one process; the default), mumps (PETSc + MUMPS, "
                  "direct, any number of processes; the default under mpirun) or iterative "
                  "(PETSc: GMRES with an AMG block preconditioner, for the largest models); PETSc "
                  "options such as -ksp_rtol 1e-12 or -inner_pc_type hypre are passed to PETSc")
-      ->check(CLI::IsMember({"auto", "cholmod", "mumps", "iterative"}));
+      ->check(CLI::IsMember(solvers));
   app.set_version_flag("--version", std::string("gapfem ") + GAPFEM_VERSION);
   try {
     app.parse(argc, argv);
@@ -172,7 +174,8 @@ int main(int argc, char** argv) {
   int code = gapfem::kExitOk;
   std::string error;
   try {
-    if (!start_processes(petsc_options, solver == "mumps" || solver == "iterative"))
+    const gapfem::SolverBackend* asked = gapfem::find_solver_backend(solver);
+    if (!start_processes(petsc_options, asked && asked->needs_processes))
       return gapfem::kExitInputError;
     if (!choose_solver(solver, options)) {
       code = gapfem::kExitInputError;

@@ -33,7 +33,7 @@ struct JobOptions {
   FactorReuse factor_reuse = FactorReuse::Auto; ///< --factor-reuse (docs/performance.md)
   /// residual-only evaluations while a factor is reused (GAPFEM_RESIDUAL_ONLY=0: off)
   bool residual_only = true;
-  SolverBackend solver = SolverBackend::Cholmod; ///< --solver (docs/parallel.md)
+  std::string solver = "cholmod"; ///< --solver: a registered backend's name (docs/parallel.md)
   /// --restart: continue this job from the last complete record of its job.res (docs/restart.md)
   bool restart = false;
   /// --oldjob: the job a deck with *RESTART, READ continues (a job name, found in the working or

@@ -17,8 +17,10 @@
 #include "linalg/factor_reuse.hpp"
 #include "linalg/linear_solver.hpp" // SingularSystem
 
+#include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -52,14 +54,6 @@ struct KktStatistics {
   double constraint_residual = 0.0;
   /// Nothing was solved: the system needs the current tangent (KktOptions::matrix_current).
   bool needs_matrix = false;
-};
-
-/// The available backends (the CLI's `--solver`).
-enum class SolverBackend {
-  Cholmod,  ///< KktSolver: CHOLMOD (UMFPACK when indefinite or unsymmetric), one process
-  Mumps,    ///< PETSc + MUMPS: LDL^T (LU when unsymmetric) of the whole bordered system, any ranks
-  Iterative ///< PETSc: GMRES on the bordered system, block preconditioner with AMG (GAMG), any
-            ///< ranks
 };
 
 /// Vectors an algebraic multigrid should interpolate well (the rigid-body modes): `count` vectors
@@ -106,12 +100,29 @@ struct KktTuning {
   bool dense_multipliers = true; ///< the dense multiplier system of a kept factor; off: Krylov
 };
 
-/// Throws std::runtime_error when the backend is not in this build (no PETSc) or cannot run here
-/// (the serial CHOLMOD backend under mpirun with more than one rank).
-std::unique_ptr<ConstrainedSolver> make_constrained_solver(SolverBackend backend,
+/// A backend behind the seam, chosen by name (`--solver NAME`). Backends register themselves
+/// with register_solver_backend(): "cholmod" (KktSolver) here in linalg, "mumps" and "iterative"
+/// (PetscKktSolver) by parallel::register_backends(). A new backend is its own files plus one
+/// registration (docs/architecture.md, "Adding a backend").
+struct SolverBackend {
+  std::string name;             ///< as --solver spells it
+  std::string summary;          ///< one line: what it is
+  bool one_process = false;     ///< solves on one process only (not under mpirun with several)
+  bool needs_processes = false; ///< MPI/PETSc are started before the run (parallel::start)
+  std::string unavailable;      ///< why this build cannot use it ("" when it can)
+  std::function<std::unique_ptr<ConstrainedSolver>(const KktTuning&)> make;
+};
+
+/// Adds a backend (or replaces the one of the same name).
+void register_solver_backend(SolverBackend backend);
+/// The backend of that name, or nullptr.
+const SolverBackend* find_solver_backend(std::string_view name);
+/// Every registered backend's name, in the order of registration.
+std::vector<std::string> solver_backend_names();
+/// The backend's solver; std::runtime_error naming the backends there are when `name` is not one,
+/// or the reason when this build cannot use it.
+std::unique_ptr<ConstrainedSolver> make_constrained_solver(std::string_view name,
                                                            const KktTuning& tuning = {});
-/// The backend's name as the CLI spells it (cholmod, mumps, iterative).
-std::string_view backend_name(SolverBackend backend);
 
 /// Augmentation weights of the rows of C: ks_r is the structure's stiffness along row r (from the
 /// diagonal of K at its DOFs), R_r = augmentation x ks_r, kept below half the stiffness 1/E_r of a

@@ -1,4 +1,5 @@
 // parallel.hpp for a build without PETSc: one process.
+#include "linalg/constrained_solver.hpp"
 #include "parallel/parallel.hpp"
 
 #include <stdexcept>
@@ -7,6 +8,13 @@ namespace gapfem::parallel {
 
 bool available() {
   return false;
+}
+void register_backends() {
+  const std::string why = "this gapfem was built without PETSc, so it has no distributed or "
+                          "iterative solver: install Debian's petsc-dev (scripts/install-deps.sh) "
+                          "and build again";
+  for (const char* name : {"mumps", "iterative"})
+    register_solver_backend({name, "PETSc (not in this build)", false, true, why, {}});
 }
 void start(const std::vector<std::string>&) {
   throw std::runtime_error("this gapfem was built without PETSc, so it has no distributed or "

@@ -14,6 +14,10 @@ namespace gapfem::parallel {
 
 /// True when this build has the PETSc backend (and MPI).
 bool available();
+/// Registers this layer's solver backends with linalg's registry (register_solver_backend):
+/// "mumps" and "iterative" (PetscKktSolver), or, in a build without PETSc, the same names with
+/// the reason they are unavailable. Idempotent; called by the solver and application layers.
+void register_backends();
 /// Start MPI and PETSc (once; later calls do nothing). `petsc_options` are PETSc's own command-line
 /// options (`-ksp_rtol 1e-12`, `-inner_pc_type hypre`, …), inserted into its options database.
 /// Throws std::runtime_error when the build has no PETSc.

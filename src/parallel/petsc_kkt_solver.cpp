@@ -375,4 +375,25 @@ KktStatistics PetscKktSolver::Impl::solve_mumps(CsrMatrix& K, std::span<const do
   return out;
 }
 
+namespace parallel {
+
+void register_backends() {
+  auto make = [](PetscKktSolver::Method method) {
+    return [method](const KktTuning&) -> std::unique_ptr<ConstrainedSolver> {
+      start(); // MPI and PETSc, when the run did not start them yet
+      return std::make_unique<PetscKktSolver>(method);
+    };
+  };
+  register_solver_backend({"mumps",
+                           "PETSc + MUMPS: LDL^T (LU when unsymmetric) of the whole bordered "
+                           "system, any number of processes",
+                           false, true, "", make(PetscKktSolver::Method::Mumps)});
+  register_solver_backend({"iterative",
+                           "PETSc: GMRES on the bordered system with an AMG block preconditioner, "
+                           "any number of processes",
+                           false, true, "", make(PetscKktSolver::Method::Iterative)});
+}
+
+} // namespace parallel
+
 } // namespace gapfem

@@ -8,6 +8,7 @@
 #include "fem/rigid_body_modes.hpp"
 #include "linalg/kkt_solver.hpp"
 #include "model/model.hpp"
+#include "parallel/parallel.hpp"
 #include "solver/analysis_impl.hpp"
 #include "solver/diagnostics.hpp"
 #include "solver/finite_check.hpp"
@@ -68,10 +69,24 @@ const std::vector<StepSummary>& Analysis::step_summaries() const {
   return _impl->summaries;
 }
 
+namespace {
+/// The backend the options name, from the registry (linalg's and parallel's backends).
+std::unique_ptr<ConstrainedSolver> backend(const AnalysisOptions& o) {
+  parallel::register_backends();
+  const SolverBackend* b = find_solver_backend(o.solver);
+  if (b && b->one_process && parallel::size() > 1)
+    throw std::runtime_error(fmt::format("--solver {} solves on one process, but this run has "
+                                         "several (mpirun): use --solver mumps or --solver "
+                                         "iterative",
+                                         o.solver));
+  return make_constrained_solver(o.solver, o.kkt);
+}
+} // namespace
+
 Analysis::Impl::Impl(const Model& m, std::vector<ResultWriter*> w, AnalysisOptions o)
     : model(m), writers(std::move(w)), disc(m, o.kernels),
       assembler(disc, o.threads > 0 ? o.threads : default_thread_count(o.ranks_here)),
-      solver(make_constrained_solver(o.solver, o.kkt)), options(std::move(o)) {
+      solver(backend(o)), options(std::move(o)) {
   const LocalIndex ns = disc.dofs().n_slots();
   st.u.assign(static_cast<std::size_t>(ns), 0.0);
   set_initial_temperatures(m, disc.dofs(), st.u);

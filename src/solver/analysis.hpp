@@ -29,7 +29,7 @@ struct AnalysisOptions {
   FactorReuse factor_reuse = FactorReuse::Auto; ///< see KktSolver
   /// evaluate the residual alone while the solver reuses its factor (NewtonControls::residual_only)
   bool residual_only = true;
-  SolverBackend solver = SolverBackend::Cholmod; ///< the constrained-system solver's backend
+  std::string solver = "cholmod"; ///< the constrained-system solver's backend (by name)
   /// Restart (docs/restart.md): where the records of steps with *RESTART, WRITE go (job.res;
   /// empty: none are written) and the header naming the deck (the fingerprint is filled in).
   std::filesystem::path restart_file;

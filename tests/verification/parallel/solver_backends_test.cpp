@@ -27,27 +27,26 @@ namespace {
   GTEST_SKIP() << "this build has no PETSc (petsc-dev): the mumps and iterative backends are "     \
                   "not tested"
 
-JobResult run_file(const std::filesystem::path& deck, SolverBackend backend) {
+JobResult run_file(const std::filesystem::path& deck, const std::string& backend) {
   JobOptions o;
   o.deck = deck;
   o.write_files = false;
   o.quiet = true;
   o.solver = backend;
-  o.factor_reuse = backend == SolverBackend::Cholmod ? FactorReuse::Never : FactorReuse::Auto;
+  o.factor_reuse = backend == "cholmod" ? FactorReuse::Never : FactorReuse::Auto;
   return run_job(o);
 }
-JobResult run_text(const std::string& text, SolverBackend backend) {
-  return run_file(write_deck(text, std::string(backend_name(backend))), backend);
+JobResult run_text(const std::string& text, const std::string& backend) {
+  return run_file(write_deck(text, std::string(backend)), backend);
 }
 
 /// The deck with each PETSc backend against CHOLMOD; returns how many iteration histories were
 /// identical.
 int compare_backends(const std::string& text, double tol, double k_max, const std::string& tag) {
-  const JobResult oracle = run_text(text, SolverBackend::Cholmod);
+  const JobResult oracle = run_text(text, "cholmod");
   int same = 0;
-  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
-    same += expect_same(oracle, run_text(text, b), tol, k_max,
-                        tag + " with " + std::string(backend_name(b)));
+  for (const char* b : {"mumps", "iterative"})
+    same += expect_same(oracle, run_text(text, b), tol, k_max, tag + " with " + std::string(b));
   return same;
 }
 
@@ -126,19 +125,19 @@ TEST(SolverBackends, ExamplesAndStructuralDecks) {
                          "tests/verification/structural/thermal_gradient.inp",
                          "tests/verification/assembly/cae_constraints.inp"};
   for (const char* deck : decks) {
-    const JobResult oracle = run_file(src / deck, SolverBackend::Cholmod);
+    const JobResult oracle = run_file(src / deck, "cholmod");
     ASSERT_EQ(oracle.exit_code, 0) << deck << ": " << oracle.error;
-    for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
+    for (const char* b : {"mumps", "iterative"})
       expect_same(oracle, run_file(src / deck, b), 1e-8, 0.0,
-                  std::string(deck) + " with " + std::string(backend_name(b)));
+                  std::string(deck) + " with " + std::string(b));
   }
   // friction on the supports: the stick/slip path is set by the Newton tolerance (5e-3 of the
   // flux), so the full-Newton paths are compared to 1e-5
   const JobResult oracle =
-      run_file(src / "examples/01_pipe_on_supports/pipe_on_supports.inp", SolverBackend::Cholmod);
-  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative})
+      run_file(src / "examples/01_pipe_on_supports/pipe_on_supports.inp", "cholmod");
+  for (const char* b : {"mumps", "iterative"})
     expect_same(oracle, run_file(src / "examples/01_pipe_on_supports/pipe_on_supports.inp", b),
-                1e-5, 0.0, "pipe on supports with " + std::string(backend_name(b)));
+                1e-5, 0.0, "pipe on supports with " + std::string(b));
 }
 
 TEST(SolverBackends, ALinearProblemTakesOneIteration) {
@@ -174,10 +173,10 @@ TEST(SolverBackends, ALinearProblemTakesOneIteration) {
 41, 3, -1.
 *END STEP
 )";
-  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative}) {
+  for (const char* b : {"mumps", "iterative"}) {
     const JobResult r = run_text(deck, b);
     ASSERT_EQ(r.exit_code, 0) << r.error;
-    EXPECT_EQ(r.run.stats.iterations, 1) << backend_name(b);
+    EXPECT_EQ(r.run.stats.iterations, 1) << b;
   }
 }
 
@@ -187,7 +186,7 @@ TEST(SolverBackends, ABodyHeldOnlyByClosedGaps) {
   // (MUMPS pivots across it; the iterative method's augmentation makes A definite)
   const std::string deck = truss_on_gaps(2, 0.0, "1, 2, -10.\n2, 2, -30.\n2, 1, 100.\n");
   compare_backends(deck, 1e-8, 0.0, "truss on two gaps");
-  const JobResult r = run_text(deck, SolverBackend::Iterative);
+  const JobResult r = run_text(deck, "iterative");
   ASSERT_EQ(r.exit_code, 0) << r.error;
   EXPECT_NEAR(gap(r, last_frame(r), 11).normal_force, 30.0, 1e-8);
 }
@@ -203,12 +202,12 @@ TEST(SolverBackends, ASingularModelIsDiagnosedAsWithCholmod) {
   REQUIRE_PETSC();
   // the same truss with one gap open: a rigid-body mode the diagnosis names by its nodes
   const std::string deck = truss_on_gaps(1, 0.1, "2, 2, -30.\n");
-  const JobResult oracle = run_text(deck, SolverBackend::Cholmod);
+  const JobResult oracle = run_text(deck, "cholmod");
   ASSERT_NE(oracle.exit_code, 0);
-  for (SolverBackend b : {SolverBackend::Mumps, SolverBackend::Iterative}) {
+  for (const char* b : {"mumps", "iterative"}) {
     const JobResult r = run_text(deck, b);
-    EXPECT_EQ(r.exit_code, oracle.exit_code) << backend_name(b) << ": " << r.error;
-    EXPECT_EQ(r.error, oracle.error) << backend_name(b);
+    EXPECT_EQ(r.exit_code, oracle.exit_code) << b << ": " << r.error;
+    EXPECT_EQ(r.error, oracle.error) << b;
   }
 }
 
@@ -219,14 +218,14 @@ TEST(SolverBackends, WhereTheKrylovMethodFailsTheStepIsFactorisedIfTheFactorFits
   // step: CHOLMOD's answer
   const std::filesystem::path deck =
       std::filesystem::path(GAPFEM_SOURCE_DIR) / "tests/verification/structural/beam_rollup_2d.inp";
-  const JobResult oracle = run_file(deck, SolverBackend::Cholmod);
+  const JobResult oracle = run_file(deck, "cholmod");
   ASSERT_EQ(oracle.exit_code, 0) << oracle.error;
   // (its reactions are zero in theory, a pure end moment M = 628: they compare at the round-off
   // of the force scale M/L, through k_max = 1e3 per unit of displacement)
-  expect_same(oracle, run_file(deck, SolverBackend::Iterative), 1e-8, 1e3, "beam roll-up");
+  expect_same(oracle, run_file(deck, "iterative"), 1e-8, 1e3, "beam roll-up");
   // ... unless that factor cannot fit: then the run stops with a sentence that says so
   ::setenv("GAPFEM_MEMORY_LIMIT", "1", 1);
-  const JobResult r = run_file(deck, SolverBackend::Iterative);
+  const JobResult r = run_file(deck, "iterative");
   ::unsetenv("GAPFEM_MEMORY_LIMIT");
   EXPECT_EQ(r.exit_code, kExitNoConvergence);
   EXPECT_NE(r.error.find("did not converge"), std::string::npos) << r.error;
