@@ -267,6 +267,9 @@ JobResult run_job(const JobOptions& given) {
       aopt.restart_header.job = job;
     }
     aopt.resume = resume;
+    aopt.generation_deck_reader = [](const std::filesystem::path& deck) {
+      return std::make_unique<Model>(read_deck(deck)); // *SUBSTRUCTURE PATH: its stresses
+    };
     apply_environment(aopt); // the GAPFEM_* switches (app/environment.hpp)
     Analysis analysis(*model, ptrs, aopt);
     result.run = analysis.run();

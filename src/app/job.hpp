@@ -4,7 +4,7 @@
 /// and by the tests (which inspect the in-memory results).
 #include "linalg/constrained_solver.hpp"
 #include "linalg/factor_reuse.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <memory>

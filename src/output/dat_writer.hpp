@@ -5,7 +5,7 @@
 /// (docs/results.md describes the layout).
 #include "output/nodal_average.hpp"
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <vector>

@@ -6,7 +6,7 @@
 /// every variable gapfem has but the applied loads CF, CM, CFL (docs/results.md, "ParaView
 /// frames").
 #include "model/model.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <array>
 #include <vector>

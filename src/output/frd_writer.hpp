@@ -7,7 +7,7 @@
 /// no step asks for file output.
 #include "output/nodal_average.hpp"
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <string>

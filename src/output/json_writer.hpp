@@ -8,7 +8,7 @@
 /// or a full disk leaves the last one). end() publishes the final document and removes the part.
 #include "common/timer.hpp"
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 #include "output/shadow_document.hpp"
 
 #include <array>

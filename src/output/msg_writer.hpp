@@ -7,7 +7,7 @@
 /// terminal's level also go on to the terminal.
 #include "common/log.hpp"
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -12,7 +12,7 @@
 /// reproduced exactly at the nodes of every element of the first two groups.
 #include "model/cell_shape.hpp"
 #include "model/model.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <map>
 #include <string_view>

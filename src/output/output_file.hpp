@@ -6,7 +6,7 @@
 /// averaging of integration-point values).
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <cstdint>
 #include <cstdio>

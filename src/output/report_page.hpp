@@ -4,7 +4,7 @@
 /// one JSON object, the step self-check table and the warnings. The page's script draws the plots
 /// on load (no animation) and records on <body> how many charts it drew and how many canvases
 /// hold paint (data-charts, data-painted), which the browser test reads.
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <fmt/format.h>
 #include <string>

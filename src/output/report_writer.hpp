@@ -6,7 +6,7 @@
 /// (`--report-gaps`) or else the most loaded ones, the contact-set size per increment, the Newton
 /// residual history with the cut-back attempts marked, the step self-checks and the time split.
 /// Written at the end of the run, also of one that stops early.
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <string>

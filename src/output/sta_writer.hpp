@@ -3,7 +3,7 @@
 /// job.sta: one line per increment attempt in the Abaqus status-file layout,
 /// flushed after every line so that `tail -f job.sta` follows the run.
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 

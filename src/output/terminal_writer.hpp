@@ -3,7 +3,7 @@
 /// Progress on the terminal through gapfem::log: a line per increment attempt,
 /// a line per step and a final summary (wall time, counts, time split,
 /// warnings). Never writes to std::cout itself.
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 namespace gapfem {
 

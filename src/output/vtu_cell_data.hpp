@@ -5,7 +5,7 @@
 /// a beam's most stressed section point, where the extreme fibre is), SF/SM section forces and
 /// moments, HFL, and the gap status, clearance and pressure.
 #include "model/model.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <cstdint>
 #include <vector>

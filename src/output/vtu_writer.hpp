@@ -4,7 +4,7 @@
 /// appended binary data, UInt64 block headers) per field frame, and the
 /// collection job.pvd listing them by total time.
 #include "output/output_file.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 #include "output/vtu_cell_data.hpp"
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 /// @file writers.hpp
 /// The set of result writers of a job: job.dat, job.sta, job.results.json,
 /// ParaView files and job.frd (docs/results.md), created together from WriterOptions.
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <memory>

@@ -112,6 +112,10 @@ RunSummary Analysis::run() {
   } else {
     for (auto* w : m.writers) w->begin(m.model);
   }
+  if (std::any_of(m.model.steps.begin(), m.model.steps.end(),
+                  [](const Step& s) { return !s.recover_substructures.empty(); }))
+    m.recoverer =
+        std::make_unique<SubstructureRecoverer>(m.model, m.options.generation_deck_reader);
   m.open_restart_file();
   RunSummary run;
   for (int i = first; i < static_cast<int>(m.model.steps.size()); ++i) {

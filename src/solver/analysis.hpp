@@ -5,8 +5,9 @@
 /// self-checks; carries the committed state, load history and contact status between steps.
 #include "elements/element_kernel.hpp"
 #include "linalg/constrained_solver.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 #include "solver/restart_file.hpp"
+#include "solver/substructure_recovery.hpp"
 
 #include <filesystem>
 #include <memory>
@@ -43,6 +44,9 @@ struct AnalysisOptions {
     ResumeFiles files;             ///< the result files to continue
   };
   std::optional<Resume> resume;
+  /// *SUBSTRUCTURE PATH: reads a substructure's generation deck again for its stresses (the
+  /// application layer gives io's reader; empty: recovered displacements only)
+  DeckReader generation_deck_reader;
   /// Where a *SUBSTRUCTURE GENERATE step writes its library file (empty: nowhere; tests)
   std::filesystem::path output_dir;
 };

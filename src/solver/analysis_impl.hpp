@@ -122,6 +122,8 @@ struct Analysis::Impl {
   StepChecks checks(StepProblem& prob);
 
   bool want_gap_samples = false;
+  /// *SUBSTRUCTURE PATH: the libraries of the substructures the steps recover (none: nullptr)
+  std::unique_ptr<SubstructureRecoverer> recoverer;
   double step_damping_peak = 0.0;
   /// Automatic stabilization: M* (built once), and what CONTINUE=YES hands to the next step.
   std::shared_ptr<const std::vector<double>> unit_mass;

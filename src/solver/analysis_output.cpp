@@ -167,6 +167,7 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   }
   if (const std::string bad = first_non_finite_output(model, fr); !bad.empty())
     throw AnalysisError(non_finite_message(increment, bad));
+  if (recoverer && (fr.field_due || last)) fr.substructures = recoverer->recover(model, index, fr);
   for (auto* w : writers) w->frame(model, index, fr);
 }
 

@@ -6,7 +6,7 @@
 /// reactions and every element's history and multipliers (gap forces) after each converged
 /// increment, and the element output of each frame before it is written; the first value found
 /// stops the analysis (AnalysisError, exit 2) with a sentence naming where it is.
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <span>
 #include <string>

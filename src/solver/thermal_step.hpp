@@ -6,7 +6,7 @@
 #include "common/archive.hpp"
 #include "fem/discretization.hpp"
 #include "fem/dof_map.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <span>
 #include <vector>

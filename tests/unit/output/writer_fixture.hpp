@@ -14,7 +14,7 @@
 // due; only the gap's element output is present. Frame 2 (increment 2, step
 // time 1.0): last in step, everything due.
 #include "model/model.hpp"
-#include "output/results.hpp"
+#include "results/results.hpp"
 
 #include <array>
 #include <filesystem>

@@ -97,6 +97,23 @@ struct StepChecks {
   double allae = 0.0, allse = 0.0;
 };
 
+/// One substructure element's internal results at a frame (*SUBSTRUCTURE PATH): recovered by the
+/// analysis (solver/substructure_recovery), written by SubstructureRecoveryWriter.
+struct RecoveredSubstructure {
+  ElemId elem = -1;
+  std::string label, type;   ///< the Zn element's label and its substructure type ("Z1")
+  std::string library, deck; ///< the library file and the deck that generated it
+  bool stresses = false;     ///< the generation model was read: its elements' S and E follow
+  std::string note;          ///< why there are no stresses ("" when there are)
+  /// U1-3, UR1-3 and NT of every node of the substructure, by its label in the generation deck
+  std::map<Label, std::array<double, 7>> nodes;
+  struct Element {
+    std::string label, type;
+    std::vector<std::pair<ElemVar, std::vector<double>>> averages; ///< S and E over the points
+  };
+  std::vector<Element> elements;
+};
+
 /// The committed state at one output point, with what is due at this point.
 struct Frame {
   int step = 0;
@@ -115,6 +132,8 @@ struct Frame {
   /// the frame at the end of the step then holds every variable)
   std::vector<bool> field_output_due;
   std::vector<bool> file_output_due; ///< per Step::file_outputs (job.frd)
+  /// The step's *SUBSTRUCTURE PATH elements, recovered when field output is due or the step ends
+  std::vector<RecoveredSubstructure> substructures;
 
   const ElementResult* element(ElemId e) const {
     if (e < 0 || e >= static_cast<ElemId>(element_slot.size()) || element_slot[e] < 0)
