@@ -158,144 +158,180 @@ void require_steps(const Model& model, const std::filesystem::path& deck) {
                    "*STEP / *STATIC / loads and boundary conditions / *END STEP");
 }
 
-JobResult run_job(const JobOptions& given) {
-  JobOptions options = given;
-  options.deck = resolve_deck(given.deck);
-  JobResult result;
-  Stopwatch watch;
-  const std::string job =
-      options.job_name.empty() ? options.deck.stem().string() : options.job_name;
-  std::filesystem::path dir = options.output_dir;
-  if (dir.empty()) dir = options.deck.has_parent_path() ? options.deck.parent_path() : ".";
-  std::optional<log::Level> previous_level;
-  if (options.quiet || options.verbose || options.silent) {
-    previous_level = log::level();
-    log::set_level(options.silent  ? log::Level::Quiet
-                   : options.quiet ? log::Level::Warning
-                                   : log::Level::Debug);
-  }
-  auto restore = [&] {
-    if (previous_level) log::set_level(*previous_level);
-  };
+namespace {
 
+/// Sets the log level a job asks for and gives the previous one back when the job ends.
+class ScopedLogLevel {
+ public:
+  explicit ScopedLogLevel(const JobOptions& o) {
+    if (!o.quiet && !o.verbose && !o.silent) return;
+    _previous = log::level();
+    log::set_level(o.silent  ? log::Level::Quiet
+                   : o.quiet ? log::Level::Warning
+                             : log::Level::Debug);
+  }
+  ~ScopedLogLevel() {
+    if (_previous) log::set_level(*_previous);
+  }
+  ScopedLogLevel(const ScopedLogLevel&) = delete;
+  ScopedLogLevel& operator=(const ScopedLogLevel&) = delete;
+
+ private:
+  std::optional<log::Level> _previous;
+};
+
+/// What a job is set up with before anything is solved.
+struct JobSetup {
+  JobOptions options;
+  std::string job;
+  std::filesystem::path dir;
   std::shared_ptr<Model> model;
   std::optional<AnalysisOptions::Resume> resume;
-  JobLock lock; // held until every writer is gone (declared before them)
-  try {
-    ReadOptions ro;
-    ro.ignore_unknown = options.ignore_unknown;
-    if (!options.oldjob.empty())
-      ro.restart_base = [&](const RestartRead& req) {
-        const std::filesystem::path file = oldjob_file(options.oldjob, dir);
-        RestartIndex idx;
-        try {
-          idx = read_restart_index(file);
-        } catch (const RestartDataError& e) {
-          throw InputError(req.loc, "READ",
-                           fmt::format("--oldjob {}: {}", options.oldjob, e.what()));
-        }
-        AnalysisOptions::Resume r;
-        r.file = file;
-        r.record = choose_record(idx, req, file);
-        r.fingerprint = idx.header.fingerprint;
-        r.end_step = req.end_step;
-        r.files = {file.has_parent_path() ? file.parent_path() : ".", idx.header.job};
-        resume = r;
-        return ReadOptions::RestartBase{idx.header.deck, r.record.step_index + 1};
-      };
-    model = std::make_shared<Model>(read_deck(options.deck, ro));
-    model->job_name = job;
-    require_steps(*model, options.deck);
-    if (!options.oldjob.empty() && !model->restart_read)
-      throw InputError(SourceLocation{options.deck.string(), 0, {}}, "--oldjob",
-                       "the deck has no *RESTART, READ, so there is nothing to continue; add "
-                       "*RESTART, READ (with STEP= and INC= of the restart point) or run without "
-                       "--oldjob");
-    if (options.write_files) {
-      prepare_output(dir, job);
-      lock = JobLock::take(dir, job); // before the restart file is read: --restart respects it
-    }
-    if (options.restart) resume = own_restart_point(*model, options.deck, dir, job);
-    if (!options.user_code.empty())
-      model->user_code = load_user_code(
-          options.user_code, dir / (job + ".scratch" +
-                                    (parallel::rank() > 0 ? fmt::format(".rank{}", parallel::rank())
-                                                          : std::string())));
-  } catch (const InputError& e) {
-    result.exit_code = kExitInputError;
-    result.error = e.what();
-    log::error("{}", e.what());
-    restore();
-    return result;
-  }
-  result.model = model;
+  JobLock lock; ///< held until the job ends (JobSetup outlives the writers)
+};
 
-  std::vector<std::unique_ptr<ResultWriter>> writers;
-  if (options.write_files) {
-    WriterOptions wo;
-    wo.directory = dir;
-    wo.job = job;
-    wo.vtu = options.write_vtu;
-    wo.report_gaps = options.report_gaps;
-    wo.terminal = !options.quiet;
-    wo.substructure_recovery =
-        std::any_of(model->steps.begin(), model->steps.end(),
-                    [](const Step& s) { return !s.recover_substructures.empty(); });
-    writers = make_result_writers(wo);
-  } else if (!options.quiet) {
-    WriterOptions wo;
+/// --oldjob: the record a *RESTART, READ asks for, as the reader needs it.
+ReadOptions::RestartBase restart_base(JobSetup& s, const RestartRead& req) {
+  const std::filesystem::path file = oldjob_file(s.options.oldjob, s.dir);
+  RestartIndex idx;
+  try {
+    idx = read_restart_index(file);
+  } catch (const RestartDataError& e) {
+    throw InputError(req.loc, "READ", fmt::format("--oldjob {}: {}", s.options.oldjob, e.what()));
+  }
+  AnalysisOptions::Resume r;
+  r.file = file;
+  r.record = choose_record(idx, req, file);
+  r.fingerprint = idx.header.fingerprint;
+  r.end_step = req.end_step;
+  r.files = {file.has_parent_path() ? file.parent_path() : ".", idx.header.job};
+  s.resume = r;
+  return ReadOptions::RestartBase{idx.header.deck, r.record.step_index + 1};
+}
+
+/// Reads the deck, prepares and locks the output directory, finds the restart point and loads
+/// the user's code: InputError (exit 1) for anything wrong, before anything is solved.
+void set_up(JobSetup& s) {
+  const JobOptions& o = s.options;
+  ReadOptions ro;
+  ro.ignore_unknown = o.ignore_unknown;
+  if (!o.oldjob.empty())
+    ro.restart_base = [&s](const RestartRead& req) { return restart_base(s, req); };
+  s.model = std::make_shared<Model>(read_deck(o.deck, ro));
+  s.model->job_name = s.job;
+  require_steps(*s.model, o.deck);
+  if (!o.oldjob.empty() && !s.model->restart_read)
+    throw InputError(SourceLocation{o.deck.string(), 0, {}}, "--oldjob",
+                     "the deck has no *RESTART, READ, so there is nothing to continue; add "
+                     "*RESTART, READ (with STEP= and INC= of the restart point) or run without "
+                     "--oldjob");
+  if (o.write_files) {
+    prepare_output(s.dir, s.job);
+    s.lock = JobLock::take(s.dir, s.job); // before the restart file is read: --restart too
+  }
+  if (o.restart) s.resume = own_restart_point(*s.model, o.deck, s.dir, s.job);
+  if (!o.user_code.empty()) {
+    const std::string rank =
+        parallel::rank() > 0 ? fmt::format(".rank{}", parallel::rank()) : std::string();
+    s.model->user_code = load_user_code(o.user_code, s.dir / (s.job + ".scratch" + rank));
+  }
+}
+
+/// The result files' writers (or the terminal's alone when no files are written).
+std::vector<std::unique_ptr<ResultWriter>> writers_for(const JobSetup& s) {
+  const JobOptions& o = s.options;
+  WriterOptions wo;
+  if (!o.write_files) {
+    if (o.quiet) return {};
     wo.dat = wo.sta = wo.json = wo.vtu = wo.msg = wo.frd = wo.report = false;
     wo.terminal = true;
-    writers = make_result_writers(wo);
+    return make_result_writers(wo);
   }
-  MemoryWriter memory(result, options.keep_frames, options.keep_step_ends);
-  std::vector<ResultWriter*> ptrs;
-  for (auto& w : writers) ptrs.push_back(w.get());
-  ptrs.push_back(&memory);
+  wo.directory = s.dir;
+  wo.job = s.job;
+  wo.vtu = o.write_vtu;
+  wo.report_gaps = o.report_gaps;
+  wo.terminal = !o.quiet;
+  wo.substructure_recovery =
+      std::any_of(s.model->steps.begin(), s.model->steps.end(),
+                  [](const Step& st) { return !st.recover_substructures.empty(); });
+  return make_result_writers(wo);
+}
 
+AnalysisOptions analysis_options(const JobSetup& s) {
+  const JobOptions& o = s.options;
+  AnalysisOptions a;
+  a.factor_reuse = o.factor_reuse;
+  a.residual_only = o.residual_only;
+  a.solver = o.solver;
+  a.restart_header.job = s.job;
+  if (o.write_files) {
+    a.output_dir = s.dir;
+    a.restart_file = s.dir / (s.job + ".res");
+    std::error_code ec;
+    a.restart_header.deck = std::filesystem::absolute(o.deck, ec).string();
+  }
+  a.resume = s.resume;
+  a.generation_deck_reader = [](const std::filesystem::path& deck) {
+    return std::make_unique<Model>(read_deck(deck)); // *SUBSTRUCTURE PATH: its stresses
+  };
+  apply_environment(a); // the GAPFEM_* switches (app/environment.hpp)
+  return a;
+}
+
+/// Records a failure in `result` with its exit status and prints it.
+void fail(JobResult& result, int code, std::string message) {
+  result.exit_code = code;
+  result.error = std::move(message);
+  log::error("{}", result.error);
+}
+
+/// Runs the analysis; every exception becomes the exit status of its kind.
+void analyse(const JobSetup& s, const std::vector<ResultWriter*>& writers, JobResult& result) {
   try {
-    AnalysisOptions aopt;
-    aopt.factor_reuse = options.factor_reuse;
-    aopt.residual_only = options.residual_only;
-    aopt.solver = options.solver;
-    aopt.restart_header.job = job;
-    if (options.write_files) {
-      aopt.output_dir = dir;
-      aopt.restart_file = dir / (job + ".res");
-      std::error_code ec;
-      aopt.restart_header.deck = std::filesystem::absolute(options.deck, ec).string();
-      aopt.restart_header.job = job;
-    }
-    aopt.resume = resume;
-    aopt.generation_deck_reader = [](const std::filesystem::path& deck) {
-      return std::make_unique<Model>(read_deck(deck)); // *SUBSTRUCTURE PATH: its stresses
-    };
-    apply_environment(aopt); // the GAPFEM_* switches (app/environment.hpp)
-    Analysis analysis(*model, ptrs, aopt);
+    Analysis analysis(*s.model, writers, analysis_options(s));
     result.run = analysis.run();
     result.exit_code = kExitOk;
-    if (options.write_files && !options.quiet)
-      log::info("Results: {}/{}.dat, {}.sta, {}.results.json{}", dir.string(), job, job, job,
-                options.write_vtu ? fmt::format(", {}.pvd", job) : "");
+    if (s.options.write_files && !s.options.quiet)
+      log::info("Results: {}/{}.dat, {}.sta, {}.results.json{}", s.dir.string(), s.job, s.job,
+                s.job, s.options.write_vtu ? fmt::format(", {}.pvd", s.job) : "");
   } catch (const InputError& e) {
-    result.exit_code = kExitInputError;
-    result.error = e.what();
-    log::error("{}", e.what());
+    fail(result, kExitInputError, e.what());
   } catch (const RestartDataError& e) {
-    result.exit_code = kExitInputError;
-    result.error = fmt::format("restart: {}", e.what());
-    log::error("{}", result.error);
+    fail(result, kExitInputError, fmt::format("restart: {}", e.what()));
   } catch (const AnalysisError& e) {
-    result.exit_code = kExitNoConvergence;
-    result.error = e.what();
-    log::error("{}", e.what());
+    fail(result, kExitNoConvergence, e.what());
   } catch (const std::exception& e) {
-    result.exit_code = kExitInternal;
-    result.error = fmt::format("internal error: {}", e.what());
-    log::error("{}", result.error);
+    fail(result, kExitInternal, fmt::format("internal error: {}", e.what()));
   }
+}
+
+} // namespace
+
+JobResult run_job(const JobOptions& given) {
+  Stopwatch watch;
+  JobSetup s;
+  s.options = given;
+  s.options.deck = resolve_deck(given.deck);
+  s.job = s.options.job_name.empty() ? s.options.deck.stem().string() : s.options.job_name;
+  s.dir = s.options.output_dir;
+  if (s.dir.empty()) s.dir = s.options.deck.has_parent_path() ? s.options.deck.parent_path() : ".";
+  const ScopedLogLevel level(s.options);
+  JobResult result;
+  try {
+    set_up(s);
+  } catch (const InputError& e) {
+    fail(result, kExitInputError, e.what());
+    return result;
+  }
+  result.model = s.model;
+  const std::vector<std::unique_ptr<ResultWriter>> writers = writers_for(s);
+  MemoryWriter memory(result, s.options.keep_frames, s.options.keep_step_ends);
+  std::vector<ResultWriter*> ptrs;
+  for (const auto& w : writers) ptrs.push_back(w.get());
+  ptrs.push_back(&memory);
+  analyse(s, ptrs, result);
   result.run.wall_seconds = watch.seconds();
-  restore();
   return result;
 }
 
