@@ -119,7 +119,13 @@ struct Analysis::Impl {
   /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of
   /// the boundary conditions given there.
   void to_local_systems(NodeResults& nr) const;
+  /// The self-checks after a step: hourglass energies, gap states, equilibrium.
   StepChecks checks(StepProblem& prob);
+  void hourglass_checks(StepProblem& prob, StepChecks& c);
+  void gap_checks(StepProblem& prob, StepChecks& c);
+  void equilibrium_checks(StepProblem& prob, StepChecks& c);
+  /// Net forces of elements and matrix terms that may hold the model to ground.
+  void grounded_forces(StepProblem& prob, std::array<long double, 3>& ground, long double& scale);
 
   bool want_gap_samples = false;
   /// *SUBSTRUCTURE PATH: the libraries of the substructures the steps recover (none: nullptr)

@@ -206,68 +206,113 @@ void Analysis::Impl::gap_samples(StepProblem& prob, IncrementInfo& info) {
   info.gaps_closed = closed;
 }
 
-StepChecks Analysis::Impl::checks(StepProblem& prob) {
-  StepChecks c;
+namespace {
+
+/// The sums of the equilibrium self-check, in extended precision (loads near 1e308 do not
+/// overflow them).
+struct ForceBalance {
+  std::array<long double, 3> reaction{}, applied{}, ground{};
+  long double scale = 0.0;
+  /// A force to ground (a spring to ground, a grounded element's net force, stabilization).
+  void to_ground(int d, long double f) {
+    ground[d] += f;
+    scale += std::fabs(f);
+  }
+  void finish(StepChecks& c) const {
+    long double err2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const long double e = reaction[d] + applied[d] - ground[d];
+      err2 += e * e;
+      c.reaction_sum[d] = static_cast<double>(reaction[d]);
+      c.applied_sum[d] = static_cast<double>(applied[d]);
+    }
+    const long double err = std::sqrt(err2);
+    c.equilibrium_error = static_cast<double>(err);
+    c.force_scale = static_cast<double>(scale);
+    c.relative_equilibrium = scale > 0 ? static_cast<double>(err / scale) : 0.0;
+  }
+};
+
+/// Counts a gap's status and its penetration, tension and damping into the checks.
+void count_gap(StepChecks& c, const GapRecord& g, double allowance, Label label) {
+  ++c.n_gaps;
+  switch (g.status) {
+  case ContactStatus::Open:
+    ++c.n_open;
+    break;
+  case ContactStatus::Closed:
+    ++c.n_closed;
+    break;
+  case ContactStatus::Stick:
+    ++c.n_stick;
+    break;
+  case ContactStatus::Slip:
+    ++c.n_slip;
+    break;
+  }
+  const double pen = -(g.clearance + allowance);
+  if (g.status != ContactStatus::Open && pen > c.max_penetration) {
+    c.max_penetration = pen;
+    c.max_penetration_elem = label;
+  }
+  if (g.status != ContactStatus::Open && -g.normal_force > c.max_tensile_force) {
+    c.max_tensile_force = -g.normal_force;
+    c.max_tensile_elem = label;
+  }
+  c.max_damping_force = std::max(c.max_damping_force, std::abs(g.damping_force));
+}
+
+/// Elements that may hold the model to ground themselves: springs to ground, substructures
+/// (their internal supports are condensed away), the deck's own elements. Their net force is a
+/// force to ground; a free element's is zero and adds nothing.
+bool may_be_grounded(ElementType t) {
+  return t == ElementType::SPRING1 || t == ElementType::SUBSTRUCTURE || t == ElementType::USER;
+}
+
+} // namespace
+
+void Analysis::Impl::hourglass_checks(StepProblem& prob, StepChecks& c) {
+  for (auto& b : disc.blocks()) c.hourglass |= b.kernel->has_artificial_energy();
+  if (!c.hourglass) return;
+  // ALLAE and, to judge it, ALLSE of every continuum element
   const FieldView fields = prob.fields();
   ElementRecovery rec;
-  for (auto& b : disc.blocks()) c.hourglass |= b.kernel->has_artificial_energy();
-  if (c.hourglass) // ALLAE and, to judge it, ALLSE of every continuum element
-    for (auto& b : disc.blocks()) {
-      const ElementTypeInfo& info = element_info(b.type);
-      if (info.family != ElementFamily::Continuum || !info.displacement) continue;
-      for (std::size_t i = 0; i < b.size(); ++i) {
-        assembler.recover(b.elements[i], fields, prob.context(), rec);
-        c.allae += rec.artificial_energy.value_or(0.0);
-        c.allse += rec.strain_energy.value_or(0.0);
-      }
+  for (auto& b : disc.blocks()) {
+    const ElementTypeInfo& info = element_info(b.type);
+    if (info.family != ElementFamily::Continuum || !info.displacement) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.recover(b.elements[i], fields, prob.context(), rec);
+      c.allae += rec.artificial_energy.value_or(0.0);
+      c.allse += rec.strain_energy.value_or(0.0);
     }
+  }
+}
+
+void Analysis::Impl::gap_checks(StepProblem& prob, StepChecks& c) {
+  const FieldView fields = prob.fields();
+  ElementRecovery rec;
   for (auto& b : disc.blocks()) {
     if (element_info(b.type).family != ElementFamily::Gap || !element_info(b.type).displacement)
       continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
       assembler.recover(b.elements[i], fields, prob.context(), rec);
-      if (!rec.gap) continue;
-      const GapRecord& g = *rec.gap;
-      ++c.n_gaps;
-      const Label label = model.element_label(b.elements[i]).key;
-      switch (g.status) {
-      case ContactStatus::Open:
-        ++c.n_open;
-        break;
-      case ContactStatus::Closed:
-        ++c.n_closed;
-        break;
-      case ContactStatus::Stick:
-        ++c.n_stick;
-        break;
-      case ContactStatus::Slip:
-        ++c.n_slip;
-        break;
-      }
-      const double allowance = b.interference.empty() ? 0.0 : b.interference[i];
-      const double pen = -(g.clearance + allowance);
-      if (g.status != ContactStatus::Open && pen > c.max_penetration) {
-        c.max_penetration = pen;
-        c.max_penetration_elem = label;
-      }
-      if (g.status != ContactStatus::Open && -g.normal_force > c.max_tensile_force) {
-        c.max_tensile_force = -g.normal_force;
-        c.max_tensile_elem = label;
-      }
-      c.max_damping_force = std::max(c.max_damping_force, std::abs(g.damping_force));
+      if (rec.gap)
+        count_gap(c, *rec.gap, b.interference.empty() ? 0.0 : b.interference[i],
+                  model.element_label(b.elements[i]).key);
     }
   }
-  // Equilibrium: reactions + applied loads + forces of springs to ground.
+}
+
+void Analysis::Impl::equilibrium_checks(StepProblem& prob, StepChecks& c) {
   const DofMap& dofs = disc.dofs();
+  ForceBalance fb;
   const std::vector<double> reaction = prob.reactions();
-  long double scale = 0.0; // extended range: loads near 1e308 do not overflow
-  std::array<long double, 3> reaction_sum{}, applied_sum{};
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
     const int d = static_cast<int>(dofs.slot_dof(s));
     if (d >= 3) continue;
-    reaction_sum[d] += reaction[s];
-    applied_sum[d] += st.f_ext[s];
-    scale += std::fabs(static_cast<long double>(reaction[s])) + std::fabs(st.f_ext[s]);
+    fb.reaction[d] += reaction[s];
+    fb.applied[d] += st.f_ext[s];
+    fb.scale += std::fabs(static_cast<long double>(reaction[s])) + std::fabs(st.f_ext[s]);
   }
   // reactions of boundary conditions in local systems: -lambda along each held local axis
   const ConstraintSet& rows = disc.constraints();
@@ -278,67 +323,59 @@ StepChecks Analysis::Impl::checks(StepProblem& prob) {
       const int row = rows.bc_row(n, d + 1);
       if (row < 0 || !rows.active(row)) continue;
       const double R = -rows.mult_trial[row];
-      for (int j = 0; j < 3; ++j) reaction_sum[j] += static_cast<long double>(R) * (*Q)[3 * d + j];
-      scale += std::abs(R);
+      for (int j = 0; j < 3; ++j) fb.reaction[j] += static_cast<long double>(R) * (*Q)[3 * d + j];
+      fb.scale += std::abs(R);
     }
   }
-  std::array<long double, 3> ground{};
   // the stabilization's viscous forces hold the model like springs to ground
   const auto fstab = prob.stabilization_forces();
   for (std::size_t k = 0; k < fstab.size(); ++k) {
     const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
-    if (d >= 3 || fstab[k] == 0.0) continue;
-    ground[d] += fstab[k];
-    scale += std::abs(fstab[k]);
+    if (d < 3 && fstab[k] != 0.0) fb.to_ground(d, fstab[k]);
   }
-  // Elements that may hold the model to ground themselves: springs to ground, substructures
-  // (their internal supports are condensed away), the deck's own elements and *MATRIX ASSEMBLE
-  // terms. Their net force is a force to ground; a free element's is zero and adds nothing.
-  std::vector<double> r;
-  std::vector<LocalIndex> slots;
-  for (auto& b : disc.blocks()) {
-    const bool grounded = b.type == ElementType::SPRING1 || b.type == ElementType::SUBSTRUCTURE ||
-                          b.type == ElementType::USER;
-    if (!grounded) continue;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      assembler.element_residual(b.elements[i], fields, prob.context(), r, slots);
-      std::array<long double, 3> net{};
-      for (std::size_t k = 0; k < r.size(); ++k) {
-        const int d = static_cast<int>(dofs.slot_dof(slots[k]));
-        if (d < 3) net[d] += r[k];
-      }
-      for (int d = 0; d < 3; ++d) {
-        ground[d] += net[d];
-        scale += std::fabs(net[d]);
-      }
-    }
-  }
-  if (!disc.matrix_terms().empty()) {
-    std::vector<double> f(static_cast<std::size_t>(dofs.n_slots()), 0.0);
-    std::array<double, kNumFields> flux{};
-    std::array<long, kNumFields> count{};
-    disc.matrix_terms().assemble(st.u_start, f, nullptr, dofs, flux, count);
-    std::array<long double, 3> net{};
-    for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
-      const int d = static_cast<int>(dofs.slot_dof(s));
-      if (d < 3) net[d] += f[static_cast<std::size_t>(s)];
-    }
+  grounded_forces(prob, fb.ground, fb.scale);
+  fb.finish(c);
+}
+
+void Analysis::Impl::grounded_forces(StepProblem& prob, std::array<long double, 3>& ground,
+                                     long double& scale) {
+  const DofMap& dofs = disc.dofs();
+  auto add_net = [&](const std::array<long double, 3>& net) {
     for (int d = 0; d < 3; ++d) {
       ground[d] += net[d];
       scale += std::fabs(net[d]);
     }
+  };
+  const FieldView fields = prob.fields();
+  std::vector<double> r;
+  std::vector<LocalIndex> slots;
+  for (auto& b : disc.blocks()) {
+    if (!may_be_grounded(b.type)) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      assembler.element_residual(b.elements[i], fields, prob.context(), r, slots);
+      std::array<long double, 3> net{};
+      for (std::size_t k = 0; k < r.size(); ++k)
+        if (const int d = static_cast<int>(dofs.slot_dof(slots[k])); d < 3) net[d] += r[k];
+      add_net(net);
+    }
   }
-  long double err2 = 0.0;
-  for (int d = 0; d < 3; ++d) {
-    const long double e = reaction_sum[d] + applied_sum[d] - ground[d];
-    err2 += e * e;
-    c.reaction_sum[d] = static_cast<double>(reaction_sum[d]);
-    c.applied_sum[d] = static_cast<double>(applied_sum[d]);
-  }
-  const long double err = std::sqrt(err2);
-  c.equilibrium_error = static_cast<double>(err);
-  c.force_scale = static_cast<double>(scale);
-  c.relative_equilibrium = scale > 0 ? static_cast<double>(err / scale) : 0.0;
+  if (disc.matrix_terms().empty()) return; // *MATRIX ASSEMBLE terms may be grounded too
+  std::vector<double> f(static_cast<std::size_t>(dofs.n_slots()), 0.0);
+  std::array<double, kNumFields> flux{};
+  std::array<long, kNumFields> count{};
+  disc.matrix_terms().assemble(st.u_start, f, nullptr, dofs, flux, count);
+  std::array<long double, 3> net{};
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
+    if (const int d = static_cast<int>(dofs.slot_dof(s)); d < 3)
+      net[d] += f[static_cast<std::size_t>(s)];
+  add_net(net);
+}
+
+StepChecks Analysis::Impl::checks(StepProblem& prob) {
+  StepChecks c;
+  hourglass_checks(prob, c);
+  gap_checks(prob, c);
+  equilibrium_checks(prob, c);
   return c;
 }
 
