@@ -114,6 +114,10 @@ struct Analysis::Impl {
   void gap_samples(StepProblem& prob, IncrementInfo& info);
   void write_frame(int index, StepProblem& prob, int increment, bool last, double dt,
                    bool repeat = false);
+  std::optional<Frame> frame_due(const Step& step, const StepProblem& prob, int increment,
+                                 bool last, double dt, bool repeat, bool& field_elements) const;
+  void frame_nodes(StepProblem& prob, Frame& fr);
+  void frame_elements(const Step& step, StepProblem& prob, bool field_elements, Frame& fr);
   /// The *MONITOR value after a converged increment, when due.
   std::optional<double> monitor_value(const Step& step, int increment, bool last) const;
   /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of

@@ -38,15 +38,18 @@ std::optional<double> Analysis::Impl::monitor_value(const Step& step, int increm
   return st.u_start[static_cast<std::size_t>(s)];
 }
 
-void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt,
-                                 bool repeat) {
-  const Step& step = model.steps[index];
-  // `repeat`: the increment's regular output is already written (a step ended by *RESTART, READ,
-  // END STEP); only what is due because it is now the last one follows.
+/// A frame of the committed state with what is due at it, or nothing when nothing is due;
+/// `field_elements` tells whether due field output asks for element variables. `repeat`: the
+/// increment's regular output is already written (a step ended by *RESTART, READ, END STEP);
+/// only what is due because it is now the last one follows.
+std::optional<Frame> Analysis::Impl::frame_due(const Step& step, const StepProblem& prob,
+                                               int increment, bool last, double dt, bool repeat,
+                                               bool& field_elements) const {
+  bool any = last;
   auto due = [&](int freq) {
-    if (freq <= 0) return false;
-    const bool regular = increment % freq == 0;
-    return repeat ? !regular : (regular || last);
+    const bool d = freq > 0 && (repeat ? increment % freq != 0 : increment % freq == 0 || last);
+    any |= d;
+    return d;
   };
   Frame fr;
   fr.step = step.number;
@@ -55,35 +58,24 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   fr.total_time = prob.context().total_time;
   fr.dt = dt;
   fr.last_in_step = last;
-  bool any = last;
-  for (const auto& r : step.node_prints) {
-    fr.node_print_due.push_back(due(r.frequency));
-    any |= fr.node_print_due.back();
+  for (const auto& r : step.node_prints) fr.node_print_due.push_back(due(r.frequency));
+  for (const auto& r : step.el_prints) fr.el_print_due.push_back(due(r.frequency));
+  field_elements = false;
+  fr.field_due = step.field_outputs.empty() && last;
+  for (const auto& r : step.field_outputs) {
+    fr.field_output_due.push_back(due(r.frequency));
+    if (!fr.field_output_due.back()) continue;
+    fr.field_due = true;
+    field_elements |= !r.elem_vars.empty();
   }
-  for (const auto& r : step.el_prints) {
-    fr.el_print_due.push_back(due(r.frequency));
-    any |= fr.el_print_due.back();
-  }
-  bool field_elements = false;
-  if (step.field_outputs.empty()) {
-    fr.field_due = last;
-  } else {
-    for (const auto& r : step.field_outputs) {
-      fr.field_output_due.push_back(due(r.frequency));
-      if (fr.field_output_due.back()) {
-        fr.field_due = true;
-        field_elements |= !r.elem_vars.empty();
-      }
-    }
-  }
-  any |= fr.field_due;
-  for (const auto& r : step.file_outputs) {
-    fr.file_output_due.push_back(due(r.frequency));
-    any |= fr.file_output_due.back();
-  }
-  if (!any) return;
-  ScopedTimer timer(&stats, TimeCategory::Output);
+  for (const auto& r : step.file_outputs) fr.file_output_due.push_back(due(r.frequency));
+  if (!any) return std::nullopt;
+  return fr;
+}
 
+/// The frame's nodal results: solution, reactions and loads per node (local systems at
+/// *TRANSFORM nodes), and the predefined temperature field of a stress analysis.
+void Analysis::Impl::frame_nodes(StepProblem& prob, Frame& fr) {
   const DofMap& dofs = disc.dofs();
   const NodeId nn = model.mesh.n_nodes();
   NodeResults& nr = fr.nodes;
@@ -137,8 +129,12 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
         for (ElemId e : b.elements)
           for (NodeId n : model.mesh.element_nodes(e)) nr.nt_field[n] = 1;
   }
+}
 
-  // Elements needed by the due requests (every element at the last frame).
+/// The element results the frame's requests need (every element at the last frame).
+void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool field_elements,
+                                    Frame& fr) {
+  const bool last = fr.last_in_step;
   const ElemId ne = model.mesh.n_elements();
   std::vector<char> need(static_cast<std::size_t>(ne), last || field_elements ? 1 : 0);
   for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
@@ -165,6 +161,18 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
     fr.elements.push_back({e, {}});
     assembler.recover(e, fields, prob.context(), fr.elements.back().data);
   }
+}
+
+void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt,
+                                 bool repeat) {
+  const Step& step = model.steps[index];
+  bool field_elements = false;
+  std::optional<Frame> due = frame_due(step, prob, increment, last, dt, repeat, field_elements);
+  if (!due) return;
+  Frame& fr = *due;
+  ScopedTimer timer(&stats, TimeCategory::Output);
+  frame_nodes(prob, fr);
+  frame_elements(step, prob, field_elements, fr);
   if (const std::string bad = first_non_finite_output(model, fr); !bad.empty())
     throw AnalysisError(non_finite_message(increment, bad));
   if (recoverer && (fr.field_due || last)) fr.substructures = recoverer->recover(model, index, fr);
