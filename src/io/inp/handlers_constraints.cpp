@@ -193,7 +193,8 @@ void handle_transform(BuildState& s, const Keyword& kw) {
   if (!set) {
     if (s.bad_sets.count(nset)) return;
     throw InputError(kw.loc, fmt::format("NSET={}", nset),
-                     "this node set is not defined; define it with *NSET before *TRANSFORM");
+                     undefined_name(s, nset, NameKind::NodeSet, kw.name, "a node set",
+                                    "define it with *NSET before *TRANSFORM"));
   }
   const std::vector<NodeId> members = *set;
   NodeTransform t;

@@ -306,7 +306,8 @@ void handle_coupling(BuildState& s, const Keyword& kw) {
   const auto it = s.model.surfaces.find(surf);
   if (it == s.model.surfaces.end())
     throw InputError(kw.loc, fmt::format("SURFACE={}", surf),
-                     "this surface is not defined; define it with *SURFACE before the coupling");
+                     undefined_name(s, surf, NameKind::Surface, kw.name, "a surface",
+                                    "define it with *SURFACE before the coupling"));
   const std::optional<double> radius = real_param(kw, "INFLUENCE RADIUS");
   if (radius && !(*radius > 0))
     throw InputError(kw.loc, "INFLUENCE RADIUS", "the influence radius must be positive");

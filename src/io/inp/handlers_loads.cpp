@@ -103,7 +103,8 @@ const Surface& find_surface(BuildState& s, const FieldReader& r) {
   const auto it = s.model.surfaces.find(name);
   if (it == s.model.surfaces.end())
     r.fail(fmt::format("surface {}", name),
-           "this surface is not defined; define it with *SURFACE, NAME=… in the model data");
+           undefined_name(s, name, NameKind::Surface, r.loc().keyword, "a surface of element faces",
+                          "define it with *SURFACE, NAME=… in the model data"));
   if (it->second.node_based)
     r.fail(fmt::format("surface {}", name),
            "this is a node-based surface (TYPE=NODE); a distributed load needs element faces: "

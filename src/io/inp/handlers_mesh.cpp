@@ -79,6 +79,115 @@ void check_outside_parts(const BuildState& s, const Keyword& kw, const char* wha
                                  what));
 }
 
+/// The nodes of an element line (fields 2 on; `ent` names the element): by number in this part or
+/// the assembly, or qualified by an instance (PART-1-1.12: gap elements between instances are
+/// written so by Abaqus/CAE); a node defined further down is created now (forward_node). nullopt
+/// when a node belongs to an instance in error or its definition failed (both reported there).
+std::optional<std::vector<NodeId>> element_nodes(BuildState& s, const FieldReader& r,
+                                                 const std::string& ent, ElementType type,
+                                                 int n_nodes, std::string_view type_name) {
+  std::vector<Label> node_keys;
+  bool failed = false;
+  for (std::size_t f = 1; f < r.size(); ++f) {
+    if (r.blank(f)) continue;
+    const EntityRef ref = parse_reference(s, r, f);
+    failed |= ref.failed;
+    if (ref.failed) continue;
+    if (!ref.key)
+      r.fail(
+          fmt::format("field {}", f + 1),
+          fmt::format("'{}' is not a node number; list the element's nodes by number", r.text(f)));
+    node_keys.push_back(*ref.key);
+  }
+  if (failed) return std::nullopt;
+  if (const auto given = static_cast<int>(node_keys.size()); given != n_nodes)
+    r.fail(ent, fmt::format("{} needs {} nodes but {}; list exactly {} node numbers after the "
+                            "element number (continue on the next line after a trailing comma)",
+                            type_name, n_nodes,
+                            given == 0   ? std::string("none is given")
+                            : given == 1 ? std::string("only 1 is given")
+                                         : fmt::format("{} are given", given),
+                            n_nodes));
+  std::vector<NodeId> nodes;
+  for (Label nk : node_keys) {
+    NodeId n = s.model.mesh.find_node(nk);
+    if (n < 0 && s.bad_nodes.count(nk)) failed = true;
+    if (n < 0 && !failed) n = forward_node(s, nk); // defined further down (Abaqus allows it)
+    if (n < 0 && !failed) r.fail(ent, undefined_node(s, nk, false, false));
+    nodes.push_back(n);
+  }
+  if (failed) return std::nullopt;
+  if (const std::string why = repeated_node(s, type, node_keys, nodes, type_name); !why.empty())
+    r.fail(ent, why);
+  return nodes;
+}
+
+/// An *ELEMENT's TYPE=: a library type, a substructure Zn (its library read) or a user element
+/// type Un of the deck, with its node count (0: the library's). nullopt for a user element type
+/// whose definition was reported (its elements are noted as failed).
+struct ElementKind {
+  ElementType type;
+  std::int32_t variant; ///< the user element or substructure type; -1 for the library's
+  int n_nodes;
+};
+std::optional<ElementKind> element_kind(BuildState& s, const Keyword& kw,
+                                        const std::string& elset) {
+  std::optional<ElementType> type;
+  std::int32_t variant = -1; // a user element type of the deck
+  int n_nodes = 0;
+  try {
+    const std::string tname = param_value(kw, "TYPE", true);
+    type = element_type_from_name(tname);
+    const std::string upper = to_upper(trim(tname));
+    if (!type && upper.size() > 1 && upper[0] == 'Z' && parse_integer(upper.substr(1))) {
+      variant = load_substructure_type(s, kw, upper);
+      type = ElementType::SUBSTRUCTURE;
+      n_nodes = static_cast<int>(s.model.substructures[variant].node_labels.size());
+    }
+    if (kw.has("FILE") && type != ElementType::SUBSTRUCTURE)
+      throw InputError(kw.loc, "FILE", "FILE= names the library of a substructure (TYPE=Zn)");
+    if (!type && upper.size() > 1 && upper[0] == 'U' && parse_integer(upper.substr(1))) {
+      const auto& defs = s.model.user_elements;
+      const auto it = std::find_if(defs.begin(), defs.end(),
+                                   [&](const UserElementType& t) { return t.name == upper; });
+      if (it == defs.end() && s.bad_user_types.count(upper)) { // its definition was reported
+        kw.mark_read();
+        for (const auto& d : kw.data)
+          if (!d.fields.empty())
+            if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
+        if (!elset.empty()) s.bad_sets.insert(elset);
+        return std::nullopt;
+      }
+      if (it == defs.end())
+        throw InputError(kw.loc, fmt::format("TYPE={}", upper),
+                         fmt::format("user element type {} is not defined; define it with *USER "
+                                     "ELEMENT, TYPE={} before its elements",
+                                     upper, upper));
+      type = ElementType::USER;
+      variant = static_cast<std::int32_t>(it - defs.begin());
+      n_nodes = it->n_nodes;
+    }
+    if (!type) {
+      std::string known;
+      for (const auto& info : all_element_types())
+        if (info.n_nodes > 0) known += (known.empty() ? "" : ", ") + std::string(info.name);
+      throw InputError(
+          kw.loc, fmt::format("TYPE={}", to_upper(tname)),
+          fmt::format("gapfem does not know this element type; supported types: {}, user "
+                      "elements Un (*USER ELEMENT) and substructures Zn",
+                      known));
+    }
+  } catch (const InputError& e) {
+    // remember the labels so that later references do not raise follow-up errors
+    for (const auto& d : kw.data)
+      if (!d.fields.empty())
+        if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
+    if (!elset.empty()) s.bad_sets.insert(elset);
+    throw;
+  }
+  return ElementKind{*type, variant, n_nodes};
+}
+
 } // namespace
 
 void handle_heading(BuildState& s, const Keyword& kw) {
@@ -117,7 +226,14 @@ void handle_node(BuildState& s, const Keyword& kw) {
       r.at_most(4, "node number, x, y, z");
       const Vec3 x =
           s.place({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")});
-      if (const NodeId old = mesh.find_node(key); old >= 0)
+      const NodeId old = mesh.find_node(key);
+      if (old >= 0 && s.awaiting.erase(old)) { // named by an *ELEMENT or *NSET above
+        mesh.coords[old] = x;
+        s.node_src[old] = s.ref(line);
+        added.push_back(old);
+        return;
+      }
+      if (old >= 0)
         r.fail(fmt::format("node {}", s.model.label_of_key(key)),
                fmt::format(
                    "this node number is defined twice (first at {}); give each node its own number",
@@ -129,7 +245,9 @@ void handle_node(BuildState& s, const Keyword& kw) {
       s.node_src.push_back(s.ref(line));
       added.push_back(id);
     } catch (const InputError&) {
-      if (mesh.find_node(key) < 0) s.bad_nodes.insert(key);
+      // (a node named above and awaiting this line failed too: its uses raise nothing more)
+      if (const NodeId n = mesh.find_node(key); n < 0 || s.awaiting.count(n))
+        s.bad_nodes.insert(key);
       throw;
     }
   });
@@ -139,63 +257,14 @@ void handle_node(BuildState& s, const Keyword& kw) {
 void handle_element(BuildState& s, const Keyword& kw) {
   check_outside_parts(s, kw, "elements");
   const std::string elset = set_param(s, kw, "ELSET", false);
-  std::optional<ElementType> type;
-  std::int32_t variant = -1; // a user element type of the deck
-  int n_nodes = 0;
-  try {
-    const std::string tname = param_value(kw, "TYPE", true);
-    type = element_type_from_name(tname);
-    const std::string upper = to_upper(trim(tname));
-    if (!type && upper.size() > 1 && upper[0] == 'Z' && parse_integer(upper.substr(1))) {
-      variant = load_substructure_type(s, kw, upper);
-      type = ElementType::SUBSTRUCTURE;
-      n_nodes = static_cast<int>(s.model.substructures[variant].node_labels.size());
-    }
-    if (kw.has("FILE") && type != ElementType::SUBSTRUCTURE)
-      throw InputError(kw.loc, "FILE", "FILE= names the library of a substructure (TYPE=Zn)");
-    if (!type && upper.size() > 1 && upper[0] == 'U' && parse_integer(upper.substr(1))) {
-      const auto& defs = s.model.user_elements;
-      const auto it = std::find_if(defs.begin(), defs.end(),
-                                   [&](const UserElementType& t) { return t.name == upper; });
-      if (it == defs.end() && s.bad_user_types.count(upper)) { // its definition was reported
-        kw.mark_read();
-        for (const auto& d : kw.data)
-          if (!d.fields.empty())
-            if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
-        if (!elset.empty()) s.bad_sets.insert(elset);
-        return;
-      }
-      if (it == defs.end())
-        throw InputError(kw.loc, fmt::format("TYPE={}", upper),
-                         fmt::format("user element type {} is not defined; define it with *USER "
-                                     "ELEMENT, TYPE={} before its elements",
-                                     upper, upper));
-      type = ElementType::USER;
-      variant = static_cast<std::int32_t>(it - defs.begin());
-      n_nodes = it->n_nodes;
-    }
-    if (!type) {
-      std::string known;
-      for (const auto& info : all_element_types())
-        if (info.n_nodes > 0) known += (known.empty() ? "" : ", ") + std::string(info.name);
-      throw InputError(
-          kw.loc, fmt::format("TYPE={}", to_upper(tname)),
-          fmt::format("gapfem does not know this element type; supported types: {}, user "
-                      "elements Un (*USER ELEMENT) and substructures Zn",
-                      known));
-    }
-  } catch (const InputError& e) {
-    // remember the labels so that later references do not raise follow-up errors
-    for (const auto& d : kw.data)
-      if (!d.fields.empty())
-        if (auto l = parse_integer(d.fields[0])) s.bad_elements.insert(s.key(*l));
-    if (!elset.empty()) s.bad_sets.insert(elset);
-    throw;
-  }
-  const ElementTypeInfo& info = element_info(*type);
+  const auto kind = element_kind(s, kw, elset);
+  if (!kind) return; // a user element type whose definition was reported
+  const auto [type, variant, n_type_nodes] = *kind;
+  int n_nodes = n_type_nodes;
+  const ElementTypeInfo& info = element_info(type);
   if (variant < 0) n_nodes = info.n_nodes;
   const std::string_view type_name = variant < 0 ? info.name
-                                     : *type == ElementType::SUBSTRUCTURE
+                                     : type == ElementType::SUBSTRUCTURE
                                          ? std::string_view(s.model.substructures[variant].name)
                                          : std::string_view(s.model.user_elements[variant].name);
   Mesh& mesh = s.model.mesh;
@@ -231,59 +300,19 @@ void handle_element(BuildState& s, const Keyword& kw) {
         r.fail(ent, fmt::format("this element number is defined twice (first at {}); give each "
                                 "element its own number",
                                 where(s, mesh.elem_src[old])));
-      // nodes by number (in this part or the assembly) or qualified by an instance
-      // (PART-1-1.12: gap elements between instances are written so by Abaqus/CAE)
-      std::vector<Label> node_keys;
-      bool failed_instance = false;
-      for (std::size_t f = 1; f < line->fields.size(); ++f) {
-        if (line->fields[f].empty()) continue;
-        const EntityRef ref = parse_reference(s, r, f);
-        failed_instance |= ref.failed;
-        if (ref.failed) continue;
-        if (!ref.key)
-          r.fail(fmt::format("field {}", f + 1),
-                 fmt::format("'{}' is not a node number; list the element's nodes by number",
-                             r.text(f)));
-        node_keys.push_back(*ref.key);
-      }
-      if (failed_instance) { // a node of an instance in error (reported at its *INSTANCE)
+      const auto nodes = element_nodes(s, r, ent, type, n_nodes, type_name);
+      if (!nodes) { // a node of an instance or a node in error (reported there)
         s.bad_elements.insert(key);
         continue;
       }
-      if (static_cast<int>(node_keys.size()) != n_nodes)
-        r.fail(ent,
-               fmt::format("{} needs {} nodes but {} are given; list exactly {} node numbers after "
-                           "the element number (continue on the next line after a trailing comma)",
-                           type_name, n_nodes, node_keys.size(), n_nodes));
-      std::vector<NodeId> nodes;
-      bool skip = false;
-      for (Label nk : node_keys) {
-        const NodeId n = mesh.find_node(nk);
-        if (n < 0) {
-          if (s.bad_nodes.count(nk)) {
-            skip = true;
-            continue;
-          }
-          r.fail(ent, fmt::format("node {} is not defined; define it with *NODE before use",
-                                  s.model.label_of_key(nk)));
-        }
-        nodes.push_back(n);
-      }
-      if (skip) {
-        s.bad_elements.insert(key);
-        continue;
-      }
-      if (const std::string why = repeated_node(s, *type, node_keys, nodes, type_name);
-          !why.empty())
-        r.fail(ent, why);
       const ElemId id = mesh.n_elements();
       mesh.elem_labels.push_back(key);
-      mesh.elem_types.push_back(*type);
+      mesh.elem_types.push_back(type);
       if (variant >= 0 || !mesh.elem_variant.empty()) {
         mesh.elem_variant.resize(static_cast<std::size_t>(id), -1);
         mesh.elem_variant.push_back(variant);
       }
-      mesh.conn.insert(mesh.conn.end(), nodes.begin(), nodes.end());
+      mesh.conn.insert(mesh.conn.end(), nodes->begin(), nodes->end());
       mesh.conn_offset.push_back(static_cast<std::int64_t>(mesh.conn.size()));
       mesh.elem_src.push_back(first_line);
       mesh.elem_index.emplace(key, id);
@@ -326,11 +355,16 @@ static void handle_set(BuildState& s, const Keyword& kw) {
     s.scope.instance = it->second;
     s.scope.prefix = inst + ".";
   }
+  // a node set may name nodes defined further down (Abaqus reads the model data in any order)
   struct Restore {
     BuildState& s;
     BuildState::Scope outer;
-    ~Restore() { s.scope = outer; }
+    ~Restore() {
+      s.scope = outer;
+      s.forward_nodes_ok = false;
+    }
   } restore{s, outer};
+  s.forward_nodes_ok = Nodes;
   std::vector<std::int32_t> members;
   long long missing = 0, first_missing = 0;
   const char* what = Nodes ? "node" : "element";
@@ -347,9 +381,12 @@ static void handle_set(BuildState& s, const Keyword& kw) {
       const long long count = (g.last - g.first) / g.step + 1;
       const Mesh& mesh = s.model.mesh;
       const auto& labels = Nodes ? mesh.node_labels : mesh.elem_labels;
-      if (count <= static_cast<long long>(labels.size())) {
+      // (nodes defined further down count: a set may come before its *NODE lines)
+      const std::size_t later = Nodes && s.node_lines ? s.node_lines->size() : 0;
+      if (count <= static_cast<long long>(labels.size() + later)) {
         for (long long l = g.first; l <= g.last; l += g.step) {
-          const std::int32_t id = find(l);
+          std::int32_t id = find(l);
+          if (id < 0 && Nodes) id = forward_node(s, s.key(l)); // defined further down
           if (id >= 0)
             members.push_back(id);
           else if (!bad(l) && missing++ == 0)

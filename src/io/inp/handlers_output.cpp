@@ -143,7 +143,8 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
     }
     if (!set)
       throw InputError(kw.loc, fmt::format("NSET={}", req.nset),
-                       "this node set is not defined; define it with *NSET in the model data");
+                       undefined_name(s, req.nset, NameKind::NodeSet, kw.name, "a node set",
+                                      "define it with *NSET in the model data"));
     req.nodes = *set;
   }
   req.vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, "U, RF");
@@ -178,7 +179,8 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
     }
     if (!set)
       throw InputError(kw.loc, fmt::format("ELSET={}", req.elset),
-                       "this element set is not defined; define it with *ELSET in the model data");
+                       undefined_name(s, req.elset, NameKind::ElementSet, kw.name, "an element set",
+                                      "define it with *ELSET in the model data"));
     req.elements = *set;
   }
   if (global)
@@ -240,8 +242,9 @@ const std::vector<std::int32_t>* output_set(BuildState& s, const Keyword& kw, bo
   failed = s.bad_sets.count(name) > 0; // its definition failed (reported)
   if (failed) return nullptr;
   throw InputError(kw.loc, fmt::format("{}={}", param, name),
-                   fmt::format("this {} set is not defined; define it with *{} in the model data",
-                               Nodes ? "node" : "element", param));
+                   undefined_name(s, name, Nodes ? NameKind::NodeSet : NameKind::ElementSet,
+                                  kw.name, Nodes ? "a node set" : "an element set",
+                                  fmt::format("define it with *{} in the model data", param)));
 }
 
 /// Adds the variables of one *NODE OUTPUT / *ELEMENT OUTPUT line to its request, on its set.

@@ -250,7 +250,9 @@ void handle_change_friction(BuildState& s, const Keyword& kw) {
   if (!set && s.bad_sets.count(elset)) return; // its definition failed (reported)
   if (!set)
     throw InputError(kw.loc, fmt::format("ELSET={}", elset),
-                     "this element set is not defined; define it with *ELSET in the model data");
+                     undefined_name(s, elset, NameKind::ElementSet, kw.name,
+                                    "an element set of gap elements",
+                                    "define it with *ELSET in the model data"));
   FrictionChange change;
   change.loc = kw.loc;
   for (ElemId e : *set) {

@@ -137,9 +137,9 @@ void handle_matrix_assemble(BuildState& s, const Keyword& kw) {
     const std::string nset = set_param(s, kw, "NSET", true);
     const auto* set = find_nset(s, nset);
     if (!set)
-      throw InputError(
-          kw.loc, fmt::format("NSET={}", nset),
-          "this node set is not defined; define it with *NSET before *MATRIX ASSEMBLE");
+      throw InputError(kw.loc, fmt::format("NSET={}", nset),
+                       undefined_name(s, nset, NameKind::NodeSet, kw.name, "a node set",
+                                      "define it with *NSET before *MATRIX ASSEMBLE"));
     if (s.unsorted_sets.count(nset))
       throw InputError(kw.loc, fmt::format("NSET={}", nset),
                        "gapfem keeps node sets sorted, so an UNSORTED set cannot give the order of "

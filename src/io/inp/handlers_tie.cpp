@@ -159,9 +159,9 @@ const Surface& tie_surface(BuildState& s, const FieldReader& r, std::size_t fiel
   if (key.find('.') == std::string::npos) key = name;
   const auto it = s.model.surfaces.find(key);
   if (it == s.model.surfaces.end())
-    r.fail(
-        fmt::format("surface {}", key),
-        fmt::format("the {} surface is not defined; define it with *SURFACE before the tie", role));
+    r.fail(fmt::format("{} surface {}", role, key),
+           undefined_name(s, key, NameKind::Surface, "*TIE", "a surface",
+                          "define it with *SURFACE before the tie"));
   return it->second;
 }
 

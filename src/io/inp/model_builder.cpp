@@ -42,7 +42,19 @@ long long read_label(BuildState& s, const FieldReader& r, std::string_view what)
 // ---------------------------------------------------------------- references
 
 EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field) {
-  const std::string t = std::string(trim(r.text(field)));
+  std::string t = std::string(trim(r.text(field)));
+  // a name in double quotes (Abaqus allows them for names with blanks): the name inside
+  if (const auto quotes = std::count(t.begin(), t.end(), '"'); quotes > 0) {
+    if (quotes != 2 || t.size() < 2 || t.front() != '"' || t.back() != '"') {
+      std::string bare = t;
+      std::erase(bare, '"');
+      r.fail(fmt::format("field {} ({})", field + 1, t),
+             fmt::format("a double quote (\") in this name is not closed; a quoted name is "
+                         "enclosed in two, as in \"{}\"",
+                         bare));
+    }
+    t = std::string(trim(std::string_view(t).substr(1, t.size() - 2)));
+  }
   EntityRef ref;
   // a number out of range names nothing: reported, unless its definition was (read_label)
   auto label = [&](std::string_view text) -> std::optional<long long> {
@@ -89,26 +101,50 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
   return ref;
 }
 
+namespace {
+/// Outside *ELEMENT and *NSET a node must have its coordinates when a keyword names it: one named
+/// earlier by an *ELEMENT or *NSET and defined further down is an error naming that line.
+void check_not_awaiting(const BuildState& s, const FieldReader& r,
+                        const std::vector<NodeId>& nodes) {
+  if (s.awaiting.empty() || s.forward_nodes_ok) return;
+  for (NodeId n : nodes)
+    if (s.awaiting.count(n) && !s.bad_nodes.count(s.model.mesh.node_labels[n])) {
+      const Label key = s.model.mesh.node_labels[n];
+      r.fail(fmt::format("node {}", s.model.label_of_key(key)),
+             node_defined_later(s, key, s.node_src[n], r.loc().keyword));
+    }
+}
+} // namespace
+
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field) {
   const std::string& t = r.text(field);
   if (t.empty())
     r.fail(fmt::format("field {}", field + 1), "a node number or node set name is required here");
   const EntityRef ref = parse_reference(s, r, field);
   if (ref.failed) return {};
+  const std::string& keyword = r.loc().keyword;
   if (ref.key) {
-    const NodeId n = s.model.mesh.find_node(*ref.key);
-    if (n >= 0) return {n};
-    if (s.bad_nodes.count(*ref.key)) return {};
-    r.fail(fmt::format("node {}", s.model.label_of_key(*ref.key)),
-           key_instance(*ref.key) > 0
-               ? "this node is not defined in its part; check the number"
-               : "this node is not defined; define it with *NODE before use");
+    NodeId n = s.model.mesh.find_node(*ref.key);
+    if (n < 0 && s.bad_nodes.count(*ref.key)) return {};
+    if (n < 0 && s.forward_nodes_ok) n = forward_node(s, *ref.key);
+    if (n >= 0) {
+      check_not_awaiting(s, r, {n});
+      return {n};
+    }
+    const std::string entity = fmt::format("node {}", s.model.label_of_key(*ref.key));
+    if (const SourceRef* later = later_node_line(s, *ref.key))
+      r.fail(entity, node_defined_later(s, *ref.key, *later, keyword));
+    r.fail(entity, undefined_node(s, *ref.key, true, !s.forward_nodes_ok));
   }
-  if (const auto* set = find_nset(s, ref.set)) return *set;
+  if (const auto* set = find_nset(s, ref.set)) {
+    check_not_awaiting(s, r, *set);
+    return *set;
+  }
   if (s.bad_sets.count(ref.set)) return {};
-  r.fail(fmt::format("node set {}", ref.set),
-         "this node set is not defined; define it with *NSET (or "
-         "NSET= on *NODE) before use, or check the spelling");
+  const std::string why =
+      undefined_name(s, ref.set, NameKind::NodeSet, keyword, "a node or a node set",
+                     "define it with *NSET (or NSET= on *NODE) before use, or check the spelling");
+  r.fail(why.starts_with("this ") ? fmt::format("node set {}", ref.set) : std::string(), why);
 }
 
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field) {
@@ -124,14 +160,17 @@ std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::s
     if (s.bad_elements.count(*ref.key)) return {};
     r.fail(fmt::format("element {}", s.model.label_of_key(*ref.key)),
            key_instance(*ref.key) > 0
-               ? "this element is not defined in its part; check the number"
+               ? fmt::format("instance {} (part {}) has no element {}; check the number",
+                             s.model.instances[key_instance(*ref.key) - 1],
+                             s.instance_parts[key_instance(*ref.key) - 1], key_local(*ref.key))
                : "this element is not defined; define it with *ELEMENT before use");
   }
   if (const auto* set = find_elset(s, ref.set)) return *set;
   if (s.bad_sets.count(ref.set)) return {};
-  r.fail(fmt::format("element set {}", ref.set),
-         "this element set is not defined; define it with *ELSET (or ELSET= on *ELEMENT) before "
-         "use, or check the spelling");
+  const std::string why = undefined_name(
+      s, ref.set, NameKind::ElementSet, r.loc().keyword, "an element or an element set",
+      "define it with *ELSET (or ELSET= on *ELEMENT) before use, or check the spelling");
+  r.fail(why.starts_with("this ") ? fmt::format("element set {}", ref.set) : std::string(), why);
 }
 
 const std::vector<ElemId>* find_elset(BuildState& s, const std::string& name) {

@@ -77,7 +77,21 @@ struct BuildState {
   /// Surfaces with a data line whose elements or nodes failed to be defined (reported there):
   /// constraints on them stay quiet when nothing is left.
   std::unordered_set<std::string> incomplete_surfaces;
-  std::vector<SourceRef> node_src;  ///< per node: its *NODE data line
+  std::vector<SourceRef> node_src; ///< per node: its *NODE data line
+  /// The node numbers each *NODE data line of the model data defines, by scope: the flat deck or
+  /// assembly (top_node_lines) and each part (part_node_lines, local numbers), read before the
+  /// keywords run; node_lines is the current scope's (nullptr: none), for the instance
+  /// node_lines_instance. With them *ELEMENT and *NSET may name a node defined further down.
+  using LabelLines = std::unordered_map<long long, SourceRef>;
+  LabelLines top_node_lines;
+  std::map<std::string, LabelLines> part_node_lines;
+  const LabelLines* node_lines = nullptr;
+  int node_lines_instance = 0;
+  /// Nodes named by *ELEMENT or *NSET before the *NODE line that defines them (forward_node):
+  /// created with their label, their coordinates set when that line is read.
+  std::unordered_set<NodeId> awaiting;
+  /// The keyword being read may name nodes defined further down (*ELEMENT, *NSET).
+  bool forward_nodes_ok = false;
   std::vector<NodeId> all_nodes;    ///< the implicit set NALL (find_nset)
   std::vector<ElemId> all_elements; ///< the implicit set EALL (find_elset)
 
@@ -178,6 +192,7 @@ struct BuildState {
   };
   InstanceDef instance;
   std::map<std::string, int> instance_index; ///< upper-case name → 1-based instance index
+  std::vector<std::string> instance_parts;   ///< per instance (Model::instances): its part
 
   /// Key of a node or element label read in the current scope.
   Label key(long long label) const { return make_key(scope.instance, label); }
@@ -268,6 +283,32 @@ EntityRef parse_reference(BuildState& s, const FieldReader& r, std::size_t field
 std::vector<NodeId> resolve_nodes(BuildState& s, const FieldReader& r, std::size_t field);
 /// The single node named by a parameter (REF NODE=, NODE=): a label or a set of one node.
 NodeId param_node(BuildState& s, const Keyword& kw, std::string_view param);
+/// What a name the deck uses can be.
+enum class NameKind : std::uint8_t { NodeSet, ElementSet, Surface };
+/// The sentence for `name` (upper case, qualified as looked up) used as a `kind` but not defined
+/// as one: it is another kind of name ("SOLID is an element set, not a node set; *CLOAD needs
+/// `need` here: ..."), a set of a part named without its instance ("... is defined in part BLOCK;
+/// ... e.g. BLOCK-1.CORNERS"), or undefined ("this node set is not defined; `remedy`").
+std::string undefined_name(const BuildState& s, const std::string& name, NameKind kind,
+                           std::string_view keyword, std::string_view need,
+                           std::string_view remedy);
+/// The sentence for a node number `key` that names no node: a number the instance's part does not
+/// have, a part's node named in the assembly without its instance, or a node never defined.
+/// `named`: the message's entity names the node already ("this node is not defined");
+/// `before_use`: the keyword needs the node defined above it (all but *ELEMENT and *NSET).
+std::string undefined_node(const BuildState& s, Label key, bool named, bool before_use);
+/// A node that *ELEMENT or *NSET names before the *NODE line of the model data that defines it
+/// further down (Abaqus reads the model data in any order): created now with its label, its
+/// coordinates set when that line is read (BuildState::awaiting). -1 when no *NODE line of the
+/// current scope defines it.
+NodeId forward_node(BuildState& s, Label key);
+/// The *NODE line further down that defines node `key` of the current scope, or nullptr.
+const SourceRef* later_node_line(const BuildState& s, Label key);
+/// The sentence for a node that a keyword other than *ELEMENT and *NSET names before the *NODE
+/// line that defines it (`line`).
+std::string node_defined_later(const BuildState& s, Label key, SourceRef line,
+                               std::string_view keyword);
+
 /// Elements named by a data field: an element label or an ELSET name.
 std::vector<ElemId> resolve_elements(BuildState& s, const FieldReader& r, std::size_t field);
 /// Elements of an ELSET parameter value (upper-cased), or nullptr when the set does not exist.

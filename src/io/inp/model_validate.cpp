@@ -77,7 +77,8 @@ void bind_property(BuildState& s, Kind kind, int index, const std::string& elset
   if (!set) {
     if (!s.bad_sets.count(elset))
       s.error(loc, fmt::format("ELSET={}", elset),
-              "this element set is not defined; define it with *ELSET or ELSET= on *ELEMENT");
+              undefined_name(s, elset, NameKind::ElementSet, loc.keyword, "an element set",
+                             "define it with *ELSET or ELSET= on *ELEMENT"));
     return;
   }
   bool family_reported = false, twice_reported = false;
@@ -407,18 +408,11 @@ void check_materials(BuildState& s) {
 
 } // namespace
 
-void finish_model_data(BuildState& s) {
-  if (s.model_done) return;
-  s.model_done = true;
-  // With errors already reported, the model is still bound (the steps refer to it) but its
-  // checks stay silent: elements without a section, a material without *ELASTIC, ... would only
-  // be false follow-ons of a definition reported in error.
-  struct Mute {
-    Diagnostics& d;
-    ~Mute() { d.set_muted(false); }
-  } mute{s.diag};
-  s.diag.set_muted(s.diag.n_errors() > 0);
-  Model& m = s.model;
+namespace {
+/// At the end of the model data: a part, instance or assembly left open, and a node named (by
+/// an *ELEMENT or *NSET) before a *NODE line that was never read.
+void check_open_blocks(BuildState& s) {
+  const Model& m = s.model;
   if (s.recording) {
     s.error(s.recording->loc, fmt::format("part {}", s.recording->name),
             "the part has no *END PART; close it before the assembly and the steps");
@@ -432,6 +426,32 @@ void finish_model_data(BuildState& s) {
   if (s.in_assembly)
     s.error(s.assembly_loc, "",
             "this *ASSEMBLY has no *END ASSEMBLY; close it before the first *STEP");
+  // nodes named before their *NODE line whose line was never read (its keyword reported)
+  for (NodeId n : s.awaiting) {
+    const SourceRef& at = s.node_src[n];
+    s.error(SourceLocation{m.source_files[at.file], at.line, "*NODE"},
+            fmt::format("node {}", m.node_label(n)),
+            "an *ELEMENT or *NSET above names this node, but this line did not define it; "
+            "correct the *NODE keyword above the line");
+    break; // one is enough
+  }
+}
+
+} // namespace
+
+void finish_model_data(BuildState& s) {
+  if (s.model_done) return;
+  s.model_done = true;
+  // With errors already reported, the model is still bound (the steps refer to it) but its
+  // checks stay silent: elements without a section, a material without *ELASTIC, ... would only
+  // be false follow-ons of a definition reported in error.
+  struct Mute {
+    Diagnostics& d;
+    ~Mute() { d.set_muted(false); }
+  } mute{s.diag};
+  s.diag.set_muted(s.diag.n_errors() > 0);
+  Model& m = s.model;
+  check_open_blocks(s);
   for (const auto& [name, part] : s.parts) {
     if (part.instances == 0)
       s.warn(part.loc, fmt::format("part {} is never instanced (*INSTANCE, PART={}), so it is "

@@ -498,6 +498,7 @@ void expand_instance(BuildState& s) {
   BuildState::PartDef& part = s.parts.at(def.part);
   const int index = static_cast<int>(s.model.instances.size()) + 1;
   s.model.instances.push_back(def.name);
+  s.instance_parts.push_back(def.part);
   s.instance_index[def.name] = index;
   ++part.instances;
   if (part.failed) return;
@@ -505,13 +506,47 @@ void expand_instance(BuildState& s) {
   const BuildState::Scope outer = s.scope;
   s.scope = def.scope;
   s.parent = Parent::None;
+  // the part's *NODE lines: its *ELEMENT and *NSET may name nodes defined further down
+  const auto lines = s.part_node_lines.find(def.part);
+  s.node_lines = lines == s.part_node_lines.end() ? nullptr : &lines->second;
+  s.node_lines_instance = index;
   const std::size_t errors_before = static_cast<std::size_t>(s.diag.n_errors());
   auto run = [&](Keyword* kw) { run_keyword(s, *kw); };
   for (Keyword* kw : part.keywords) run(kw);
   part.failed = static_cast<std::size_t>(s.diag.n_errors()) > errors_before;
+  s.node_lines = nullptr;
   for (Keyword* kw : def.keywords) run(kw);
   s.scope = outer;
   s.parent = Parent::None;
+  s.node_lines = &s.top_node_lines;
+  s.node_lines_instance = 0;
+}
+
+/// Before the keywords run: the node numbers each *NODE line of the model data defines, for the
+/// flat deck (and assembly) and for each part, so that *ELEMENT and *NSET may name a node whose
+/// *NODE line comes further down (Abaqus reads the model data in any order).
+void note_node_lines(BuildState& s, const Deck& deck) {
+  BuildState::LabelLines* part = nullptr;
+  bool in_instance = false;
+  for (const Keyword& kw : deck.keywords) {
+    if (kw.key == "STEP") break;
+    if (kw.key == "PART" && !s.transparent_parts) {
+      const Parameter* name = kw.find("NAME");
+      part = &s.part_node_lines[name ? to_upper(trim(name->value)) : std::string()];
+    } else if (kw.key == "ENDPART") {
+      part = nullptr;
+    } else if (kw.key == "INSTANCE" || kw.key == "ENDINSTANCE") {
+      in_instance = kw.key == "INSTANCE";
+    } else if (kw.key == "NODE" && !in_instance && !kw.failed) {
+      BuildState::LabelLines& lines = part ? *part : s.top_node_lines;
+      for (const DataLine& d : kw.data) {
+        long long label = 0;
+        if (!d.fields.empty() && check_integer(d.fields[0], 1, kMaxLabel, label) == IntCheck::Ok)
+          lines.emplace(label, SourceRef{d.file, d.line});
+      }
+    }
+  }
+  s.node_lines = &s.top_node_lines;
 }
 
 void dispatch(BuildState& s, Keyword& kw) {
@@ -597,6 +632,7 @@ void parse_deck(Deck& deck, BuildState& s) {
     assembly |= kw.key == "ASSEMBLY" || kw.key == "INSTANCE";
   }
   s.transparent_parts = part && !assembly;
+  note_node_lines(s, deck);
   for (Keyword& kw : deck.keywords) run_keyword(s, kw);
   finish_deck(s);
 }

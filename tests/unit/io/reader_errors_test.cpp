@@ -16,8 +16,7 @@ TEST(ReaderErrors, MessageNamesFileLineKeywordAndLabel) {
   deck += "*ELEMENT, TYPE=B31, ELSET=B\n12, 1, 99\n";
   const InputError e = read_error(deck, {}, "beam.inp");
   EXPECT_STREQ(e.what(),
-               "beam.inp:17: *ELEMENT: element 12: node 99 is not defined; define it with *NODE "
-               "before use");
+               "beam.inp:17: *ELEMENT: element 12: node 99 is not defined; define it with *NODE");
   EXPECT_EQ(e.location().file, "beam.inp");
   EXPECT_EQ(e.location().line, 17);
   EXPECT_EQ(e.location().keyword, "*ELEMENT");

@@ -521,5 +521,14 @@ TEST(ReaderSyntax, TextAfterASingleStarIsSaidToBeOne) {
                   "comment: a line starting with a single * is a keyword line");
 }
 
+TEST(ReaderSyntax, QuotedNamesInDataLines) {
+  // a name in double quotes is the name inside them; an unclosed quote is named
+  const std::string steps = std::string(kTrussModel) + "*STEP\n*STATIC\n";
+  EXPECT_NO_THROW(read(steps + "*BOUNDARY\n\"ALL\", 1, 3\n*END STEP\n"));
+  EXPECT_CONTAINS(error_text(steps + "*BOUNDARY\n\"ALL, 1, 3\n*END STEP\n"),
+                  "deck.inp:14: *BOUNDARY: field 1 (\"ALL): a double quote (\") in this name is "
+                  "not closed; a quoted name is enclosed in two, as in \"ALL\"");
+}
+
 } // namespace
 } // namespace gapfem

@@ -196,7 +196,7 @@ TEST(Assembly, BadInstancesAndQualifiedReferencesAreInputErrors) {
                 .find("instance J is not defined"),
             std::string::npos);
   EXPECT_NE(error_of("*INSTANCE, NAME=I, PART=P\n*END INSTANCE\n*NSET, NSET=S\nI.7\n")
-                .find("node I.7: this node is not defined in its part"),
+                .find("node I.7: instance I (part P) has no node 7; check the number"),
             std::string::npos);
   const std::string rot = error_of("*INSTANCE, NAME=I, PART=P\n0., 0., 0.\n1., 1., 1., 1., 1., 1., "
                                    "30.\n*END INSTANCE\n");

@@ -208,7 +208,7 @@ TEST(Tie, BadTiesAreInputErrorsAndBoundaryConditionsHoldSlaves) {
       << r.error;
   // undefined surfaces, a node-based master
   r = run(two_boxes(2, 2, "C3D8") + "*TIE, NAME=T\nSLAVE, NOPE\n" + model + step);
-  EXPECT_NE(r.error.find("surface NOPE: the master surface is not defined"), std::string::npos)
+  EXPECT_NE(r.error.find("master surface NOPE: this surface is not defined"), std::string::npos)
       << r.error;
   r = run(two_boxes(2, 2, "C3D8") + "*SURFACE, NAME=N, TYPE=NODE\nX0\n*TIE, NAME=T\nSLAVE, N\n" +
           model + step);
