@@ -131,6 +131,8 @@ double pipe_axial_force(const BeamSectionProperties& s, const DistributedLoad& l
 Vec3 dead_intensity(const BeamLoadInput& li, int p) {
   const DistributedLoad& load = li.load;
   if (load.kind == DistLoadKind::LineLoad) {
+    // (face 0 is PX/PY/PZ: a global direction; a label without one is rejected by the reader)
+    FE_CHECK(load.face != 0 || load.direction != Vec3{}, "a beam line load without a direction");
     if (load.face == 0) return scale(li.magnitude, load.direction);
     return scale(li.magnitude, li.g.pts[p].L0[load.face]);
   }

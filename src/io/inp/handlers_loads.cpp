@@ -148,21 +148,42 @@ void require_displacement(const BuildState& s, const FieldReader& r, ElemId e) {
            "this element has no displacement DOFs, so it cannot take a mechanical load");
 }
 
-/// A distributed load on a beam: P1/P2 (local n1/n2), PX/PY/PZ (global), GRAV, BX/BY/BZ.
+/// The *DLOAD labels a beam element takes: those of Abaqus's beam library gapfem has (P1 and PZ,
+/// BZ only in space; pipes also their pressures).
+std::string beam_load_labels(ElementType t) {
+  const bool planar = element_info(t).space == SpaceRequirement::Planar;
+  const bool pipe = t == ElementType::PIPE31 || t == ElementType::PIPE32;
+  return fmt::format("{}{}",
+                     planar ? "P2 (force per length along the section's n2), PX, PY (global "
+                              "directions), BX, BY (force per volume) and GRAV"
+                            : "P1, P2 (force per length along the section's n1, n2), PX, PY, PZ "
+                              "(global directions), BX, BY, BZ (force per volume) and GRAV",
+                     pipe ? ", and as a pipe PI, PE (internal, external pressure), HPI and HPE"
+                          : "");
+}
+
+/// A distributed load on a beam: P1/P2 (local n1/n2), PX/PY/PZ (global), GRAV, BX/BY/BZ; any
+/// other label is an error listing the beam's labels.
 DistributedLoad beam_dload(const BuildState& s, const FieldReader& r, ElemId e, DistributedLoad d,
                            const std::string& label) {
   d.elem = e;
-  const bool planar = element_info(s.model.mesh.elem_types[e]).space == SpaceRequirement::Planar;
+  const ElementType t = s.model.mesh.elem_types[e];
+  const std::string_view name = element_info(t).name;
+  const bool planar = element_info(t).space == SpaceRequirement::Planar;
+  auto reject = [&](const std::string& why) {
+    r.fail(elem_entity(s, e), fmt::format("{}; a {} takes {}", why, name, beam_load_labels(t)));
+  };
   if (d.kind == DistLoadKind::PipePressure) return d;
   if (d.kind == DistLoadKind::Pressure) {
-    if (d.face > 2 || (planar && d.face == 1))
-      r.fail(elem_entity(s, e),
-             fmt::format("{} is not a beam load; beams in space take P1 and P2 (force per length "
-                         "along the section's n1 and n2), planar beams P2",
-                         label));
+    if (d.face == 0) reject("P is not a beam load: a beam has no faces for a pressure");
+    if (d.face > 2) reject(fmt::format("{} is not a beam load", label));
+    if (planar && d.face == 1)
+      reject("P1 is not a load of a planar beam (it acts along n1 = (0, 0, -1), out of the "
+             "plane)");
     d.kind = DistLoadKind::LineLoad;
-  } else if (d.kind == DistLoadKind::LineLoad && planar && d.direction[2] != 0.0) {
-    r.fail(elem_entity(s, e), "PZ acts out of the plane of a planar beam; use PX or PY");
+  } else if ((d.kind == DistLoadKind::LineLoad || d.kind == DistLoadKind::BodyForce) && planar &&
+             d.direction[2] != 0.0) {
+    reject(fmt::format("{} acts out of the plane of a planar beam", label));
   }
   return d;
 }
@@ -298,6 +319,155 @@ void check_one_pipe_pressure(const BuildState& s, const Keyword& kw) {
 }
 } // namespace
 
+namespace {
+/// The load of a *DLOAD line by its label (field 2) and the fields that label takes.
+void read_dload_label(const FieldReader& r, const std::string& label, DistributedLoad& d) {
+  const bool hydro_label = label == "HPI" || label == "HPE";
+  if (label == "GRAV") {
+    r.at_most(6, "element or element set, GRAV, magnitude, direction x, y, z");
+    const Vec3 v{r.real_or(3, 0.0, "direction x"), r.real_or(4, 0.0, "direction y"),
+                 r.real_or(5, 0.0, "direction z")};
+    const double len = std::hypot(v[0], v[1], v[2]);
+    if (len == 0.0)
+      r.fail("fields 4-6 (direction)", "GRAV needs a non-zero direction vector, e.g. 0, 0, -1");
+    d.kind = DistLoadKind::Gravity;
+    d.direction = {v[0] / len, v[1] / len, v[2] / len};
+  } else if (label == "BX" || label == "BY" || label == "BZ") {
+    r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
+    d.kind = DistLoadKind::BodyForce;
+    d.direction[label[1] - 'X'] = 1.0;
+  } else if (label == "PI" || label == "PE") {
+    r.at_most(4, "element or element set, PI/PE, magnitude, effective diameter");
+    d.kind = DistLoadKind::PipePressure;
+    d.face = label == "PI" ? 1 : 2;
+    d.diameter = r.real_or(3, 0.0, "effective diameter");
+    if (d.diameter < 0.0)
+      r.fail("field 4 (effective diameter)",
+             fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
+  } else if (hydro_label) {
+    r.at_most(6, "element or element set, HPI/HPE, magnitude, zero-pressure height z0, "
+                 "reference height z1, effective diameter");
+    d.kind = DistLoadKind::PipePressure;
+    d.face = label == "HPI" ? 1 : 2;
+    d.hydrostatic = true;
+    d.z0 = r.real(3, "zero-pressure height z0");
+    d.z1 = r.real(4, "reference height z1");
+    if (d.z0 == d.z1)
+      r.fail("fields 4-5 (z0, z1)",
+             fmt::format("the zero-pressure height and the reference height (where the "
+                         "pressure is the magnitude) must differ, both are {}",
+                         d.z0));
+    d.diameter = r.real_or(5, 0.0, "effective diameter");
+    if (d.diameter < 0.0)
+      r.fail("field 6 (effective diameter)",
+             fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
+  } else if (label == "PX" || label == "PY" || label == "PZ") {
+    r.at_most(3, "element or element set, PX/PY/PZ, magnitude");
+    d.kind = DistLoadKind::LineLoad;
+    d.direction[label[1] - 'X'] = 1.0;
+  } else if (const int face = face_of(label, "P"); face > 0) {
+    r.at_most(3, "element or element set, Pn, magnitude");
+    d.kind = DistLoadKind::Pressure;
+    d.face = face;
+  } else if (face == 0) {
+    r.at_most(3, "element or element set, P, magnitude");
+    d.kind = DistLoadKind::Pressure; // on shells; other elements need a face (checked below)
+    d.face = 0;
+  } else {
+    r.fail(fmt::format("field 2 ({})", r.text(1)),
+           "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
+           "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV; pipes also PI, PE, HPI, HPE)");
+  }
+}
+
+/// The pipe twin of a beam type (B31 → PIPE31), or nullptr: gapfem's pipes are in space.
+const char* pipe_twin(ElementType t) {
+  if (t == ElementType::B31) return "PIPE31";
+  if (t == ElementType::B32) return "PIPE32";
+  return nullptr;
+}
+
+/// A *DLOAD with a pipe label (PI, PE, HPI, HPE) on an element that is not a pipe.
+[[noreturn]] void pipe_label_on_other(const BuildState& s, const FieldReader& r, ElemId e,
+                                      const std::string& label) {
+  const ElementType t = s.model.mesh.elem_types[e];
+  const ElementTypeInfo& info = element_info(t);
+  const bool inner = label == "PI" || label == "HPI";
+  if (info.family != ElementFamily::Beam)
+    r.fail(elem_entity(s, e),
+           fmt::format("{} is a pressure on pipe elements (PIPE31, PIPE32); {}", label,
+                       info.family == ElementFamily::Shell
+                           ? "use P for a pressure on a shell"
+                           : "use Pn for a pressure on face n of a continuum element"));
+  const char* twin = pipe_twin(t);
+  r.fail(elem_entity(s, e),
+         fmt::format("{} ({} pipe pressure) acts on pipe elements (PIPE31, PIPE32) only; a {} "
+                     "takes {}; {}",
+                     label, inner ? "internal" : "external", info.name, beam_load_labels(t),
+                     twin ? fmt::format("for a pipe pressure make the elements {} with *BEAM "
+                                        "SECTION, SECTION=PIPE",
+                                        twin)
+                          : std::string("gapfem's pipe elements (PIPE31, PIPE32) are in space")));
+}
+
+/// Adds the load of a *DLOAD line to element e (one of its set: `single` when the line names e
+/// alone); an element of a set that cannot take the load is skipped where Abaqus skips it.
+void add_element_dload(BuildState& s, const FieldReader& r, ElemId e, DistributedLoad d,
+                       const std::string& label, bool single, std::vector<DistributedLoad>& loads) {
+  const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
+  const bool pipe = s.model.mesh.elem_types[e] == ElementType::PIPE31 ||
+                    s.model.mesh.elem_types[e] == ElementType::PIPE32;
+  if (d.kind == DistLoadKind::PipePressure && !pipe) {
+    if (single || info.family == ElementFamily::Beam) pipe_label_on_other(s, r, e, label);
+    return;
+  }
+  if (info.family == ElementFamily::Beam) {
+    loads.push_back(beam_dload(s, r, e, d, label));
+    return;
+  }
+  if (d.kind == DistLoadKind::Pressure && (d.face == 0) != (info.family == ElementFamily::Shell)) {
+    if (d.face == 0)
+      r.fail("field 2 (P)", fmt::format("element {} is not a shell: give the face of the "
+                                        "pressure, P1, P2, … (face numbers of {}), or use "
+                                        "*DSLOAD on a surface",
+                                        s.model.element_label(e), info.name));
+    r.fail(fmt::format("field 2 ({})", label),
+           fmt::format("element {} is a shell ({}), loaded on its reference surface by P "
+                       "(its force along the shell's positive normal); use P",
+                       s.model.element_label(e), info.name));
+  }
+  if (info.family == ElementFamily::Shell) {
+    if (d.kind == DistLoadKind::Pressure) require_displacement(s, r, e); // not on DS3 …
+    d.elem = e;
+    loads.push_back(d);
+    return;
+  }
+  if (d.kind == DistLoadKind::LineLoad) {
+    if (single)
+      r.fail(elem_entity(s, e), fmt::format("{} is a load per unit length on beams; use Pn "
+                                            "(pressure on face n), GRAV or BX/BY/BZ here",
+                                            label));
+    return;
+  }
+  if (d.kind != DistLoadKind::Pressure) {
+    // body loads act on elements with volume; springs, gaps and heat-only elements in a set are
+    // skipped, named alone they are an error
+    const bool massless = info.family == ElementFamily::Spring ||
+                          info.family == ElementFamily::Gap || !info.displacement;
+    if (massless) {
+      if (single)
+        r.fail(elem_entity(s, e), "body loads need an element with volume and displacement DOFs");
+      return;
+    }
+  } else {
+    require_displacement(s, r, e);
+    check_face(s, r, e, d.face, FaceUse::Pressure);
+  }
+  d.elem = e;
+  loads.push_back(d);
+}
+} // namespace
+
 void handle_dload(BuildState& s, const Keyword& kw) {
   const int amplitude = amplitude_param(s, kw);
   std::vector<DistributedLoad> loads;
@@ -308,128 +478,14 @@ void handle_dload(BuildState& s, const Keyword& kw) {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "rotational body forces (CENTRIF, ROTA, CORIO) are not available in gapfem; apply "
              "the centrifugal force as *CLOAD at the nodes or as BX/BY/BZ body forces");
-    const bool hydro_label = label == "HPI" || label == "HPE";
-    const bool pipe_label = label == "PI" || label == "PE" || hydro_label;
-    const double mag = r.real(2, "magnitude");
-    const bool single = is_label(r, 0);
-    const auto elems = resolve_elements(s, r, 0);
     DistributedLoad d;
-    d.magnitude = mag;
+    d.magnitude = r.real(2, "magnitude");
     d.amplitude = amplitude;
     d.loc = r.loc();
-    if (label == "GRAV") {
-      r.at_most(6, "element or element set, GRAV, magnitude, direction x, y, z");
-      const Vec3 v{r.real_or(3, 0.0, "direction x"), r.real_or(4, 0.0, "direction y"),
-                   r.real_or(5, 0.0, "direction z")};
-      const double len = std::hypot(v[0], v[1], v[2]);
-      if (len == 0.0)
-        r.fail("fields 4-6 (direction)", "GRAV needs a non-zero direction vector, e.g. 0, 0, -1");
-      d.kind = DistLoadKind::Gravity;
-      d.direction = {v[0] / len, v[1] / len, v[2] / len};
-    } else if (label == "BX" || label == "BY" || label == "BZ") {
-      r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
-      d.kind = DistLoadKind::BodyForce;
-      d.direction[label[1] - 'X'] = 1.0;
-    } else if (label == "PI" || label == "PE") {
-      r.at_most(4, "element or element set, PI/PE, magnitude, effective diameter");
-      d.kind = DistLoadKind::PipePressure;
-      d.face = label == "PI" ? 1 : 2;
-      d.diameter = r.real_or(3, 0.0, "effective diameter");
-      if (d.diameter < 0.0)
-        r.fail("field 4 (effective diameter)",
-               fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
-    } else if (hydro_label) {
-      r.at_most(6, "element or element set, HPI/HPE, magnitude, zero-pressure height z0, "
-                   "reference height z1, effective diameter");
-      d.kind = DistLoadKind::PipePressure;
-      d.face = label == "HPI" ? 1 : 2;
-      d.hydrostatic = true;
-      d.z0 = r.real(3, "zero-pressure height z0");
-      d.z1 = r.real(4, "reference height z1");
-      if (d.z0 == d.z1)
-        r.fail("fields 4-5 (z0, z1)",
-               fmt::format("the zero-pressure height and the reference height (where the "
-                           "pressure is the magnitude) must differ, both are {}",
-                           d.z0));
-      d.diameter = r.real_or(5, 0.0, "effective diameter");
-      if (d.diameter < 0.0)
-        r.fail("field 6 (effective diameter)",
-               fmt::format("must be positive (or blank for the section's), not {}", d.diameter));
-    } else if (label == "PX" || label == "PY" || label == "PZ") {
-      r.at_most(3, "element or element set, PX/PY/PZ, magnitude");
-      d.kind = DistLoadKind::LineLoad;
-      d.direction[label[1] - 'X'] = 1.0;
-    } else if (const int face = face_of(label, "P"); face > 0) {
-      r.at_most(3, "element or element set, Pn, magnitude");
-      d.kind = DistLoadKind::Pressure;
-      d.face = face;
-    } else if (face == 0) {
-      r.at_most(3, "element or element set, P, magnitude");
-      d.kind = DistLoadKind::Pressure; // on shells; other elements need a face (checked below)
-      d.face = 0;
-    } else {
-      r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "this load label is not supported by gapfem; use Pn (pressure on face n), GRAV, BX, "
-             "BY or BZ (beams: P1, P2, PX, PY, PZ, GRAV; pipes also PI, PE, HPI, HPE)");
-    }
-    for (ElemId e : elems) {
-      const ElementTypeInfo& info = element_info(s.model.mesh.elem_types[e]);
-      const bool pipe = s.model.mesh.elem_types[e] == ElementType::PIPE31 ||
-                        s.model.mesh.elem_types[e] == ElementType::PIPE32;
-      if (pipe_label && !pipe) {
-        if (single || info.family == ElementFamily::Beam)
-          r.fail(elem_entity(s, e), fmt::format("{} is a pressure on pipe elements (PIPE31, "
-                                                "PIPE32); use P for a face pressure",
-                                                label));
-        continue;
-      }
-      if (info.family == ElementFamily::Beam) {
-        loads.push_back(beam_dload(s, r, e, d, label));
-        continue;
-      }
-      if (d.kind == DistLoadKind::Pressure &&
-          (d.face == 0) != (info.family == ElementFamily::Shell)) {
-        if (d.face == 0)
-          r.fail("field 2 (P)", fmt::format("element {} is not a shell: give the face of the "
-                                            "pressure, P1, P2, … (face numbers of {}), or use "
-                                            "*DSLOAD on a surface",
-                                            s.model.element_label(e), info.name));
-        r.fail(fmt::format("field 2 ({})", label),
-               fmt::format("element {} is a shell ({}), loaded on its reference surface by P "
-                           "(its force along the shell's positive normal); use P",
-                           s.model.element_label(e), info.name));
-      }
-      if (info.family == ElementFamily::Shell) {
-        if (d.kind == DistLoadKind::Pressure) require_displacement(s, r, e); // not on DS3 …
-        d.elem = e;
-        loads.push_back(d);
-        continue;
-      }
-      if (d.kind == DistLoadKind::LineLoad) {
-        if (single)
-          r.fail(elem_entity(s, e), fmt::format("{} is a load per unit length on beams; use P "
-                                                "(pressure on a face), GRAV or BX/BY/BZ here",
-                                                label));
-        continue;
-      }
-      if (d.kind != DistLoadKind::Pressure) {
-        // body loads act on elements with volume; springs, gaps and heat-only elements in a set are
-        // skipped, named alone they are an error
-        const bool massless = info.family == ElementFamily::Spring ||
-                              info.family == ElementFamily::Gap || !info.displacement;
-        if (massless) {
-          if (single)
-            r.fail(elem_entity(s, e),
-                   "body loads need an element with volume and displacement DOFs");
-          continue;
-        }
-      } else {
-        require_displacement(s, r, e);
-        check_face(s, r, e, d.face, FaceUse::Pressure);
-      }
-      d.elem = e;
-      loads.push_back(d);
-    }
+    const bool single = is_label(r, 0);
+    const auto elems = resolve_elements(s, r, 0);
+    read_dload_label(r, label, d);
+    for (ElemId e : elems) add_element_dload(s, r, e, d, label, single, loads);
   });
   merge_dloads(s, kw, loads);
   check_one_pipe_pressure(s, kw);

@@ -180,9 +180,23 @@ TEST(BeamInput, MisplacedShearStiffnessAndBadLoadsAreErrors) {
             std::string::npos)
       << r.error;
   expect_input_error(deck("B21", rect, "*DLOAD\nB, PZ, 1.\n", true),
-                     "PZ acts out of the plane of a planar beam");
+                     "PZ acts out of the plane of a planar beam; a B21 takes P2");
   expect_input_error(deck("B21", rect, "*DLOAD\nB, P1, 1.\n", true),
-                     "P1 is not a beam load; beams in space take P1 and P2");
+                     "P1 is not a load of a planar beam (it acts along n1 = (0, 0, -1), out of the "
+                     "plane); a B21 takes P2 (force per length along the section's n2), PX, PY "
+                     "(global directions), BX, BY (force per volume) and GRAV");
+  expect_input_error(deck("B21", rect, "*DLOAD\nB, BZ, 1.\n", true),
+                     "BZ acts out of the plane of a planar beam");
+  // a face pressure on a beam was once read as a line load without a direction (zero)
+  expect_input_error(deck("B31", rect, "*DLOAD\nB, P, 1.\n"),
+                     "P is not a beam load: a beam has no faces for a pressure; a B31 takes P1, "
+                     "P2 (force per length along the section's n1, n2), PX, PY, PZ (global "
+                     "directions), BX, BY, BZ (force per volume) and GRAV");
+  expect_input_error(deck("B31", rect, "*DLOAD\nB, PI, 1.\n"),
+                     "PI (internal pipe pressure) acts on pipe elements (PIPE31, PIPE32) only; a "
+                     "B31 takes P1, P2");
+  expect_input_error(deck("B21", rect, "*DLOAD\nB, PE, 1.\n", true),
+                     "gapfem's pipe elements (PIPE31, PIPE32) are in space");
   expect_input_error(deck("B31", rect, "*DLOAD\nB, GRAV, 9.81, 0, -1, 0\n"),
                      "GRAV needs the mass density of material M");
   expect_input_error(deck("B31", "*BEAM GENERAL SECTION, ELSET=B\n1., 1., 0., 1., 1.\n\n1., 1.\n",
