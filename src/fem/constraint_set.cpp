@@ -68,13 +68,14 @@ ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
     const LinearConstraint& lc = model.constraints[c];
     const auto start = _slot.size();
     bool dropped = false;
-    for (const ConstraintTerm& t : lc.terms) {
+    for (std::size_t k = 0; k < lc.terms.size(); ++k) {
+      const ConstraintTerm& t = lc.terms[k];
       if (expand_term(model, dofs, t, lc.local_dofs, _slot, _coeff)) continue;
       if (lc.drop_if_missing) {
         dropped = true;
         break;
       }
-      throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),
+      throw InputError(lc.loc_of(k), lc.entity(model.node_label(t.node).str()),
                        fmt::format("no element at this node has DOF {}, so the constraint "
                                    "cannot act on it; constrain a DOF the node's elements use",
                                    abaqus_number(t.dof)));
@@ -92,7 +93,7 @@ ConstraintSet::ConstraintSet(const Model& model, const DofMap& dofs) {
             : std::pair{dependent.end(), true};
     if (!fresh) {
       const LinearConstraint& other = model.constraints[it->second];
-      throw InputError(lc.loc, lc.entity(model.node_label(t.node).str()),
+      throw InputError(lc.loc_of(0), lc.entity(model.node_label(t.node).str()),
                        dependent_twice(lc, other, abaqus_number(t.dof)));
     }
     _ptr.push_back(static_cast<LocalIndex>(_slot.size()));

@@ -35,7 +35,13 @@ struct LinearConstraint {
   ConstraintKind kind = ConstraintKind::Equation;
   /// How messages name it besides its location: "" (an *EQUATION, *MPC), "tie T1", "coupling C1".
   std::string name;
-  SourceLocation loc; ///< the data line (or keyword line) that defined it
+  SourceLocation loc; ///< the data line (or keyword line) that defined it (its dependent term's)
+  /// Per term, the data line that gave it (an *EQUATION spans lines); empty: `loc` for every term.
+  std::vector<SourceLocation> term_loc;
+  /// Where term k was given.
+  const SourceLocation& loc_of(std::size_t k) const {
+    return k < term_loc.size() ? term_loc[k] : loc;
+  }
   /// "node 12" prefixed by the constraint's name ("tie T1: node 12").
   std::string entity(const std::string& node) const {
     return name.empty() ? "node " + node : name + ": node " + node;

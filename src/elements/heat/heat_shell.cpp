@@ -397,7 +397,7 @@ class HeatShellKernel final : public ElementKernel {
 std::unique_ptr<ElementKernel> make_heat_shell_kernel(const KernelContext& ctx) {
   const Model& model = ctx.model;
   const ShellSection& sec = shell::shell_section_of(ctx);
-  const std::string entity = fmt::format("*SHELL SECTION, ELSET={}", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   if (sec.material < 0 || sec.material >= static_cast<int>(model.materials.size()))
     throw InputError(sec.loc, entity, "the *SHELL SECTION has no valid MATERIAL");
   if (sec.n_points > kMaxTemperaturePoints)

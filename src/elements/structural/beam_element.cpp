@@ -54,8 +54,7 @@ void check_general_density(const KernelContext& ctx, const BeamSection& sec) {
 BeamData beam_data(const KernelContext& ctx) {
   const Model& model = ctx.model;
   const BeamSection& sec = beam_section_of(ctx);
-  const std::string entity = fmt::format(
-      "{}, ELSET={}", sec.general ? "*BEAM GENERAL SECTION" : "*BEAM SECTION", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   const std::string_view name = element_info(ctx.type).name;
   const bool planar = element_info(ctx.type).space == SpaceRequirement::Planar;
   BeamData d;

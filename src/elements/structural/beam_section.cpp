@@ -61,10 +61,7 @@ void add_wall(BeamSectionProperties& p, P2 a, P2 b, double t) {
 
 class Checker {
  public:
-  explicit Checker(const BeamSection& s)
-      : _s(s),
-        _entity(fmt::format("{}, ELSET={}", s.general ? "*BEAM GENERAL SECTION" : "*BEAM SECTION",
-                            s.elset)) {}
+  explicit Checker(const BeamSection& s) : _s(s), _entity(fmt::format("ELSET={}", s.elset)) {}
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(_s.loc, _entity, fmt::format("SECTION={}: {}", shape_name(_s.shape), what));
   }
@@ -110,10 +107,14 @@ void round(BeamSectionProperties& p, double r, double ri, double k) {
 void box(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
   c.need(6, "a, b, t1, t2, t3, t4");
   const double a = d[0], b = d[1], t1 = d[2], t2 = d[3], t3 = d[4], t4 = d[5];
-  if (!(t1 + t3 < a) || !(t2 + t4 < b))
-    c.fail(fmt::format("the walls are thicker than the box (t1 + t3 = {} must be below a = {}, "
-                       "t2 + t4 = {} below b = {})",
-                       t1 + t3, a, t2 + t4, b));
+  if (!(t1 + t3 < a))
+    c.fail(fmt::format("the walls at +x1 and -x1 are thicker than the box is wide: t1 + t3 = {} "
+                       "must be below a = {}",
+                       t1 + t3, a));
+  if (!(t2 + t4 < b))
+    c.fail(fmt::format("the walls at +x2 and -x2 are thicker than the box is high: t2 + t4 = {} "
+                       "must be below b = {}",
+                       t2 + t4, b));
   const double xr = 0.5 * a - 0.5 * t1, xl = -0.5 * a + 0.5 * t3;
   const double yt = 0.5 * b - 0.5 * t2, yb = -0.5 * b + 0.5 * t4;
   add_wall(p, {xr, yb}, {xr, yt}, t1);
@@ -188,11 +189,14 @@ void hex(BeamSectionProperties& p, const Checker& c, const std::vector<double>& 
 void l_section(BeamSectionProperties& p, const Checker& c, const std::vector<double>& d) {
   c.need(4, "a, b, t1, t2");
   const double a = d[0], b = d[1], t1 = d[2], t2 = d[3];
-  if (!(t1 < b) || !(t2 < a))
-    c.fail(fmt::format(
-        "each leg must be thinner than the other leg is long (t1 = {} must be below b = {} and "
-        "t2 = {} below a = {})",
-        t1, b, t2, a));
+  if (!(t1 < b))
+    c.fail(fmt::format("the leg along axis 1 is too thick: its thickness t1 = {} must be below "
+                       "b = {}, the length of the other leg",
+                       t1, b));
+  if (!(t2 < a))
+    c.fail(fmt::format("the leg along axis 2 is too thick: its thickness t2 = {} must be below "
+                       "a = {}, the length of the other leg",
+                       t2, a));
   const double la = a - 0.5 * t2, lb = b - 0.5 * t1; // mid-line lengths of the legs
   const double area = t1 * la + t2 * lb;
   // centroid from the outer corner (the corner of the mid-lines is at (t2/2, t1/2))

@@ -141,7 +141,7 @@ void CoupledTrussKernel::recover(const ElementInput& in, ElementRecovery& out) c
 
 std::unique_ptr<ElementKernel> make_coupled_truss_kernel(const KernelContext& ctx) {
   const SolidSection& sec = solid_section_of(ctx);
-  const std::string entity = fmt::format("*SOLID SECTION, ELSET={}", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   if (!(sec.thickness > 0.0))
     throw InputError(sec.loc, entity,
                      fmt::format("the truss cross-section area {} is not positive; give the area "

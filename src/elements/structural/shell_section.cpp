@@ -64,7 +64,7 @@ std::vector<double> block_thicknesses(const KernelContext& ctx, const ShellSecti
         const auto& nt = model.nodal_thickness;
         t = node < static_cast<NodeId>(nt.size()) ? nt[node] : 0.0;
         if (!(t > 0.0))
-          throw InputError(sec.loc, fmt::format("*SHELL SECTION, ELSET={}", sec.elset),
+          throw InputError(sec.loc, fmt::format("ELSET={}", sec.elset),
                            fmt::format("the section has NODAL THICKNESS but node {} of element {} "
                                        "has no thickness; give it in *NODAL THICKNESS",
                                        model.node_label(node), model.element_label(e)));
@@ -77,7 +77,7 @@ std::vector<double> block_thicknesses(const KernelContext& ctx, const ShellSecti
 ShellData shell_data(const KernelContext& ctx) {
   const Model& model = ctx.model;
   const ShellSection& sec = shell_section_of(ctx);
-  const std::string entity = fmt::format("*SHELL SECTION, ELSET={}", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   ShellData d;
   d.type = ctx.type;
   d.material = section_material(model, sec.material, sec.loc, entity);

@@ -113,7 +113,7 @@ std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx) {
                                  "for the element set that contains them",
                                  name));
   const SpringSection& sec = model.spring_sections[ctx.property.index];
-  const std::string entity = fmt::format("*SPRING, ELSET={}", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   if (sec.stiffness.empty() || sec.stiffness.n_values < 1)
     throw InputError(sec.loc, entity,
                      "no spring stiffness is given; add a data line with the stiffness");

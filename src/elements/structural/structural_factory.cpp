@@ -57,7 +57,7 @@ const Material& section_material(const Model& model, int material, const SourceL
                      "*MATERIAL defined in the deck");
   const Material& m = model.materials[material];
   if (!m.has_elastic())
-    throw InputError(m.loc, fmt::format("*MATERIAL, NAME={}", m.name),
+    throw InputError(m.loc, fmt::format("NAME={}", m.name),
                      "the material has no *ELASTIC data, which this element needs; add *ELASTIC "
                      "with Young's modulus and Poisson's ratio");
   return m;

@@ -103,7 +103,7 @@ void TrussKernel::recover(const ElementInput& in, ElementRecovery& out) const {
 std::unique_ptr<ElementKernel> make_truss_kernel(const KernelContext& ctx) {
   const Model& model = ctx.model;
   const SolidSection& sec = solid_section_of(ctx);
-  const std::string entity = fmt::format("*SOLID SECTION, ELSET={}", sec.elset);
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
   if (!(sec.thickness > 0.0))
     throw InputError(sec.loc, entity,
                      fmt::format("the truss cross-section area {} is not positive; give the area "

@@ -35,7 +35,7 @@ struct TermSpec {
 };
 
 /// Makes the equations of one *EQUATION block entry: one per node of the node sets.
-void add_equations(BuildState& s, const std::vector<TermSpec>& terms, const SourceLocation& loc) {
+void add_equations(BuildState& s, const std::vector<TermSpec>& terms) {
   std::size_t count = 1;
   for (const TermSpec& t : terms) {
     if (t.nodes.empty()) return; // a failed set (already reported)
@@ -52,8 +52,9 @@ void add_equations(BuildState& s, const std::vector<TermSpec>& terms, const Sour
     LinearConstraint c;
     c.kind = ConstraintKind::Equation;
     c.local_dofs = true;
-    c.loc = loc;
+    c.loc = terms.front().loc; // the line of its dependent (first) term
     for (const TermSpec& t : terms) {
+      c.term_loc.push_back(t.loc);
       const NodeId n = t.nodes.size() == 1 ? t.nodes[0] : t.nodes[i];
       for (const ConstraintTerm& prev : c.terms)
         if (prev.node == n && prev.dof == t.dof)
@@ -127,7 +128,7 @@ void handle_equation(BuildState& s, const Keyword& kw) {
           terms.push_back(std::move(t));
         }
       }
-      add_equations(s, terms, head.loc());
+      add_equations(s, terms);
     } catch (const InputError& e) {
       s.diag.error(e);
     }
@@ -201,7 +202,7 @@ void handle_transform(BuildState& s, const Keyword& kw) {
   t.type = type == 0 ? NodeTransform::Type::Rectangular : NodeTransform::Type::Cylindrical;
   t.loc = kw.loc;
   bool read = false;
-  for_each_line(s, kw, [&](const DataLine& line) {
+  const int failed = for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     if (read) r.fail("data", "a *TRANSFORM takes one data line");
     r.at_most(6, "a_x, a_y, a_z, b_x, b_y, b_z");
@@ -210,7 +211,19 @@ void handle_transform(BuildState& s, const Keyword& kw) {
       t.b[i] = r.real(3 + i, "coordinate of point b");
     }
     read = true;
+    // the system depends on a and b alone (a node on a cylinder's axis gets a direction)
+    if (!local_axes(t, Vec3{}))
+      r.fail(fmt::format("a = ({}, {}, {}), b = ({}, {}, {})", r.text(0), r.text(1), r.text(2),
+                         r.text(3), r.text(4), r.text(5)),
+             t.type == NodeTransform::Type::Cylindrical
+                 ? "the two points of the cylindrical system's axis coincide; give two distinct "
+                   "points on its axis"
+             : t.a == Vec3{} ? "a is the origin, so it gives no local x direction; give a point "
+                               "on the local x axis as a"
+                             : "b lies on the line of a (or at the origin), so a and b span no "
+                               "local x-y plane; give b in the local x-y plane, off the x axis");
   });
+  if (failed > 0) return; // (reported)
   if (!read)
     throw InputError(kw.loc, "", "*TRANSFORM needs a data line: a_x, a_y, a_z, b_x, b_y, b_z");
   Model& m = s.model;
@@ -224,14 +237,6 @@ void handle_transform(BuildState& s, const Keyword& kw) {
                        fmt::format("the node already has a local system (*TRANSFORM at {}); give "
                                    "each node one *TRANSFORM",
                                    m.transforms[m.node_transform[n]].loc.str()));
-    if (!local_axes(t, m.mesh.coords[n]))
-      throw InputError(kw.loc, fmt::format("node {}", m.node_label(n)),
-                       t.type == NodeTransform::Type::Rectangular
-                           ? "the points a and b do not define a system (a is zero or b is "
-                             "parallel to a); give a on the local x axis and b in the local x-y "
-                             "plane"
-                           : "the points a and b of the cylindrical system coincide; give two "
-                             "distinct points on its axis");
   }
   m.transforms.push_back(t);
   for (NodeId n : members) m.node_transform[n] = index;

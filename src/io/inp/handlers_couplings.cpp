@@ -310,7 +310,8 @@ void handle_coupling(BuildState& s, const Keyword& kw) {
                                     "define it with *SURFACE before the coupling"));
   const std::optional<double> radius = real_param(kw, "INFLUENCE RADIUS");
   if (radius && !(*radius > 0))
-    throw InputError(kw.loc, "INFLUENCE RADIUS", "the influence radius must be positive");
+    throw InputError(kw.loc, param_text(kw, "INFLUENCE RADIUS"),
+                     "the influence radius must be positive");
   c.radius = radius.value_or(0.0);
   // coupling nodes and their tributary areas (node-based surfaces: the given areas)
   std::map<NodeId, double> area;

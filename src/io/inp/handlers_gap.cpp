@@ -199,22 +199,28 @@ FrictionSpec read_friction(BuildState& s, const Keyword& kw) {
   reject_param(kw, "USER", "user friction subroutines are not available");
   if (const auto dep = dependencies_param(kw); dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
-                     "field-variable dependencies are not supported by gapfem");
+                     "field-variable dependencies are not supported by gapfem; tabulate the "
+                     "friction coefficient against slip rate, contact pressure and temperature "
+                     "only, and remove DEPENDENCIES");
   FrictionSpec f;
   f.given = true;
   f.loc = kw.loc;
   f.rough = kw.has("ROUGH");
   f.lagrange = kw.has("LAGRANGE");
   if (auto v = real_param(kw, "ELASTIC SLIP")) {
-    if (*v <= 0) throw InputError(kw.loc, "ELASTIC SLIP", "the elastic slip must be positive");
+    if (*v <= 0)
+      throw InputError(kw.loc, param_text(kw, "ELASTIC SLIP"), "the elastic slip must be positive");
     f.elastic_slip = *v;
   }
   if (auto v = real_param(kw, "SLIP TOLERANCE")) {
-    if (*v <= 0) throw InputError(kw.loc, "SLIP TOLERANCE", "the slip tolerance must be positive");
+    if (*v <= 0)
+      throw InputError(kw.loc, param_text(kw, "SLIP TOLERANCE"),
+                       "the slip tolerance must be positive");
     f.slip_tolerance = *v;
   }
   if (auto v = real_param(kw, "TAUMAX")) {
-    if (*v <= 0) throw InputError(kw.loc, "TAUMAX", "the limit shear stress must be positive");
+    if (*v <= 0)
+      throw InputError(kw.loc, param_text(kw, "TAUMAX"), "the limit shear stress must be positive");
     f.taumax = *v;
   }
   if (f.elastic_slip && kw.has("SLIP TOLERANCE"))
@@ -274,7 +280,8 @@ void handle_contact_damping(BuildState& s, const Keyword& kw) {
   d.loc = kw.loc;
   d.tangent_fraction = real_param(kw, "TANGENT FRACTION").value_or(0.0);
   if (d.tangent_fraction < 0)
-    throw InputError(kw.loc, "TANGENT FRACTION", "the tangent fraction must not be negative");
+    throw InputError(kw.loc, param_text(kw, "TANGENT FRACTION"),
+                     "the tangent fraction must not be negative");
   const DataLine* line = single_line(s, kw, "damping coefficient, clearance, fraction");
   if (!line)
     throw InputError(
@@ -287,7 +294,10 @@ void handle_contact_damping(BuildState& s, const Keyword& kw) {
   d.fraction = r.real_or(2, 0.0, "fraction");
   if (d.coefficient < 0) r.fail("field 1 (damping coefficient)", "must not be negative");
   if (d.clearance < 0) r.fail("field 2 (clearance c0)", "must not be negative");
-  if (d.fraction < 0 || d.fraction > 1) r.fail("field 3 (fraction)", "must lie between 0 and 1");
+  if (d.fraction < 0 || d.fraction > 1)
+    r.fail("field 3 (fraction of c0 over which the damping is constant)",
+           "must lie between 0 (the damping falls off linearly from zero clearance to c0) and 1 "
+           "(it is constant up to c0)");
   gap.damping = d;
 }
 
@@ -310,7 +320,9 @@ void handle_gap_conductance(BuildState& s, const Keyword& kw) {
   reject_param(kw, "USER", "tabulate the conductance on data lines");
   if (const auto dep = dependencies_param(kw); dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
-                     "field-variable dependencies are not supported by gapfem");
+                     "field-variable dependencies are not supported by gapfem; tabulate the "
+                     "conductance against clearance (or pressure, with PRESSURE) and temperature "
+                     "only, and remove DEPENDENCIES");
   GapConductanceSpec c;
   c.given = true;
   c.loc = kw.loc;

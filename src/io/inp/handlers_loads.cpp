@@ -714,10 +714,10 @@ void check_predefined_temperatures(BuildState& s) {
     reported.push_back(where);
     const ElemId e = carrier[t.node];
     std::string message = fmt::format(
-        "this node carries the temperature DOF 11 (element {} is a {} element), so in a *{} step "
+        "this node carries the temperature DOF 11 (element {} is {} element), so in a *{} step "
         "its temperature is a solution variable, not a predefined field; prescribe it with "
         "*BOUNDARY on DOF 11 instead (node, 11, 11, temperature)",
-        s.model.element_label(e), element_info(mesh.elem_types[e]).name,
+        s.model.element_label(e), with_article(element_info(mesh.elem_types[e]).name),
         procedure_name(st.procedure));
     if (t.propagated)
       message += fmt::format(", and remove this *TEMPERATURE from step {} with *TEMPERATURE, "

@@ -54,17 +54,17 @@ std::string repeated_node(const BuildState& s, ElementType type, const std::vect
       const EntityLabel node = s.model.label_of_key(keys[a]);
       if (gap)
         return fmt::format("node {} is both nodes of this gap, so its clearance never changes "
-                           "from d whatever the model does; a {} connects two distinct nodes: "
+                           "from d whatever the model does; {} connects two distinct nodes: "
                            "give the node on the other side (for a gap against a fixed surface, "
                            "a node held by *BOUNDARY)",
-                           node, type_name);
+                           node, with_article(type_name));
       if (nodes.size() == 2)
         return fmt::format("node {} is both nodes of this {} element, so it has no length or "
                            "direction; give two distinct nodes",
                            node, type_name);
       return fmt::format("node {} is given twice (positions {} and {} of the {} nodes); each node "
-                         "of a {} element is a distinct node: check the connectivity",
-                         node, a + 1, b + 1, nodes.size(), type_name);
+                         "of {} element is a distinct node: check the connectivity",
+                         node, a + 1, b + 1, nodes.size(), with_article(type_name));
     }
   return {};
 }

@@ -272,7 +272,7 @@ void handle_beam_general_section(BuildState& s, const Keyword& kw) {
   guarded(s, sec, "", [&] {
     if (const auto rho = real_param(kw, "DENSITY")) {
       if (!(*rho > 0.0))
-        throw InputError(kw.loc, "DENSITY", fmt::format("must be positive, not {}", *rho));
+        throw InputError(kw.loc, param_text(kw, "DENSITY"), "the density must be positive");
       sec.density = *rho;
     }
     check_temperature_param(kw);

@@ -55,15 +55,20 @@ void read_incrementation(BuildState& s, const Keyword& kw, std::size_t max_field
 
 /// STEADY STATE, DELTMX= and the CAE-written END=PERIOD (shared by heat transfer and coupled).
 void read_thermal_procedure(BuildState& s, const Keyword& kw) {
+  const bool steady = kw.has("STEADY STATE");
   if (kw.has("END") && enum_param(kw, "END", {"PERIOD", "SS"}, 0) == 1)
     throw InputError(kw.loc, "END=SS",
-                     "ending a step at steady state is not supported by gapfem; use END=PERIOD "
-                     "(default) or STEADY STATE");
-  const bool steady = kw.has("STEADY STATE");
+                     steady ? "END=SS ends a transient step once the temperatures stop changing; "
+                              "this step is STEADY STATE already: remove END=SS"
+                            : "ending a transient step when the temperatures stop changing is not "
+                              "supported by gapfem; remove END=SS and give a time period long "
+                              "enough to reach steady state, or make the step STEADY STATE");
   s.step.inc.steady_state = steady;
   s.scratch.transient = !steady;
   if (auto d = real_param(kw, "DELTMX")) {
-    if (*d <= 0) throw InputError(kw.loc, "DELTMX", "DELTMX must be positive");
+    if (*d <= 0)
+      throw InputError(kw.loc, param_text(kw, "DELTMX"),
+                       "the largest temperature change per increment (DELTMX) must be positive");
     s.step.inc.deltmx = *d;
   }
   read_incrementation(s, kw, 5);
@@ -219,14 +224,16 @@ void handle_static(BuildState& s, const Keyword& kw) {
   if (const Parameter* p = kw.find("STABILIZE"); p && p->has_value) {
     st.fraction = real_param(kw, "STABILIZE").value_or(2e-4);
     if (!(st.fraction > 0))
-      throw InputError(kw.loc, "STABILIZE", "the dissipated energy fraction must be positive");
+      throw InputError(kw.loc, param_text(kw, "STABILIZE"),
+                       "the dissipated energy fraction must be positive");
   }
   st.factor = real_param(kw, "FACTOR");
   if (st.factor && !(*st.factor > 0))
-    throw InputError(kw.loc, "FACTOR", "the damping factor must be positive");
+    throw InputError(kw.loc, param_text(kw, "FACTOR"), "the damping factor must be positive");
   // adaptive by default; a damping factor given directly stays constant unless ALLSDTOL is given
   st.allsdtol = real_param(kw, "ALLSDTOL").value_or(st.factor ? 0.0 : 0.05);
-  if (st.allsdtol < 0) throw InputError(kw.loc, "ALLSDTOL", "ALLSDTOL must not be negative");
+  if (st.allsdtol < 0)
+    throw InputError(kw.loc, param_text(kw, "ALLSDTOL"), "ALLSDTOL must not be negative");
   st.carry = yes_no_param(kw, "CONTINUE", false);
 }
 

@@ -266,7 +266,8 @@ void handle_substructure_property(BuildState& s, const Keyword& kw) {
   p.elset = set_param(s, kw, "ELSET", true);
   p.loc = kw.loc;
   if (auto tol = real_param(kw, "POSITION TOL")) {
-    if (*tol < 0) throw InputError(kw.loc, "POSITION TOL", "give a tolerance of 0 or more");
+    if (*tol < 0)
+      throw InputError(kw.loc, param_text(kw, "POSITION TOL"), "give a tolerance of 0 or more");
     p.position_tolerance = *tol;
   }
   std::vector<const DataLine*> lines;
@@ -339,8 +340,8 @@ void handle_substructure_path(BuildState& s, const Keyword& kw) {
         if (s.model.mesh.elem_types[e] != ElementType::SUBSTRUCTURE)
           r.fail(fmt::format("element {}", s.model.element_label(e)),
                  fmt::format("*SUBSTRUCTURE PATH names substructure (Zn) elements whose internal "
-                             "results are recovered; this one is a {}",
-                             s.model.element_type_name(e)));
+                             "results are recovered; this one is {}",
+                             with_article(s.model.element_type_name(e))));
         const SubstructureType& t = s.model.substructures[s.model.mesh.variant(e)];
         if (!t.recoverable)
           r.fail(fmt::format("element {}", s.model.element_label(e)),

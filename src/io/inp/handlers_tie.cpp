@@ -173,7 +173,8 @@ void handle_tie(BuildState& s, const Keyword& kw) {
   t.loc = kw.loc;
   t.tolerance = real_param(kw, "POSITION TOLERANCE");
   if (t.tolerance && !(*t.tolerance >= 0))
-    throw InputError(kw.loc, "POSITION TOLERANCE", "the position tolerance must not be negative");
+    throw InputError(kw.loc, param_text(kw, "POSITION TOLERANCE"),
+                     "the position tolerance must not be negative");
   t.adjust = yes_no_param(kw, "ADJUST", true);
   if (kw.has("CYCLIC SYMMETRY"))
     reject_param(kw, "CYCLIC SYMMETRY", "cyclic-symmetry ties are not available");

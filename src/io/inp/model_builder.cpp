@@ -3,6 +3,7 @@
 #include "fe/element_faces.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 
 namespace gapfem::inp {
@@ -37,6 +38,18 @@ long long read_label(BuildState& s, const FieldReader& r, std::string_view what)
   if (!r.blank(0) && check_integer(r.text(0), 1, kMaxLabel, v) == IntCheck::OutOfRange)
     s.label_out_of_range = true;
   return r.integer(0, what, 1, kMaxLabel, kLabelRule);
+}
+
+std::string_view article(std::string_view word) {
+  if (word.empty()) return "a";
+  const char first = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
+  const bool spelled = word.size() > 1 && std::isdigit(static_cast<unsigned char>(word[1]));
+  const std::string_view vowel_sound = spelled ? "AEFHILMNORSX" : "AEIO";
+  return vowel_sound.find(first) == std::string_view::npos ? "a" : "an";
+}
+
+std::string with_article(std::string_view word) {
+  return fmt::format("{} {}", article(word), word);
 }
 
 // ---------------------------------------------------------------- references
@@ -309,6 +322,12 @@ std::optional<long long> int_param(const Keyword& kw, std::string_view param, st
 
 long long dependencies_param(const Keyword& kw) {
   return int_param(kw, "DEPENDENCIES", "the number of field variables", 0, kMaxInt).value_or(0);
+}
+
+std::string param_text(const Keyword& kw, std::string_view param) {
+  const Parameter* p = kw.find(param);
+  if (!p) return {};
+  return p->has_value ? fmt::format("{}={}", p->name, p->value) : p->name;
 }
 
 void reject_param(const Keyword& kw, std::string_view param, std::string_view why) {

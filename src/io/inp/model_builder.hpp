@@ -266,6 +266,12 @@ static_assert(kMaxLabel == 999'999'999, "kLabelRule names the limit");
 /// skipped quietly (BuildState::label_out_of_range) instead of repeating it.
 long long read_label(BuildState& s, const FieldReader& r, std::string_view what);
 
+/// "a" or "an" before `word` as it is read aloud: "an S4R", "an axisymmetric", "a C3D8", "a
+/// GAPUNI", "a *SHELL SECTION" (a type name whose second character is a digit is spelled out).
+std::string_view article(std::string_view word);
+/// `word` with its article: "an S4R".
+std::string with_article(std::string_view word);
+
 // ---------------------------------------------------------------- references
 /// What a node or element reference names: a label key, or a set name (upper case, qualified).
 struct EntityRef {
@@ -342,6 +348,9 @@ std::optional<long long> int_param(const Keyword& kw, std::string_view param, st
                                    long long min, long long max);
 /// DEPENDENCIES= (the number of field variables a table depends on; 0 when absent).
 long long dependencies_param(const Keyword& kw);
+/// "NAME=value" as the keyword line gives a parameter (its name alone without a value; "" when
+/// absent): the entity of a message about its value.
+std::string param_text(const Keyword& kw, std::string_view param);
 /// Throws "PARAM is not supported by gapfem" for a parameter that is present.
 void reject_param(const Keyword& kw, std::string_view param, std::string_view why);
 

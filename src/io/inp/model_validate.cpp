@@ -91,9 +91,9 @@ void bind_property(BuildState& s, Kind kind, int index, const std::string& elset
                     ? fmt::format("ELSET {} of *GAP must hold only gap elements (GAPUNI, GAPCYL, "
                                   "GAPSPHER, GAPUNIT, DGAP); remove this element from the set",
                                   elset)
-                    : fmt::format("this element is in ELSET {} but a {} element needs a {}, not a "
+                    : fmt::format("this element is in ELSET {} but {} element needs a {}, not a "
                                   "{}; remove it from the set",
-                                  elset, info.name, keyword_of(kind_for(info.family)),
+                                  elset, with_article(info.name), keyword_of(kind_for(info.family)),
                                   keyword_of(kind)));
       family_reported = true;
       owner_loc[e] = loc; // reported: no "has no section" for it later
@@ -238,14 +238,13 @@ void check_gap(BuildState& s, const GapSection& gap) {
       problem = "GAPCYL needs the cylinder axis in fields 2-4 of the *GAP data line";
     else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT) && two_d &&
              gap.direction_given && std::abs(n[2]) > 1e-12 * norm)
-      problem =
-          fmt::format("in a {} model the gap direction must lie in the x-y plane; set n_z = 0",
-                      model_space_name(s.model.space));
+      problem = fmt::format("in {} model the gap direction must lie in the x-y plane; set n_z = 0",
+                            with_article(model_space_name(s.model.space)));
     else if (t == ElementType::GAPCYL && two_d &&
              std::hypot(n[0], n[1]) > 1e-12 * norm) // spec §1.7: radial contact in the plane
-      problem = fmt::format("in a {} model the GAPCYL axis must be the z-axis (0, 0, 1), normal "
+      problem = fmt::format("in {} model the GAPCYL axis must be the z-axis (0, 0, 1), normal "
                             "to the plane, so that contact is radial in the x-y plane",
-                            model_space_name(s.model.space));
+                            with_article(model_space_name(s.model.space)));
     else if ((t == ElementType::GAPUNI || t == ElementType::GAPUNIT) && !gap.direction_given) {
       const auto nodes = mesh.element_nodes(e);
       const Vec3& a = mesh.coords[nodes[0]];

@@ -134,18 +134,18 @@ TEST(Equation, BadEquationsAreInputErrors) {
   auto has = [](const std::string& text, const std::string& what) {
     return text.find(what) != std::string::npos;
   };
-  // the same dependent DOF in two equations: both lines named
+  // the same dependent DOF in two equations: both lines of the dependent terms named
   std::string e = error_of("*EQUATION\n2\n10003, 1, 1., 3, 1, -1.\n2\n10003, 1, 1., 2, 1, -1.\n");
   EXPECT_TRUE(has(e, "job.inp:")) << e;
   EXPECT_TRUE(has(e, "node 10003")) << e;
-  EXPECT_TRUE(has(e, "job.inp:44: *EQUATION: node 10003: DOF 1 is already the dependent DOF of "
+  EXPECT_TRUE(has(e, "job.inp:45: *EQUATION: node 10003: DOF 1 is already the dependent DOF of "
                      "the constraint at "))
       << e;
-  EXPECT_TRUE(has(e, "job.inp:42 (*EQUATION)")) << e;
+  EXPECT_TRUE(has(e, "job.inp:43 (*EQUATION)")) << e;
   // a boundary condition on the dependent DOF
   e = error_of("*EQUATION\n2\n10003, 2, 1., 3, 2, -1.\n", "*BOUNDARY\n10003, 2, 2, 0.1\n");
   EXPECT_TRUE(has(e, "node 10003: DOF 2 has a boundary condition and is the dependent")) << e;
-  EXPECT_TRUE(has(e, "job.inp:42 (*EQUATION)")) << e;
+  EXPECT_TRUE(has(e, "job.inp:43 (*EQUATION)")) << e;
   // zero first coefficient, node set sizes, a DOF the node does not carry, a missing term
   EXPECT_TRUE(has(error_of("*EQUATION\n2\n10003, 1, 0., 3, 1, -1.\n"),
                   "the first term's coefficient must not be zero"));
@@ -153,6 +153,9 @@ TEST(Equation, BadEquationsAreInputErrors) {
                   "must hold the same number of nodes"));
   EXPECT_TRUE(has(error_of("*EQUATION\n2\n10003, 4, 1., 3, 4, -1.\n"),
                   "no element at this node has DOF 4"));
+  // a term on a line of its own is named by that line
+  EXPECT_TRUE(has(error_of("*EQUATION\n2\n10003, 1, 1.\n3, 4, -1.\n"),
+                  "job.inp:44: *EQUATION: node 3: no element at this node has DOF 4"));
   EXPECT_TRUE(has(error_of("*EQUATION\n3\n10003, 1, 1., 3, 1, -1.\n"),
                   "the equation has 3 terms but the data ends after 2"));
   EXPECT_TRUE(has(error_of("*EQUATION\n2\n10003, 1, 1., 10003, 1, -1.\n"), "appears twice"));

@@ -180,10 +180,13 @@ TEST(Transform, BadTransformsAreInputErrors) {
       << r.error;
   EXPECT_NE(r.error.find("hold local DOFs 1 and 2 together at zero"), std::string::npos);
   EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN, TYPE=C\n0,0,0,0,0,0\n")
-                .find("the points a and b of the cylindrical system coincide"),
+                .find("a = (0, 0, 0), b = (0, 0, 0): the two points of the cylindrical "
+                      "system's axis coincide"),
             std::string::npos);
   EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN\n1,0,0,2,0,0\n")
-                .find("the points a and b do not define a system"),
+                .find("a = (1, 0, 0), b = (2, 0, 0): b lies on the line of a"),
+            std::string::npos);
+  EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN\n0,0,0,0,1,0\n").find("a is the origin"),
             std::string::npos);
   EXPECT_NE(error_of("*TRANSFORM, NSET=ALLN\n1,0,0,0,1,0\n*TRANSFORM, NSET=ALLN\n1,1,0,0,1,0\n")
                 .find("node 1: the node already has a local system"),

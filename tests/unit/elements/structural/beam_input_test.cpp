@@ -140,7 +140,12 @@ TEST(BeamInput, SectionPointsOfAGeneralSectionReportTheAxialStress) {
 TEST(BeamInput, BadSectionsAreOneClearError) {
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=BOX\n"
                                  "1., 1., 0.6, 0.1, 0.6, 0.1\n"),
-                     "SECTION=BOX: the walls are thicker than the box");
+                     "ELSET=B: SECTION=BOX: the walls at +x1 and -x1 are thicker than the box is "
+                     "wide: t1 + t3 = 1.2 must be below a = 1");
+  expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=BOX\n"
+                                 "1., 1., 0.1, 0.6, 0.1, 0.6\n"),
+                     "SECTION=BOX: the walls at +x2 and -x2 are thicker than the box is high: t2 "
+                     "+ t4 = 1.2 must be below b = 1");
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=I\n"
                                  "0.5, 1., 1., 1., 0.6, 0.6, 0.1\n"),
                      "SECTION=I: the flanges (t1 + t2 = 1.2) must be thinner than the height");
@@ -164,8 +169,8 @@ TEST(BeamInput, BadSectionsAreOneClearError) {
       deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=ARBITRARY\n1,1,1,1\n"),
       "SECTION=ARBITRARY: this section is not available in gapfem");
   expect_input_error(deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=L\n1,1,1,0.5\n"),
-                     "SECTION=L: each leg must be thinner than the other leg is long (t1 = 1 "
-                     "must be below b = 1");
+                     "SECTION=L: the leg along axis 1 is too thick: its thickness t1 = 1 must be "
+                     "below b = 1, the length of the other leg");
   expect_input_error(
       deck("B31", "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=TRAPEZOID\n1,1,-1,0.5\n"),
       "SECTION=TRAPEZOID: the widths a and c and the height b must be positive");
