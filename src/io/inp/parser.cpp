@@ -340,7 +340,7 @@ void unknown_parameter(BuildState& s, const Keyword& kw, const KeywordSpec& spec
 /// An unknown keyword: a real Abaqus or CalculiX keyword gapfem lacks, a misspelling of a keyword
 /// (gapfem's or Abaqus's), or text written after a single star (a title or a comment).
 void unknown_keyword(BuildState& s, const Keyword& kw, bool after_empty_heading) {
-  if (foreign_keyword(kw.key)) {
+  if (foreign_keyword(kw.key) || skippable_keyword(kw.key) || procedure_keyword(kw.key)) {
     unknown(s, kw.loc, fmt::format("the keyword {}", kw.name), kw.key, false);
     if (unsupported_block(kw.key)) s.parent = Parent::Unsupported;
     return;

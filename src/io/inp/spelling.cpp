@@ -722,19 +722,22 @@ bool foreign_parameter(std::string_view key) {
 }
 
 int spelling_distance(std::string_view a, std::string_view b) {
-  // optimal string alignment: Levenshtein plus the swap of two neighbours
-  const std::size_t n = a.size(), m = b.size();
-  std::vector<std::vector<int>> d(n + 1, std::vector<int>(m + 1));
-  for (std::size_t i = 0; i <= n; ++i) d[i][0] = static_cast<int>(i);
-  for (std::size_t j = 0; j <= m; ++j) d[0][j] = static_cast<int>(j);
-  for (std::size_t i = 1; i <= n; ++i)
+  // optimal string alignment: Levenshtein plus the swap of two neighbours; rows i-2, i-1, i
+  const std::size_t m = b.size();
+  std::vector<int> two(m + 1), one(m + 1), row(m + 1);
+  for (std::size_t j = 0; j <= m; ++j) one[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    row[0] = static_cast<int>(i);
     for (std::size_t j = 1; j <= m; ++j) {
       const int cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      row[j] = std::min({one[j] + 1, row[j - 1] + 1, one[j - 1] + cost});
       if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        row[j] = std::min(row[j], two[j - 2] + 1);
     }
-  return d[n][m];
+    std::swap(two, one);
+    std::swap(one, row);
+  }
+  return one[m];
 }
 
 std::vector<std::string> misspelling_of(std::string_view key,

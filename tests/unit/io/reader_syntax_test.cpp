@@ -3,6 +3,7 @@
 #include "io/inp/fields.hpp"
 #include "io/inp/lexer.hpp"
 #include "io/inp/parser.hpp"
+#include "io/inp/spelling.hpp"
 #include "unit/io/reader_test_util.hpp"
 
 #include <algorithm>
@@ -528,6 +529,19 @@ TEST(ReaderSyntax, QuotedNamesInDataLines) {
   EXPECT_CONTAINS(error_text(steps + "*BOUNDARY\n\"ALL, 1, 3\n*END STEP\n"),
                   "deck.inp:14: *BOUNDARY: field 1 (\"ALL): a double quote (\") in this name is "
                   "not closed; a quoted name is enclosed in two, as in \"ALL\"");
+}
+
+TEST(ReaderSyntax, SpellingDistanceCountsSwapsAsOneMistake) {
+  EXPECT_EQ(inp::spelling_distance("SOLIDSECTON", "SOLIDSECTION"), 1);
+  EXPECT_EQ(inp::spelling_distance("SOLIDSECITON", "SOLIDSECTION"), 1); // two letters swapped
+  EXPECT_EQ(inp::spelling_distance("PLASTIC", "ELASTIC"), 1);
+  EXPECT_EQ(inp::spelling_distance("", "NSET"), 4);
+  EXPECT_EQ(inp::spelling_distance("NSET", "NSET"), 0);
+  EXPECT_TRUE(inp::foreign_keyword("PLASTIC"));
+  EXPECT_FALSE(inp::foreign_keyword("SOLIDSECTON"));
+  // a keyword --ignore-unknown skips stays skipped (it is no misspelling)
+  const Model m = read(std::string(kTrussModel) + "*EQUATION PRINT\n", ReadOptions{true});
+  EXPECT_EQ(test::count_warnings(m, "*EQUATION PRINT"), 1);
 }
 
 } // namespace
