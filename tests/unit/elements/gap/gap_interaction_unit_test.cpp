@@ -1,7 +1,7 @@
 // Unit tests of the gap interaction models (issue 4): each normal law against its formula, the
-// friction law's return mapping, and central finite-difference checks of the complete element
-// tangent — stick, slip, every normal law, damping — including the column d r / d lambda_N of the
-// exact normal constraint when friction depends on the normal multiplier.
+// friction law's return mapping, and the kernel harness's central differences of the complete
+// element tangent — stick, slip, every normal law, damping — including the column d r / d lambda_N
+// of the exact normal constraint when friction depends on the normal multiplier.
 #include "elements/gap/friction.hpp"
 #include "elements/gap/mechanical_gap.hpp"
 #include "elements/gap/normal_law.hpp"
@@ -11,8 +11,7 @@
 #include <gtest/gtest.h>
 
 using namespace gapfem;
-using gapfem::test::SingleElement;
-using gapfem::test::two_node_gap_model;
+using namespace gapfem::test;
 
 namespace {
 
@@ -30,12 +29,6 @@ FrictionSpec coulomb(double mu, double elastic_slip = 1e-3) {
   f.rows = {{mu, 0, 0, 0}};
   f.elastic_slip = elastic_slip;
   return f;
-}
-
-void set_state_closed(SingleElement& el, ContactStatus st) {
-  el.state[GapStateLayout::status] = static_cast<double>(st);
-  el.state0 = el.state;
-  el.state0[GapStateLayout::status] = static_cast<double>(st);
 }
 
 } // namespace
@@ -152,7 +145,7 @@ TEST(GapInteraction, PenaltyFrictionTangentStickAndSlip) {
       s.behavior.slope = 2e4;
       Model m =
           two_node_gap_model(type, {0, 0, 0}, {0, type == ElementType::GAPUNI ? -1.0 : 0.0, 0}, s);
-      SingleElement el(m);
+      KernelProbe el = gap_probe(m);
       // overclosed by 0.01 along the closure direction, tangential increment 0.0005 or 0.005
       const double t = slipping ? 0.005 : 0.0002;
       el.u = type == ElementType::GAPUNI ? std::vector<double>{t, -0.01, 0.3 * t, 0, 0, 0}
@@ -161,8 +154,8 @@ TEST(GapInteraction, PenaltyFrictionTangentStickAndSlip) {
       el.state[GapStateLayout::direction + 1] = type == ElementType::GAPUNI ? -1.0 : 1.0;
       el.state0 = el.state;
       el.evaluate();
-      ASSERT_EQ(el.record().status, slipping ? ContactStatus::Slip : ContactStatus::Stick);
-      check_element_tangent(el, 0.001);
+      ASSERT_EQ(gap_record(el).status, slipping ? ContactStatus::Slip : ContactStatus::Stick);
+      expect_fd_tangent(el, {.length = 0.001});
     }
   }
 }
@@ -173,40 +166,39 @@ TEST(GapInteraction, FrictionWithExactNormalContactHasTheNormalColumn) {
     GapSection s = gapuni(0.0);
     s.friction = coulomb(0.3, 1e-3);
     Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-    SingleElement el(m, options);
-    set_state_closed(el, ContactStatus::Stick);
+    KernelProbe el = gap_probe(m, options);
+    commit_status(el, ContactStatus::Stick);
     el.mult[0] = 100.0;
     el.u = {ux, 0.0, 0.0001, 0, 0, 0};
-    el.evaluate();
-    check(el);
+    check(el, el.evaluate());
   };
   for (bool slipping : {false, true}) {
     SCOPED_TRACE(slipping ? "slip" : "stick");
-    closed_gap(slipping ? 0.01 : 0.0002, [&](SingleElement& el) {
+    closed_gap(slipping ? 0.01 : 0.0002, [&](KernelProbe& el, const KernelResult& ev) {
       // the exact normal row, and the elastic-slip stiffness as compliant rows: both slip
       // directions in stick, the one across the slip direction in slip
-      ASSERT_EQ(el.n_constraints, slipping ? 2 : 3);
+      ASSERT_EQ(ev.n_constraints, slipping ? 2 : 3);
       int exact = 0;
-      for (int r = 0; r < el.n_constraints; ++r) {
-        if (el.ccomp[r] == 0.0) {
+      for (int r = 0; r < ev.n_constraints; ++r) {
+        if (ev.compliance[r] == 0.0) {
           ++exact;
-          EXPECT_EQ(el.cslot[r], 0);
+          EXPECT_EQ(ev.slot[r], 0);
         } else {
-          EXPECT_GT(el.cslot[r], 0);
+          EXPECT_GT(ev.slot[r], 0);
         }
       }
       EXPECT_EQ(exact, 1);
-      EXPECT_EQ(el.has_columns, true);
-      EXPECT_FALSE(el.unsymmetric); // the friction's coupling to the normal force is a column
-      check_element_tangent(el, 0.001);
+      EXPECT_EQ(ev.has_columns, true);
+      EXPECT_FALSE(ev.unsymmetric); // the friction's coupling to the normal force is a column
+      expect_fd_tangent(el, {.length = 0.001});
     });
   }
   // without friction rows (GAPFEM_FRICTION_ROWS=0) the same stiffness is in the tangent: one row
   closed_gap(
       0.0002,
-      [](SingleElement& el) {
-        EXPECT_EQ(el.n_constraints, 1);
-        check_element_tangent(el, 0.001);
+      [](KernelProbe& el, const KernelResult& ev) {
+        EXPECT_EQ(ev.n_constraints, 1);
+        expect_fd_tangent(el, {.length = 0.001});
       },
       KernelOptions{.penalty_rows = true, .friction_rows = false});
 }
@@ -227,8 +219,8 @@ TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {
       s.friction.lagrange = kind % 3 == 2;
       if (kind % 3 == 2) s.friction.elastic_slip.reset();
       Model m = two_node_gap_model(type, {0, 0, 0}, {0, 0, 0}, s);
-      SingleElement el(m);
-      set_state_closed(el, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
+      KernelProbe el = gap_probe(m);
+      commit_status(el, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
       el.state[GapStateLayout::direction + 1] = el.state0[GapStateLayout::direction + 1] = 1.0;
       el.state[GapStateLayout::slip_dir] = el.state0[GapStateLayout::slip_dir] = 1.0;
       el.mult[0] = 100.0;
@@ -236,8 +228,8 @@ TEST(GapInteraction, FrictionOnRotatingGapsWithExactNormalContact) {
       const double t = kind % 3 == 0 ? 0.0002 : 0.02;
       el.u = {0.3 * t, std::sqrt(0.25 - t * t), t, 0, 0, 0};
       el.evaluate();
-      ASSERT_EQ(el.record().status, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
-      check_element_tangent(el, 0.001);
+      ASSERT_EQ(gap_record(el).status, kind % 3 == 0 ? ContactStatus::Stick : ContactStatus::Slip);
+      expect_fd_tangent(el, {.length = 0.001});
     }
 }
 
@@ -246,19 +238,19 @@ TEST(GapInteraction, LagrangeFrictionStickRowsAndSlipForce) {
   s.friction = coulomb(0.3);
   s.friction.lagrange = true;
   Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-  SingleElement el(m);
-  set_state_closed(el, ContactStatus::Stick);
+  KernelProbe el = gap_probe(m);
+  commit_status(el, ContactStatus::Stick);
   el.mult = {100.0, 20.0, 0.0}; // friction 20 < 30: stick
   el.u = {0.001, 0, 0, 0, 0, 0};
-  el.evaluate();
-  EXPECT_EQ(el.n_constraints, 3) << "normal + two stick rows";
-  EXPECT_EQ(el.status_changes, 0);
+  KernelResult ev = el.evaluate();
+  EXPECT_EQ(ev.n_constraints, 3) << "normal + two stick rows";
+  EXPECT_EQ(ev.status_changes, 0);
   el.mult = {100.0, 40.0, 0.0}; // friction above mu N: slip
-  el.evaluate();
-  EXPECT_EQ(el.status_changes, 1);
-  EXPECT_EQ(el.n_constraints, 1);
-  EXPECT_NEAR(el.record().friction_force[0], 30.0, 1e-12);
-  check_element_tangent(el, 0.001);
+  ev = el.evaluate();
+  EXPECT_EQ(ev.status_changes, 1);
+  EXPECT_EQ(ev.n_constraints, 1);
+  EXPECT_NEAR(gap_record(el).friction_force[0], 30.0, 1e-12);
+  expect_fd_tangent(el, {.length = 0.001});
 }
 
 TEST(GapInteraction, LagrangeFrictionUsesTheSlipRateOfTheIncrement) {
@@ -270,18 +262,18 @@ TEST(GapInteraction, LagrangeFrictionUsesTheSlipRateOfTheIncrement) {
   s.friction.rows = {{0.4, 0.0, 0, 0}, {0.2, 1.0, 0, 0}};
   s.friction.lagrange = true;
   Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-  SingleElement el(m);
-  set_state_closed(el, ContactStatus::Slip);
+  KernelProbe el = gap_probe(m);
+  commit_status(el, ContactStatus::Slip);
   el.state[GapStateLayout::slip_dir] = el.state0[GapStateLayout::slip_dir] = 1.0;
   el.mult = {100.0, 0.0, 0.0};
   el.ctx.dt = 1.0;
   el.u = {0.5, 0, 0.1, 0, 0, 0};
   el.evaluate();
-  ASSERT_EQ(el.record().status, ContactStatus::Slip);
+  ASSERT_EQ(gap_record(el).status, ContactStatus::Slip);
   const double rate = std::hypot(0.5, 0.1);
-  EXPECT_NEAR(std::hypot(el.record().friction_force[0], el.record().friction_force[1]),
+  EXPECT_NEAR(std::hypot(gap_record(el).friction_force[0], gap_record(el).friction_force[1]),
               100.0 * (0.4 - 0.2 * rate), 1e-12);
-  check_element_tangent(el, 1e-4);
+  expect_fd_tangent(el, {.length = 1e-4});
 }
 
 TEST(GapInteraction, AugmentedLagrangeAndDampingTangents) {
@@ -291,11 +283,11 @@ TEST(GapInteraction, AugmentedLagrangeAndDampingTangents) {
     s.behavior.method = ContactMethod::AugmentedLagrange;
     s.behavior.penalty_stiffness = 1e5;
     Model m = two_node_gap_model(ElementType::GAPUNI, {0, 0, 0}, {0, -1, 0}, s);
-    SingleElement el(m);
+    KernelProbe el = gap_probe(m);
     el.u = {0, -0.01, 0, 0, 0, 0}; // overclosure 0.01 > tolerance 1e-3 x (node distance 1)
     el.evaluate();
-    EXPECT_NEAR(el.record().normal_force, 1000.0, 1e-9);
-    check_element_tangent(el, 1e-4);
+    EXPECT_NEAR(gap_record(el).normal_force, 1000.0, 1e-9);
+    expect_fd_tangent(el, {.length = 1e-4});
     // augmentation moves the multiplier estimate to the current force
     auto in = el.input();
     EXPECT_TRUE(el.kernel->augment(in));
@@ -313,15 +305,15 @@ TEST(GapInteraction, AugmentedLagrangeAndDampingTangents) {
     s.behavior.slope = 1e3;
     Model m = two_node_gap_model(ElementType::GAPSPHER, {0, 0.2, 0}, {0, 0, 0}, GapSection{s});
     m.gap_sections[0].direction_given = false;
-    SingleElement el(m);
+    KernelProbe el = gap_probe(m);
     el.u0 = {0, 0, 0, 0, 0, 0};
     el.u = {0.05, 0.1, 0.02, 0, 0, 0}; // node 1 moves away from the centre: h = d - rho falls
     el.ctx.dt = 0.1;
-    check_element_tangent(el, 0.01);
-    EXPECT_GT(el.record().damping_force, 0.0) << "closing: the damper pushes back";
+    expect_fd_tangent(el, {.length = 0.01});
+    EXPECT_GT(gap_record(el).damping_force, 0.0) << "closing: the damper pushes back";
     el.u = {0.0, -0.1, 0.0, 0, 0, 0}; // towards the centre: opening
-    check_element_tangent(el, 0.01);
-    EXPECT_LT(el.record().damping_force, 0.0) << "opening: the damper pulls";
+    expect_fd_tangent(el, {.length = 0.01});
+    EXPECT_LT(gap_record(el).damping_force, 0.0) << "opening: the damper pulls";
   }
 }
 
@@ -376,9 +368,9 @@ TEST(GapInteraction, EveryNormalLawTangentOnARotatingGap) {
     s.behavior.given = true;
     c.set(s);
     Model m = two_node_gap_model(ElementType::GAPSPHER, {0, 0.1, 0}, {0, 0, 0}, s);
-    SingleElement el(m);
+    KernelProbe el = gap_probe(m);
     el.u = {0.02, 0.103, 0.01, 0, 0, 0}; // rho = 0.2043: overclosure 0.0043
-    check_element_tangent(el, 1e-4);
-    EXPECT_GT(el.record().normal_force, 0.0);
+    expect_fd_tangent(el, {.length = 1e-4});
+    EXPECT_GT(gap_record(el).normal_force, 0.0);
   }
 }

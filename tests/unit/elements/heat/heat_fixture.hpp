@@ -1,7 +1,7 @@
 #pragma once
 // Helpers for the heat-transfer and coupled element unit tests: a one-element model with thermal
-// (and elastic) material data, the kernel from the real factory, an ElementInput over test-owned
-// buffers, and the position of the temperature DOFs.
+// (and elastic) material data, its element as a kernel probe built by the real factory
+// (unit/elements/kernel_harness.hpp), and the position of the temperature DOFs.
 #include "elements/element_kernel.hpp"
 #include "fe/shape_functions.hpp"
 #include "model/model.hpp"
@@ -125,25 +125,13 @@ inline std::shared_ptr<Model> model_of(ElementType t, const std::vector<Vec3>& X
   return model;
 }
 
-/// Kernel plus the buffers of one ElementInput; u holds displacements and temperatures.
-struct Harness {
-  std::shared_ptr<Model> model;
-  std::unique_ptr<ElementKernel> kernel;
-  std::vector<Vec3> X;
-  std::vector<double> u, u0;
-  StepContext ctx;
-  std::vector<ElemId> elems{0};
-
+/// A one-element model of type t as a kernel probe (unit/elements/kernel_harness.hpp); u holds
+/// displacements and temperatures.
+struct Harness : KernelProbe {
   Harness(ElementType t, std::vector<Vec3> coords, const Props& p = {}, double section = 1.0,
           double initial_temperature = 0.0)
-      : X(std::move(coords)) {
-    model = model_of(t, X, p, section, initial_temperature);
-    kernel = make_element_kernel(KernelContext{*model, t, model->element_property[0], elems});
-    u.assign(kernel->n_dofs(), 0.0);
-    u0 = u;
-    ctx.space = model->space;
-  }
-  int n() const { return kernel->n_dofs(); }
+      : KernelProbe(KernelProbe::of(
+            std::shared_ptr<const Model>(model_of(t, coords, p, section, initial_temperature)))) {}
   int per_node() const { return n() / static_cast<int>(X.size()); }
   /// Local index of the temperature DOF of node a.
   int nt(int a) const { return a * per_node() + per_node() - 1; }
@@ -154,58 +142,28 @@ struct Harness {
     ctx.transient = true;
     ctx.dt = dt;
   }
-  ElementInput input() {
-    ElementInput in;
-    in.elem = 0;
-    in.label = EntityLabel{1};
-    in.X = X;
-    in.u = u;
-    in.u_start = u0;
-    in.ctx = &ctx;
-    return in;
-  }
-  void evaluate(std::vector<double>& r, std::vector<double>* K = nullptr, bool* unsym = nullptr) {
-    r.assign(n(), 0.0);
-    ElementOutput out;
-    out.residual = r;
-    if (K) {
-      K->assign(n() * n(), 0.0);
-      out.tangent = *K;
-    }
-    out.want_tangent = K != nullptr;
-    ElementInput in = input();
-    kernel->evaluate(in, out);
-    if (unsym) *unsym = out.unsymmetric;
-  }
-  /// Equivalent nodal load of one distributed load and -d f/du.
-  void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
-            std::vector<double>* K = nullptr) {
+  /// One distributed load of `kind` on `face` (0 = body).
+  static DistributedLoad dload(DistLoadKind kind, int face, double magnitude = 0.0,
+                               double sink = 0.0) {
     DistributedLoad ld;
     ld.elem = 0;
     ld.kind = kind;
     ld.face = face;
     ld.magnitude = magnitude;
     ld.sink_temperature = sink;
-    f.assign(n(), 0.0);
-    std::vector<double> Kb;
-    if (K) K->assign(n() * n(), 0.0);
-    ElementInput in = input();
-    kernel->load(in, ld, magnitude, sink, f, K ? std::span<double>(*K) : std::span<double>{});
+    return ld;
   }
-  ElementRecovery recover() {
-    ElementRecovery rec;
-    ElementInput in = input();
-    kernel->recover(in, rec);
-    return rec;
+  using KernelProbe::load;
+  /// Equivalent nodal load of one distributed load and -d f/du.
+  void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
+            std::vector<double>* K = nullptr) {
+    f = load(dload(kind, face, magnitude, sink), magnitude, sink, K);
   }
-  double stored_heat() {
-    ElementInput in = input();
-    return kernel->stored_heat(in);
-  }
-  /// Nodal temperatures T(X) = T0 + g . X (u and u0 alike unless `now_only`).
-  void set_linear_temperature(double T0, const Vec3& g, bool now_only = false) {
+  double stored_heat() { return kernel->stored_heat(input()); }
+  /// Nodal temperatures T(X) = T_ref + g . X (u and u0 alike unless `now_only`).
+  void set_linear_temperature(double T_ref, const Vec3& g, bool now_only = false) {
     for (std::size_t a = 0; a < X.size(); ++a) {
-      const double v = T0 + g[0] * X[a][0] + g[1] * X[a][1] + g[2] * X[a][2];
+      const double v = T_ref + g[0] * X[a][0] + g[1] * X[a][1] + g[2] * X[a][2];
       u[nt(static_cast<int>(a))] = v;
       if (!now_only) u0[nt(static_cast<int>(a))] = v;
     }

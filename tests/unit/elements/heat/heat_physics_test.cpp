@@ -59,8 +59,7 @@ TEST_P(HeatPatch, LinearTemperatureGivesExactConstantFlux) {
   for (int q = 0; q < hfl->n_points; ++q)
     for (int i = 0; i < d; ++i)
       EXPECT_NEAR(hfl->values[q * d + i], expected[i], 1e-10 * k * 4.0) << "point " << q + 1;
-  std::vector<double> r;
-  h.evaluate(r);
+  std::vector<double> r = h.evaluate(false).r;
   double sum = 0.0, mag = 0.0;
   for (int a = 0; a < static_cast<int>(h.X.size()); ++a) {
     sum += r[h.nt(a)];
@@ -108,8 +107,7 @@ TEST_P(HeatCapacity, UniformRiseStoresRhoCVdT) {
   const double V = volume(t, h.X);
   const double expected = p.rho * p.c * V * 6.0;
   EXPECT_NEAR(h.stored_heat(), expected, 1e-12 * expected);
-  std::vector<double> r;
-  h.evaluate(r);
+  std::vector<double> r = h.evaluate(false).r;
   double sum = 0.0;
   for (int a = 0; a < static_cast<int>(h.X.size()); ++a) {
     sum += r[h.nt(a)];
@@ -122,7 +120,7 @@ TEST_P(HeatCapacity, UniformRiseStoresRhoCVdT) {
       EXPECT_NEAR(r[h.nt(a)], r[h.nt(0)], 1e-12 * expected);
   // Steady-state steps have no capacity: a uniform field gives no residual.
   h.ctx.transient = false;
-  h.evaluate(r);
+  r = h.evaluate(false).r;
   for (int a = 0; a < static_cast<int>(h.X.size()); ++a) EXPECT_NEAR(r[h.nt(a)], 0.0, 1e-9);
 }
 
@@ -220,14 +218,13 @@ TEST_P(CoupledFreeExpansion, UniformHeatingOfFreeBodyIsStressFree) {
     h.u[h.nt(a)] = 120.0;
   }
   h.u0 = h.u;
-  std::vector<double> r;
-  h.evaluate(r);
+  std::vector<double> r = h.evaluate(false).r;
   for (int i = 0; i < h.n(); ++i)
     if (!h.is_nt(i)) EXPECT_NEAR(r[i], 0.0, 1e-13 * p.E * strain) << "dof " << i;
   // Held at zero displacement the same heating gives thermal forces of order E alpha dT A.
   for (int i = 0; i < h.n(); ++i)
     if (!h.is_nt(i)) h.u[i] = 0.0;
-  h.evaluate(r);
+  r = h.evaluate(false).r;
   double fmax = 0.0;
   for (int i = 0; i < h.n(); ++i)
     if (!h.is_nt(i)) fmax = std::max(fmax, std::abs(r[i]));

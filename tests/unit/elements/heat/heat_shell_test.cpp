@@ -1,9 +1,11 @@
 // Unit tests of the heat-transfer shells DS3, DS4 and DS8 (elements/heat/heat_shell.hpp): the
-// tangent against central differences (temperature-dependent conductivity and capacity, films),
+// kernel harness (the tangent against central differences with temperature-dependent
+// conductivity and capacity, films; revert-then-evaluate; the element moved in space),
 // exact fluxes of a field linear along the surface and through the thickness, conservation, the
 // stored heat of a uniform rise and the totals of the thermal loads.
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
+#include "unit/elements/kernel_harness.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -41,17 +43,20 @@ std::vector<Vec3> shell_nodes(ElementType t, bool warped) {
   return X;
 }
 
-struct ShellHarness {
-  Model model;
-  std::unique_ptr<ElementKernel> kernel;
-  std::vector<Vec3> X;
-  std::vector<double> u, u0;
-  StepContext ctx;
+/// One heat-transfer shell with `points` temperatures through the thickness, as a kernel probe.
+struct ShellHarness : KernelProbe {
   int P = 1;
 
   ShellHarness(ElementType t, int points, bool varying, bool warped, bool nodal_thickness = false)
-      : X(shell_nodes(t, warped)), P(points) {
-    Mesh& mesh = model.mesh;
+      : KernelProbe(KernelProbe::of(model_of(t, points, varying, warped, nodal_thickness))),
+        P(points) {
+    ctx.procedure = Procedure::HeatTransfer;
+  }
+  static std::shared_ptr<const Model> model_of(ElementType t, int points, bool varying, bool warped,
+                                               bool nodal_thickness) {
+    auto model = std::make_shared<Model>();
+    const std::vector<Vec3> X = shell_nodes(t, warped);
+    Mesh& mesh = model->mesh;
     for (std::size_t a = 0; a < X.size(); ++a) {
       mesh.node_labels.push_back(static_cast<Label>(a + 1));
       mesh.coords.push_back(X[a]);
@@ -63,7 +68,7 @@ struct ShellHarness {
     mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
     mesh.elem_src.push_back({});
     mesh.elem_index[1] = 0;
-    model.source_files.push_back("test.inp");
+    model->source_files.push_back("test.inp");
     Material m;
     m.name = "M";
     auto table = [&](double v, double factor) {
@@ -76,7 +81,7 @@ struct ShellHarness {
     m.conductivity = table(kK, 1.6);
     m.density = table(kRho, 0.9);
     m.specific_heat = table(kC, 1.3);
-    model.materials.push_back(m);
+    model->materials.push_back(m);
     ShellSection sec;
     sec.elset = "SHELL";
     sec.material = 0;
@@ -84,47 +89,26 @@ struct ShellHarness {
     sec.n_points = points;
     sec.nodal_thickness = nodal_thickness;
     if (nodal_thickness)
-      for (std::size_t a = 0; a < X.size(); ++a) model.nodal_thickness.push_back(0.04 + 0.01 * a);
-    model.shell_sections.push_back(sec);
-    model.element_property.push_back({PropertyRef::Kind::Shell, 0});
-    const ElemId elems[1] = {0};
-    kernel = make_element_kernel(KernelContext{model, t, model.element_property[0], {elems, 1}});
-    u.assign(static_cast<std::size_t>(kernel->n_dofs()), 0.0);
-    u0 = u;
-    ctx.procedure = Procedure::HeatTransfer;
+      for (std::size_t a = 0; a < X.size(); ++a) model->nodal_thickness.push_back(0.04 + 0.01 * a);
+    model->shell_sections.push_back(sec);
+    model->element_property.push_back({PropertyRef::Kind::Shell, 0});
+    return model;
   }
-  int n() const { return kernel->n_dofs(); }
-  ElementInput input() const {
-    ElementInput in;
-    in.label = EntityLabel{1};
-    in.X = X;
-    in.u = u;
-    in.u_start = u0;
-    in.ctx = &ctx;
-    return in;
-  }
-  void evaluate(std::vector<double>& r, std::vector<double>& K, bool* unsym = nullptr) const {
-    r.assign(static_cast<std::size_t>(n()), 0.0);
-    K.assign(static_cast<std::size_t>(n() * n()), 0.0);
-    ElementOutput out;
-    out.residual = r;
-    out.tangent = K;
-    kernel->evaluate(input(), out);
-    if (unsym) *unsym = out.unsymmetric;
-  }
-  /// f_ext and -d f_ext / dT of one distributed load.
-  void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
-            std::vector<double>& K) const {
+  static DistributedLoad dload(DistLoadKind kind, int face, double magnitude, double sink) {
     DistributedLoad ld;
     ld.kind = kind;
     ld.face = face;
     ld.magnitude = magnitude;
     ld.sink_temperature = sink;
-    f.assign(static_cast<std::size_t>(n()), 0.0);
-    K.assign(static_cast<std::size_t>(n() * n()), 0.0);
-    kernel->load(input(), ld, magnitude, sink, f, K);
+    return ld;
   }
-  double area() const { // of the flat, undistorted reference: from the kernel's own BF totals
+  using KernelProbe::load;
+  /// f_ext and -d f_ext / dT of one distributed load.
+  void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
+            std::vector<double>& K) {
+    f = load(dload(kind, face, magnitude, sink), magnitude, sink, &K);
+  }
+  double area() { // of the flat, undistorted reference: from the kernel's own BF totals
     std::vector<double> f, K;
     load(DistLoadKind::SurfaceFlux, 2, 1.0, 0.0, f, K);
     double A = 0.0;
@@ -154,7 +138,8 @@ std::string case_name(const ::testing::TestParamInfo<Case>& i) {
 class HeatShell : public ::testing::TestWithParam<Case> {};
 
 // The tangent (conduction with k(T), capacity with rho c (T) in a transient step) against central
-// differences of the residual at random temperatures, on a warped element with nodal thickness.
+// differences of the residual at random temperatures, on a warped element with nodal thickness;
+// revert-then-evaluate; the element moved and turned in space conducts the same.
 TEST_P(HeatShell, TangentMatchesCentralDifferences) {
   ShellHarness h(GetParam().type, GetParam().points, true, true, true);
   h.ctx.transient = true;
@@ -165,27 +150,10 @@ TEST_P(HeatShell, TangentMatchesCentralDifferences) {
     h.u[i] = T(gen);
     h.u0[i] = T(gen);
   }
-  std::vector<double> r, K;
-  bool unsym = false;
-  h.evaluate(r, K, &unsym);
-  EXPECT_TRUE(unsym); // k depends on T
-  double kmax = 0.0;
-  for (double v : K) kmax = std::max(kmax, std::abs(v));
-  ASSERT_GT(kmax, 0.0);
-  const double step = 1e-4;
-  for (int j = 0; j < h.n(); ++j) {
-    ShellHarness& hp = h;
-    const double keep = hp.u[j];
-    std::vector<double> rp, rm, dummy;
-    hp.u[j] = keep + step;
-    hp.evaluate(rp, dummy);
-    hp.u[j] = keep - step;
-    hp.evaluate(rm, dummy);
-    hp.u[j] = keep;
-    for (int i = 0; i < h.n(); ++i)
-      EXPECT_NEAR(K[i * h.n() + j], (rp[i] - rm[i]) / (2.0 * step), 1e-7 * kmax)
-          << "K(" << i << "," << j << ")";
-  }
+  EXPECT_TRUE(h.evaluate().unsymmetric); // k depends on T
+  expect_fd_tangent(h);
+  expect_revert_is_exact(h);
+  expect_rigid_body_invariance(h, {.frame = true});
 }
 
 // The film on either side: -d f / dT against central differences, and only that side's DOFs.
@@ -195,22 +163,14 @@ TEST_P(HeatShell, FilmTangentMatchesCentralDifferences) {
   std::uniform_real_distribution<double> T(20.0, 180.0);
   for (double& v : h.u) v = T(gen);
   for (int face : {1, 2}) {
-    std::vector<double> f, K;
-    h.load(DistLoadKind::Film, face, 300.0, 50.0, f, K);
+    SCOPED_TRACE("face " + std::to_string(face));
+    const std::vector<double> f =
+        h.load(ShellHarness::dload(DistLoadKind::Film, face, 300.0, 50.0), 300.0, 50.0);
     const int k = face == 1 ? 0 : h.P - 1;
     for (int i = 0; i < h.n(); ++i)
       if (i % h.P != k) EXPECT_EQ(f[i], 0.0) << i;
-    for (int j = 0; j < h.n(); ++j) {
-      const double keep = h.u[j];
-      std::vector<double> fp, fm, dummy;
-      h.u[j] = keep + 1e-3;
-      h.load(DistLoadKind::Film, face, 300.0, 50.0, fp, dummy);
-      h.u[j] = keep - 1e-3;
-      h.load(DistLoadKind::Film, face, 300.0, 50.0, fm, dummy);
-      h.u[j] = keep;
-      for (int i = 0; i < h.n(); ++i)
-        EXPECT_NEAR(K[i * h.n() + j], -(fp[i] - fm[i]) / 2e-3, 1e-9 * 300.0);
-    }
+    expect_fd_load_stiffness(h, ShellHarness::dload(DistLoadKind::Film, face, 300.0, 50.0), 300.0,
+                             50.0);
   }
 }
 
@@ -231,8 +191,7 @@ TEST_P(HeatShell, LinearFieldGivesExactFluxesAndConservesHeat) {
       const double z = P > 1 ? -0.5 * t + k * t / (P - 1) : 0.0;
       h.u[a * P + k] = 100.0 + g[0] * h.X[a][0] + g[1] * h.X[a][1] + g[2] * h.X[a][2] + c * z;
     }
-  ElementRecovery rec;
-  h.kernel->recover(h.input(), rec);
+  const ElementRecovery rec = h.recover();
   const OutputBlock* b = rec.find(ElemVar::HFL);
   ASSERT_NE(b, nullptr);
   ASSERT_EQ(b->section_points, P);
@@ -247,8 +206,7 @@ TEST_P(HeatShell, LinearFieldGivesExactFluxesAndConservesHeat) {
     EXPECT_NEAR(b->values[3 * p + 1], -kK * g2, 1e-9 * kK * 30.0) << p;
     EXPECT_NEAR(b->values[3 * p + 2], -kK * c, 1e-9 * kK * 400.0) << p;
   }
-  std::vector<double> r, K;
-  h.evaluate(r, K);
+  std::vector<double> r = h.evaluate().r;
   double sum = 0.0, scale = 0.0;
   for (double v : r) {
     sum += v;
@@ -257,7 +215,7 @@ TEST_P(HeatShell, LinearFieldGivesExactFluxesAndConservesHeat) {
   EXPECT_GT(scale, 0.0);
   EXPECT_NEAR(sum, 0.0, 1e-12 * scale);
   std::fill(h.u.begin(), h.u.end(), 37.0);
-  h.evaluate(r, K);
+  r = h.evaluate().r;
   for (double v : r) EXPECT_NEAR(v, 0.0, 1e-9);
 }
 
@@ -272,10 +230,8 @@ TEST_P(HeatShell, UniformRiseStoresRhoCVdT) {
   std::fill(h.u.begin(), h.u.end(), 25.0);
   const double V = h.area() * 0.05;
   EXPECT_NEAR(h.kernel->stored_heat(h.input()), kRho * kC * V * 5.0, 1e-9 * kRho * kC * V * 5.0);
-  std::vector<double> r, K;
-  h.evaluate(r, K);
   double sum = 0.0;
-  for (double v : r) sum += v;
+  for (double v : h.evaluate().r) sum += v;
   EXPECT_NEAR(sum, kRho * kC * V * 5.0 / 2.0, 1e-9 * kRho * kC * V * 5.0);
 }
 

@@ -1,9 +1,10 @@
 #pragma once
-// Helpers for the continuum element unit tests: a one-element model, the kernel built by the real
-// factory, an ElementInput over test-owned buffers, and finite-difference utilities.
+// Helpers for the continuum element unit tests: a one-element model and its element as a kernel
+// probe built by the real factory (unit/elements/kernel_harness.hpp evaluates and checks it).
 #include "elements/element_kernel.hpp"
 #include "fe/shape_functions.hpp"
 #include "model/model.hpp"
+#include "unit/elements/kernel_harness.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -131,59 +132,14 @@ inline std::shared_ptr<Model> one_element_model(ElementType t, const std::vector
   return model;
 }
 
-/// Kernel plus the buffers of one ElementInput.
-struct ElementHarness {
-  std::shared_ptr<Model> model;
-  std::unique_ptr<ElementKernel> kernel;
-  std::vector<Vec3> X;
-  std::vector<double> u, T, Ti;
-  StepContext ctx;
-  std::vector<ElemId> elems{0};
-
+/// A one-element model of type t as a kernel probe (unit/elements/kernel_harness.hpp), with the
+/// fields the continuum tests set.
+struct ElementHarness : KernelProbe {
   ElementHarness(ElementType t, std::vector<Vec3> coords, const TestMaterial& m = {},
                  double thickness = 1.0)
-      : X(std::move(coords)) {
-    model = one_element_model(t, X, m, thickness);
-    kernel = make_element_kernel(KernelContext{*model, t, model->element_property[0], elems});
-    u.assign(kernel->n_dofs(), 0.0);
-  }
-  int n() const { return kernel->n_dofs(); }
+      : KernelProbe(KernelProbe::of(
+            std::shared_ptr<const Model>(one_element_model(t, coords, m, thickness)))) {}
 
-  ElementInput input() {
-    ElementInput in;
-    in.elem = 0;
-    in.label = EntityLabel{1};
-    in.X = X;
-    in.u = u;
-    in.u_start = u;
-    if (!T.empty()) {
-      in.temperature = T;
-      in.temperature_start = T;
-      in.initial_temperature = Ti;
-    }
-    in.ctx = &ctx;
-    return in;
-  }
-  /// Residual and (optionally) tangent at the current u.
-  void evaluate(std::vector<double>& r, std::vector<double>* K = nullptr) {
-    r.assign(n(), 0.0);
-    std::vector<double> Kbuf;
-    ElementOutput out;
-    out.residual = r;
-    if (K) {
-      K->assign(n() * n(), 0.0);
-      out.tangent = *K;
-    }
-    out.want_tangent = K != nullptr;
-    ElementInput in = input();
-    kernel->evaluate(in, out);
-  }
-  ElementRecovery recover() {
-    ElementRecovery rec;
-    ElementInput in = input();
-    kernel->recover(in, rec);
-    return rec;
-  }
   /// Displacement field u(X) = A X + c at the nodes (2-D: upper-left 2x2 of A).
   void set_linear_field(const double A[3][3], const Vec3& c = {0, 0, 0}) {
     const int nd = dofs_per_node(kernel->type());
@@ -205,23 +161,6 @@ inline void random_displacements(std::vector<double>& u, double scale, unsigned 
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> dist(-1.0, 1.0);
   for (double& v : u) v = scale * dist(gen);
-}
-
-/// Max |a_i - b_i| and max |b_i|.
-inline std::pair<double, double> max_diff(const std::vector<double>& a,
-                                          const std::vector<double>& b) {
-  double d = 0.0, m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    d = std::max(d, std::abs(a[i] - b[i]));
-    m = std::max(m, std::abs(b[i]));
-  }
-  return {d, m};
-}
-
-/// Central-difference step for a function of O(1) arguments: cbrt(machine epsilon) balances the
-/// O(h^2) truncation error against the O(eps/h) round-off error.
-inline double fd_step() {
-  return std::cbrt(std::numeric_limits<double>::epsilon());
 }
 
 } // namespace gapfem::test

@@ -1,5 +1,6 @@
 // Element-level physics of the continuum kernels: constant-strain patch tests (small strain and
-// NLGEOM), rigid-body modes, thermal strain, B-bar dilatation, validate() and NLGEOM failures.
+// NLGEOM), a stress-free 90-degree rotation, thermal strain, B-bar dilatation, validate() and
+// NLGEOM failures (the rigid-motion checks of every type: continuum_tangent_test.cpp).
 #include "continuum_fixture.hpp"
 
 #include <Eigen/Dense>
@@ -127,22 +128,6 @@ TEST_P(ContinuumPatch, LinearFieldGivesExactStressNlgeom) {
   expect_block(rec, ElemVar::E, t, E, true, 1e-12, "green-lagrange");
 }
 
-// A rigid translation produces no internal force (small strain and NLGEOM).
-TEST_P(ContinuumPatch, RigidTranslationGivesZeroResidual) {
-  const ElementType t = GetParam();
-  ElementHarness h(t, reference_nodes(t));
-  const int nd = dofs_per_node(t);
-  for (std::size_t a = 0; a < h.X.size(); ++a)
-    for (int i = 0; i < nd; ++i)
-      h.u[a * nd + i] = (plane_of(t) == PlaneKind::Axisymmetric && i == 0) ? 0.0 : 0.37 * (i + 1);
-  for (bool nl : {false, true}) {
-    h.ctx.nlgeom = nl;
-    std::vector<double> r;
-    h.evaluate(r);
-    for (double v : r) EXPECT_NEAR(v, 0.0, 1e-12 * 200000.0) << (nl ? "nlgeom" : "small");
-  }
-}
-
 // NLGEOM: a rigid rotation by 90 degrees is strain free (E_GL = 0), so the stress and the residual
 // vanish. Axisymmetric elements admit no in-plane rotation and are excluded.
 TEST(ContinuumRigidRotation, NinetyDegreesIsStressFreeNlgeom) {
@@ -161,9 +146,7 @@ TEST(ContinuumRigidRotation, NinetyDegreesIsStressFreeNlgeom) {
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) Ad[i][j] = A(i, j);
       h.set_linear_field(Ad, {0.2, 0.1, -0.3});
-      std::vector<double> r;
-      h.evaluate(r);
-      for (double v : r) EXPECT_NEAR(v, 0.0, 1e-10 * 200000.0);
+      for (double v : h.evaluate(false).r) EXPECT_NEAR(v, 0.0, 1e-10 * 200000.0);
       const ElementRecovery rec = h.recover();
       for (double v : rec.find(ElemVar::S)->values) EXPECT_NEAR(v, 0.0, 1e-10 * 200000.0);
       for (double v : rec.find(ElemVar::E)->values) EXPECT_NEAR(v, 0.0, 1e-14);
@@ -189,9 +172,7 @@ TEST_P(ContinuumPatch, ThermalStrainFreeAndConstrained) {
     double A[3][3] = {{stretch, 0, 0}, {0, stretch, 0}, {0, 0, stretch}};
     h.set_linear_field(A);
     if (plane_of(t) != PlaneKind::PlaneStrain) {
-      std::vector<double> r;
-      h.evaluate(r);
-      for (double v : r) EXPECT_NEAR(v, 0.0, 1e-9 * m.E * eth);
+      for (double v : h.evaluate(false).r) EXPECT_NEAR(v, 0.0, 1e-9 * m.E * eth);
       const ElementRecovery free_rec = h.recover();
       for (double v : free_rec.find(ElemVar::S)->values) EXPECT_NEAR(v, 0.0, 1e-9 * m.E * eth);
     }
@@ -277,8 +258,7 @@ TEST(ContinuumBbar, NearlyIncompressibleBendingDoesNotLock) {
     m.nu = nu;
     ElementHarness h(ElementType::C3D8, reference_nodes(ElementType::C3D8, false), m);
     for (std::size_t a = 0; a < h.X.size(); ++a) h.u[3 * a] = 1e-3 * h.X[a][0] * h.X[a][1] * 4.0;
-    std::vector<double> r;
-    h.evaluate(r);
+    const std::vector<double> r = h.evaluate(false).r;
     double w = 0.0; // linear: energy = u.r / 2
     for (std::size_t i = 0; i < r.size(); ++i) w += 0.5 * h.u[i] * r[i];
     return w / (m.E / (2 * (1 + nu))); // per shear modulus
@@ -321,15 +301,14 @@ TEST(ContinuumNlgeom, NonPositiveDetFThrowsConvergenceFailure) {
     h.ctx.nlgeom = true;
     double A[3][3] = {{0, 0, 0}, {0, -2.0, 0}, {0, 0, 0}}; // F22 = -1
     h.set_linear_field(A);
-    std::vector<double> r;
     try {
-      h.evaluate(r);
+      h.evaluate(false);
       ADD_FAILURE() << element_info(t).name << ": no exception";
     } catch (const ConvergenceFailure& e) {
       EXPECT_NE(std::string(e.what()).find("element 1"), std::string::npos) << e.what();
     }
     h.ctx.nlgeom = false; // small strain: no check, no exception
-    EXPECT_NO_THROW(h.evaluate(r));
+    EXPECT_NO_THROW(h.evaluate(false));
   }
 }
 

@@ -4,6 +4,7 @@
 // expansion), and the DOF layout.
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
+#include "unit/elements/kernel_harness.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -28,14 +29,17 @@ std::vector<Vec3> nodes_of(ElementType t) {
   return X;
 }
 
+/// One coupled shell of type t with `points` temperatures through the thickness, as a probe.
 struct CoupledHarness {
   Model model;
-  std::unique_ptr<ElementKernel> kernel;
-  std::vector<Vec3> X;
-  std::vector<double> u, u0, state, state0;
-  StepContext ctx;
+  KernelProbe p;
 
-  CoupledHarness(ElementType t, int points) : X(nodes_of(t)) {
+  CoupledHarness(ElementType t, int points) : p(probe_of(model, t, points)) {
+    p.ctx.procedure = Procedure::CoupledTempDisp;
+    p.ctx.model_size = 1.5;
+  }
+  static KernelProbe probe_of(Model& model, ElementType t, int points) {
+    const std::vector<Vec3> X = nodes_of(t);
     Mesh& mesh = model.mesh;
     for (std::size_t a = 0; a < X.size(); ++a) {
       mesh.node_labels.push_back(static_cast<Label>(a + 1));
@@ -73,38 +77,9 @@ struct CoupledHarness {
     model.shell_sections.push_back(sec);
     model.element_property.push_back({PropertyRef::Kind::Shell, 0});
     model.initial_temperature.assign(X.size(), 20.0);
-    const ElemId elems[1] = {0};
-    kernel = make_element_kernel(KernelContext{model, t, model.element_property[0], {elems, 1}});
-    u.assign(static_cast<std::size_t>(kernel->n_dofs()), 0.0);
-    u0 = u;
-    state.assign(static_cast<std::size_t>(kernel->n_state()), 0.0);
-    state0 = state;
-    ctx.procedure = Procedure::CoupledTempDisp;
-    ctx.model_size = 1.5;
-    ElementInput in = input();
-    kernel->initialize(in);
-    state0 = state;
+    return KernelProbe::of(model);
   }
-  int n() const { return kernel->n_dofs(); }
-  ElementInput input() {
-    ElementInput in;
-    in.label = EntityLabel{1};
-    in.X = X;
-    in.u = u;
-    in.u_start = u0;
-    in.state_start = state0;
-    in.state = state;
-    in.ctx = &ctx;
-    return in;
-  }
-  void evaluate(std::vector<double>& r, std::vector<double>& K) {
-    r.assign(static_cast<std::size_t>(n()), 0.0);
-    K.assign(static_cast<std::size_t>(n() * n()), 0.0);
-    ElementOutput out;
-    out.residual = r;
-    out.tangent = K;
-    kernel->evaluate(input(), out);
-  }
+  int n() const { return p.n(); }
 };
 
 struct Case {
@@ -117,38 +92,37 @@ class CoupledShell : public ::testing::TestWithParam<Case> {};
 
 // Random rotations up to 0.05 rad, displacements 1e-3 and temperatures 20..180 (a gradient
 // through the thickness at every node): every column of the tangent, K_uT included, against
-// central differences of the residual.
+// central differences of the residual; revert-then-evaluate.
 TEST_P(CoupledShell, TangentMatchesCentralDifferences) {
   CoupledHarness h(GetParam().type, GetParam().points);
-  h.ctx.nlgeom = GetParam().nlgeom;
-  h.ctx.transient = true;
-  h.ctx.dt = 0.5;
+  h.p.ctx.nlgeom = GetParam().nlgeom;
+  h.p.ctx.transient = true;
+  h.p.ctx.dt = 0.5;
   const int per = 6 + GetParam().points;
   std::mt19937 gen(3);
   std::uniform_real_distribution<double> d(-1e-3, 1e-3), r(-0.05, 0.05), T(20.0, 180.0);
   for (int i = 0; i < h.n(); ++i) {
     const int c = i % per;
-    h.u[i] = c < 3 ? d(gen) : c < 6 ? r(gen) : T(gen);
-    h.u0[i] = c < 6 ? 0.0 : T(gen);
+    h.p.u[i] = c < 3 ? d(gen) : c < 6 ? r(gen) : T(gen);
+    h.p.u0[i] = c < 6 ? 0.0 : T(gen);
   }
-  std::vector<double> r0, K;
-  h.evaluate(r0, K);
-  for (int j = 0; j < h.n(); ++j) {
-    const int c = j % per;
-    const double step = c < 3 ? 1e-7 : c < 6 ? 1e-6 : 1e-3;
-    const double keep = h.u[j];
-    std::vector<double> rp, rm, dummy;
-    h.u[j] = keep + step;
-    h.evaluate(rp, dummy);
-    h.u[j] = keep - step;
-    h.evaluate(rm, dummy);
-    h.u[j] = keep;
-    double col = 0.0;
-    for (int i = 0; i < h.n(); ++i) col = std::max(col, std::abs(K[i * h.n() + j]));
+  expect_fd_tangent(h.p);
+  expect_revert_is_exact(h.p);
+}
+
+// Rigid motions at a uniform temperature equal to the initial one (no thermal load): from the
+// reference state a translation and a rotation of 1.2 rad (NLGEOM) store no energy; at a deformed
+// state a translation and an infinitesimal rotation (small strain) change nothing.
+TEST_P(CoupledShell, RigidMotionsStoreNoEnergy) {
+  CoupledHarness h(GetParam().type, GetParam().points);
+  h.p.ctx.nlgeom = GetParam().nlgeom;
+  const int per = 6 + GetParam().points;
+  for (int i = 0; i < h.n(); ++i)
+    if (i % per >= 6) h.p.u[i] = h.p.u0[i] = 20.0;
+  if (!GetParam().nlgeom)
     for (int i = 0; i < h.n(); ++i)
-      EXPECT_NEAR(K[i * h.n() + j], (rp[i] - rm[i]) / (2.0 * step), 2e-5 * col + 1e-9)
-          << "K(" << i << "," << j << ")";
-  }
+      if (i % per < 6) h.p.u[i] = 1e-3 * std::sin(1.0 + i);
+  expect_rigid_body_invariance(h.p, {.angle = 1.2});
 }
 
 std::vector<Case> all_cases() {
@@ -166,7 +140,7 @@ INSTANTIATE_TEST_SUITE_P(Shell, CoupledShell, ::testing::ValuesIn(all_cases()), 
 
 TEST(CoupledShellDofs, RotationsThenOneTemperaturePerSectionPoint) {
   CoupledHarness h(ElementType::S4RT, 5);
-  const auto d = h.kernel->node_dofs(1);
+  const auto d = h.p.kernel->node_dofs(1);
   ASSERT_EQ(d.size(), 11u);
   for (int i = 0; i < 6; ++i) EXPECT_EQ(abaqus_number(d[i]), i + 1);
   for (int k = 0; k < 5; ++k) EXPECT_EQ(abaqus_number(d[6 + k]), 11 + k);

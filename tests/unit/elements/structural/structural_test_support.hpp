@@ -1,8 +1,9 @@
 #pragma once
-// Helpers for the structural kernel tests: a small in-memory Model, kernels from the real factory,
-// one-element evaluation with caller-owned buffers, and a central-difference tangent check.
+// Helpers for the structural kernel tests: a small in-memory Model and its elements as kernel
+// probes (unit/elements/kernel_harness.hpp evaluates and checks them).
 #include "elements/element_kernel.hpp"
 #include "model/model.hpp"
+#include "unit/elements/kernel_harness.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,15 @@
 #include <vector>
 
 namespace gapfem::structural_test {
+
+using test::expect_fd_load_stiffness;
+using test::expect_fd_tangent;
+using test::expect_revert_is_exact;
+using test::expect_rigid_body_invariance;
+using test::FdOptions;
+using test::KernelProbe;
+using test::KernelResult;
+using test::RigidBodyOptions;
 
 /// A Model built by hand, one element at a time.
 struct TestModel {
@@ -111,77 +121,17 @@ struct TestModel {
     return make_element_kernel(
         KernelContext{model, model.mesh.elem_types[e], model.element_property[e], {elems, 1}});
   }
-};
-
-/// Local data of one element with owned buffers; input() points into them.
-struct LocalElement {
-  std::vector<Vec3> X;
-  std::vector<double> u, T, Ti;
-  StepContext ctx;
-
-  LocalElement(const TestModel& tm, ElemId e, int n_dofs) {
-    for (NodeId n : tm.model.mesh.element_nodes(e)) X.push_back(tm.model.mesh.coords[n]);
-    u.assign(static_cast<std::size_t>(n_dofs), 0.0);
-    ctx.space = tm.model.space;
-    ctx.model_size = tm.model.model_size();
-  }
-  ElementInput input() const {
-    ElementInput in;
-    in.label = EntityLabel{1};
-    in.X = X;
-    in.u = u;
-    in.u_start = u;
-    in.temperature = T;
-    in.temperature_start = T;
-    in.initial_temperature = Ti;
-    in.ctx = &ctx;
-    return in;
+  /// Element e alone on its own kernel (the model must outlive the probe).
+  test::KernelProbe probe(ElemId e) const { return test::KernelProbe::of(model, e); }
+  /// Element e evaluated by `k` (a kernel of its block that the caller keeps).
+  test::KernelProbe probe(ElemId e, const ElementKernel& k) const {
+    std::vector<Vec3> X;
+    for (NodeId n : model.mesh.element_nodes(e)) X.push_back(model.mesh.coords[n]);
+    test::KernelProbe p(k, std::move(X));
+    p.ctx.space = model.space;
+    p.ctx.model_size = model.model_size();
+    return p;
   }
 };
-
-/// Residual and row-major tangent of one evaluation.
-struct Evaluation {
-  std::size_t n = 0;
-  std::vector<double> r, K;
-  double k(std::size_t i, std::size_t j) const { return K[i * n + j]; }
-};
-
-inline Evaluation evaluate(const ElementKernel& kernel, const ElementInput& in) {
-  const auto n = static_cast<std::size_t>(kernel.n_dofs());
-  Evaluation ev;
-  ev.n = n;
-  ev.r.assign(n, 0.0);
-  ev.K.assign(n * n, 0.0);
-  ElementOutput out;
-  out.residual = ev.r;
-  out.tangent = ev.K;
-  kernel.evaluate(in, out);
-  return ev;
-}
-
-/// Central-difference check of the tangent at the state of `el`. Perturbation h (relative to
-/// `length`) = cbrt(eps) * length gives a truncation error O(h^2) and a round-off error
-/// O(eps/h) of the residual scale; the tolerance below is well above both for these smooth
-/// elements and far below any sign or factor error.
-inline void expect_tangent_matches_fd(const ElementKernel& kernel, LocalElement el, double length,
-                                      double rel_tol = 1e-6) {
-  const Evaluation ev = evaluate(kernel, el.input());
-  const auto n = ev.r.size();
-  const double h = 6e-6 * length; // ~ cbrt(2.2e-16) * length
-  double kmax = 0.0;
-  for (double v : ev.K) kmax = std::max(kmax, std::abs(v));
-  ASSERT_GT(kmax, 0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    LocalElement plus = el, minus = el;
-    plus.u[j] += h;
-    minus.u[j] -= h;
-    const Evaluation rp = evaluate(kernel, plus.input());
-    const Evaluation rm = evaluate(kernel, minus.input());
-    for (std::size_t i = 0; i < n; ++i) {
-      const double fd = (rp.r[i] - rm.r[i]) / (2.0 * h);
-      EXPECT_NEAR(ev.K[i * n + j], fd, rel_tol * kmax) << "K(" << i << "," << j << ")";
-    }
-  }
-}
 
 } // namespace gapfem::structural_test
