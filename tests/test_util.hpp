@@ -59,6 +59,27 @@ inline JobResult run_deck_exact(const std::string& text, const std::string& name
   return run_job(o);
 }
 
+/// The model data of the smallest deck with a gap: node 10 on a spring to ground (k = 100 in y),
+/// a GAPUNI of clearance 0.5 in -y to the fixed node 12. Loaded with 100 in -y it closes the gap
+/// at u = -0.5 and the rest goes into the gap. Tests add their heading and steps.
+inline constexpr const char* kSpringOnGapModel = R"(*NODE
+10, 0., 0., 0.
+12, 0., -1., 0.
+*ELEMENT, TYPE=SPRING1, ELSET=SPR
+1, 10
+*SPRING, ELSET=SPR
+2
+100.
+*ELEMENT, TYPE=GAPUNI, ELSET=G1
+101, 10, 12
+*GAP, ELSET=G1
+0.5, 0., -1., 0., 1.
+*BOUNDARY
+12, 1, 3
+10, 1, 1
+10, 3, 3
+)";
+
 inline const Frame& last_frame(const JobResult& r, int step = -1) {
   const int s = step > 0 ? step : static_cast<int>(r.model->steps.size());
   const Frame* f = r.step_end(s);

@@ -14,7 +14,9 @@ namespace gapfem {
 namespace {
 
 constexpr std::string_view kMagic = "GAPFEM-RESTART\n";
-constexpr std::uint32_t kVersion = 1;
+/// 2: StepChecks (in every record's step summaries) carries the relative equilibrium and heat
+/// balance errors; a format-1 file is refused with "written by another version".
+constexpr std::uint32_t kVersion = 2;
 constexpr std::uint32_t kRecordTag = 0x44434552; // "RECD"
 
 std::string header_bytes(const RestartHeader& h) {

@@ -30,25 +30,7 @@ CliRun run_cli(const std::filesystem::path& deck, const std::string& args = "") 
   return r;
 }
 
-const char* kGood = R"(*HEADING
-spring and gap
-*NODE
-10, 0., 0., 0.
-12, 0., -1., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=SPR
-1, 10
-*SPRING, ELSET=SPR
-2
-100.
-*ELEMENT, TYPE=GAPUNI, ELSET=G1
-101, 10, 12
-*GAP, ELSET=G1
-0.5, 0., -1., 0., 1.
-*BOUNDARY
-12, 1, 3
-10, 1, 1
-10, 3, 3
-*STEP
+const std::string kGood = std::string("*HEADING\nspring and gap\n") + kSpringOnGapModel + R"(*STEP
 *STATIC
 *CLOAD
 10, 2, -100.

@@ -21,25 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kDeck = R"(*HEADING
-spring and gap, with restart data and a .frd file
-*NODE
-10, 0., 0., 0.
-12, 0., -1., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=SPR
-1, 10
-*SPRING, ELSET=SPR
-2
-100.
-*ELEMENT, TYPE=GAPUNI, ELSET=G1
-101, 10, 12
-*GAP, ELSET=G1
-0.5, 0., -1., 0., 1.
-*BOUNDARY
-12, 1, 3
-10, 1, 1
-10, 3, 3
-*RESTART, WRITE, FREQUENCY=1
+const std::string kDeck =
+    std::string("*HEADING\nspring and gap, with restart data and a .frd file\n") +
+    kSpringOnGapModel + R"(*RESTART, WRITE, FREQUENCY=1
 *STEP, INC=20
 *STATIC
 0.5, 1.

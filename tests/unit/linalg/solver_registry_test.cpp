@@ -34,25 +34,9 @@ class CountingSolver final : public ConstrainedSolver {
   int& _systems;
 };
 
-const char* kDeck = R"(*HEADING
-a spring pushed onto a gap
-*NODE
-10, 0., 0., 0.
-12, 0., -1., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=SPR
-1, 10
-*SPRING, ELSET=SPR
-2
-100.
-*ELEMENT, TYPE=GAPUNI, ELSET=G1
-101, 10, 12
-*GAP, ELSET=G1
-0.5, 0., -1., 0., 1.
-*BOUNDARY
-12, 1, 3
-10, 1, 1
-10, 3, 3
-*STEP
+const std::string kDeck = std::string("*HEADING\na spring pushed onto a gap\n") +
+                          kSpringOnGapModel +
+                          R"(*STEP
 *STATIC
 0.25, 1.
 *CLOAD
