@@ -84,18 +84,7 @@ inline PropertyTable table(double v, bool varying, double factor) {
 inline std::shared_ptr<Model> model_of(ElementType t, const std::vector<Vec3>& X, const Props& p,
                                        double section = 1.0, double initial_temperature = 0.0) {
   auto model = std::make_shared<Model>();
-  Mesh& mesh = model->mesh;
-  for (std::size_t a = 0; a < X.size(); ++a) {
-    mesh.node_labels.push_back(static_cast<Label>(a + 1));
-    mesh.coords.push_back(X[a]);
-    mesh.node_index[static_cast<Label>(a + 1)] = static_cast<NodeId>(a);
-    mesh.conn.push_back(static_cast<NodeId>(a));
-  }
-  mesh.elem_labels.push_back(1);
-  mesh.elem_types.push_back(t);
-  mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
-  mesh.elem_src.push_back({});
-  mesh.elem_index[1] = 0;
+  add_lone_element(*model, t, X);
   model->space = space_of(t);
   Material m;
   m.name = "M";
@@ -142,22 +131,11 @@ struct Harness : KernelProbe {
     ctx.transient = true;
     ctx.dt = dt;
   }
-  /// One distributed load of `kind` on `face` (0 = body).
-  static DistributedLoad dload(DistLoadKind kind, int face, double magnitude = 0.0,
-                               double sink = 0.0) {
-    DistributedLoad ld;
-    ld.elem = 0;
-    ld.kind = kind;
-    ld.face = face;
-    ld.magnitude = magnitude;
-    ld.sink_temperature = sink;
-    return ld;
-  }
   using KernelProbe::load;
   /// Equivalent nodal load of one distributed load and -d f/du.
   void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
             std::vector<double>* K = nullptr) {
-    f = load(dload(kind, face, magnitude, sink), magnitude, sink, K);
+    f = load(distributed_load(kind, face, magnitude, sink), magnitude, sink, K);
   }
   double stored_heat() { return kernel->stored_heat(input()); }
   /// Nodal temperatures T(X) = T_ref + g . X (u and u0 alike unless `now_only`).

@@ -56,18 +56,7 @@ struct ShellHarness : KernelProbe {
                                                bool nodal_thickness) {
     auto model = std::make_shared<Model>();
     const std::vector<Vec3> X = shell_nodes(t, warped);
-    Mesh& mesh = model->mesh;
-    for (std::size_t a = 0; a < X.size(); ++a) {
-      mesh.node_labels.push_back(static_cast<Label>(a + 1));
-      mesh.coords.push_back(X[a]);
-      mesh.node_index[static_cast<Label>(a + 1)] = static_cast<NodeId>(a);
-      mesh.conn.push_back(static_cast<NodeId>(a));
-    }
-    mesh.elem_labels.push_back(1);
-    mesh.elem_types.push_back(t);
-    mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
-    mesh.elem_src.push_back({});
-    mesh.elem_index[1] = 0;
+    add_lone_element(*model, t, X);
     model->source_files.push_back("test.inp");
     Material m;
     m.name = "M";
@@ -94,19 +83,11 @@ struct ShellHarness : KernelProbe {
     model->element_property.push_back({PropertyRef::Kind::Shell, 0});
     return model;
   }
-  static DistributedLoad dload(DistLoadKind kind, int face, double magnitude, double sink) {
-    DistributedLoad ld;
-    ld.kind = kind;
-    ld.face = face;
-    ld.magnitude = magnitude;
-    ld.sink_temperature = sink;
-    return ld;
-  }
   using KernelProbe::load;
   /// f_ext and -d f_ext / dT of one distributed load.
   void load(DistLoadKind kind, int face, double magnitude, double sink, std::vector<double>& f,
             std::vector<double>& K) {
-    f = load(dload(kind, face, magnitude, sink), magnitude, sink, &K);
+    f = load(distributed_load(kind, face, magnitude, sink), magnitude, sink, &K);
   }
   double area() { // of the flat, undistorted reference: from the kernel's own BF totals
     std::vector<double> f, K;
@@ -165,11 +146,11 @@ TEST_P(HeatShell, FilmTangentMatchesCentralDifferences) {
   for (int face : {1, 2}) {
     SCOPED_TRACE("face " + std::to_string(face));
     const std::vector<double> f =
-        h.load(ShellHarness::dload(DistLoadKind::Film, face, 300.0, 50.0), 300.0, 50.0);
+        h.load(distributed_load(DistLoadKind::Film, face, 300.0, 50.0), 300.0, 50.0);
     const int k = face == 1 ? 0 : h.P - 1;
     for (int i = 0; i < h.n(); ++i)
       if (i % h.P != k) EXPECT_EQ(f[i], 0.0) << i;
-    expect_fd_load_stiffness(h, ShellHarness::dload(DistLoadKind::Film, face, 300.0, 50.0), 300.0,
+    expect_fd_load_stiffness(h, distributed_load(DistLoadKind::Film, face, 300.0, 50.0), 300.0,
                              50.0);
   }
 }

@@ -106,7 +106,7 @@ TEST_P(HeatFilmTangent, MatchesCentralDifferences) {
   Harness h(t, nodes_of(t), {}, 0.8);
   randomize(h, 40.0, 160.0, 0.0, 5u);
   const FdReport fd =
-      expect_fd_load_stiffness(h, Harness::dload(DistLoadKind::Film, 1, 12.5, 80.0), 12.5, 80.0);
+      expect_fd_load_stiffness(h, distributed_load(DistLoadKind::Film, 1, 12.5, 80.0), 12.5, 80.0);
   EXPECT_GT(*std::max_element(fd.fd.begin(), fd.fd.end()), 0.0);
   for (int a = 0; a < static_cast<int>(h.X.size()); ++a) h.u[h.nt(a)] = 80.0;
   std::vector<double> f0;

@@ -93,18 +93,7 @@ inline std::shared_ptr<Model> one_element_model(ElementType t, const std::vector
                                                 const TestMaterial& m = {},
                                                 double thickness = 1.0) {
   auto model = std::make_shared<Model>();
-  Mesh& mesh = model->mesh;
-  for (std::size_t a = 0; a < X.size(); ++a) {
-    mesh.node_labels.push_back(static_cast<Label>(a + 1));
-    mesh.coords.push_back(X[a]);
-    mesh.node_index[static_cast<Label>(a + 1)] = static_cast<NodeId>(a);
-    mesh.conn.push_back(static_cast<NodeId>(a));
-  }
-  mesh.elem_labels.push_back(1);
-  mesh.elem_types.push_back(t);
-  mesh.conn_offset.push_back(static_cast<std::int64_t>(X.size()));
-  mesh.elem_src.push_back({});
-  mesh.elem_index[1] = 0;
+  add_lone_element(*model, t, X);
   model->space = is_3d(t)
                      ? ModelSpace::ThreeD
                      : (element_info(t).plane == PlaneKind::Axisymmetric ? ModelSpace::Axisymmetric

@@ -158,6 +158,14 @@ TEST(StructuralBeamNlgeom, LinearStiffnessHasOnlyTheRigidModesAndEqualsNlgeomAtR
   }
 }
 
+/// The load stiffness of a load of `kind` on `face` against central differences (the harness).
+void expect_face_load_stiffness(OneElement& el, DistLoadKind kind, int face, double magnitude) {
+  SCOPED_TRACE(std::string(element_info(el.p.kernel->type()).name) + " face " +
+               std::to_string(face));
+  ASSERT_TRUE(el.p.kernel->supports_load(kind, face));
+  expect_fd_load_stiffness(el.p, test::distributed_load(kind, face), magnitude);
+}
+
 TEST(StructuralBeamNlgeom, FollowerLineLoadStiffnessMatchesCentralDifferences) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
@@ -169,12 +177,7 @@ TEST(StructuralBeamNlgeom, FollowerLineLoadStiffnessMatchesCentralDifferences) {
     for (double& v : el.p.u) v += 0.1 * U(rng);
     for (int face : {1, 2}) {
       if (planar && face == 1) continue;
-      DistributedLoad load;
-      load.kind = DistLoadKind::LineLoad;
-      load.face = face;
-      SCOPED_TRACE(std::string(element_info(l.type).name) + " face " + std::to_string(face));
-      ASSERT_TRUE(el.p.kernel->supports_load(load.kind, load.face));
-      expect_fd_load_stiffness(el.p, load, 2.5);
+      expect_face_load_stiffness(el, DistLoadKind::LineLoad, face, 2.5);
     }
   }
 }
@@ -187,12 +190,7 @@ TEST(StructuralBeamNlgeom, PipePressureStiffnessMatchesCentralDifferences) {
     OneElement el(l.type, nodes_of(l), Shape::Pipe, {0.08, 0.01}, true);
     for (double& v : el.p.u) v += 0.1 * U(rng);
     for (int face : {1, 2}) {
-      DistributedLoad load;
-      load.kind = DistLoadKind::PipePressure;
-      load.face = face;
-      SCOPED_TRACE(std::string(element_info(l.type).name) + " face " + std::to_string(face));
-      ASSERT_TRUE(el.p.kernel->supports_load(load.kind, load.face));
-      expect_fd_load_stiffness(el.p, load, 3.0);
+      expect_face_load_stiffness(el, DistLoadKind::PipePressure, face, 3.0);
     }
   }
 }
