@@ -214,6 +214,7 @@ inline void judge(Findings& found, const std::string& name, std::size_t i, std::
   const double rounding = o.round_off * kEps * F / c.h;
   const double err = std::abs(a - d1);
   std::ostringstream d;
+  d.precision(10);
   if (trunc > o.resolution * F / s + rounding) {
     d << fmt_entry(name, i, j) << ": the central difference cannot resolve it (" << d1
       << " at h = " << c.h << ", " << d2 << " at 2h): a kink within 2h or a step too large";
