@@ -263,8 +263,9 @@ def main():
                        r"([0-9.]+) s", p.stdout + p.stderr)
         if f1:
             row["factor1"] = float(f1.group(1))
-            print(f"   one factorisation: {row['factor1']:.3f} s, limit ratio "
-                  f"{wall / row['factor1']:.1f}", file=sys.stderr, flush=True)
+            ratio = f"{wall / row['factor1']:.1f}" if row["factor1"] > 0 else "- (under 1 ms)"
+            print(f"   one factorisation: {row['factor1']:.3f} s, limit ratio {ratio}",
+                  file=sys.stderr, flush=True)
         if with_ccx and a.ccx and neq is not None and neq <= a.ccx_max_eq:
             cd = os.path.join(d, "ccx")
             os.makedirs(cd, exist_ok=True)
@@ -349,7 +350,7 @@ def main():
             f"{r.get('inc', '')} | {r.get('it', '')} | {r.get('fact', '')} | {r.get('solves', '')} | "
             f"{fmt_split(r.get('split'))} | "
             f"{'%.3f' % r['factor1'] if 'factor1' in r else ''} | "
-            f"{'%.1f' % (r['wall'] / r['factor1']) if 'factor1' in r else ''} | "
+            f"{'%.1f' % (r['wall'] / r['factor1']) if r.get('factor1') else ''} | "
             f"{('> ' if 'ccx_cut' in r else '') + '%.2f' % r['ccx_wall'] if 'ccx_wall' in r else ''} | "
             f"{'%.0f' % r['ccx_mem'] if 'ccx_mem' in r else ''} | {ratio} | {agree} |")
     table = "\n".join(lines)
