@@ -9,8 +9,19 @@
 ///   tangent  K_e = d r_e / d u_e  (row-major, n_dofs x n_dofs), including lambda_i * d2g_i/du2
 ///   constraint rows g_i(u) = 0 with multipliers lambda_i (Lagrange-multiplier "extra variables").
 /// External loads (distributed) come from load(): f_ext positive in the load direction.
+///
+/// Operators for time integration and eigenproblems (OpenSees's getTangentStiff / getDamp /
+/// getMass): on request (ElementOutput::want_mass, want_damping) a kernel also returns
+///   mass    M_e = d(inertia force) / d(acceleration)   (n_dofs x n_dofs, row-major)
+///   damping C_e = d(damping force) / d(velocity)       (n_dofs x n_dofs, row-major)
+/// The residual and tangent above are the static ones (no M a, no C v): the assembler adds M a + C
+/// v and weighs K, C and M as the step's time integrator says (fem/assembler.hpp, OperatorWeights).
+/// A kernel whose rate term comes from a nonlinear stored quantity (the heat capacity, E(T)) adds
+/// that term itself, with the integrator's coefficients (StepContext::rates), and says so
+/// (ElementKernel::damping_in_residual); its damping block is then the operator's linearisation.
 #include "common/error.hpp"
 #include "common/types.hpp"
+#include "elements/rate_coefficients.hpp"
 #include "model/element_types.hpp"
 #include "model/loads.hpp"
 #include "model/mesh.hpp"
@@ -51,7 +62,18 @@ struct StepContext {
   /// the constraint rows as their own columns), so the symmetric solver is used throughout
   bool symmetric_only = false;
   const PhysicalConstants* constants = nullptr;
+  /// The step's time integrator's coefficients (set by the step problem for every increment;
+  /// undefined in static steps). Kernels read them through rate_coefficients(), never dt.
+  RateCoefficients rates;
 };
+
+/// The rate coefficients a kernel uses: the step integrator's (StepContext::rates) or, for a
+/// context made without one (an element test, a one-off evaluation), backward Euler over dt in a
+/// transient step; none otherwise.
+inline RateCoefficients rate_coefficients(const StepContext& ctx) {
+  if (ctx.rates.defined()) return ctx.rates;
+  return ctx.transient ? RateCoefficients::backward_euler(ctx.dt) : RateCoefficients{};
+}
 
 /// Local data of one element.
 struct ElementInput {
@@ -61,6 +83,11 @@ struct ElementInput {
   std::span<const Vec3> X;         ///< reference coordinates of the element's nodes
   std::span<const double> u;       ///< trial total values of the local DOFs (node-major)
   std::span<const double> u_start; ///< values at the start of the increment (committed)
+  /// Trial velocity and acceleration of the local DOFs (node-major, like u; from the integrator's
+  /// map, StepContext::rates) and their committed values: given to kernels that have a mass or a
+  /// damping operator in steps whose integrator defines them; empty otherwise (static steps), and
+  /// a (a_start) empty in first-order steps
+  std::span<const double> v, a, v_start, a_start;
   std::span<const double>
       temperature; ///< predefined nodal temperatures now (stress elements), or empty
   std::span<const double> temperature_start; ///< … at the start of the increment
@@ -87,6 +114,13 @@ struct ElementOutput {
   std::span<double> residual; ///< n_dofs
   std::span<double> tangent;  ///< n_dofs * n_dofs, row-major
   bool want_tangent = true;
+  /// On request only (ElementKernel::has_mass / has_damping): the mass block d(inertia force) /
+  /// d(acceleration) and the damping block d(damping force) / d(velocity), n_dofs x n_dofs,
+  /// row-major, zeroed by the caller. Empty (and not to be written) when not wanted.
+  std::span<double> mass;
+  bool want_mass = false;
+  std::span<double> damping;
+  bool want_damping = false;
 
   // Active constraint rows (gap contact, Lagrange friction). Capacity n_multipliers.
   int n_constraints = 0;
@@ -204,6 +238,15 @@ class ElementKernel {
   }
   virtual int n_state() const { return 0; }
   virtual int n_multipliers() const { return 0; }
+  /// Operators (docs/conventions.md, "Mass and damping"): does evaluate() fill ElementOutput::mass
+  /// (resp. damping) when asked? Every kernel in the tree states what it has, massless ones
+  /// included (a gap, a spring, a UEL say false on purpose, with the reason in their header).
+  virtual bool has_mass() const { return false; }
+  virtual bool has_damping() const { return false; }
+  /// True when evaluate() itself adds the damping forces and their tangent (with the integrator's
+  /// coefficients, StepContext::rates) because they come from a nonlinear stored quantity (the
+  /// heat capacity: rate of E(T)); the assembler then never adds C v or c C for this kernel.
+  virtual bool damping_in_residual() const { return false; }
   /// Does recover() report an artificial (hourglass) energy (ALLAE)?
   virtual bool has_artificial_energy() const { return false; }
   /// Does the element read the predefined temperature field (thermal strain in stress elements)?

@@ -6,6 +6,26 @@
 
 namespace gapfem {
 
+void ElementGather::gather_rates(std::span<const LocalIndex> slots, const FieldView& f,
+                                 const RateCoefficients& c) {
+  const std::size_t n = slots.size();
+  _v0.assign(n, 0.0);
+  _a0.assign(n, 0.0);
+  if (!f.v_start.empty())
+    for (std::size_t k = 0; k < n; ++k) _v0[k] = f.v_start[slots[k]];
+  if (!f.a_start.empty())
+    for (std::size_t k = 0; k < n; ++k) _a0[k] = f.a_start[slots[k]];
+  _v.resize(n);
+  for (std::size_t k = 0; k < n; ++k) _v[k] = c.velocity(_u[k] - _u0[k], _v0[k], _a0[k]);
+  _in.v = _v;
+  _in.v_start = _v0;
+  if (!c.second_order) return;
+  _a.resize(n);
+  for (std::size_t k = 0; k < n; ++k) _a[k] = c.acceleration(_u[k] - _u0[k], _v0[k], _a0[k]);
+  _in.a = _a;
+  _in.a_start = _a0;
+}
+
 ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& block, std::size_t i,
                                     const FieldView& f, const StepContext* ctx) {
   const Model& model = disc.model();
@@ -28,6 +48,9 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   _in.X = _X;
   _in.u = _u;
   _in.u_start = _u0;
+  // rates only where an operator uses them, in steps that define them (never in static steps)
+  if (ctx && ctx->rates.defined() && (block.kernel->has_mass() || block.kernel->has_damping()))
+    gather_rates(slots, f, ctx->rates);
   if (block.uses_temperature && !f.temperature.empty()) {
     _T.resize(nn);
     _T0.resize(nn);
@@ -70,7 +93,8 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   return _in;
 }
 
-ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangent) {
+ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangent, bool want_mass,
+                                     bool want_damping) {
   const auto n = static_cast<std::size_t>(block.n_dofs);
   _r.assign(n, 0.0);
   _K.assign(want_tangent ? n * n : 0, 0.0);
@@ -84,6 +108,16 @@ ElementOutput& ElementGather::output(const ElementBlock& block, bool want_tangen
   _out.residual = _r;
   _out.tangent = _K;
   _out.want_tangent = want_tangent;
+  if (want_mass) {
+    _M.assign(n * n, 0.0);
+    _out.mass = _M;
+    _out.want_mass = true;
+  }
+  if (want_damping) {
+    _D.assign(n * n, 0.0);
+    _out.damping = _D;
+    _out.want_damping = true;
+  }
   _out.constraint_slot = _cslot;
   _out.constraint_value = _cval;
   _out.constraint_compliance = _ccomp;

@@ -19,6 +19,9 @@ struct FieldView {
   std::span<const double> temperature_start; ///< … at the increment start
   std::span<const double> initial_temperature;  ///< per node
   std::span<const double> temperature_gradient; ///< 2 per node now (may be empty)
+  /// Committed velocity and acceleration per slot: given only in steps whose time integrator
+  /// needs them (its trial rates depend on them); empty otherwise (read as zero)
+  std::span<const double> v_start, a_start;
 };
 
 class ElementGather {
@@ -26,16 +29,23 @@ class ElementGather {
   /// Fill `input` for element i of block b; spans point into this object's buffers.
   ElementInput& gather(const Discretization& disc, ElementBlock& block, std::size_t i,
                        const FieldView& fields, const StepContext* ctx);
-  /// Output buffers sized for the current block, zeroed.
-  ElementOutput& output(const ElementBlock& block, bool want_tangent);
+  /// Output buffers sized for the current block, zeroed; the mass and damping blocks are sized
+  /// and zeroed only when wanted (nothing is touched for them in static steps).
+  ElementOutput& output(const ElementBlock& block, bool want_tangent, bool want_mass = false,
+                        bool want_damping = false);
   ElementInput& input() { return _in; }
 
  private:
+  /// The element's trial rates from the integrator's map and its committed rates.
+  void gather_rates(std::span<const LocalIndex> slots, const FieldView& f,
+                    const RateCoefficients& c);
+
   ElementInput _in;
   ElementOutput _out;
   std::vector<Vec3> _X;
   std::vector<double> _u, _u0, _T, _T0, _Ti, _G;
-  std::vector<double> _r, _K;
+  std::vector<double> _v, _a, _v0, _a0;
+  std::vector<double> _r, _K, _M, _D;
   std::vector<std::uint8_t> _free;
   std::vector<int> _cslot;
   std::vector<double> _cval, _ccomp, _ccoef, _ccol;
