@@ -280,8 +280,8 @@ StepSummary Analysis::Impl::run_step(int index) {
     r.ended_at_restart = resume->where.end_step && !r.ctrl->finished();
     resume.reset();
   }
-  if (r.step->procedure == Procedure::SubstructureGenerate) {
-    generate_substructure(r); // no increments: the reduction of the stiffness at the step start
+  if (!r.proc->incremental()) {
+    r.proc->run(r); // no increments (e.g. the reduction of the stiffness at the step start)
     r.sum.converged = true;
     for (auto* w : writers) w->end_step(model, r.index, r.sum);
     return r.sum;
@@ -292,6 +292,7 @@ StepSummary Analysis::Impl::run_step(int index) {
 
 void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   const Step& step = *r.step;
+  r.proc = make_procedure(step.procedure, *this);
   r.u_step_start = from ? from->u_step_start : st.u_start;
   r.loads =
       std::make_unique<StepLoads>(model, disc, r.index, history, r.u_step_start, st.total_time);
@@ -309,7 +310,6 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   StepContext& base = r.base;
   base.procedure = step.procedure;
   base.nlgeom = step.nlgeom;
-  base.transient = !step.inc.steady_state && is_thermal(step.procedure);
   base.step_period = loads.period();
   base.space = model.space;
   base.model_size = model.model_size();
@@ -318,31 +318,14 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   base.step_number = step.number;
   base.direct = step.inc.direct;
   base.symmetric_only = step.symmetric_only;
+  r.proc->configure(step, base);
   r.prob = std::make_unique<StepProblem>(disc, assembler, loads, st, base, r.pattern);
   StepProblem& prob = *r.prob;
   prob.set_unsymmetric_loads(step.unsymmetric);
   prob.set_statistics(&stats);
   prob.begin_increment(0.0, 0.0);
   if (!from) prob.compute_stiffness_hints(); // a resumed step has the record's
-  if (step.procedure == Procedure::Static)
-    r.stab = step.stabilize.on ? &step.stabilize
-                               : (carried_stabilization.on ? &carried_stabilization : nullptr);
-  if (r.stab) {
-    if (!unit_mass)
-      unit_mass = std::make_shared<const std::vector<double>>(
-          unit_density_mass(disc, assembler, prob.fields(), prob.context()));
-    if (from) {
-      // the record's factors (restore_step)
-    } else if (step.stabilize.on) {
-      const std::vector<double> diag =
-          assembler.diagonal_stiffness(prob.fields(), prob.context(), /*skip_gaps=*/true);
-      const double dt0 = step.inc.initial > 0 ? step.inc.initial : loads.period();
-      r.stab_c0 = initial_stabilization_factor(*r.stab, dt0, *unit_mass, diag);
-    } else {
-      r.stab_c0 = carried_factor;
-    }
-    prob.set_stabilization(unit_mass, r.stab_c0);
-  }
+  r.proc->set_up(r, from != nullptr);
 
   // SHRINK fits take the element's own overclosure at the start of the step.
   if (!from && !loads.shrink_elements().empty()) {
@@ -364,10 +347,8 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   r.sum.name = step.name;
   r.sum.procedure = std::string(procedure_name(step.procedure));
   r.rules = increment_rules(step.controls);
-  if (fixed_transient_increments(step)) r.rules.growth = r.rules.shrink = 1.0;
+  r.proc->adjust_rules(step, r.rules);
   r.ctrl = std::make_unique<IncrementController>(step.inc, step.max_increments, r.rules);
-  r.heat = std::make_unique<HeatBalance>(has_temperature_dofs && is_thermal(step.procedure),
-                                         base.transient, r.u_step_start);
   r.controls = newton_controls(step.controls, options.factor_reuse);
   r.controls.residual_only = options.residual_only;
   step_damping_peak = 0.0;
@@ -376,11 +357,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
     log::progress("  resuming at increment {} (step time {:.6g}) from {}", r.ctrl->increment(),
                   r.ctrl->step_time(), from->where.file.string());
   }
-  if (r.stab)
-    log::progress("  automatic stabilization: damping factor {:.4g}{}", prob.stabilization_factor(),
-                  r.stab->allsdtol > 0
-                      ? fmt::format(" (adaptive, ALLSDTOL {:.3g})", r.stab->allsdtol)
-                      : std::string());
+  r.proc->report_set_up(r);
 }
 
 void Analysis::Impl::increment_loop(StepRun& r) {
@@ -433,20 +410,14 @@ void Analysis::Impl::increment_loop(StepRun& r) {
     info.dt = dt;
     info.converged = res.converged;
     info.residual_history = res.residual_history;
-    // Transient heat transfer: DELTMX bounds the temperature change of an increment; an element's
-    // PNEWDT > 1 bounds the growth of the next.
+    // An element's PNEWDT > 1 bounds the growth of the next increment, and so may the
+    // procedure's accuracy check (transient heat transfer: DELTMX).
     double growth = std::isfinite(res.dt_ratio) && res.dt_ratio > 0.0 ? res.dt_ratio : 0.0;
     bool redo = false;
-    if (res.converged && r.base.transient && step.inc.deltmx > 0.0) {
-      const double dT =
-          max_free_temperature_change(disc.dofs(), r.loads->equations(), st.u, st.u_start);
-      const TemperatureAccuracy acc = deltmx_rule(dT, step.inc.deltmx, r.rules.deltmx_cutback);
-      if (acc.ratio > 0.0) growth = growth > 0.0 ? std::min(growth, acc.ratio) : acc.ratio;
-      redo = acc.redo && ctrl.retry_smaller(acc.ratio);
-      if (redo)
-        log::progress("  increment {} attempt {}: temperature change {:.4g} exceeds DELTMX {:.4g}; "
-                      "repeating it with a time increment of {:.4g}",
-                      info.increment, info.attempts, dT, step.inc.deltmx, ctrl.next());
+    if (res.converged) { // the procedure's accuracy check (e.g. DELTMX)
+      const IncrementAccuracy acc = r.proc->check_accuracy(r, info, dt);
+      if (acc.growth > 0.0) growth = growth > 0.0 ? std::min(growth, acc.growth) : acc.growth;
+      redo = acc.redo;
     }
     info.converged = res.converged && !redo;
     info.deltmx_exceeded = redo;
@@ -478,10 +449,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   r.predictor.record(st.u, st.u_start, dt);
   r.extrapolate = true;
   prob.commit();
-  if (r.stab)
-    prob.set_stabilization(
-        unit_mass,
-        adapted_stabilization_factor(*r.stab, prob.stabilization_factor(), st.allsd, st.allie));
+  r.proc->accepted(r, dt);
   r.converged_f_int = st.f_int;
   r.converged_f_ext = st.f_ext;
   for (int f = 0; f < kNumFields; ++f) r.flux.sum[f] += res.flux[f];
@@ -489,7 +457,6 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   r.controls.nonlinear_step = res.iterations > 1;
   if (res.fresh_contraction > 0) r.controls.fresh_contraction = res.fresh_contraction;
   ctrl.accept(res.iterations - res.severe_iterations - res.refinements, growth);
-  r.heat->add_increment(disc.dofs(), dt, prob.reactions(), st.f_ext);
   ++stats.increments;
   ++r.sum.increments;
   step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
@@ -531,8 +498,7 @@ bool Analysis::Impl::reject_attempt(StepRun& r, const NewtonResult& res, const I
       res.singular || !res.chattering.empty() || res.cause == FailureCause::Element;
   r.attempts_log.add(info.increment, info.attempts, kind, r.last_problem, structural);
   r.extrapolate = false;
-  if (r.stab && prob.stabilization_factor() < 1e3 * r.stab_c0) // more damping for the retry
-    prob.set_stabilization(unit_mass, 2.0 * prob.stabilization_factor());
+  r.proc->rejected(r);
   log::progress("  increment {} attempt {} did not converge: {}", info.increment, info.attempts,
                 r.last_problem);
   if (!r.ctrl->reject(res.cause == FailureCause::Requested ? res.dt_ratio : 0.0)) {
@@ -572,26 +538,14 @@ StepSummary Analysis::Impl::finish_step(StepRun& r) {
     r.loads->finish(ctrl.period(), prob.reactions(), disc.constraints(), history);
   }
   sum.checks = checks(prob);
-  r.heat->finish(disc, prob.context(), st.u_start, prob.reactions(), st.f_ext, sum.checks);
   sum.checks.max_damping_force = std::max(sum.checks.max_damping_force, step_damping_peak);
   sum.checks.allie = st.allie;
-  if (r.stab) {
-    sum.checks.stabilized = true;
-    sum.checks.stabilization_factor = prob.stabilization_factor();
-    sum.checks.allsd = st.allsd;
-    sum.checks.allie = st.allie;
-    if (r.stab->allsdtol > 0 && st.allie > 0 && st.allsd > r.stab->allsdtol * st.allie)
-      solver_warnings.push_back(
-          fmt::format("step {}: the stabilization dissipated {:.3g} of the internal energy "
-                      "(ALLSD {:.4g}, ALLIE {:.4g}), more than ALLSDTOL {:.3g}; check that the "
-                      "damping does not change the answer",
-                      step.number, st.allsd / st.allie, st.allsd, st.allie, r.stab->allsdtol));
-  }
-  const bool carry = r.stab && r.stab->carry;
-  carried_stabilization = carry ? *r.stab : Stabilization{};
-  carried_stabilization_step =
-      !carry ? -1 : (r.stab == &step.stabilize ? r.index : carried_stabilization_step);
-  carried_factor = r.stab ? prob.stabilization_factor() : 0.0;
+  // what a step hands to the next is its procedure's to say (a stabilization continued by
+  // CONTINUE=YES, StaticProcedure); by default nothing
+  carried_stabilization = Stabilization{};
+  carried_stabilization_step = -1;
+  carried_factor = 0.0;
+  r.proc->finish(r);
   for (auto* w : writers) w->end_step(model, r.index, sum);
   st.total_time += ctrl.step_time();
   return sum;

@@ -89,8 +89,11 @@ class Analysis {
   /// symbolic factorisation) without solving; throws InputError as run() would.
   ModelCheck check(bool time_factorization = false);
 
- private:
+  /// The run's state (solver/analysis_impl.hpp, not a public header); named here so that the
+  /// step procedures (solver/procedure.hpp) can work on it.
   struct Impl;
+
+ private:
   std::unique_ptr<Impl> _impl;
 };
 

@@ -14,6 +14,7 @@
 #include "solver/extrapolation.hpp"
 #include "solver/increment_control.hpp"
 #include "solver/newton.hpp"
+#include "solver/procedure.hpp"
 #include "solver/restart_file.hpp"
 #include "solver/stabilization.hpp"
 #include "solver/step_problem.hpp"
@@ -34,12 +35,11 @@ struct StepRun {
   std::shared_ptr<const SparsityPattern> pattern;
   StepContext base;
   std::unique_ptr<StepProblem> prob;
-  const Stabilization* stab = nullptr;
-  double stab_c0 = 0.0;
+  /// What the step's procedure adds to the stages (solver/procedure.hpp)
+  std::unique_ptr<StepProcedure> proc;
   StepSummary sum;
   IncrementRules rules;
   std::unique_ptr<IncrementController> ctrl;
-  std::unique_ptr<HeatBalance> heat;
   FluxHistory flux;
   NewtonControls controls;
   std::vector<double> converged_f_int, converged_f_ext;

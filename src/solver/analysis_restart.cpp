@@ -11,7 +11,7 @@
 namespace gapfem {
 namespace {
 
-constexpr std::uint32_t kPayloadVersion = 2;
+constexpr std::uint32_t kPayloadVersion = 3; // 3: the procedure's state last
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -197,15 +197,12 @@ void Analysis::Impl::restore_step(StepRun& r) {
   }
   load(in, r.sum);
   r.ctrl->restore(in);
-  r.heat->restore(in);
   in.pod(r.flux);
   in.pod(step_damping_peak);
-  const auto factor = in.get<double>();
-  in.pod(r.stab_c0);
   in.pod(r.last_t0);
   in.pod(r.last_dt);
   r.predictor.restore(in, st.u.size());
-  if (r.stab) r.prob->set_stabilization(unit_mass, factor);
+  r.proc->restore(in, r);
   // the state after the record's increment (its loads, temperatures and interference)
   r.prob->begin_increment(r.last_t0, r.last_dt);
   if (!in.at_end()) throw RestartDataError("the restart record holds more than gapfem expects");
@@ -275,14 +272,12 @@ void Analysis::Impl::write_restart(StepRun& r) {
   }
   save(a, r.sum);
   r.ctrl->save(a);
-  r.heat->save(a);
   a.pod(r.flux);
   a.pod(step_damping_peak);
-  a.pod(r.prob->stabilization_factor());
-  a.pod(r.stab_c0);
   a.pod(r.last_t0);
   a.pod(r.last_dt);
   r.predictor.save(a);
+  r.proc->save(a, r);
 
   RestartRecordInfo info;
   info.step = r.step->number;

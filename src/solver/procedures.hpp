@@ -1,0 +1,18 @@
+#pragma once
+/// @file procedures.hpp
+/// The step procedures gapfem has (solver/procedure.hpp), one file each; procedure.cpp registers
+/// them.
+#include "solver/procedure.hpp"
+
+namespace gapfem {
+
+/// *STATIC: Newton increments; automatic stabilization (procedure_static.cpp).
+std::unique_ptr<StepProcedure> make_static_procedure(Analysis::Impl& a);
+/// *HEAT TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT: transient terms, DELTMX, heat balance
+/// (procedure_heat_transfer.cpp).
+std::unique_ptr<StepProcedure> make_heat_transfer_procedure(Analysis::Impl& a);
+/// *SUBSTRUCTURE GENERATE: one reduction of the stiffness, no increments
+/// (procedure_substructure.cpp; the reduction itself: substructure_generate.cpp).
+std::unique_ptr<StepProcedure> make_substructure_generate_procedure(Analysis::Impl& a);
+
+} // namespace gapfem
