@@ -2,7 +2,7 @@
 #include "app/check.hpp"
 
 #include "app/environment.hpp"
-#include "app/user_code.hpp"
+#include "app/user_code_loader.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/memory.hpp"

@@ -3,7 +3,7 @@
 #include "app/check.hpp"
 #include "app/environment.hpp"
 #include "app/job_files.hpp"
-#include "app/user_code.hpp"
+#include "app/user_code_loader.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "io/inp/reader.hpp"

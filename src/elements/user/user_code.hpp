@@ -2,7 +2,7 @@
 /// @file user_code.hpp
 /// The user's compiled element code, as the kernels call it: an Abaqus UEL subroutine (Fortran,
 /// or C with Fortran's calling convention) or a gapfem element plugin (include/gapfem/plugin.hpp).
-/// The job compiles and loads it (app/user_code); the model holds it (Model::user_code).
+/// The job compiles and loads it (app/user_code_loader); the model holds it (Model::user_code).
 #include <gapfem/plugin.hpp>
 #include <mutex>
 #include <string>

@@ -1,4 +1,4 @@
-#include "app/user_code.hpp"
+#include "app/user_code_loader.hpp"
 
 #include "common/error.hpp"
 #include "common/log.hpp"

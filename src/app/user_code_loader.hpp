@@ -1,5 +1,5 @@
 #pragma once
-/// @file user_code.hpp
+/// @file user_code_loader.hpp
 /// `gapfem --user FILE`: the user's element code compiled with the Debian toolchain (gfortran for
 /// .f/.for/.f77 (fixed form) and .f90/.f95 (free form), gcc for .c, g++ for .cpp/.cc/.cxx) into a
 /// shared library in a scratch folder, or a ready .so, loaded and checked for its entry points: an
