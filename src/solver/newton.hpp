@@ -10,7 +10,10 @@
 #include "linalg/constrained_solver.hpp"
 #include "solver/nonlinear_problem.hpp"
 
+#include <span>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 namespace gapfem {
 
@@ -93,6 +96,113 @@ struct NewtonResult {
   double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
+/// The share of R_n a modified-Newton (stale-factor) iterate must meet (check_convergence).
+inline constexpr double kStaleAcceptance = 1e-2;
+/// Stale iterations at most past R_n on the way to kStaleAcceptance.
+inline constexpr int kStaleRefinements = 2;
+
+/// Abaqus's criteria on one field after an iteration: `flux` the field's time-averaged flux q~,
+/// `residual` its largest residual r_max, `correction` its largest correction c_max, `increment`
+/// its largest increment du_max.
+struct FieldCheck {
+  /// false: zero flux (q~ < q~_0 and r_max <= epsilon q~_0), the field neither converges the
+  /// iteration nor fails it and is left out of the residual ratio
+  bool counted = true;
+  bool converged = false;    ///< linear rule (r_max <= epsilon_l q~), or residual and correction
+  bool within_stale = false; ///< r_max within kStaleAcceptance of R_n (a stale iterate's bar)
+  double ratio = 0.0;        ///< r_max / q~ (0 without a flux scale yet, inf when not finite)
+};
+FieldCheck check_field(const NewtonControls::Field& controls, double flux, double residual,
+                       double correction, double increment);
+
+/// One increment attempt's Newton–Raphson iteration, one method per stage. run() calls them in
+/// this order until the attempt converges or fails:
+///
+///   start                 the first evaluation (with the tangent); nothing to solve, a cut-back
+///   solve_system          the Newton system through ConstrainedSolver (residual-only
+///                         evaluations while it keeps a factor; a fresh factor when asked)
+///   limit_step            line search: the problem's step limit scales the correction
+///   apply_correction      u += du; the correction's largest entry per field
+///   evaluate_state        the residual at the new state (the tangent where the solver needs it)
+///   widen_flux_scale      the increment's flux scale from evaluations without status changes
+///   track_status_changes  severe discontinuity iterations, chattering elements
+///   check_convergence     Abaqus's criteria per field; a stale iterate's extra refinements
+///   augment               at a converged state: augmented Lagrange, or the attempt converged
+///   check_finite          a residual that is not finite ends the attempt
+///   choose_factor         a stale factor that contracts too slowly is replaced next iteration
+///   check_divergence      the residual grew twice in a row past I_0 iterations
+///   check_iteration_limits  I_C equilibrium iterations, the severe iterations allowed
+///
+/// Every stage that returns bool returns false when the attempt is over; result() tells whether
+/// it converged and why not. The iteration's state lives in members, so that a procedure that
+/// needs another stage (dynamics: the integrator's velocities and accelerations after a
+/// correction) adds a method and a call in run() rather than a branch in a loop. Tests drive the
+/// stages one by one.
+class NewtonIteration {
+ public:
+  /// `problem`, `solver` and `stats` (may be null) must outlive the object: one attempt.
+  NewtonIteration(NonlinearProblem& problem, ConstrainedSolver& solver,
+                  const NewtonControls& controls, const FluxHistory& history, RunStatistics* stats);
+
+  /// Iterate to convergence or failure (the stages in order).
+  NewtonResult run();
+
+  bool start();
+  bool solve_system();
+  void limit_step();
+  void apply_correction();
+  bool evaluate_state();
+  void widen_flux_scale();
+  bool track_status_changes();
+  /// true: the iterate meets the criteria (then augment() decides whether it is final).
+  bool check_convergence();
+  bool augment();
+  bool check_finite();
+  void choose_factor();
+  bool check_divergence();
+  bool check_iteration_limits();
+
+  const NewtonResult& result() const { return _res; }
+  const Evaluation& evaluation() const { return _ev; }
+  /// The correction of the last solve (after limit_step: the part applied).
+  std::span<const double> correction() const { return _du; }
+  /// The worst residual/flux ratio of the last convergence check.
+  double residual_ratio() const { return _residual_ratio_now; }
+  /// The next solve factorises afresh (choose_factor found the stale factor too slow).
+  bool fresh_factor_next() const { return _force_fresh; }
+
+ private:
+  bool evaluate(bool tangent);
+  bool add_tangent();
+  bool tangent_wanted() const;
+  bool requested_cutback();
+  double time_averaged_flux(int field) const;
+
+  NonlinearProblem& _p;
+  ConstrainedSolver& _solver;
+  NewtonControls _c;
+  FluxHistory _history;
+  RunStatistics* _stats;
+  NewtonResult _res;
+  Evaluation _ev; ///< the last evaluation
+  std::vector<double> _du, _dl;
+  std::array<double, kNumFields> _flux{}; ///< the increment's flux scale so far
+  std::array<double, kNumFields> _cmax{}; ///< the last correction's largest entry per field
+  std::unordered_map<ElemId, int> _flips; ///< status changes per element
+  std::vector<ElemId> _last_changed;      ///< sorted, by the evaluation before the last
+  int _turning_back = 0; ///< evaluations in a row that only turned back the one before's changes
+  int _increases = 0;    ///< convergence checks in a row whose residual ratio grew
+  int _equilibrium_iterations = 0;
+  double _worst_ratio = 0.0;                                        ///< of the last check
+  double _previous_ratio = std::numeric_limits<double>::infinity(); ///< of the check before
+  double _residual_ratio_now = std::numeric_limits<double>::infinity();
+  bool _last_stale = false;  ///< the last solve used a stale factor
+  bool _force_fresh = false; ///< the next solve factorises afresh
+  /// residual ratio over the last fresh-factor iteration (this increment's, or the step's before)
+  double _fresh_contraction = 0.0;
+};
+
+/// One increment attempt: NewtonIteration(...).run().
 NewtonResult solve_increment(NonlinearProblem& problem, ConstrainedSolver& solver,
                              const NewtonControls& c, const FluxHistory& history,
                              RunStatistics* stats);
