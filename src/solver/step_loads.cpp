@@ -10,62 +10,61 @@
 
 namespace gapfem {
 
+namespace {
+/// The value of u along local DOF d (1-6) of a transformed node with axes Q.
+double local_value(const DofMap& dofs, std::span<const double> u, NodeId n, int d,
+                   const std::array<double, 9>& Q) {
+  const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
+  double v = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
+    if (s >= 0) v += Q[3 * i + j] * u[s];
+  }
+  return v;
+}
+
+/// Boundary conditions on DOFs no element at the node has: how many, and the first.
+struct IgnoredBcs {
+  int count = 0;
+  std::string example;
+  void note(const Model& model, const BoundaryEntry& bc) {
+    if (count++ == 0)
+      example = fmt::format("node {} DOF {} ({})", model.node_label(bc.node), abaqus_number(bc.dof),
+                            bc.loc.str());
+  }
+};
+} // namespace
+
 StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_index,
                      const LoadHistory& history, std::span<const double> u_now,
                      double step_start_total_time)
     : _model(model), _step(model.steps[step_index]), _period(_step.inc.period),
       _step_start(step_start_total_time) {
-  const DofMap& dofs = disc.dofs();
   const Step* prev = step_index > 0 ? &model.steps[step_index - 1] : nullptr;
+  set_boundary_conditions(disc, u_now);
+  _eqmap = EquationMap::build(_prescribed);
+  set_concentrated_loads(disc.dofs(), history);
+  set_released_reactions(disc.dofs(), history);
+  set_distributed_loads(history, prev);
+  set_temperatures(disc, history, prev);
+  set_interference();
+}
 
-  // Boundary conditions.
+void StepLoads::set_boundary_conditions(const Discretization& disc, std::span<const double> u_now) {
+  const DofMap& dofs = disc.dofs();
   _prescribed.assign(static_cast<std::size_t>(dofs.n_slots()), 0);
-  int ignored = 0;
-  std::string example;
-  const ConstraintSet& rows = disc.constraints();
-  // the value of u along local DOF d (1-6) of a transformed node
-  auto local_value = [&](NodeId n, int d, const std::array<double, 9>& Q) {
-    const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
-    double v = 0.0;
-    for (int j = 0; j < 3; ++j) {
-      const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
-      if (s >= 0) v += Q[3 * i + j] * u_now[s];
-    }
-    return v;
-  };
+  IgnoredBcs ignored;
   for (const BoundaryEntry& bc : _step.boundary) {
     const int d = abaqus_number(bc.dof);
     if (d <= 6)
-      if (const auto Q = model.node_axes(bc.node)) {
-        const int row = rows.bc_row(bc.node, d);
-        if (row < 0) {
-          if (ignored++ == 0)
-            example =
-                fmt::format("node {} DOF {} ({})", model.node_label(bc.node), d, bc.loc.str());
-          continue;
-        }
-        Scalar sc;
-        sc.start = local_value(bc.node, d, *Q);
-        sc.end = bc.fixed ? sc.start : bc.value;
-        sc.amplitude = bc.fixed ? -1 : bc.amplitude;
-        sc.constant = bc.fixed || bc.propagated;
-        bool replaced = false;
-        for (LocalBc& l : _local)
-          if (l.row == row) {
-            l.value = sc;
-            replaced = true;
-          }
-        if (!replaced) {
-          _local.push_back({bc.node, d, row, sc});
-          _local_keys.emplace_back(bc.node, d);
-        }
+      if (const auto Q = _model.node_axes(bc.node)) {
+        if (!add_local_bc(bc, d, local_value(dofs, u_now, bc.node, d, *Q), disc.constraints()))
+          ignored.note(_model, bc);
         continue;
       }
     const LocalIndex s = dofs.slot(bc.node, bc.dof);
     if (s < 0) {
-      if (ignored++ == 0)
-        example = fmt::format("node {} DOF {} ({})", model.node_label(bc.node),
-                              abaqus_number(bc.dof), bc.loc.str());
+      ignored.note(_model, bc);
       continue;
     }
     Scalar sc;
@@ -82,45 +81,67 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     }
     _prescribed[s] = 1;
   }
-  if (ignored > 0) {
-    // a temperature on a node of stress/displacement elements only: CalculiX gives every element
-    // temperatures in thermal steps, Abaqus only the heat-transfer and coupled types
-    const bool thermal =
-        is_thermal(_step.procedure) && example.find(" DOF 11 ") != std::string::npos;
-    const std::string msg = fmt::format(
-        "step {}: {} boundary condition(s) refer to DOFs that no element at the node has, e.g. {}; "
-        "they have no effect{}",
-        _step.number, ignored, example,
-        thermal ? " (stress/displacement elements such as C3D20R carry no temperature DOF: use the "
-                  "coupled types, e.g. C3D20RT, for heat conduction in the body, as in Abaqus)"
-                : "");
-    _warnings.push_back(msg);
-  }
-  _eqmap = EquationMap::build(_prescribed);
+  if (ignored.count == 0) return;
+  // a temperature on a node of stress/displacement elements only: CalculiX gives every element
+  // temperatures in thermal steps, Abaqus only the heat-transfer and coupled types
+  const bool thermal =
+      is_thermal(_step.procedure) && ignored.example.find(" DOF 11 ") != std::string::npos;
+  _warnings.push_back(fmt::format(
+      "step {}: {} boundary condition(s) refer to DOFs that no element at the node has, e.g. {}; "
+      "they have no effect{}",
+      _step.number, ignored.count, ignored.example,
+      thermal ? " (stress/displacement elements such as C3D20R carry no temperature DOF: use the "
+                "coupled types, e.g. C3D20RT, for heat conduction in the body, as in Abaqus)"
+              : ""));
+}
 
-  // A load on DOF d of a node: on its slot, or along the local axis of a transformed node.
-  auto add_nodal = [&](NodeId n, int d, const std::optional<std::array<double, 9>>& Q,
-                       const Scalar& sc) {
-    if (!Q) {
-      DofType t{};
-      dof_from_abaqus(d, t);
-      _nodal.push_back({dofs.slot(n, t), sc, 1.0});
-      return;
+bool StepLoads::add_local_bc(const BoundaryEntry& bc, int d, double now,
+                             const ConstraintSet& rows) {
+  const int row = rows.bc_row(bc.node, d);
+  if (row < 0) return false;
+  Scalar sc;
+  sc.start = now;
+  sc.end = bc.fixed ? sc.start : bc.value;
+  sc.amplitude = bc.fixed ? -1 : bc.amplitude;
+  sc.constant = bc.fixed || bc.propagated;
+  bool replaced = false;
+  for (LocalBc& l : _local)
+    if (l.row == row) {
+      l.value = sc;
+      replaced = true;
     }
-    const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
-    for (int j = 0; j < 3; ++j) {
-      const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
-      if (s >= 0 && (*Q)[3 * i + j] != 0.0) _nodal.push_back({s, sc, (*Q)[3 * i + j]});
-    }
-  };
-  // Concentrated loads (CLOAD, CFLUX), including removed ones (to zero).
+  if (!replaced) {
+    _local.push_back({bc.node, d, row, sc});
+    _local_keys.emplace_back(bc.node, d);
+  }
+  return true;
+}
+
+// A load on DOF d of a node: on its slot, or along the local axis of a transformed node.
+void StepLoads::add_nodal(const DofMap& dofs, NodeId n, int d,
+                          const std::optional<std::array<double, 9>>& Q, const Scalar& sc) {
+  if (!Q) {
+    DofType t{};
+    dof_from_abaqus(d, t);
+    _nodal.push_back({dofs.slot(n, t), sc, 1.0});
+    return;
+  }
+  const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
+  for (int j = 0; j < 3; ++j) {
+    const LocalIndex s = dofs.slot(n, static_cast<DofType>(base + j));
+    if (s >= 0 && (*Q)[3 * i + j] != 0.0) _nodal.push_back({s, sc, (*Q)[3 * i + j]});
+  }
+}
+
+// Concentrated loads (CLOAD, CFLUX), including removed ones (to zero).
+void StepLoads::set_concentrated_loads(const DofMap& dofs, const LoadHistory& history) {
   std::set<std::pair<NodeId, int>> seen;
   for (const NodalLoad& l : _step.cloads) {
     const LocalIndex s = dofs.slot(l.node, l.dof);
     const int d = abaqus_number(l.dof);
-    const auto Q = d <= 6 ? model.node_axes(l.node) : std::nullopt;
+    const auto Q = d <= 6 ? _model.node_axes(l.node) : std::nullopt;
     if (s < 0)
-      throw InputError(l.loc, fmt::format("node {}", model.node_label(l.node)),
+      throw InputError(l.loc, fmt::format("node {}", _model.node_label(l.node)),
                        fmt::format("no element at this node has DOF {}; the load cannot be applied",
                                    abaqus_number(l.dof)));
     const auto key = std::make_pair(l.node, static_cast<int>(l.dof));
@@ -130,7 +151,7 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     sc.end = l.value;
     sc.amplitude = l.amplitude;
     sc.constant = l.propagated;
-    add_nodal(l.node, d, Q, sc);
+    add_nodal(dofs, l.node, d, Q, sc);
     _nodal_keys.emplace_back(key, sc);
     seen.insert(key);
   }
@@ -138,10 +159,13 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     if (!seen.count(key) && v != 0.0) {
       const int d = abaqus_number(static_cast<DofType>(key.second));
       Scalar sc{v, 0.0, -1, false};
-      add_nodal(key.first, d, d <= 6 ? model.node_axes(key.first) : std::nullopt, sc);
+      add_nodal(dofs, key.first, d, d <= 6 ? _model.node_axes(key.first) : std::nullopt, sc);
       _nodal_keys.emplace_back(key, sc);
     }
-  // Released boundary conditions: their reaction goes to zero like a removed load.
+}
+
+// Released boundary conditions: their reaction goes to zero like a removed load.
+void StepLoads::set_released_reactions(const DofMap& dofs, const LoadHistory& history) {
   if (!history.prescribed.empty())
     for (LocalIndex s = 0; s < dofs.n_slots(); ++s)
       if (history.prescribed[s] && !_prescribed[s] && history.reaction[s] != 0.0)
@@ -150,10 +174,13 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     bool held = false;
     for (const auto& k : _local_keys) held |= k == key;
     if (!held && r != 0.0)
-      add_nodal(key.first, key.second, model.node_axes(key.first), Scalar{r, 0.0, -1, false});
+      add_nodal(dofs, key.first, key.second, _model.node_axes(key.first),
+                Scalar{r, 0.0, -1, false});
   }
+}
 
-  // Distributed loads.
+// Distributed loads, including those of the previous step this one removes (to zero).
+void StepLoads::set_distributed_loads(const LoadHistory& history, const Step* prev) {
   std::set<std::tuple<ElemId, int, int>> dseen;
   for (const DistributedLoad& l : _step.dloads) {
     const auto key = std::make_tuple(l.elem, static_cast<int>(l.kind), l.face);
@@ -181,8 +208,13 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
     }
   for (auto& d : _dist)
     if (!d.load) d.load = &d.removed;
+}
 
-  // Predefined temperatures.
+// Predefined temperatures (and their through-section gradients); those of the previous step
+// this one does not give return to the initial condition.
+void StepLoads::set_temperatures(const Discretization& disc, const LoadHistory& history,
+                                 const Step* prev) {
+  const Model& model = _model;
   _has_temperature = disc.has_temperature_field();
   _temp_base = history.temperature;
   if (_temp_base.empty()) _temp_base = model.initial_temperature;
@@ -211,8 +243,10 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
         _temp.emplace_back(t.node, Scalar{_temp_base[t.node], init, -1, false});
         gradient_entry(t.node, {0.0, 0.0}, -1, false);
       }
+}
 
-  // Interference fits.
+// Interference fits (SHRINK allowances are set later, from the clearance at the step start).
+void StepLoads::set_interference() {
   for (const InterferenceEntry& e : _step.interference) {
     _interf.push_back({e.elem, e.allowance, e.shrink ? -1 : e.amplitude});
     if (e.shrink) _shrink_elems.push_back(e.elem);

@@ -10,7 +10,9 @@
 #include "fem/assembler.hpp"
 #include "fem/dof_map.hpp"
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -19,6 +21,7 @@ namespace gapfem {
 
 struct Model;
 struct Step;
+struct BoundaryEntry;
 class Discretization;
 class ConstraintSet;
 
@@ -84,6 +87,25 @@ class StepLoads {
     bool constant = false;
   };
   double value(const Scalar& s, double step_time) const;
+
+  // The constructor's stages, in this order (each appends to the members it names).
+  /// _bc, _local, _prescribed; a warning for conditions on DOFs no element has.
+  void set_boundary_conditions(const Discretization& disc, std::span<const double> u_now);
+  /// A condition on local DOF d (1-6) of a transformed node, whose value is `now` at the step
+  /// start; false when the node's constraint rows lack it (no element has the DOF).
+  bool add_local_bc(const BoundaryEntry& bc, int d, double now, const ConstraintSet& rows);
+  /// _nodal, _nodal_keys: this step's CLOAD/CFLUX and the previous step's removed ones.
+  void set_concentrated_loads(const DofMap& dofs, const LoadHistory& history);
+  /// _nodal: reactions of released boundary conditions, ramped to zero.
+  void set_released_reactions(const DofMap& dofs, const LoadHistory& history);
+  void add_nodal(const DofMap& dofs, NodeId n, int d, const std::optional<std::array<double, 9>>& Q,
+                 const Scalar& sc);
+  /// _dist: this step's loads and the previous step's removed ones.
+  void set_distributed_loads(const LoadHistory& history, const Step* prev);
+  /// _temp, _temp_base, _grad, _grad_base.
+  void set_temperatures(const Discretization& disc, const LoadHistory& history, const Step* prev);
+  /// _interf, _shrink_elems.
+  void set_interference();
 
   const Model& _model;
   const Step& _step;
