@@ -22,38 +22,40 @@ std::string list_labels(const Model& model, const std::vector<Label>& labels,
   return out;
 }
 
-} // namespace
-
-std::string describe_singularity(const Model& model, Discretization& disc, Assembler& assembler,
-                                 StepProblem& prob, std::span<const LocalIndex> equations,
-                                 bool supported) {
-  const DofMap& dofs = disc.dofs();
-  const EquationMap& eqm = prob.equations();
-  std::vector<std::string> where;
+/// The singular equations as the deck names them: their nodes, and "node 12 DOF 3, … (and n
+/// more)".
+struct SingularDofs {
   std::set<NodeId> nodes;
+  std::string at;
+};
+
+SingularDofs singular_dofs(const Model& model, const DofMap& dofs, const EquationMap& eqm,
+                           std::span<const LocalIndex> equations) {
+  SingularDofs out;
+  std::vector<std::string> where;
   for (LocalIndex eq : equations) {
     if (eq < 0 || eq >= eqm.n_eq()) continue;
     const LocalIndex s = eqm.eq_slot[eq];
-    nodes.insert(dofs.slot_node(s));
+    out.nodes.insert(dofs.slot_node(s));
     if (where.size() < 8)
       where.push_back(fmt::format("node {} DOF {}", model.node_label(dofs.slot_node(s)),
                                   abaqus_number(dofs.slot_dof(s))));
   }
-  if (nodes.empty()) return "the system of equations is singular";
-  std::string at = where.front();
-  for (std::size_t i = 1; i < where.size(); ++i) at += ", " + where[i];
+  if (out.nodes.empty()) return out;
+  out.at = where.front();
+  for (std::size_t i = 1; i < where.size(); ++i) out.at += ", " + where[i];
   if (equations.size() > where.size())
-    at += fmt::format(" (and {} more)", equations.size() - where.size());
+    out.at += fmt::format(" (and {} more)", equations.size() - where.size());
+  return out;
+}
 
-  // The body around the first singular node: nodes connected through elements (open gaps
-  // excluded) and through the linear constraints that apply in the step.
-  const Mesh& mesh = model.mesh;
-  std::vector<std::vector<ElemId>> node_elems(static_cast<std::size_t>(mesh.n_nodes()));
-  for (ElemId e = 0; e < mesh.n_elements(); ++e)
-    for (NodeId n : mesh.element_nodes(e)) node_elems[n].push_back(e);
-  // rotations that only a constraint gives a node (MPC BEAM, couplings at solid nodes) and that
-  // nothing holds, such as the rotation about the line of a BEAM MPC
-  const bool orphan_rotations = std::all_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
+/// Rotations that only a constraint gives a node (MPC BEAM, couplings at solid nodes) and that
+/// nothing holds, such as the rotation about the line of a BEAM MPC: every singular equation is
+/// such a rotation.
+bool only_orphan_rotations(const Mesh& mesh, const DofMap& dofs, const EquationMap& eqm,
+                           const std::vector<std::vector<ElemId>>& node_elems,
+                           std::span<const LocalIndex> equations) {
+  return std::all_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
     if (eq < 0 || eq >= eqm.n_eq()) return true;
     const LocalIndex s = eqm.eq_slot[eq];
     const int d = abaqus_number(dofs.slot_dof(s));
@@ -65,14 +67,19 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
     }
     return true;
   });
-  if (orphan_rotations)
-    return fmt::format(
-        "the system is singular at {}: no element gives these nodes rotations; they have them "
-        "only through a constraint (*MPC BEAM, *KINEMATIC COUPLING, *COUPLING), which leaves "
-        "some rotation free (e.g. the rotation about the line of a BEAM MPC between solid "
-        "nodes). Hold it with *BOUNDARY (node, DOF) or use an MPC that needs no rotations (PIN, "
-        "TIE, LINK)",
-        at);
+}
+
+/// The body around a node: nodes connected through elements (open gaps excluded) and through
+/// the linear constraints that apply in the step; the open gaps met on its boundary.
+struct Body {
+  std::vector<Label> nodes; ///< sorted
+  std::set<ElemId> open_gaps;
+};
+
+Body body_around(NodeId start, const Model& model, Discretization& disc, Assembler& assembler,
+                 StepProblem& prob, const std::vector<std::vector<ElemId>>& node_elems) {
+  const Mesh& mesh = model.mesh;
+  const DofMap& dofs = disc.dofs();
   const ConstraintSet& cs = disc.constraints();
   std::vector<std::vector<int>> node_rows(static_cast<std::size_t>(mesh.n_nodes()));
   for (int r = 0; r < cs.n_rows(); ++r)
@@ -86,50 +93,52 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
     return rec.gap && rec.gap->status == ContactStatus::Open;
   };
   std::vector<char> in_body(static_cast<std::size_t>(mesh.n_nodes()), 0);
-  std::deque<NodeId> queue{*nodes.begin()};
-  in_body[*nodes.begin()] = 1;
-  std::set<ElemId> open_gaps;
-  std::vector<Label> body;
+  auto reach = [&](std::deque<NodeId>& queue, NodeId m) {
+    if (in_body[m]) return;
+    in_body[m] = 1;
+    queue.push_back(m);
+  };
+  Body body;
+  std::deque<NodeId> queue{start};
+  in_body[start] = 1;
   while (!queue.empty()) {
     const NodeId n = queue.front();
     queue.pop_front();
-    body.push_back(model.node_label(n).key);
+    body.nodes.push_back(model.node_label(n).key);
     for (int r : node_rows[n])
-      for (LocalIndex sl : cs.row_slots(r)) {
-        const NodeId m = dofs.slot_node(sl);
-        if (!in_body[m]) {
-          in_body[m] = 1;
-          queue.push_back(m);
-        }
-      }
+      for (LocalIndex sl : cs.row_slots(r)) reach(queue, dofs.slot_node(sl));
     for (ElemId e : node_elems[n]) {
       if (is_open_gap(e)) {
-        open_gaps.insert(e);
+        body.open_gaps.insert(e);
         continue;
       }
-      for (NodeId m : mesh.element_nodes(e))
-        if (!in_body[m]) {
-          in_body[m] = 1;
-          queue.push_back(m);
-        }
+      for (NodeId m : mesh.element_nodes(e)) reach(queue, m);
     }
   }
-  std::sort(body.begin(), body.end());
-  if (!open_gaps.empty()) {
-    std::vector<Label> gaps;
-    for (ElemId e : open_gaps) gaps.push_back(model.element_label(e).key);
-    std::sort(gaps.begin(), gaps.end());
-    return fmt::format(
-        "the system is singular at {}: the body made of nodes {} is held only by open gap "
-        "elements {}, so nothing resists its rigid-body motion. Remedies: start at least one of "
-        "these gaps closed (d = 0), add a soft spring (SPRING1/SPRING2) from the body to ground, "
-        "add *CONTACT DAMPING after *GAP, or stabilize the step (*STATIC, STABILIZE), so the "
-        "body is held while the gaps close",
-        at, list_labels(model, body), list_labels(model, gaps));
-  }
-  const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
-    return eq >= 0 && eq < eqm.n_eq() && dofs.slot_is_temperature(eqm.eq_slot[eq]);
-  });
+  std::sort(body.nodes.begin(), body.nodes.end());
+  return body;
+}
+
+/// The reduced-integration element types at the singular nodes ("C3D20R, CPS8R"), whose
+/// zero-energy modes are the other candidate.
+std::string reduced_types_at(const Mesh& mesh, const std::set<NodeId>& nodes,
+                             const std::vector<std::vector<ElemId>>& node_elems) {
+  std::string reduced;
+  for (NodeId n : nodes)
+    for (ElemId e : node_elems[n]) {
+      const ElementTypeInfo& info = element_info(mesh.elem_types[e]);
+      if (!info_reduced(info) || reduced.find(info.name) != std::string::npos) continue;
+      reduced += (reduced.empty() ? "" : ", ") + std::string(info.name);
+    }
+  return reduced;
+}
+
+/// The sentence for a body that is not held by open gaps: a free temperature level, a limit
+/// load, zero-energy modes or a missing support.
+std::string unheld_body_message(const Model& model, const SingularDofs& sing,
+                                const std::vector<Label>& body, bool temperature, bool supported,
+                                const std::vector<std::vector<ElemId>>& node_elems) {
+  const std::string& at = sing.at;
   if (temperature)
     return fmt::format(
         "the system is singular at {}: nothing fixes the temperature level of the part made of "
@@ -145,15 +154,9 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
         "displacement (*BOUNDARY) to follow the response past the limit, or refine the mesh "
         "where it is crushed",
         at, list_labels(model, body));
-  // reduced-integration elements at the singular DOFs: their zero-energy modes are the other
-  // candidate (C3D20R has spurious modes that propagate along a row one element wide)
-  std::string reduced;
-  for (NodeId n : nodes)
-    for (ElemId e : node_elems[n]) {
-      const ElementTypeInfo& info = element_info(mesh.elem_types[e]);
-      if (!info_reduced(info) || reduced.find(info.name) != std::string::npos) continue;
-      reduced += (reduced.empty() ? "" : ", ") + std::string(info.name);
-    }
+  // reduced-integration elements at the singular DOFs (C3D20R has spurious modes that propagate
+  // along a row one element wide)
+  const std::string reduced = reduced_types_at(model.mesh, sing.nodes, node_elems);
   if (!reduced.empty())
     return fmt::format(
         "the system is singular at {}: the part made of nodes {} can move as a rigid body or "
@@ -169,6 +172,47 @@ std::string describe_singularity(const Model& model, Discretization& disc, Assem
       "mechanism in that direction. Add boundary conditions (*BOUNDARY) or elements that "
       "constrain it",
       at, list_labels(model, body));
+}
+
+} // namespace
+
+std::string describe_singularity(const Model& model, Discretization& disc, Assembler& assembler,
+                                 StepProblem& prob, std::span<const LocalIndex> equations,
+                                 bool supported) {
+  const DofMap& dofs = disc.dofs();
+  const EquationMap& eqm = prob.equations();
+  const SingularDofs sing = singular_dofs(model, dofs, eqm, equations);
+  if (sing.nodes.empty()) return "the system of equations is singular";
+  const Mesh& mesh = model.mesh;
+  std::vector<std::vector<ElemId>> node_elems(static_cast<std::size_t>(mesh.n_nodes()));
+  for (ElemId e = 0; e < mesh.n_elements(); ++e)
+    for (NodeId n : mesh.element_nodes(e)) node_elems[n].push_back(e);
+  if (only_orphan_rotations(mesh, dofs, eqm, node_elems, equations))
+    return fmt::format(
+        "the system is singular at {}: no element gives these nodes rotations; they have them "
+        "only through a constraint (*MPC BEAM, *KINEMATIC COUPLING, *COUPLING), which leaves "
+        "some rotation free (e.g. the rotation about the line of a BEAM MPC between solid "
+        "nodes). Hold it with *BOUNDARY (node, DOF) or use an MPC that needs no rotations (PIN, "
+        "TIE, LINK)",
+        sing.at);
+  // the body around the first singular node
+  const Body body = body_around(*sing.nodes.begin(), model, disc, assembler, prob, node_elems);
+  if (!body.open_gaps.empty()) {
+    std::vector<Label> gaps;
+    for (ElemId e : body.open_gaps) gaps.push_back(model.element_label(e).key);
+    std::sort(gaps.begin(), gaps.end());
+    return fmt::format(
+        "the system is singular at {}: the body made of nodes {} is held only by open gap "
+        "elements {}, so nothing resists its rigid-body motion. Remedies: start at least one of "
+        "these gaps closed (d = 0), add a soft spring (SPRING1/SPRING2) from the body to ground, "
+        "add *CONTACT DAMPING after *GAP, or stabilize the step (*STATIC, STABILIZE), so the "
+        "body is held while the gaps close",
+        sing.at, list_labels(model, body.nodes), list_labels(model, gaps));
+  }
+  const bool temperature = std::any_of(equations.begin(), equations.end(), [&](LocalIndex eq) {
+    return eq >= 0 && eq < eqm.n_eq() && dofs.slot_is_temperature(eqm.eq_slot[eq]);
+  });
+  return unheld_body_message(model, sing, body.nodes, temperature, supported, node_elems);
 }
 
 std::string describe_chattering(const Model& model, std::span<const ElemId> elements) {
