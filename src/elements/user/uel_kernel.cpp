@@ -36,6 +36,158 @@ int first_non_finite(std::span<const double> v) {
   return -1;
 }
 
+/// The arrays one call of the user code reads and writes, in the layout both interfaces share.
+struct UserCall {
+  int ndofel, nnode, mcrd, nsvars;
+  std::size_t n;  ///< ndofel
+  double* svars;  ///< the trial SVARS (the element's trial state)
+  double* energy; ///< the trial ENERGY, after SVARS
+  std::vector<double> coords, du, rhs, amatrx, zeros;
+  double pnewdt = kNoRequest;
+  std::int64_t label;
+};
+
+UserCall prepare_call(const ElementInput& in, const NodeDofTable& dofs,
+                      const UserElementType& type) {
+  UserCall c;
+  c.ndofel = dofs.n_dofs();
+  c.nnode = dofs.n_nodes();
+  c.mcrd = type.n_coords;
+  c.nsvars = type.n_variables;
+  c.n = static_cast<std::size_t>(c.ndofel);
+  c.svars = in.state.data();
+  c.energy = in.state.data() + c.nsvars;
+  c.coords.assign(static_cast<std::size_t>(c.mcrd) * c.nnode, 0.0);
+  c.du.assign(c.n, 0.0);
+  c.rhs.assign(c.n, 0.0);
+  c.amatrx.assign(c.n * c.n, 0.0);
+  c.zeros.assign(c.n, 0.0);
+  for (int a = 0; a < c.nnode; ++a)
+    for (int i = 0; i < c.mcrd; ++i) c.coords[a * c.mcrd + i] = in.X[a][i];
+  for (std::size_t i = 0; i < c.n; ++i) c.du[i] = in.u[i] - in.u_start[i];
+  c.label = static_cast<std::int64_t>(in.label.local());
+  return c;
+}
+
+/// A gapfem element plugin: its residual and (row-major) tangent go straight to the output.
+void call_plugin(const UserCode& code, const UserElementType& type,
+                 const std::vector<double>& props, const std::vector<int>& jprops,
+                 const ElementInput& in, UserCall& uc, std::span<double> residual,
+                 std::span<double> tangent) {
+  const StepContext& ctx = *in.ctx;
+  std::array<char, 512> message{};
+  gapfem_element_call c{};
+  c.abi_version = GAPFEM_PLUGIN_ABI_VERSION;
+  c.type = type.number;
+  c.element = uc.label;
+  c.n_nodes = uc.nnode;
+  c.n_coords = uc.mcrd;
+  c.n_dofs = uc.ndofel;
+  c.n_state = uc.nsvars;
+  c.n_properties = type.n_properties;
+  c.n_int_properties = type.n_int_properties;
+  c.coords = uc.coords.data();
+  c.u = in.u.data();
+  c.du = uc.du.data();
+  c.properties = props.data();
+  c.int_properties = jprops.data();
+  c.state_start = in.state_start.data();
+  c.state = uc.svars;
+  c.energy = uc.energy;
+  c.step_time = ctx.step_time - ctx.dt;
+  c.total_time = ctx.total_time - ctx.dt;
+  c.dt = ctx.dt;
+  c.period = ctx.step_period;
+  c.step = ctx.step_number;
+  c.increment = ctx.increment;
+  c.procedure = procedure_code(ctx);
+  c.nlgeom = ctx.nlgeom ? 1 : 0;
+  c.residual = residual.data();
+  c.tangent = uc.amatrx.data();
+  c.pnewdt = &uc.pnewdt;
+  c.message = message.data();
+  c.message_size = static_cast<std::int32_t>(message.size());
+  int status = 0;
+  {
+    const std::lock_guard lock(code.mutex());
+    status = code.plugin()(&c);
+  }
+  if (status != 0) {
+    message.back() = '\0';
+    throw AnalysisError(fmt::format("element {} ({}): the element plugin ({}) failed: {}", in.label,
+                                    type.name, code.source(),
+                                    message[0] ? message.data() : "no message"));
+  }
+  // the plugin's tangent is row-major already
+  if (!tangent.empty()) std::copy(uc.amatrx.begin(), uc.amatrx.end(), tangent.begin());
+}
+
+/// An Abaqus UEL: RHS = external - internal (gapfem's residual is its negative), AMATRX
+/// column-major.
+void call_uel(const UserCode& code, const UserElementType& type, const std::vector<double>& props,
+              const std::vector<int>& jprops, const ElementInput& in, UserCall& uc, bool probe,
+              std::span<double> residual, std::span<double> tangent) {
+  const StepContext& ctx = *in.ctx;
+  int nrhs = 1, mlvarx = uc.ndofel, jtype = type.number, kstep = ctx.step_number,
+      kinc = ctx.increment, jelem = static_cast<int>(uc.label), ndload = 0, mdload = 1, npredf = 1,
+      nprops = type.n_properties, njprop = type.n_int_properties;
+  std::array<int, 1> jdltyp{};
+  std::array<double, 1> adlmag{}, ddlmag{};
+  std::array<double, 3> params{};
+  // outside an increment (the step's stiffness probes, dt = 0) only the stiffness is asked for
+  std::array<int, 7> lflags{procedure_code(ctx), ctx.nlgeom ? 1 : 0, probe ? 2 : 1, 0, 0, 0, 1};
+  // TIME: step and total time at the start of the increment
+  std::array<double, 2> time{ctx.step_time - ctx.dt, ctx.total_time - ctx.dt};
+  double dtime = ctx.dt, period = ctx.step_period;
+  // PREDEF(2, NPREDF, NNODE): the temperature at the end of the increment and its increment
+  std::vector<double> predef(2 * static_cast<std::size_t>(uc.nnode), 0.0);
+  if (!in.temperature.empty())
+    for (int a = 0; a < uc.nnode; ++a) {
+      predef[2 * a] = in.temperature[a];
+      predef[2 * a + 1] =
+          in.temperature[a] -
+          (in.temperature_start.empty() ? in.temperature[a] : in.temperature_start[a]);
+    }
+  std::vector<double> u(in.u.begin(), in.u.end());
+  {
+    const std::lock_guard lock(code.mutex());
+    code.uel()(uc.rhs.data(), uc.amatrx.data(), uc.svars, uc.energy, &uc.ndofel, &nrhs, &uc.nsvars,
+               const_cast<double*>(props.data()), &nprops, uc.coords.data(), &uc.mcrd, &uc.nnode,
+               u.data(), uc.du.data(), uc.zeros.data(), uc.zeros.data(), &jtype, time.data(),
+               &dtime, &kstep, &kinc, &jelem, params.data(), &ndload, jdltyp.data(), adlmag.data(),
+               predef.data(), &npredf, lflags.data(), &mlvarx, ddlmag.data(), &mdload, &uc.pnewdt,
+               const_cast<int*>(jprops.data()), &njprop, &period);
+  }
+  const std::size_t n = uc.n;
+  for (std::size_t i = 0; i < n; ++i) residual[i] = -uc.rhs[i];
+  if (!tangent.empty())
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) tangent[i * n + j] = uc.amatrx[i + j * n];
+}
+
+/// What the user code returned in `v` (named `what`) must be finite. A probe (a step-start
+/// evaluation: a UEL may divide by DTIME) that fails contributes nothing: residual, tangent and
+/// trial state are reset. In an increment it is an error.
+void check_returned(const UserCode& code, const UserElementType& type, const ElementInput& in,
+                    bool probe, const char* what, std::span<const double> v,
+                    std::span<double> residual, std::span<double> tangent) {
+  const int k = first_non_finite(v);
+  if (k < 0) return;
+  if (probe) {
+    std::fill(residual.begin(), residual.end(), 0.0);
+    std::fill(tangent.begin(), tangent.end(), 0.0);
+    std::copy(in.state_start.begin(), in.state_start.end(), in.state.begin());
+    return;
+  }
+  const StepContext& ctx = *in.ctx;
+  throw AnalysisError(fmt::format(
+      "element {} ({}): the user {} ({}) returned {}({}) = {} {}; a user element must return "
+      "finite numbers: check it for an uninitialised variable or a division by zero",
+      in.label, type.name, code.uel() ? "subroutine UEL" : "element plugin", code.source(), what,
+      k + 1, v[static_cast<std::size_t>(k)],
+      fmt::format("in step {}, increment {}", ctx.step_number, ctx.increment)));
+}
+
 } // namespace
 
 UelKernel::UelKernel(const UserElementType& type, const UelProperty* properties,
@@ -53,130 +205,31 @@ double UelKernel::call(const ElementInput& in, std::span<double> residual,
                        std::span<double> tangent) const {
   const StepContext& ctx = *in.ctx;
   const bool probe = ctx.increment == 0; // a step-start evaluation, not an increment
-  int ndofel = _dofs.n_dofs(), nnode = _dofs.n_nodes(), mcrd = _type.n_coords;
-  int nsvars = _type.n_variables;
-  const auto n = static_cast<std::size_t>(ndofel);
   // every call of an attempt starts from the start of the increment
   std::copy(in.state_start.begin(), in.state_start.end(), in.state.begin());
-  double* svars = in.state.data();
-  double* energy = in.state.data() + nsvars;
-  std::vector<double> coords(static_cast<std::size_t>(mcrd) * nnode), du(n), rhs(n, 0.0),
-      amatrx(n * n, 0.0), zeros(n, 0.0);
-  for (int a = 0; a < nnode; ++a)
-    for (int i = 0; i < mcrd; ++i) coords[a * mcrd + i] = in.X[a][i];
-  for (std::size_t i = 0; i < n; ++i) du[i] = in.u[i] - in.u_start[i];
-  double pnewdt = kNoRequest;
-  const auto label = static_cast<std::int64_t>(in.label.local());
-  std::array<char, 512> message{};
-  const std::shared_ptr<const UserCode>& code = _code;
-  if (code->plugin()) {
-    gapfem_element_call c{};
-    c.abi_version = GAPFEM_PLUGIN_ABI_VERSION;
-    c.type = _type.number;
-    c.element = label;
-    c.n_nodes = nnode;
-    c.n_coords = mcrd;
-    c.n_dofs = ndofel;
-    c.n_state = nsvars;
-    c.n_properties = _type.n_properties;
-    c.n_int_properties = _type.n_int_properties;
-    c.coords = coords.data();
-    c.u = in.u.data();
-    c.du = du.data();
-    c.properties = _props.data();
-    c.int_properties = _jprops.data();
-    c.state_start = in.state_start.data();
-    c.state = svars;
-    c.energy = energy;
-    c.step_time = ctx.step_time - ctx.dt;
-    c.total_time = ctx.total_time - ctx.dt;
-    c.dt = ctx.dt;
-    c.period = ctx.step_period;
-    c.step = ctx.step_number;
-    c.increment = ctx.increment;
-    c.procedure = procedure_code(ctx);
-    c.nlgeom = ctx.nlgeom ? 1 : 0;
-    c.residual = residual.data();
-    c.tangent = amatrx.data();
-    c.pnewdt = &pnewdt;
-    c.message = message.data();
-    c.message_size = static_cast<std::int32_t>(message.size());
-    int status = 0;
-    {
-      const std::lock_guard lock(code->mutex());
-      status = code->plugin()(&c);
-    }
-    if (status != 0) {
-      message.back() = '\0';
-      throw AnalysisError(fmt::format("element {} ({}): the element plugin ({}) failed: {}",
-                                      in.label, _type.name, code->source(),
-                                      message[0] ? message.data() : "no message"));
-    }
-    // the plugin's tangent is row-major already
-    if (!tangent.empty()) std::copy(amatrx.begin(), amatrx.end(), tangent.begin());
-  } else {
-    int nrhs = 1, mlvarx = ndofel, jtype = _type.number, kstep = ctx.step_number,
-        kinc = ctx.increment, jelem = static_cast<int>(label), ndload = 0, mdload = 1, npredf = 1,
-        nprops = _type.n_properties, njprop = _type.n_int_properties;
-    std::array<int, 1> jdltyp{};
-    std::array<double, 1> adlmag{}, ddlmag{};
-    std::array<double, 3> params{};
-    // outside an increment (the step's stiffness probes, dt = 0) only the stiffness is asked for
-    std::array<int, 7> lflags{procedure_code(ctx), ctx.nlgeom ? 1 : 0, probe ? 2 : 1, 0, 0, 0, 1};
-    // TIME: step and total time at the start of the increment
-    std::array<double, 2> time{ctx.step_time - ctx.dt, ctx.total_time - ctx.dt};
-    double dtime = ctx.dt, period = ctx.step_period;
-    // PREDEF(2, NPREDF, NNODE): the temperature at the end of the increment and its increment
-    std::vector<double> predef(2 * static_cast<std::size_t>(nnode), 0.0);
-    if (!in.temperature.empty())
-      for (int a = 0; a < nnode; ++a) {
-        predef[2 * a] = in.temperature[a];
-        predef[2 * a + 1] =
-            in.temperature[a] -
-            (in.temperature_start.empty() ? in.temperature[a] : in.temperature_start[a]);
-      }
-    std::vector<double> u(in.u.begin(), in.u.end());
-    {
-      const std::lock_guard lock(code->mutex());
-      code->uel()(rhs.data(), amatrx.data(), svars, energy, &ndofel, &nrhs, &nsvars,
-                  const_cast<double*>(_props.data()), &nprops, coords.data(), &mcrd, &nnode,
-                  u.data(), du.data(), zeros.data(), zeros.data(), &jtype, time.data(), &dtime,
-                  &kstep, &kinc, &jelem, params.data(), &ndload, jdltyp.data(), adlmag.data(),
-                  predef.data(), &npredf, lflags.data(), &mlvarx, ddlmag.data(), &mdload, &pnewdt,
-                  const_cast<int*>(_jprops.data()), &njprop, &period);
-    }
-    // RHS = external - internal: gapfem's residual is its negative; AMATRX(i, j) is column-major
-    for (std::size_t i = 0; i < n; ++i) residual[i] = -rhs[i];
-    if (!tangent.empty())
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) tangent[i * n + j] = amatrx[i + j * n];
-  }
-  auto bad = [&](const char* what, std::span<const double> v) {
-    const int k = first_non_finite(v);
-    if (k < 0) return;
-    if (probe) { // a UEL may divide by DTIME: a probe that fails contributes nothing
-      std::fill(residual.begin(), residual.end(), 0.0);
-      std::fill(tangent.begin(), tangent.end(), 0.0);
-      std::copy(in.state_start.begin(), in.state_start.end(), in.state.begin());
-      return;
-    }
-    throw AnalysisError(fmt::format(
-        "element {} ({}): the user {} ({}) returned {}({}) = {} {}; a user element must return "
-        "finite numbers: check it for an uninitialised variable or a division by zero",
-        in.label, _type.name, code->uel() ? "subroutine UEL" : "element plugin", code->source(),
-        what, k + 1, v[static_cast<std::size_t>(k)],
-        fmt::format("in step {}, increment {}", ctx.step_number, ctx.increment)));
-  };
-  bad(code->uel() ? "RHS" : "residual", residual);
-  if (!tangent.empty()) bad(code->uel() ? "AMATRX" : "tangent", tangent);
-  bad("SVARS", std::span<const double>(svars, static_cast<std::size_t>(nsvars)));
-  bad("ENERGY", std::span<const double>(energy, 8));
+  UserCall uc = prepare_call(in, _dofs, _type);
+  const UserCode& code = *_code;
+  if (code.plugin())
+    call_plugin(code, _type, _props, _jprops, in, uc, residual, tangent);
+  else
+    call_uel(code, _type, _props, _jprops, in, uc, probe, residual, tangent);
+  check_returned(code, _type, in, probe, code.uel() ? "RHS" : "residual", residual, residual,
+                 tangent);
+  if (!tangent.empty())
+    check_returned(code, _type, in, probe, code.uel() ? "AMATRX" : "tangent", tangent, residual,
+                   tangent);
+  check_returned(code, _type, in, probe, "SVARS",
+                 std::span<const double>(uc.svars, static_cast<std::size_t>(uc.nsvars)), residual,
+                 tangent);
+  check_returned(code, _type, in, probe, "ENERGY", std::span<const double>(uc.energy, 8), residual,
+                 tangent);
   if (probe) return kNoRequest;
+  const double pnewdt = uc.pnewdt;
   if (std::isnan(pnewdt) || pnewdt <= 0.0)
     throw AnalysisError(fmt::format("element {} ({}): the user code ({}) set PNEWDT to {}; set it "
                                     "below 1 to ask for a smaller increment, above 1 for a larger "
                                     "one, or leave it",
-                                    in.label, _type.name, code->source(), pnewdt));
+                                    in.label, _type.name, code.source(), pnewdt));
   return pnewdt;
 }
 
