@@ -68,8 +68,104 @@ void symmetrize(ElementOutput& out, int nd) {
 }
 } // namespace
 
+namespace {
+/// Which operators of a block an assembly weighs (and so asks its kernel for).
+struct BlockOperators {
+  bool mass = false, damping = false;
+};
+
+BlockOperators block_operators(const ElementKernel& kernel, const StepContext& ctx,
+                               const OperatorWeights& w) {
+  BlockOperators ops;
+  if (w.m != 0.0 && kernel.has_mass()) ops.mass = true;
+  // a kernel integrating its own damping has it in residual and tangent while rates are defined
+  if (w.c != 0.0 && kernel.has_damping() && !(kernel.damping_in_residual() && ctx.rates.defined()))
+    ops.damping = true;
+  return ops;
+}
+
+/// r += B x for a row-major n x n block B.
+void add_product(std::span<const double> B, std::span<const double> x, std::span<double> r) {
+  const std::size_t n = r.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = 0.0;
+    for (std::size_t j = 0; j < n; ++j) s += B[i * n + j] * x[j];
+    r[i] += s;
+  }
+}
+
+/// The operators' forces M a + C v into the residual (rates defined) and k K + c C + m M into the
+/// tangent (K alone, as the kernel left it, when k = 1 and no operator is weighted).
+void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorWeights& w) {
+  if (out.want_mass && !in.a.empty()) add_product(out.mass, in.a, out.residual);
+  if (out.want_damping && !in.v.empty()) add_product(out.damping, in.v, out.residual);
+  if (!out.want_tangent) return;
+  if (w.k != 1.0)
+    for (double& t : out.tangent) t *= w.k;
+  if (out.want_mass)
+    for (std::size_t i = 0; i < out.tangent.size(); ++i) out.tangent[i] += w.m * out.mass[i];
+  if (out.want_damping)
+    for (std::size_t i = 0; i < out.tangent.size(); ++i) out.tangent[i] += w.c * out.damping[i];
+}
+} // namespace
+
+void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int t,
+                               const FieldView& fields, const StepContext& ctx, std::span<double> f,
+                               MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
+                               AssemblyResult& res) {
+  const DofMap& dofs = _disc.dofs();
+  const int nd = block.n_dofs;
+  ElementGather& g = _scratch[t];
+  const BlockOperators ops = block_operators(*block.kernel, ctx, w);
+  const bool operators = ops.mass || ops.damping || w.k != 1.0;
+  for (std::size_t i = b; i < e; ++i) {
+    ElementInput& in = g.gather(_disc, block, i, fields, &ctx);
+    ElementOutput& out = g.output(block, K != nullptr, ops.mass, ops.damping);
+    block.kernel->evaluate(in, out);
+    if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);
+    if (operators) apply_operators(in, out, w);
+    const auto slots = block.element_slots(i);
+    for (int k = 0; k < nd; ++k) {
+      const double r = out.residual[k];
+      if (!std::isfinite(r))
+        throw ConvergenceFailure("a non-finite force appeared in element " + in.label.str());
+      f[slots[k]] += r;
+      const int fld = static_cast<int>(dofs.slot_field(slots[k]));
+      if (r != 0.0) {
+        res.flux_sum[fld] += std::abs(r);
+        ++res.flux_count[fld];
+      }
+    }
+    // each thread writes its own lane of the inserter (merged in lane order by close())
+    if (K) {
+      const auto eqs = block.element_eqs(i);
+      K->add(lane, eqs, eqs, out.tangent);
+    }
+    res.unsymmetric |= out.unsymmetric;
+    res.stiffness_changed |= out.stiffness_changed;
+    res.branch_changes += out.branch_changes;
+    res.friction |= out.friction;
+    res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
+    if (out.status_changes) {
+      res.status_changes += out.status_changes;
+      res.changed.push_back(block.elements[i]);
+    }
+    if (rows)
+      for (int c = 0; c < out.n_constraints; ++c) {
+        const auto off = static_cast<std::size_t>(c) * nd;
+        _thread_constraints[t].add_row(
+            block.element_eqs(i), out.constraint_coeff.subspan(off, nd), out.constraint_value[c],
+            block.mult_offset + static_cast<std::int64_t>(i) * block.n_mult +
+                out.constraint_slot[c],
+            out.has_columns ? out.constraint_column.subspan(off, nd) : std::span<const double>{},
+            out.constraint_compliance[c]);
+      }
+  }
+}
+
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
-                                   std::span<double> f_int, MatrixInserter* K, ConstraintBlock* C) {
+                                   std::span<double> f_int, MatrixInserter* K, ConstraintBlock* C,
+                                   const OperatorWeights& weights) {
   const DofMap& dofs = _disc.dofs();
   std::fill(f_int.begin(), f_int.end(), 0.0);
   if (K) {
@@ -83,60 +179,15 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     ElementBlock* block = &blk;
     const bool gap_block = element_info(block->type).family == ElementFamily::Gap;
     const Stopwatch block_watch;
-    const int nd = block->n_dofs;
     const bool multi = _threads > 1 && block->size() >= 2000;
     for (int t = 0; t < _threads; ++t) {
       _thread_constraints[t].clear();
       if (multi) _thread_f[t].assign(f_int.size(), 0.0);
     }
     parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
-      ElementGather& g = _scratch[t];
-      AssemblyResult& res = partial[t];
       std::span<double> f = multi ? std::span<double>(_thread_f[t]) : f_int;
-      for (std::size_t i = b; i < e; ++i) {
-        ElementInput& in = g.gather(_disc, *block, i, fields, &ctx);
-        ElementOutput& out = g.output(*block, K != nullptr);
-        block->kernel->evaluate(in, out);
-        if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);
-        const auto slots = block->element_slots(i);
-        for (int k = 0; k < nd; ++k) {
-          const double r = out.residual[k];
-          if (!std::isfinite(r))
-            throw ConvergenceFailure("a non-finite force appeared in element " + in.label.str());
-          f[slots[k]] += r;
-          const int fld = static_cast<int>(dofs.slot_field(slots[k]));
-          if (r != 0.0) {
-            res.flux_sum[fld] += std::abs(r);
-            ++res.flux_count[fld];
-          }
-        }
-        // each thread writes its own lane of the inserter (merged in lane order by close())
-        if (K) {
-          const auto eqs = block->element_eqs(i);
-          K->add(multi ? t : 0, eqs, eqs, out.tangent);
-        }
-        res.unsymmetric |= out.unsymmetric;
-        res.stiffness_changed |= out.stiffness_changed;
-        res.branch_changes += out.branch_changes;
-        res.friction |= out.friction;
-        res.dt_ratio = std::min(res.dt_ratio, out.dt_ratio);
-        if (out.status_changes) {
-          res.status_changes += out.status_changes;
-          res.changed.push_back(block->elements[i]);
-        }
-        if (C)
-          for (int c = 0; c < out.n_constraints; ++c) {
-            const auto off = static_cast<std::size_t>(c) * nd;
-            _thread_constraints[t].add_row(
-                block->element_eqs(i), out.constraint_coeff.subspan(off, nd),
-                out.constraint_value[c],
-                block->mult_offset + static_cast<std::int64_t>(i) * block->n_mult +
-                    out.constraint_slot[c],
-                out.has_columns ? out.constraint_column.subspan(off, nd)
-                                : std::span<const double>{},
-                out.constraint_compliance[c]);
-          }
-      }
+      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights,
+                     partial[t]);
     });
     if (multi) {
       for (int t = 0; t < _threads; ++t)

@@ -27,6 +27,18 @@ struct AssemblyResult {
   double dt_ratio = std::numeric_limits<double>::infinity();
 };
 
+/// The weights of the kernels' operators in an assembled matrix, k K + c C + m M (ElementOutput's
+/// tangent, damping and mass blocks): a step with a time integrator takes its weights (1, dv/du,
+/// da/du; solver/time_integrator.hpp), an eigenproblem K alone {1, 0, 0} or M alone {0, 0, 1}.
+/// When the context defines rates (StepContext::rates) the residual also gets the inertia and
+/// damping forces M a + C v of every kernel whose operator is weighted. A kernel that adds its
+/// damping itself (ElementKernel::damping_in_residual) is left alone while rates are defined.
+struct OperatorWeights {
+  double k = 1.0; ///< stiffness (the kernels' tangent)
+  double c = 0.0; ///< damping
+  double m = 0.0; ///< mass
+};
+
 /// A distributed load with its magnitude evaluated at the current time.
 struct ActiveLoad {
   const DistributedLoad* load = nullptr;
@@ -39,10 +51,12 @@ class Assembler {
   explicit Assembler(Discretization& disc, int threads = 1);
   int threads() const { return _threads; }
 
-  /// Internal forces per slot (f_int, overwritten), tangent over equations (if K: zeroed, then
-  /// written through one inserter lane per thread) and active constraint rows (if C, overwritten).
+  /// Internal forces per slot (f_int, overwritten), the matrix k K + c C + m M over equations (if
+  /// K: zeroed, then written through one inserter lane per thread; `weights`, default K alone)
+  /// and active constraint rows (if C, overwritten).
   AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
-                          MatrixInserter* K, ConstraintBlock* C);
+                          MatrixInserter* K, ConstraintBlock* C,
+                          const OperatorWeights& weights = {});
   /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
   /// loads add -df/du to K if given (only its symmetric part when `symmetrize`).
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
@@ -63,6 +77,12 @@ class Assembler {
   void recover(ElemId e, const FieldView& fields, const StepContext& ctx, ElementRecovery& out);
 
  private:
+  /// The elements [b, e) of one block into f, K's lane and the thread's constraint rows.
+  void assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int thread,
+                      const FieldView& fields, const StepContext& ctx, std::span<double> f,
+                      MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
+                      AssemblyResult& res);
+
   Discretization& _disc;
   int _threads;
   std::vector<ElementGather> _scratch;

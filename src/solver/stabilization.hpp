@@ -6,7 +6,9 @@
 /// The damping factor c comes from the dissipated energy fraction f: the viscous energy of an
 /// increment dt0 over the elastic energy of the same increment, both estimated with the diagonal
 /// of the stiffness and of M*, c = f dt0 sum(K_ii) / (2 sum(M*_ii)) (docs/theory/stabilization.md);
-/// with ALLSDTOL the factor adapts so that ALLSD / ALLIE stays below it.
+/// with ALLSDTOL the factor adapts so that ALLSD / ALLIE stays below it. In the step problem the
+/// viscous forces are a damping operator c M* whose velocities come from a backward Euler
+/// integrator in the step's time (StepProblem::add_stabilization, solver/time_integrator.hpp).
 #include "fem/assembler.hpp"
 
 #include <vector>

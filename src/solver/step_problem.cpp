@@ -10,18 +10,42 @@ namespace gapfem {
 StepProblem::StepProblem(Discretization& disc, Assembler& assembler, const StepLoads& loads,
                          SolutionState& state, const StepContext& base,
                          std::shared_ptr<const SparsityPattern> pattern)
-    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base), _K(std::move(pattern)),
-      _Kin(_K), _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
+    : _disc(disc), _asm(assembler), _loads(loads), _s(state), _ctx(base),
+      _integrator(make_time_integrator(base)), _K(std::move(pattern)), _Kin(_K),
+      _rhs(static_cast<std::size_t>(loads.equations().n_eq()), 0.0),
       _constraint_tol(1e-10 * base.model_size) {}
 
 void StepProblem::set_unsymmetric_loads(bool on) {
   _unsymmetric_loads = on;
 }
 
+void StepProblem::set_integrator(std::unique_ptr<TimeIntegrator> integrator) {
+  _integrator = std::move(integrator);
+}
+
+void StepProblem::begin_rates(double dt) {
+  _pseudo_time.begin_increment(dt);
+  _ctx.rates = {};
+  _weights = {};
+  if (_integrator) {
+    _integrator->begin_increment(dt);
+    _ctx.rates = _integrator->coefficients();
+    _weights = _integrator->weights();
+  }
+  if (_integrator && _integrator->needs_rate_history()) {
+    const std::size_t n = _s.u.size();
+    for (auto* r : {&_s.v, &_s.a, &_s.v_start, &_s.a_start})
+      if (r->size() != n) r->assign(n, 0.0);
+  } else {
+    for (auto* r : {&_s.v, &_s.a, &_s.v_start, &_s.a_start}) r->clear();
+  }
+}
+
 void StepProblem::begin_increment(double t0, double dt, int increment,
                                   std::span<const double> guess) {
   _ctx.increment = increment;
   _ctx.dt = dt;
+  begin_rates(dt);
   _ctx.step_time = t0 + dt;
   _ctx.total_time = _s.total_time + t0 + dt;
   std::copy(_s.u_start.begin(), _s.u_start.end(), _s.u.begin());
@@ -60,6 +84,11 @@ void StepProblem::commit() {
     _s.allsd += fs * du;
     _s.f_elem_start[k] = fe;
   }
+  if (!_s.v_start.empty()) { // the trial rates of the converged increment become the committed
+    _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
+    _s.v_start = _s.v;
+    _s.a_start = _s.a;
+  }
   _s.u_start = _s.u;
   _s.T_start = _s.T;
   _disc.commit();
@@ -69,6 +98,8 @@ FieldView StepProblem::fields() const {
   FieldView f;
   f.u = _s.u;
   f.u_start = _s.u_start;
+  f.v_start = _s.v_start;
+  f.a_start = _s.a_start;
   if (_loads.has_temperature_field()) {
     f.temperature = _s.T;
     f.temperature_start = _s.T_start;
@@ -94,7 +125,7 @@ Evaluation StepProblem::evaluate(bool tangent) {
   }
   const FieldView f = fields();
   MatrixInserter* K = tangent ? &_Kin : nullptr;
-  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C);
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C, _weights);
   if (_stats) { // gap elements are reported as "gap work", not assembly
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;
     (*_stats)[TimeCategory::Assembly] -= ar.gap_seconds;
@@ -148,7 +179,7 @@ Evaluation StepProblem::evaluate(bool tangent) {
 }
 
 void StepProblem::add_stabilization(AssemblyResult& ar, bool tangent) {
-  if (_stab_c <= 0.0 || !(_ctx.dt > 0.0)) {
+  if (_stab_c <= 0.0 || !_pseudo_time.coefficients().defined()) {
     if (!_f_stab.empty()) std::fill(_f_stab.begin(), _f_stab.end(), 0.0);
     return;
   }
@@ -156,7 +187,8 @@ void StepProblem::add_stabilization(AssemblyResult& ar, bool tangent) {
   _f_stab.assign(_s.u.size(), 0.0);
   const EquationMap& eqm = _loads.equations();
   const DofMap& dofs = _disc.dofs();
-  const double k = _stab_c / _ctx.dt;
+  // C* v with backward Euler's v = (u - u_start) / dt: the weight c / dt times M* (u - u_start)
+  const double k = _pseudo_time.damping_weight(_stab_c);
   for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {
     const LocalIndex s = eqm.eq_slot[i];
     if (!(m[s] > 0.0)) continue;

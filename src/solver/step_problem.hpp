@@ -6,6 +6,7 @@
 #include "fem/assembler.hpp"
 #include "solver/nonlinear_problem.hpp"
 #include "solver/step_loads.hpp"
+#include "solver/time_integrator.hpp"
 
 #include <memory>
 
@@ -19,7 +20,11 @@ struct SolutionState {
   std::vector<double> G;            ///< its through-section gradients now, 2 per node (or empty)
   std::vector<double> T_initial;    ///< per node
   std::vector<double> f_int, f_ext; ///< per slot, at the last evaluation
-  double total_time = 0.0;          ///< total time at the start of the current step
+  /// Velocity and acceleration per slot, trial and committed: kept only while the step's
+  /// integrator needs them (TimeIntegrator::needs_rate_history; empty otherwise, read as zero).
+  /// The trial rates are formed at commit; a cut-back starts again from the committed ones.
+  std::vector<double> v, a, v_start, a_start;
+  double total_time = 0.0; ///< total time at the start of the current step
   /// Energies since the analysis start (Abaqus's names): ALLIE the work of the element forces,
   /// ALLSD the energy dissipated by automatic stabilization; and the element forces (without the
   /// stabilization) per slot at the last committed state, for ALLIE's trapezoidal rule.
@@ -45,8 +50,14 @@ class StepProblem final : public NonlinearProblem {
   void set_unsymmetric_loads(bool on);
   /// Where assembly time is accounted.
   void set_statistics(RunStatistics* stats) { _stats = stats; }
-  /// Automatic stabilization: viscous forces c m (u - u_start) / dt on the free translational
-  /// slots with a unit-density lumped mass m (per slot); c = 0 switches it off.
+  /// The step's time integrator (make_time_integrator from the context by default: backward Euler
+  /// in transient steps, none in static ones); null: quasi-static. Kernels get its coefficients
+  /// (StepContext::rates) and the assembler its weights from the next begin_increment on.
+  void set_integrator(std::unique_ptr<TimeIntegrator> integrator);
+  const TimeIntegrator* integrator() const { return _integrator.get(); }
+  /// Automatic stabilization: the damping operator c M* (M* a unit-density lumped mass, per slot,
+  /// on the free translational slots) with velocities by backward Euler in the step's time,
+  /// whatever the step's own integrator: forces c m (u - u_start) / dt; c = 0 switches it off.
   void set_stabilization(std::shared_ptr<const std::vector<double>> mass, double c);
   double stabilization_factor() const { return _stab_c; }
   /// The stabilization forces per slot at the last evaluation (empty when off).
@@ -78,12 +89,18 @@ class StepProblem final : public NonlinearProblem {
  private:
   /// Stabilization forces into f_int and their tangent into K (after the assembly).
   void add_stabilization(AssemblyResult& ar, bool tangent);
+  /// The integrator's coefficients and weights for an increment of size dt, and the rate vectors
+  /// sized (or dropped) as it needs them.
+  void begin_rates(double dt);
 
   Discretization& _disc;
   Assembler& _asm;
   const StepLoads& _loads;
   SolutionState& _s;
   StepContext _ctx;
+  std::unique_ptr<TimeIntegrator> _integrator;
+  OperatorWeights _weights;   ///< of the current increment (K alone without an integrator)
+  BackwardEuler _pseudo_time; ///< the stabilization's viscous forces
   CsrMatrix _K;
   CsrInserter _Kin; ///< the assembler writes _K through it
   ConstraintBlock _C;

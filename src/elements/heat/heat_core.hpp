@@ -10,10 +10,13 @@
 ///   conduction  f_a = sum_q dV_q grad N_a . k(T_q) grad T_q,   T_q = sum_b N_b(q) T_b
 ///               tangent k grad N_a . grad N_b + k'(T_q) N_b grad N_a . grad T_q (unsymmetric
 ///               when k depends on T)
-///   capacity    (transient steps, backward Euler) f_a = integral N_a (E(T) - E(T0)) / dt dV,
-///               E the internal energy per volume (heat_material.hpp), tangent C(T) N_a N_b / dt.
+///   capacity    (transient steps) f_a = integral N_a dE/dt dV, E the internal energy per volume
+///               (heat_material.hpp), its rate as the step's integrator says (StepContext::rates,
+///               elements/rate_coefficients.hpp): backward Euler (E(T) - E(T0)) v_du, v_du = 1/dt,
+///               tangent C(T) N_a N_b v_du. The kernel never sees dt. The damping operator (on
+///               request, ElementOutput::damping) is d f / d(T rate) = integral C(T) N_a N_b dV.
 ///               First-order elements integrate it at the nodes (lumped: V_a (E(T_a) - E(T0_a))
-///               / dt with V_a = integral N_a dV), as Abaqus does ("Integration in diffusive heat
+///               v_du with V_a = integral N_a dV), as Abaqus does ("Integration in diffusive heat
 ///               transfer elements": the internal energy term of first-order elements is integrated
 ///               at the nodes); the quadratic shapes integrate it consistently with a rule exact
 ///               for N_a N_b.
@@ -224,8 +227,8 @@ class HeatCore {
     return {};
   }
 
-  /// Adds conduction (and, in transient steps with dt > 0, capacity) to the residual and, when
-  /// `K` is not empty, the tangent. Returns true when the added tangent is unsymmetric.
+  /// Adds conduction (and, in steps whose integrator defines rates, capacity) to the residual
+  /// and, when `K` is not empty, the tangent. Returns true when the added tangent is unsymmetric.
   bool add_internal(std::span<const Vec3> X, const Temps& T, const Temps& T0,
                     const StepContext* ctx, const HeatLayout& L, std::span<double> r,
                     std::span<double> K) const {
@@ -248,8 +251,12 @@ class HeatCore {
         for (int b = 0; b < NN; ++b)
           Kat(a, b) += p.dV * (k * GG(a, b) + dk * _cond[q].N[b] * gq(a));
     }
-    if (ctx && ctx->transient && ctx->dt > 0.0) {
-      const double inv_dt = 1.0 / ctx->dt;
+    const RateCoefficients rates = ctx ? rate_coefficients(*ctx) : RateCoefficients{};
+    if (rates.first_order) {
+      // E's rate is v_du (E(T) - E(T0)): an integrator whose rates carry history (v_v, v_a) needs
+      // the committed rate of E in the element's history (not there yet)
+      FE_CHECK(!rates.velocity_has_history(), "heat capacity: the integrator needs E's rate");
+      const double inv_dt = rates.v_du;
       if constexpr (kLumped) {
         const Temps V = nodal_volumes(X);
         for (int a = 0; a < NN; ++a) {
@@ -276,6 +283,27 @@ class HeatCore {
       }
     }
     return want_K && _mat.conductivity_varies();
+  }
+
+  /// The damping operator of the capacity, d(capacity flux) / d(temperature rate) = integral
+  /// C(T) N_a N_b dV (lumped at the nodes for first-order elements, like the flux), added to D.
+  void add_capacity_block(std::span<const Vec3> X, const Temps& T, const HeatLayout& L,
+                          std::span<double> D) const {
+    auto Dat = [&](int a, int b) -> double& { return D[L.index(a) * L.n_dofs + L.index(b)]; };
+    if constexpr (kLumped) {
+      const Temps V = nodal_volumes(X);
+      for (int a = 0; a < NN; ++a) Dat(a, a) += V[a] * _mat.capacity(T[a]);
+    } else {
+      for (int q = 0; q < NC; ++q) {
+        Point p;
+        geometry(X, _cap[q], p);
+        double Tq = 0.0;
+        for (int a = 0; a < NN; ++a) Tq += _cap[q].N[a] * T[a];
+        const double c = p.dV * _mat.capacity(Tq);
+        for (int a = 0; a < NN; ++a)
+          for (int b = 0; b < NN; ++b) Dat(a, b) += c * _cap[q].N[a] * _cap[q].N[b];
+      }
+    }
   }
 
   /// Heat stored between T0 and T: integral of E(T) - E(T0) (the same quadrature as the capacity,

@@ -36,7 +36,14 @@ class HeatKernel final : public ElementKernel {
     const bool want_K = out.want_tangent && out.tangent.size() == NN * NN;
     out.unsymmetric |= _core.add_internal(in.X, T, T0, in.ctx, layout(), out.residual,
                                           want_K ? out.tangent : std::span<double>{});
+    if (out.want_damping) _core.add_capacity_block(in.X, T, layout(), out.damping);
   }
+
+  /// No inertia (heat has none); the heat capacity is the damping operator, whose flux the
+  /// kernel integrates itself (E(T) is nonlinear): damping_in_residual.
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return _core.material().has_capacity(); }
+  bool damping_in_residual() const override { return true; }
 
   double stored_heat(const ElementInput& in) const override {
     typename Core::Temps T, T0;

@@ -145,10 +145,17 @@ class HeatShellKernel final : public ElementKernel {
       add_surface_conduction(p, in.u, out.residual, K);
       if (_P > 1) add_thickness_conduction(p, in.u, out.residual, K);
     }
-    if (in.ctx && in.ctx->transient && in.ctx->dt > 0.0)
-      add_capacity(in, t, 1.0 / in.ctx->dt, out.residual, K);
+    const RateCoefficients rates = in.ctx ? rate_coefficients(*in.ctx) : RateCoefficients{};
+    FE_CHECK(!rates.velocity_has_history(), "heat capacity: the integrator needs E's rate");
+    if (rates.first_order) add_capacity(in, t, rates.v_du, out.residual, K);
+    if (out.want_damping) add_capacity_block(in, t, out.damping);
     out.unsymmetric |= want_K && _mat.conductivity_varies();
   }
+
+  /// No inertia; the heat capacity is the damping operator, integrated by the kernel itself.
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return _mat.has_capacity(); }
+  bool damping_in_residual() const override { return true; }
 
   double stored_heat(const ElementInput& in) const override {
     double Q = 0.0;
@@ -362,6 +369,25 @@ class HeatShellKernel final : public ElementKernel {
     }
   }
 
+  /// d(capacity flux) / d(temperature rate) into D (same points as the flux).
+  void add_capacity_block(const ElementInput& in, std::span<const double> t,
+                          std::span<double> D) const {
+    const int n = _nn * _P;
+    for_capacity_points(in, t,
+                        [&](int a, int k, double w, double T, double, const SurfacePoint* p) {
+                          const double c = w * _mat.capacity(T);
+                          if (!p) {
+                            D[idx(a, k) * n + idx(a, k)] += c;
+                            return;
+                          }
+                          for (int b = 0; b < _nn; ++b)
+                            for (int d = 0; d < _nn; ++d)
+                              D[idx(b, k) * n + idx(d, k)] += c * p->N[b] * p->N[d];
+                        });
+  }
+
+  /// The capacity flux with E's rate v_du (E(T) - E(T0)) and its tangent (v_du = 1/dt: backward
+  /// Euler, the step's integrator; the kernel never sees dt).
   void add_capacity(const ElementInput& in, std::span<const double> t, double inv_dt,
                     std::span<double> r, std::span<double> K) const {
     const int n = _nn * _P;
