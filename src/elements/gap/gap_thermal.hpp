@@ -45,6 +45,9 @@ class DgapKernel final : public ElementKernel {
   ElementType type() const override { return ElementType::DGAP; }
   std::span<const DofType> node_dofs(int) const override { return _dofs; }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// A thermal gap stores no heat (no capacity) and has no inertia.
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return false; }
   bool supports_output(ElemVar v) const override { return v == ElemVar::HFL; }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 

@@ -44,6 +44,11 @@ class MechanicalGapKernel final : public ElementKernel {
   std::string validate(const ElementInput& in) const override;
   void initialize(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// Gaps are massless. *CONTACT DAMPING is not a damping operator: its viscous force is computed
+  /// by the kernel from the increment (gap_response.cpp, damping(): the closing rate du / dt)
+  /// with its tangent in K, so the gap reports no damping block.
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return false; }
   bool augment(const ElementInput& in) const override;
   bool limits_steps() const override { return _penalty_friction; }
   double step_limit(const ElementInput& in, std::span<const double> du) const override;

@@ -176,7 +176,14 @@ class BeamKernel final : public ElementKernel {
       for (int i = 0; i < kN; ++i)
         for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
     write_rotations(in, nl);
+    if (out.want_mass) add_mass(in, g, out.mass);
   }
+
+  /// Translational mass only (with *DENSITY): rho A integral N_a ds lumped at the nodes (the row
+  /// sums of the consistent mass: L/2 each for two nodes, L/6, 2L/3, L/6 for three); no rotary
+  /// inertia (the rotations' rows are zero; docs/conventions.md). A pipe's is its wall's.
+  bool has_mass() const override { return !_b.material.density.empty(); }
+  bool has_damping() const override { return false; }
 
   bool supports_load(DistLoadKind kind, int face) const override {
     return beam_supports_load(kind, face, Planar, _b.pipe);
@@ -225,6 +232,14 @@ class BeamKernel final : public ElementKernel {
   }
 
  private:
+  void add_mass(const ElementInput& in, const BeamGeometry& g, std::span<double> M) const {
+    const double rho_A = table_value(_b.material.density, average(in.temperature)) * _b.section.A;
+    std::array<double, NN> m{};
+    for (int p = 0; p < g.n_points; ++p)
+      for (int a = 0; a < NN; ++a) m[a] += rho_A * g.pts[p].weight * g.pts[p].N[a];
+    add_nodal_mass(m, kDpn, Planar ? 2 : 3, M);
+  }
+
   /// PI/PE, closed-end condition: the axial force F of pipe_axial_force acting through the
   /// element's axis length l(x), f_ext = F dl/dx (the pressure's work F dl at constant area), with
   /// the load stiffness -F d2l/dx2 under NLGEOM (symmetric: the load is conservative).

@@ -32,6 +32,7 @@ constexpr std::array<DofType, kMaxPerNode> kDofs = [] {
 /// Scratch of one call (the kernels are shared between threads, so it lives on the stack).
 struct Split {
   std::vector<double> um, um0, rm, Km, uh, uh0, rh, Kh, gradient;
+  std::vector<double> op; ///< a part's mass or damping block (operators on request)
   std::array<double, kMaxNodes> T{}, T0{}, grad{}, Ti{};
 };
 
@@ -100,7 +101,14 @@ class CoupledShellKernel final : public ElementKernel {
         for (int q = 0; q < nh; ++q) out.tangent[hrow(p) * n + hrow(q)] += sp.Kh[p * nh + q];
     }
     out.unsymmetric = true; // d r_u / d T without d r_T / d u
+    if (out.want_mass || out.want_damping) add_operators(in, sp, out);
   }
+
+  /// The shell's mass on the displacements and rotations, the DS element's heat capacity (the
+  /// damping operator, which it integrates itself) on the temperatures.
+  bool has_mass() const override { return _mech->has_mass(); }
+  bool has_damping() const override { return _heat->has_damping(); }
+  bool damping_in_residual() const override { return true; }
 
   double stored_heat(const ElementInput& in) const override {
     Split sp;
@@ -189,6 +197,7 @@ class CoupledShellKernel final : public ElementKernel {
     mi.temperature_gradient = sp.gradient;
     mi.initial_temperature = std::span<const double>(sp.Ti.data(), _nn);
     mi.free = {};
+    mi.v = mi.a = mi.v_start = mi.a_start = {}; // the element's rates, not the part's
     return mi;
   }
 
@@ -206,7 +215,42 @@ class CoupledShellKernel final : public ElementKernel {
     hi.state = {};
     hi.state_start = {};
     hi.free = {};
+    hi.v = hi.a = hi.v_start = hi.a_start = {}; // the element's rates, not the part's
     return hi;
+  }
+
+  /// The parts' operator blocks (each evaluated once more, asking only for its block).
+  void add_operators(const ElementInput& in, Split& sp, ElementOutput& out) const {
+    const int nm = 6 * _nn, nh = _P * _nn, n = nm + nh;
+    std::vector<double> r;
+    if (out.want_mass && _mech->has_mass()) {
+      ElementInput mi = mech_input(in, sp);
+      const std::vector<double> keep(mi.state.begin(), mi.state.end());
+      r.assign(static_cast<std::size_t>(nm), 0.0);
+      sp.op.assign(static_cast<std::size_t>(nm * nm), 0.0);
+      ElementOutput mo;
+      mo.residual = r;
+      mo.want_tangent = false;
+      mo.mass = sp.op;
+      mo.want_mass = true;
+      _mech->evaluate(mi, mo);
+      std::copy(keep.begin(), keep.end(), mi.state.begin());
+      for (int p = 0; p < nm; ++p)
+        for (int q = 0; q < nm; ++q) out.mass[mrow(p) * n + mrow(q)] += sp.op[p * nm + q];
+    }
+    if (out.want_damping && _heat->has_damping()) {
+      ElementInput hi = heat_input(in, sp);
+      r.assign(static_cast<std::size_t>(nh), 0.0);
+      sp.op.assign(static_cast<std::size_t>(nh * nh), 0.0);
+      ElementOutput ho;
+      ho.residual = r;
+      ho.want_tangent = false;
+      ho.damping = sp.op;
+      ho.want_damping = true;
+      _heat->evaluate(hi, ho);
+      for (int p = 0; p < nh; ++p)
+        for (int q = 0; q < nh; ++q) out.damping[hrow(p) * n + hrow(q)] += sp.op[p * nh + q];
+    }
   }
 
   void mech_residual(const ElementInput& mi, Split& sp, bool want_K) const {

@@ -95,6 +95,13 @@ void CoupledTrussKernel::evaluate(const ElementInput& in, ElementOutput& out) co
   }
   out.unsymmetric |= _heat.add_internal(in.X, l.T, l.T0, in.ctx, layout(), out.residual,
                                         want_K ? out.tangent : std::span<double>{});
+  if (out.want_damping) _heat.add_capacity_block(in.X, l.T, layout(), out.damping);
+  if (out.want_mass) {
+    const double half = 0.5 * table_value(_material.density, 0.5 * (l.T[0] + l.T[1])) * _area *
+                        axial_reference(_ndim, in.X).L;
+    const std::array<double, 2> m{half, half};
+    add_nodal_mass(m, _ndim + 1, _ndim, out.mass);
+  }
 }
 
 double CoupledTrussKernel::stored_heat(const ElementInput& in) const {

@@ -8,6 +8,8 @@
 /// Coupling block: the axial force N = E(Tm) A (eps - eps_th(Tm)), Tm = (T1 + T2)/2, gives
 ///   d r_u / d T_b = 1/2 A [E'(Tm) (eps - eps_th) - E(Tm) eps_th'(Tm)] [-n; n].
 /// The heat equation does not depend on the displacements (reference length).
+/// Operators: the truss's lumped mass on the displacements (with *DENSITY), the heat capacity as
+/// the damping operator of the temperatures (integrated by the kernel: damping_in_residual).
 #include "elements/heat/heat_core.hpp"
 #include "elements/solid/coupled_continuum.hpp"
 #include "elements/structural/truss.hpp"
@@ -24,6 +26,9 @@ class CoupledTrussKernel final : public ElementKernel {
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
   double stored_heat(const ElementInput& in) const override;
+  bool has_mass() const override { return _mech.has_mass(); }
+  bool has_damping() const override { return _heat.material().has_capacity(); }
+  bool damping_in_residual() const override { return true; }
   bool supports_load(DistLoadKind kind, int face) const override;
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude,
             double sink_temperature, std::span<double> f_ext,

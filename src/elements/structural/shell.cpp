@@ -58,6 +58,7 @@ class ShellKernel final : public ElementKernel {
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
     const SectionLaw law = section_law(_d, in);
+    if (out.want_mass) add_mass(in, out.mass);
     if (!nl) {
       linear_evaluate(in, law, out);
       write_rotations(in, false);
@@ -71,6 +72,13 @@ class ShellKernel final : public ElementKernel {
         for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
     write_rotations(in, nl);
   }
+
+  /// Translational mass only (with *DENSITY): the consistent mass integral rho t N_a N_b dA over
+  /// the reference surface (the body-load rule; consistent because the row sums of S8R's would
+  /// make its corners negative), no rotary inertia (the rotations' rows are zero;
+  /// docs/conventions.md).
+  bool has_mass() const override { return !_d.material.density.empty(); }
+  bool has_damping() const override { return false; }
 
   bool supports_load(DistLoadKind kind, int face) const override {
     if (kind == DistLoadKind::Pressure) return face >= 0 && face <= 2; // P, SNEG, SPOS
@@ -123,6 +131,25 @@ class ShellKernel final : public ElementKernel {
   }
 
  private:
+  void add_mass(const ElementInput& in, std::span<double> M) const {
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    const double rho = table_value(_d.material.density, average(in.temperature));
+    for (const auto& q : load_rule()) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, q[0], q[1], q[2], p)) continue;
+      const double w = p.dA * rho * p.thickness;
+      for (int a = 0; a < NN; ++a)
+        for (int b = a; b < NN; ++b) { // symmetric to the last bit
+          const double m = w * p.sh.N[a] * p.sh.N[b];
+          for (int i = 0; i < 3; ++i) {
+            M[(6 * a + i) * kN + 6 * b + i] += m;
+            if (b != a) M[(6 * b + i) * kN + 6 * a + i] += m;
+          }
+        }
+    }
+  }
+
   std::span<const Vec3> directors(const ElementInput& in) const {
     return std::span(_d.directors).subspan(static_cast<std::size_t>(in.block_index) * NN, NN);
   }

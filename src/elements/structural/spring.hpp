@@ -28,6 +28,10 @@ class SpringKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return _stiffness.n_rows() > 1; }
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// Springs are massless and undamped (Abaqus's SPRING elements; a point mass or a dashpot is an
+  /// element of its own, MASS / DASHPOT, which gapfem does not have yet).
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override;
   void recover(const ElementInput& in, ElementRecovery& out) const override;
 

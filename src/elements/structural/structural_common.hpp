@@ -69,6 +69,21 @@ bool material_uses_temperature(const Material& material);
 double line_load_intensity(const Material& material, double area, const DistributedLoad& load,
                            double magnitude, std::optional<double> T, const EntityLabel& label);
 
+// -------------------------------------------------------------------------------------- mass
+
+/// Lumped translational mass (docs/conventions.md, "Mass and damping"): node a's mass m[a] on the
+/// diagonal of M (n x n row-major, n = nodes x dofs_per_node) at its first `ndir` DOFs (the
+/// translations). Rotational DOFs get no mass: gapfem's beams and shells have no rotary inertia.
+inline void add_nodal_mass(std::span<const double> m, int dofs_per_node, int ndir,
+                           std::span<double> M) {
+  const auto n = m.size() * static_cast<std::size_t>(dofs_per_node);
+  for (std::size_t a = 0; a < m.size(); ++a)
+    for (int i = 0; i < ndir; ++i) {
+      const std::size_t r = a * dofs_per_node + i;
+      M[r * n + r] += m[a];
+    }
+}
+
 // ------------------------------------------------------------------ axial two-node kinematics
 
 /// Kinematics of a straight two-node member whose force acts along its axis (SPRINGA, T2D2,

@@ -71,6 +71,12 @@ void TrussKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   const bool nlgeom = nlgeom_of(in);
   const Axial a = axial(in);
   axial_assemble(axial_kinematics(_ndim, in.X, in.u, nlgeom), nlgeom, a.force, a.dN_dl, out);
+  if (out.want_mass) {
+    const double half = 0.5 * table_value(_material.density, average(in.temperature)) * _area *
+                        axial_reference(_ndim, in.X).L;
+    const std::array<double, 2> m{half, half};
+    add_nodal_mass(m, _ndim, _ndim, out.mass);
+  }
 }
 
 bool TrussKernel::supports_load(DistLoadKind kind, int face) const {

@@ -13,6 +13,8 @@
 /// Loads: GRAV (rho A g per unit length) and BX/BY/BZ (force per volume times A), lumped half to
 /// each node (exact for a straight member with linear interpolation).
 /// Output: S11 (true stress), E11 (total strain; logarithmic with NLGEOM), SF1 (axial force).
+/// Mass (with *DENSITY): lumped, rho A L / 2 per node and direction (Abaqus's first-order
+/// elements lump their mass), rho at the element's mean temperature; no damping operator.
 #include "elements/element_kernel.hpp"
 #include "model/material.hpp"
 
@@ -28,6 +30,8 @@ class TrussKernel final : public ElementKernel {
   bool uses_temperature_field() const override;
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  bool has_mass() const override { return !_material.density.empty(); }
+  bool has_damping() const override { return false; }
   bool supports_load(DistLoadKind kind, int face) const override;
   void load(const ElementInput& in, const DistributedLoad& load, double magnitude,
             double sink_temperature, std::span<double> f_ext,

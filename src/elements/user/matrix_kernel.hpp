@@ -18,6 +18,11 @@ class MatrixKernel final : public ElementKernel {
     return _dofs.node(local_node);
   }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// Massless and undamped for now: a LINEAR user element's *MATRIX, TYPE=MASS is read
+  /// (UserElementType::mass) but not yet handed to the kernel (user_factory.cpp, then out.mass =
+  /// the matrix in evaluate()); substructures are massless (their reduction has no mass).
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
   /// K u (element order).

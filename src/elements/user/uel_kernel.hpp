@@ -29,6 +29,10 @@ class UelKernel final : public ElementKernel {
   int n_state() const override { return _type.n_variables + kEnergies + _dofs.n_dofs(); }
   bool uses_temperature_field() const override { return _temperatures; }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// Massless and undamped for gapfem: a UEL's mass and damping matrices (LFLAGS(3) = 4, 5) are
+  /// not asked for yet (a later issue); whatever inertia the user codes is in its RHS/AMATRX.
+  bool has_mass() const override { return false; }
+  bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
   /// NFORC (the internal force at the converged state) and ENERGY(2), the elastic strain energy
   /// (reported where the output reports strain energies).
