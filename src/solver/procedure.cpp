@@ -4,27 +4,25 @@
 
 #include <fmt/format.h>
 #include <map>
-#include <mutex>
 #include <stdexcept>
 
 namespace gapfem {
 
 namespace {
 
+/// The procedures gapfem has; a new one adds its line here (docs/architecture.md).
+std::map<Procedure, ProcedureFactory> builtin_procedures() {
+  return {{Procedure::Static, make_static_procedure},
+          {Procedure::HeatTransfer, make_heat_transfer_procedure},
+          {Procedure::CoupledTempDisp, make_heat_transfer_procedure},
+          {Procedure::SubstructureGenerate, make_substructure_generate_procedure}};
+}
+
+/// The table, the built-in procedures in it before anything else is registered or made.
 std::map<Procedure, ProcedureFactory>& table() {
-  static std::map<Procedure, ProcedureFactory> t;
+  static std::map<Procedure, ProcedureFactory> t = builtin_procedures();
   return t;
 }
-
-/// The procedures gapfem has; a new one adds its line here (docs/architecture.md).
-void register_builtin_procedures() {
-  register_procedure(Procedure::Static, make_static_procedure);
-  register_procedure(Procedure::HeatTransfer, make_heat_transfer_procedure);
-  register_procedure(Procedure::CoupledTempDisp, make_heat_transfer_procedure);
-  register_procedure(Procedure::SubstructureGenerate, make_substructure_generate_procedure);
-}
-
-std::once_flag builtin_once;
 
 } // namespace
 
@@ -33,7 +31,6 @@ void register_procedure(Procedure p, ProcedureFactory make) {
 }
 
 std::unique_ptr<StepProcedure> make_procedure(Procedure p, Analysis::Impl& analysis) {
-  std::call_once(builtin_once, register_builtin_procedures);
   const auto it = table().find(p);
   if (it == table().end())
     throw std::logic_error(fmt::format("no class runs steps of procedure {}", procedure_name(p)));
