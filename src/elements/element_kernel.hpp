@@ -84,9 +84,9 @@ struct ElementInput {
   std::span<const double> u;       ///< trial total values of the local DOFs (node-major)
   std::span<const double> u_start; ///< values at the start of the increment (committed)
   /// Trial velocity and acceleration of the local DOFs (node-major, like u; from the integrator's
-  /// map, StepContext::rates) and their committed values: given to kernels that have a mass or a
-  /// damping operator in steps whose integrator defines them; empty otherwise (static steps), and
-  /// a (a_start) empty in first-order steps
+  /// map, StepContext::rates) and their committed values: given in steps whose integrator defines
+  /// them to kernels whose mass or damping operator the assembler applies; empty otherwise (static
+  /// steps, a kernel that integrates its own rates), and a (a_start) empty in first-order steps
   std::span<const double> v, a, v_start, a_start;
   std::span<const double>
       temperature; ///< predefined nodal temperatures now (stress elements), or empty

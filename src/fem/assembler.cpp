@@ -72,6 +72,7 @@ namespace {
 /// Which operators of a block an assembly weighs (and so asks its kernel for).
 struct BlockOperators {
   bool mass = false, damping = false;
+  bool rates = false; ///< the elements' rates are gathered (an operator applied needs them)
 };
 
 BlockOperators block_operators(const ElementKernel& kernel, const StepContext& ctx,
@@ -81,6 +82,7 @@ BlockOperators block_operators(const ElementKernel& kernel, const StepContext& c
   // a kernel integrating its own damping has it in residual and tangent while rates are defined
   if (w.c != 0.0 && kernel.has_damping() && !(kernel.damping_in_residual() && ctx.rates.defined()))
     ops.damping = true;
+  ops.rates = ctx.rates.defined() && (ops.mass || ops.damping);
   return ops;
 }
 
@@ -119,7 +121,7 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
   const BlockOperators ops = block_operators(*block.kernel, ctx, w);
   const bool operators = ops.mass || ops.damping || w.k != 1.0;
   for (std::size_t i = b; i < e; ++i) {
-    ElementInput& in = g.gather(_disc, block, i, fields, &ctx);
+    ElementInput& in = g.gather(_disc, block, i, fields, &ctx, ops.rates);
     ElementOutput& out = g.output(block, K != nullptr, ops.mass, ops.damping);
     block.kernel->evaluate(in, out);
     if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);

@@ -27,7 +27,7 @@ void ElementGather::gather_rates(std::span<const LocalIndex> slots, const FieldV
 }
 
 ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& block, std::size_t i,
-                                    const FieldView& f, const StepContext* ctx) {
+                                    const FieldView& f, const StepContext* ctx, bool rates) {
   const Model& model = disc.model();
   const ElemId e = block.elements[i];
   const auto nodes = model.mesh.element_nodes(e);
@@ -48,9 +48,7 @@ ElementInput& ElementGather::gather(const Discretization& disc, ElementBlock& bl
   _in.X = _X;
   _in.u = _u;
   _in.u_start = _u0;
-  // rates only where an operator uses them, in steps that define them (never in static steps)
-  if (ctx && ctx->rates.defined() && (block.kernel->has_mass() || block.kernel->has_damping()))
-    gather_rates(slots, f, ctx->rates);
+  if (rates && ctx && ctx->rates.defined()) gather_rates(slots, f, ctx->rates);
   if (block.uses_temperature && !f.temperature.empty()) {
     _T.resize(nn);
     _T0.resize(nn);

@@ -26,9 +26,11 @@ struct FieldView {
 
 class ElementGather {
  public:
-  /// Fill `input` for element i of block b; spans point into this object's buffers.
+  /// Fill `input` for element i of block b; spans point into this object's buffers. `rates`:
+  /// also the element's trial velocities and accelerations from ctx->rates and its committed ones
+  /// (the assembler asks for them where an operator it applies needs them).
   ElementInput& gather(const Discretization& disc, ElementBlock& block, std::size_t i,
-                       const FieldView& fields, const StepContext* ctx);
+                       const FieldView& fields, const StepContext* ctx, bool rates = false);
   /// Output buffers sized for the current block, zeroed; the mass and damping blocks are sized
   /// and zeroed only when wanted (nothing is touched for them in static steps).
   ElementOutput& output(const ElementBlock& block, bool want_tangent, bool want_mass = false,
