@@ -321,6 +321,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   r.proc->configure(step, base);
   r.prob = std::make_unique<StepProblem>(disc, assembler, loads, st, base, r.pattern);
   StepProblem& prob = *r.prob;
+  prob.set_integrator(r.proc->make_integrator(step, base));
   prob.set_unsymmetric_loads(step.unsymmetric);
   prob.set_statistics(&stats);
   prob.begin_increment(0.0, 0.0);

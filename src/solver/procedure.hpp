@@ -11,6 +11,7 @@
 #include "common/archive.hpp"
 #include "model/step.hpp"
 #include "solver/analysis.hpp"
+#include "solver/time_integrator.hpp"
 
 #include <functional>
 #include <memory>
@@ -42,6 +43,12 @@ class StepProcedure {
   /// The context every element evaluation of the step shares: what the procedure adds to it
   /// (e.g. transient terms).
   virtual void configure(const Step& step, StepContext& ctx) const {}
+  /// The step's time integrator (solver/time_integrator.hpp), given to the step problem: none
+  /// for a quasi-static procedure (no rates; the default).
+  virtual std::unique_ptr<TimeIntegrator> make_integrator(const Step& step,
+                                                          const StepContext& ctx) const {
+    return nullptr;
+  }
   /// The increment controller's rules (e.g. fixed transient increments without DELTMX).
   virtual void adjust_rules(const Step& step, IncrementRules& rules) const {}
   /// After the step problem exists (its loads, equations and stiffness hints). `resuming`: the

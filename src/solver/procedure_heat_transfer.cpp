@@ -19,6 +19,12 @@ class HeatTransferProcedure final : public StepProcedure {
   void configure(const Step& step, StepContext& ctx) const override {
     ctx.transient = !step.inc.steady_state;
   }
+  /// Transient steps: backward Euler (Abaqus integrates heat transfer so, "Uncoupled heat
+  /// transfer analysis"); steady-state steps have no rates.
+  std::unique_ptr<TimeIntegrator> make_integrator(const Step&,
+                                                  const StepContext& ctx) const override {
+    return ctx.transient ? std::make_unique<BackwardEuler>() : nullptr;
+  }
   void adjust_rules(const Step& step, IncrementRules& rules) const override {
     if (fixed_transient_increments(step)) rules.growth = rules.shrink = 1.0;
   }

@@ -9,8 +9,9 @@ namespace gapfem {
 
 class MatrixKernel final : public ElementKernel {
  public:
-  /// `K`: n_dofs x n_dofs row-major over `dofs`' element order.
-  MatrixKernel(ElementType type, NodeDofTable dofs, std::vector<double> K, bool unsymmetric);
+  /// `K` (and `M`, the mass, or empty): n_dofs x n_dofs row-major over `dofs`' element order.
+  MatrixKernel(ElementType type, NodeDofTable dofs, std::vector<double> K, bool unsymmetric,
+               std::vector<double> M = {});
 
   ElementType type() const override { return _type; }
   int n_nodes() const override { return _dofs.n_nodes(); }
@@ -18,10 +19,10 @@ class MatrixKernel final : public ElementKernel {
     return _dofs.node(local_node);
   }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
-  /// Massless and undamped for now: a LINEAR user element's *MATRIX, TYPE=MASS is read
-  /// (UserElementType::mass) but not yet handed to the kernel (user_factory.cpp, then out.mass =
-  /// the matrix in evaluate()); substructures are massless (their reduction has no mass).
-  bool has_mass() const override { return false; }
+  /// The deck's mass: a LINEAR user element's *MATRIX, TYPE=MASS (UserElementType::mass), the
+  /// block's own operator; without one, and for substructures (their reduction is of the
+  /// stiffness alone), massless. Undamped (Abaqus's LINEAR user elements have no damping matrix).
+  bool has_mass() const override { return !_M.empty(); }
   bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
   void recover(const ElementInput& in, ElementRecovery& out) const override;
@@ -31,7 +32,7 @@ class MatrixKernel final : public ElementKernel {
  private:
   ElementType _type;
   NodeDofTable _dofs;
-  std::vector<double> _K;
+  std::vector<double> _K, _M;
   bool _unsymmetric;
 };
 

@@ -15,7 +15,7 @@ std::unique_ptr<ElementKernel> make_user_kernel(const KernelContext& ctx) {
   const UserElementType& t = model.user_elements[static_cast<std::size_t>(ctx.variant)];
   if (t.linear)
     return std::make_unique<MatrixKernel>(ElementType::USER, NodeDofTable(t.node_dofs), t.stiffness,
-                                          t.unsymmetric);
+                                          t.unsymmetric, t.mass);
   const UelProperty* props = nullptr;
   if (ctx.property.kind == PropertyRef::Kind::User && ctx.property.index >= 0)
     props = &model.uel_properties[static_cast<std::size_t>(ctx.property.index)];

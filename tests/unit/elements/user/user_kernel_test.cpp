@@ -135,5 +135,35 @@ TEST(UserElementMatrix, KernelChecks) {
   expect_rigid_body_invariance(p);
 }
 
+// *MATRIX, TYPE=MASS of a LINEAR user element is the kernel's mass operator, given back exactly
+// when asked for; without it the element is massless.
+TEST(UserElementMatrix, MassMatrixIsTheDecksOwn) {
+  std::vector<double> K(36, 0.0), M(36, 0.0);
+  for (int i = 0; i < 6; ++i) {
+    K[i * 6 + i] = 10.0;
+    M[i * 6 + i] = 2.0 + i;                                 // a lumped mass ...
+    if (i < 3) M[i * 6 + 3 + i] = M[(3 + i) * 6 + i] = 0.5; // ... with a coupling term
+  }
+  const MatrixKernel plain(ElementType::USER, NodeDofTable({{1, 2, 3}, {1, 2, 3}}), K, false);
+  EXPECT_FALSE(plain.has_mass());
+  const MatrixKernel massive(ElementType::USER, NodeDofTable({{1, 2, 3}, {1, 2, 3}}), K, false, M);
+  ASSERT_TRUE(massive.has_mass());
+  EXPECT_FALSE(massive.has_damping());
+  std::vector<double> u(6, 0.0), r(6, 0.0), T(36, 0.0), Me(36, 0.0);
+  std::vector<Vec3> X(kNodes.begin(), kNodes.end());
+  ElementInput in;
+  in.X = X;
+  in.u = u;
+  in.u_start = u;
+  ElementOutput out;
+  out.residual = r;
+  out.tangent = T;
+  out.mass = Me;
+  out.want_mass = true;
+  massive.evaluate(in, out);
+  EXPECT_EQ(Me, M);
+  EXPECT_EQ(T, K);
+}
+
 } // namespace
 } // namespace gapfem::test
