@@ -3,7 +3,7 @@
 
 A function is a definition whose line ends with `{` after a parameter list, at any depth, up to
 its matching `}`; lambdas and control statements are not counted. Prints each long one with its
-length and exits 1 when there is one (not yet in CI: scripts/test.sh runs it when the count is 0).
+length and exits 1 when there is one; CI runs it (scripts/test.sh).
 """
 import argparse
 import pathlib
