@@ -5,9 +5,11 @@
 ///
 /// Formulation, per integration point q with reference volume weight dV_q (w det J, times the
 /// thickness for plane elements or 2 pi R for axisymmetric ones):
-///   small strain  eps = sym(H),                       sigma = C : (eps - eps_th I)
-///   NLGEOM        E = sym(H) + 1/2 H^T H (total Lagrangian), S = C : (E - eps_th I)
+///   small strain  eps = sym(H),                       sigma = law(eps)
+///   NLGEOM        E = sym(H) + 1/2 H^T H (total Lagrangian), S = law(E) (second Piola-Kirchhoff)
 ///   residual      r = sum_q B^T s dV_q,   tangent K = sum_q (B^T D B + geometric) dV_q
+/// The law is the material's solid law (elements/material/solid_law.hpp; isotropic elasticity
+/// S = C : (E - eps_th I) today), called through the shared point loop (solid_point.hpp).
 /// B-bar (C3D8, CPE4, CAX4; Abaqus's fully integrated first-order elements use selectively reduced
 /// integration of the volumetric part, Abaqus Theory Guide, "Solid isoparametric quadrilaterals
 /// and hexahedra", section "Fully integrated first-order isoparametric elements"): the volumetric
@@ -17,8 +19,8 @@
 /// Ebar(u), so the tangent is its Hessian and stays symmetric.
 #include "elements/element_kernel.hpp"
 #include "elements/reference_scale.hpp"
-#include "elements/solid/continuum_law.hpp"
 #include "elements/solid/continuum_loads.hpp"
+#include "elements/solid/solid_point.hpp"
 #include "fe/element_faces.hpp"
 #include "fe/quadrature.hpp"
 #include "fe/shape_functions.hpp"
@@ -29,8 +31,10 @@
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
+#include <memory>
 #include <numbers>
 #include <string_view>
+#include <vector>
 
 namespace gapfem {
 
@@ -69,10 +73,10 @@ inline constexpr std::array<std::string_view, 3> kSps{"S11", "S22", "S12"};
 inline constexpr std::array<std::string_view, 3> kEps{"E11", "E22", "E12"};
 
 constexpr int n_strain(Kinematics k) {
-  return k == Kinematics::ThreeD ? 6 : (k == Kinematics::PlaneStress ? 3 : 4);
+  return voigt_size(k);
 }
 constexpr int n_normal(Kinematics k) {
-  return k == Kinematics::PlaneStress ? 2 : 3;
+  return voigt_normals(k);
 }
 /// Points of the stiffness rule (full_integration_rule / reduced_integration_rule).
 constexpr int n_points(Shape s, bool reduced) {
@@ -130,18 +134,16 @@ void stress_strain_blocks(int n_points, OutputBlock& sb, OutputBlock& eb) {
 }
 
 /// Cauchy stress F S F^T / det F in the output order, from the second Piola-Kirchhoff stress S,
-/// the strain E (plane stress: for F33), the in-plane (or 3-D) F and F33 (CPE, CAX).
+/// the in-plane (or 3-D) F, F33 (CPE, CAX) and, plane stress, the law's thickness strain E33.
 template <Kinematics K, class VecS, class MatF>
-VecS cauchy_stress(const VecS& S, const VecS& E, const MatF& Fin, double F33,
-                   const ElasticPoint& law) {
+VecS cauchy_stress(const VecS& S, const MatF& Fin, double F33, double thickness_strain) {
   constexpr int ND = K == Kinematics::ThreeD ? 3 : 2;
   constexpr auto C = voigt_pairs<K>();
   Eigen::Matrix3d Sg = Eigen::Matrix3d::Zero(), F = Eigen::Matrix3d::Identity();
   for (int c = 0; c < n_strain(K); ++c) Sg(C[c][0], C[c][1]) = Sg(C[c][1], C[c][0]) = S(c);
   F.topLeftCorner<ND, ND>() = Fin;
   if constexpr (K == Kinematics::PlaneStress) {
-    const double e33 = law.plane_stress_e33(E(0) + E(1));
-    F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * e33, 0.0));
+    F(2, 2) = std::sqrt(std::max(1.0 + 2.0 * thickness_strain, 0.0));
   } else if constexpr (ND == 2) {
     F(2, 2) = F33;
   }
@@ -151,35 +153,6 @@ VecS cauchy_stress(const VecS& S, const VecS& E, const MatF& Fin, double F33,
   return out;
 }
 
-/// Elastic strain energy density 1/2 S : (E - eps_th I) (S = C : (E - eps_th I), engineering
-/// shears; the thermal strain on the n_normal normal components).
-template <class VecS>
-double energy_density(int n_normal, const VecS& S, const VecS& E, double eps_th) {
-  double w = 0.0;
-  for (int c = 0; c < E.size(); ++c) w += S(c) * (E(c) - (c < n_normal ? eps_th : 0.0));
-  return 0.5 * w;
-}
-
-/// d lambda / dT (the effective lambda of the kinematics: lambda* for plane stress) and d mu / dT
-/// from the material's *ELASTIC table at temperature T.
-inline void elastic_derivatives(Kinematics kin, const Material& mat, double T, double& dlambda,
-                                double& dmu) {
-  std::array<double, 2> v{}, dv{};
-  mat.elastic.evaluate(T, v, dv);
-  const double E = v[0], nu = v[1], dE = dv[0], dnu = dv[1];
-  dmu = dE / (2.0 * (1.0 + nu)) - E * dnu / (2.0 * (1.0 + nu) * (1.0 + nu));
-  const double D = (1.0 + nu) * (1.0 - 2.0 * nu);
-  const double dD = dnu * (1.0 - 2.0 * nu) - 2.0 * dnu * (1.0 + nu);
-  const double l3 = E * nu / D;
-  const double dl3 = (dE * nu + E * dnu) / D - E * nu * dD / (D * D);
-  if (kin == Kinematics::PlaneStress) {
-    const double mu = E / (2.0 * (1.0 + nu));
-    const double s = l3 + 2.0 * mu;
-    dlambda = (2.0 * (dl3 * mu + l3 * dmu) * s - 2.0 * l3 * mu * (dl3 + 2.0 * dmu)) / (s * s);
-  } else {
-    dlambda = dl3;
-  }
-}
 } // namespace continuum_detail
 
 template <class Tr>
@@ -202,7 +175,8 @@ class ContinuumKernel final : public ElementKernel {
   using MatG = Eigen::Matrix<double, NN, ND>;
   using MatF = Eigen::Matrix<double, ND, ND>;
 
-  explicit ContinuumKernel(ContinuumSetup setup) : _setup(std::move(setup)) {
+  explicit ContinuumKernel(ContinuumSetup setup)
+      : _setup(std::move(setup)), _law(_setup.material, kKin) {
     const auto rule =
         Tr::reduced ? reduced_integration_rule(Tr::shape) : full_integration_rule(Tr::shape);
     FE_CHECK(static_cast<int>(rule.size()) == NIP, "continuum rule size mismatch");
@@ -215,9 +189,6 @@ class ContinuumKernel final : public ElementKernel {
         for (int k = 0; k < ND; ++k) _dN[q](a, k) = dN[a * ND + k];
       }
     }
-    _const_elastic =
-        _setup.material.elastic.n_rows() <= 1 || _setup.material.elastic.keys.size() <= 1;
-    if (_const_elastic) _setup.material.elastic_at(0.0, _E0, _nu0);
   }
 
   ElementType type() const override { return Tr::type; }
@@ -228,6 +199,10 @@ class ContinuumKernel final : public ElementKernel {
       return continuum_detail::kDofs2;
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
+  int n_state() const override { return NIP * _law.n_state(); }
+  void initialize(const ElementInput& in) const override { initialize_points(_law, NIP, in.state); }
+  /// The material law at the points (for the coupled and the tests).
+  const SolidLaw& law() const { return *_law; }
 
   std::string validate(const ElementInput& given) const override {
     std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
@@ -254,31 +229,32 @@ class ContinuumKernel final : public ElementKernel {
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
     Work w;
-    compute(in, w);
+    compute(in, w, in.state);
     Eigen::Map<VecD> r(out.residual.data());
     const bool want_K = out.want_tangent && out.tangent.size() == NDOF * NDOF;
     MatK K;
     if (want_K) K.setZero();
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
-    MatB DB;
+    bool pairs = kNodePairs; // the isotropic fast path needs an isotropic tangent at every point
+    for (int q = 0; q < NIP && pairs; ++q) pairs = w.ip[q].law.isotropic;
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
-      r.noalias() += p.dV * (p.B.transpose() * p.S);
+      if (!want_K || pairs)
+        add_point<NS>(p.law, p.B, p.S, p.dV, r, static_cast<MatK*>(nullptr));
+      else
+        add_point<NS>(p.law, p.B, p.S, p.dV, r, &K);
       if (!want_K) continue;
-      if constexpr (kNodePairs) {
-        add_material_pairs(p, K);
-      } else {
-        p.law.apply(NNRM, p.B, DB);
-        K.noalias() += p.dV * p.B.transpose().lazyProduct(DB);
-      }
+      if constexpr (kNodePairs)
+        if (pairs) add_material_pairs(p, K);
       if (nlgeom) add_geometric(p, w, q, K);
     }
     if (want_K) {
-      if constexpr (kNodePairs) // the upper triangle of node pairs was formed
-        for (int a = 0; a < NN; ++a)
-          for (int b = 0; b < a; ++b)
-            K.template block<ND, ND>(a * ND, b * ND) =
-                K.template block<ND, ND>(b * ND, a * ND).transpose();
+      if constexpr (kNodePairs)
+        if (pairs) // the upper triangle of node pairs was formed
+          for (int a = 0; a < NN; ++a)
+            for (int b = 0; b < a; ++b)
+              K.template block<ND, ND>(a * ND, b * ND) =
+                  K.template block<ND, ND>(b * ND, a * ND).transpose();
       Eigen::Map<MatK> Kout(out.tangent.data());
       Kout += K;
     }
@@ -294,24 +270,10 @@ class ContinuumKernel final : public ElementKernel {
              "temperature_tangent: sizes");
     std::fill(dr_dT.begin(), dr_dT.end(), 0.0);
     Work w;
-    compute(in, w);
+    compute(in, w, in.state, {.dstress_dT = true});
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
-      double T = 0.0;
-      for (int a = 0; a < NN; ++a) T += _N[q](a) * in.temperature[a];
-      const double deth = _setup.material.thermal_strain_derivative(T);
-      double dlambda = 0.0, dmu = 0.0;
-      if (!_const_elastic)
-        continuum_detail::elastic_derivatives(kKin, _setup.material, T, dlambda, dmu);
-      const ElasticPoint& law = p.law;
-      double tr = 0.0;
-      for (int c = 0; c < NNRM; ++c) tr += p.E(c) - law.eps_th;
-      VecS dS;
-      for (int c = 0; c < NNRM; ++c)
-        dS(c) = dlambda * tr + 2.0 * dmu * (p.E(c) - law.eps_th) -
-                deth * (law.lambda * NNRM + 2.0 * law.mu);
-      for (int c = NNRM; c < NS; ++c) dS(c) = dmu * p.E(c);
-      const VecD col = p.dV * (p.B.transpose() * dS);
+      const VecD col = p.dV * (p.B.transpose() * p.dS);
       for (int i = 0; i < NDOF; ++i)
         for (int b = 0; b < NN; ++b) dr_dT[i * NN + b] += col(i) * _N[q](b);
     }
@@ -335,16 +297,18 @@ class ContinuumKernel final : public ElementKernel {
 
   void recover(const ElementInput& in, ElementRecovery& out) const override {
     Work w;
-    compute(in, w);
+    std::vector<double> trial(static_cast<std::size_t>(n_state())); // history is not written here
+    compute(in, w, trial, {.recovery = true});
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<kKin>(NIP, sb, eb);
     double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
-      energy += p.dV * continuum_detail::energy_density(NNRM, p.S, p.E, p.law.eps_th);
+      energy += p.dV * p.law.energy;
       VecS sig = p.S;
-      if (nlgeom) sig = continuum_detail::cauchy_stress<kKin>(p.S, p.E, p.F, p.F33, p.law);
+      if (nlgeom)
+        sig = continuum_detail::cauchy_stress<kKin>(p.S, p.F, p.F33, p.law.thickness_strain);
       for (int c = 0; c < NS; ++c) {
         sb.values[q * NS + c] = sig(c);
         eb.values[q * NS + c] = p.E(c);
@@ -363,20 +327,23 @@ class ContinuumKernel final : public ElementKernel {
     double R = 1.0; ///< reference radius (axisymmetric)
     MatF F;         ///< in-plane deformation gradient (identity for small strain)
     double F33 = 1.0;
-    VecS E; ///< (modified) strain, engineering shears
-    MatB B; ///< d E / d u (modified for B-bar)
-    VecS S; ///< stress conjugate to E (second Piola-Kirchhoff under NLGEOM)
-    ElasticPoint law;
+    VecS E;  ///< (modified) strain, engineering shears
+    MatB B;  ///< d E / d u (modified for B-bar)
+    VecS S;  ///< stress conjugate to E (second Piola-Kirchhoff under NLGEOM)
+    VecS dS; ///< dS/dT (temperature_tangent only)
+    PointLaw<NS> law;
   };
   struct Work {
     std::array<Ip, NIP> ip;
+    std::array<typename PointLaw<NS>::MatD, NIP> D; ///< the laws' tangents when not isotropic
     double p_bar = 0.0; ///< element mean of the mean normal stress (B-bar)
   };
 
   static constexpr auto comps() { return continuum_detail::voigt_pairs<kKin>(); }
 
-  /// 3-D elements without B-bar form the material stiffness node pair by node pair: with
-  /// f_a = F grad N_a and the isotropic C, the block of nodes a, b is
+  /// 3-D elements without B-bar form the material stiffness node pair by node pair when the law's
+  /// tangent is isotropic (elasticity): with f_a = F grad N_a and the isotropic C, the block of
+  /// nodes a, b is
   ///   dV [lambda f_a f_b^T + mu f_b f_a^T + mu (grad N_a . grad N_b) F F^T],
   /// the same as B^T D B (F = I for small strain) in about a third of the operations; only the
   /// pairs b >= a are formed, the rest mirrored after the loop over the points.
@@ -386,7 +353,7 @@ class ContinuumKernel final : public ElementKernel {
     const Eigen::Matrix<double, NN, ND> f = p.g * p.F.transpose();
     const Eigen::Matrix<double, NN, NN> gg = p.g * p.g.transpose();
     const MatF FFt = p.F * p.F.transpose();
-    const double l = p.dV * p.law.lambda, m = p.dV * p.law.mu;
+    const double l = p.dV * p.law.moduli.lambda, m = p.dV * p.law.moduli.mu;
     for (int a = 0; a < NN; ++a) {
       const Eigen::Matrix<double, ND, 1> fa = f.row(a).transpose();
       for (int b = a; b < NN; ++b) {
@@ -412,24 +379,10 @@ class ContinuumKernel final : public ElementKernel {
     return R;
   }
 
-  ElasticPoint point_law(const ElementInput& in, int q) const {
-    double E = _E0, nu = _nu0, eth = 0.0;
-    double T = 0.0, Ti = 0.0;
-    const bool thermal = !in.temperature.empty();
-    if (thermal || !_const_elastic) {
-      for (int a = 0; a < NN; ++a) {
-        if (thermal) T += _N[q](a) * in.temperature[a];
-        if (!in.initial_temperature.empty()) Ti += _N[q](a) * in.initial_temperature[a];
-      }
-      if (!thermal) T = Ti;
-    }
-    if (!_const_elastic) _setup.material.elastic_at(T, E, nu);
-    if (thermal) eth = _setup.material.thermal_strain(T, Ti);
-    return ElasticPoint::make(kKin, E, nu, eth);
-  }
-
-  /// Kinematics, (B-bar) strains and stresses at all points.
-  void compute(const ElementInput& in, Work& w) const {
+  /// Kinematics, (B-bar) strains and, through the law, stresses at all points; the trial
+  /// history goes to `trial`.
+  void compute(const ElementInput& in, Work& w, std::span<double> trial,
+               PointRequest request = {}) const {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     MatG U;
     for (int a = 0; a < NN; ++a)
@@ -493,7 +446,6 @@ class ContinuumKernel final : public ElementKernel {
               p.B(c, a * ND + i) = p.F(i, I) * p.g(a, J) + p.F(i, J) * p.g(a, I);
         }
       }
-      p.law = point_law(in, q);
       if constexpr (Tr::bbar) {
         V += p.dV;
         theta_bar += p.dV * (p.E(0) + p.E(1) + p.E(2));
@@ -512,13 +464,21 @@ class ContinuumKernel final : public ElementKernel {
           p.E(c) += dtheta;
           p.B.row(c) += db;
         }
-        p.law.stress(NNRM, p.E, p.S);
+        update(in, q, trial, request, p, w.D[q]);
         p_sum += p.dV * (p.S(0) + p.S(1) + p.S(2)) / 3.0;
       }
       w.p_bar = p_sum / V;
     } else {
-      for (int q = 0; q < NIP; ++q) w.ip[q].law.stress(NNRM, w.ip[q].E, w.ip[q].S);
+      for (int q = 0; q < NIP; ++q) update(in, q, trial, request, w.ip[q], w.D[q]);
     }
+  }
+
+  /// The law at point q (shared point loop, solid_point.hpp).
+  void update(const ElementInput& in, int q, std::span<double> trial, PointRequest request, Ip& p,
+              typename PointLaw<NS>::MatD& D) const {
+    p.law.D = &D;
+    const PointTemperature t = point_temperature(in, _N[q], NN, _law.temperature_dependent());
+    update_point<NS>(_law, in, q, trial, t, p.E, p.S, p.law, request, &p.dS);
   }
 
   /// Geometric stiffness sum_q dV S* : d2E/du2 with S* = S (B-bar: S - p + p_bar on the normals).
@@ -547,8 +507,7 @@ class ContinuumKernel final : public ElementKernel {
   }
 
   ContinuumSetup _setup;
-  bool _const_elastic = true;
-  double _E0 = 0.0, _nu0 = 0.0;
+  SolidLawHandle _law;
   std::array<double, NIP> _w{};
   std::array<Eigen::Matrix<double, NN, 1>, NIP> _N{};
   std::array<MatG, NIP> _dN{};

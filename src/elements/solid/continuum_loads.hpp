@@ -5,7 +5,7 @@
 /// Not on the hot path: sizes are dynamic, scratch is small and on the stack.
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
-#include "elements/solid/continuum_law.hpp"
+#include "elements/material/solid_law.hpp"
 #include "fe/shape_functions.hpp"
 #include "model/material.hpp"
 

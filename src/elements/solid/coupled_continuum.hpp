@@ -64,6 +64,13 @@ class CoupledContinuumKernel final : public ElementKernel {
   }
 
   bool has_artificial_energy() const override { return _mech.has_artificial_energy(); }
+  /// The history is the mechanical kernel's (its solid law's, point by point).
+  int n_state() const override { return _mech.n_state(); }
+  void initialize(const ElementInput& in) const override {
+    Local l;
+    split(in, l);
+    _mech.initialize(l.in);
+  }
 
   std::string validate(const ElementInput& in) const override {
     Local l;

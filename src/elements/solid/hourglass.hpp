@@ -25,7 +25,7 @@
 ///             eta); CAX4R: u_r = r is the only constant-strain field of u_r, and u_r = 1, z, h
 ///             are penalised).
 /// Both are multiplied by the *SECTION CONTROLS displacement hourglass scaling factor and use the
-/// elastic constants at the element's mean temperature.
+/// elastic moduli of the element's solid law at its mean temperature (SolidLaw::elastic_moduli).
 #include "elements/solid/continuum_kernel.hpp"
 
 #include <Eigen/Dense>
@@ -156,8 +156,8 @@ struct HourglassGeometry {
   std::span<const Vec3> _X;
   double _thickness = 1.0;
 
-  static ElasticPoint elastic(double lambda, double mu) {
-    ElasticPoint e;
+  static IsotropicModuli elastic(double lambda, double mu) {
+    IsotropicModuli e;
     e.lambda = lambda;
     e.mu = mu;
     return e;
@@ -237,7 +237,7 @@ struct HourglassGeometry {
   }
 
   template <class MatBs, class MatKss, class MatKsm>
-  static void add_blocks(const ElasticPoint& law, double dV, const MatBs& Bs,
+  static void add_blocks(const IsotropicModuli& law, double dV, const MatBs& Bs,
                          const Eigen::Matrix<double, NS, NMA>& Bm, MatKss& Kss, MatKsm& Ksm,
                          Eigen::Matrix<double, NMA, NMA>& Kmm) {
     MatBs DBs;
@@ -257,7 +257,7 @@ struct HourglassGeometry {
     Eigen::Matrix<double, NSF, NMA> Ksm = Eigen::Matrix<double, NSF, NMA>::Zero(), dKsm = Ksm;
     Eigen::Matrix<double, NMA, NMA> Kmm = Eigen::Matrix<double, NMA, NMA>::Zero(), dKmm = Kmm;
     const auto rule = full_integration_rule(kShape);
-    const ElasticPoint law = elastic(lambda, mu), dlaw = elastic(dlambda, dmu);
+    const IsotropicModuli law = elastic(lambda, mu), dlaw = elastic(dlambda, dmu);
     for (int q = 0; q < NQ; ++q) {
       Point p;
       point(q, rule[q].xi.data(), p);

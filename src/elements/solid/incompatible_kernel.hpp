@@ -12,17 +12,20 @@
 ///
 /// The modes are treated as extra "nodes" with gradients grad~M_k and no shape function (the hoop
 /// strain of CAX4I comes from the nodes only). Small strain eps = sym H, NLGEOM
-/// E = sym H + 1/2 H^T H with F = I + H, S = C : (E - eps_th I), 2 x 2 (x 2) Gauss points, no
-/// B-bar. The modes are condensed inside the element: for the given nodal displacements the
-/// kernel solves r_alpha(u, alpha) = 0 by Newton from alpha = 0 (one step for small strain, a few
-/// under NLGEOM), so the element keeps no history, and returns r_u at that alpha with the
-/// condensed tangent K_uu - K_ua K_aa^-1 K_au, the exact derivative of r_u(u, alpha(u)).
+/// E = sym H + 1/2 H^T H with F = I + H, S = law(E) (the material's solid law through the shared
+/// point loop, solid_point.hpp), 2 x 2 (x 2) Gauss points, no B-bar. The modes are condensed
+/// inside the element: for the given nodal displacements the kernel solves r_alpha(u, alpha) = 0
+/// by Newton from alpha = 0 (one step for small strain, a few under NLGEOM), so the modes need no
+/// history (the law's history is the only one), and returns r_u at that alpha with the condensed
+/// tangent K_uu - K_ua K_aa^-1 K_au, the exact derivative of r_u(u, alpha(u)).
 #include "elements/element_kernel.hpp"
 #include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_kernel.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace gapfem {
 
@@ -47,7 +50,8 @@ class IncompatibleKernel final : public ElementKernel {
   using VecX = Eigen::Matrix<double, NX, 1>;
   using MatX = Eigen::Matrix<double, NX, NX>;
 
-  explicit IncompatibleKernel(ContinuumSetup setup) : _setup(std::move(setup)) {
+  explicit IncompatibleKernel(ContinuumSetup setup)
+      : _setup(std::move(setup)), _law(_setup.material, K) {
     const auto rule = full_integration_rule(Cell);
     for (int q = 0; q < NIP; ++q) {
       _w[q] = rule[q].weight;
@@ -75,6 +79,9 @@ class IncompatibleKernel final : public ElementKernel {
       return continuum_detail::kDofs2;
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
+  int n_state() const override { return NIP * _law.n_state(); }
+  void initialize(const ElementInput& in) const override { initialize_points(_law, NIP, in.state); }
+  const SolidLaw& law() const { return *_law; }
 
   std::string validate(const ElementInput& given) const override {
     std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
@@ -98,7 +105,7 @@ class IncompatibleKernel final : public ElementKernel {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     VecX x, r;
     MatX Kx;
-    condense(in, nlgeom, x, r, Kx);
+    condense(in, nlgeom, in.state, x, r, Kx);
     for (int i = 0; i < NU; ++i) out.residual[i] += r(i);
     if (!out.want_tangent || out.tangent.size() != static_cast<std::size_t>(NU * NU)) return;
     const Eigen::Matrix<double, NU, NU> Kc =
@@ -127,16 +134,18 @@ class IncompatibleKernel final : public ElementKernel {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     VecX x, r;
     MatX Kx;
-    condense(in, nlgeom, x, r, Kx);
+    std::vector<double> trial(static_cast<std::size_t>(n_state())); // history is not written here
+    condense(in, nlgeom, trial, x, r, Kx);
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<K>(NIP, sb, eb);
     double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       Point p;
-      point(in, q, nlgeom, x, p);
-      energy += p.g.dV * continuum_detail::energy_density(NNRM, p.S, p.E, p.law.eps_th);
+      point(in, q, nlgeom, x, trial, p, {.recovery = true});
+      energy += p.g.dV * p.law.energy;
       const VecS sig =
-          nlgeom ? continuum_detail::cauchy_stress<K>(p.S, p.E, p.F, p.F33, p.law) : p.S;
+          nlgeom ? continuum_detail::cauchy_stress<K>(p.S, p.F, p.F33, p.law.thickness_strain)
+                 : p.S;
       for (int c = 0; c < NS; ++c) {
         sb.values[q * NS + c] = sig(c);
         eb.values[q * NS + c] = p.E(c);
@@ -159,7 +168,8 @@ class IncompatibleKernel final : public ElementKernel {
     double F33 = 1.0;
     VecS E, S;
     MatB B;
-    ElasticPoint law;
+    PointLaw<NS> law;
+    typename PointLaw<NS>::MatD D; ///< the law's tangent when not isotropic
   };
 
   static constexpr auto comps() { return continuum_detail::voigt_pairs<K>(); }
@@ -195,21 +205,10 @@ class IncompatibleKernel final : public ElementKernel {
     return true;
   }
 
-  ElasticPoint point_law(const ElementInput& in, int q) const {
-    double T = 0.0, Ti = 0.0;
-    const bool thermal = !in.temperature.empty();
-    for (int a = 0; a < NN; ++a) {
-      if (thermal) T += _N[q](a) * in.temperature[a];
-      if (!in.initial_temperature.empty()) Ti += _N[q](a) * in.initial_temperature[a];
-    }
-    if (!thermal) T = Ti;
-    double E = 0.0, nu = 0.0;
-    _setup.material.elastic_at(T, E, nu);
-    return ElasticPoint::make(K, E, nu, thermal ? _setup.material.thermal_strain(T, Ti) : 0.0);
-  }
-
-  /// Strain, its derivative with respect to x = (u, alpha) and the stress at point q.
-  void point(const ElementInput& in, int q, bool nlgeom, const VecX& x, Point& p) const {
+  /// Strain, its derivative with respect to x = (u, alpha) and the stress at point q (the trial
+  /// history to `trial`).
+  void point(const ElementInput& in, int q, bool nlgeom, const VecX& x, std::span<double> trial,
+             Point& p, PointRequest request = {}) const {
     if (!geometry(in, q, p.g))
       throw ConvergenceFailure(fmt::format("element {}: degenerate geometry", in.label));
     Eigen::Matrix<double, NT, ND> U;
@@ -254,22 +253,21 @@ class IncompatibleKernel final : public ElementKernel {
           p.B(c, a * ND + i) =
               I == J ? p.F(i, I) * p.g.G(a, I) : p.F(i, I) * p.g.G(a, J) + p.F(i, J) * p.g.G(a, I);
     }
-    p.law = point_law(in, q);
-    p.law.stress(NNRM, p.E, p.S);
+    const PointTemperature t = point_temperature(in, _N[q], NN, _law.temperature_dependent());
+    p.law.D = &p.D;
+    update_point<NS>(_law, in, q, trial, t, p.E, p.S, p.law, request);
   }
 
   /// Residual and tangent in x = (u, alpha).
-  void assemble(const ElementInput& in, bool nlgeom, const VecX& x, VecX& r, MatX& Kx) const {
+  void assemble(const ElementInput& in, bool nlgeom, std::span<double> trial, const VecX& x,
+                VecX& r, MatX& Kx) const {
     r.setZero();
     Kx.setZero();
     constexpr auto C = comps();
-    MatB DB;
     for (int q = 0; q < NIP; ++q) {
       Point p;
-      point(in, q, nlgeom, x, p);
-      r.noalias() += p.g.dV * (p.B.transpose() * p.S);
-      p.law.apply(NNRM, p.B, DB);
-      Kx.noalias() += p.g.dV * p.B.transpose().lazyProduct(DB);
+      point(in, q, nlgeom, x, trial, p);
+      add_point<NS>(p.law, p.B, p.S, p.g.dV, r, &Kx);
       if (!nlgeom) continue;
       MatF Sm = MatF::Zero();
       double S33 = 0.0;
@@ -294,7 +292,8 @@ class IncompatibleKernel final : public ElementKernel {
 
   /// x = (u, alpha) with alpha solving r_alpha = 0 at the element's nodal displacements u, and
   /// the residual and tangent there.
-  void condense(const ElementInput& in, bool nlgeom, VecX& x, VecX& r, MatX& Kx) const {
+  void condense(const ElementInput& in, bool nlgeom, std::span<double> trial, VecX& x, VecX& r,
+                MatX& Kx) const {
     x.setZero();
     for (int i = 0; i < NU; ++i) x(i) = in.u[i];
     double size = 0.0;
@@ -302,7 +301,7 @@ class IncompatibleKernel final : public ElementKernel {
       for (int i = 0; i < 3; ++i) size = std::max(size, std::abs(in.X[a][i] - in.X[0][i]));
     double r0 = -1.0;
     for (int it = 0; it < 30; ++it) {
-      assemble(in, nlgeom, x, r, Kx);
+      assemble(in, nlgeom, trial, x, r, Kx);
       const double ra = r.template tail<NA>().template lpNorm<Eigen::Infinity>();
       const double ru = r.template head<NU>().template lpNorm<Eigen::Infinity>();
       if (r0 < 0.0) r0 = ra;
@@ -311,11 +310,11 @@ class IncompatibleKernel final : public ElementKernel {
           -Kx.template bottomRightCorner<NA, NA>().ldlt().solve(r.template tail<NA>());
       x.template tail<NA>() += da;
       if (!nlgeom) { // linear in alpha: one step is exact
-        assemble(in, nlgeom, x, r, Kx);
+        assemble(in, nlgeom, trial, x, r, Kx);
         return;
       }
       if (da.template lpNorm<Eigen::Infinity>() <= 1e-14 * size) {
-        assemble(in, nlgeom, x, r, Kx);
+        assemble(in, nlgeom, trial, x, r, Kx);
         return;
       }
     }
@@ -325,6 +324,7 @@ class IncompatibleKernel final : public ElementKernel {
   }
 
   ContinuumSetup _setup;
+  SolidLawHandle _law;
   std::array<double, NIP> _w{};
   std::array<Eigen::Matrix<double, NN, 1>, NIP> _N{};
   std::array<Eigen::Matrix<double, NN, ND>, NIP> _dN{};

@@ -8,10 +8,11 @@
 ///   W(u) = V psi(E(Hbar, hbar)) + 1/2 u^T K_hg u
 ///   Hbar = sum_a u_a (x) b_a,   hbar (CAX hoop) = sum_a c_a u_ar
 ///   small strain E = sym Hbar; NLGEOM E = 1/2 (Fbar^T Fbar - I), Fbar = I + Hbar (total
-///   Lagrangian); S = C : (E - eps_th I) at the element's mean temperature
+///   Lagrangian); S = law(E) at the element's mean temperature (the material's solid law through
+///   the shared point loop, solid_point.hpp; one point, one slot of history)
 ///   residual r = V Bbar^T S + K_hg u,  tangent V (Bbar^T D Bbar + geometric) + K_hg
-/// The hourglass forces are linear in u on the reference configuration (with the elastic
-/// constants at the current mean temperature); they vanish for every rigid motion, large
+/// The hourglass forces are linear in u on the reference configuration (with the law's elastic
+/// moduli at the current mean temperature); they vanish for every rigid motion, large
 /// rotations included, because K_hg is zero on every linear displacement field (3-D, plane).
 /// recover() reports S and E at the single point and the element's artificial (hourglass) energy
 /// 1/2 u^T K_hg u, summed into ALLAE.
@@ -22,6 +23,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace gapfem {
 
@@ -41,7 +44,8 @@ class ReducedKernel final : public ElementKernel {
   using MatK = Eigen::Matrix<double, NDOF, NDOF, Eigen::RowMajor>;
   using MatF = Eigen::Matrix<double, ND, ND>;
 
-  explicit ReducedKernel(ContinuumSetup setup) : _setup(std::move(setup)) {}
+  explicit ReducedKernel(ContinuumSetup setup)
+      : _setup(std::move(setup)), _law(_setup.material, K) {}
 
   ElementType type() const override { return Type; }
   std::span<const DofType> node_dofs(int) const override {
@@ -52,6 +56,9 @@ class ReducedKernel final : public ElementKernel {
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
   bool has_artificial_energy() const override { return true; }
+  int n_state() const override { return _law.n_state(); }
+  void initialize(const ElementInput& in) const override { initialize_points(_law, 1, in.state); }
+  const SolidLaw& law() const { return *_law; }
 
   std::string validate(const ElementInput& given) const override {
     std::array<Vec3, NN> xs{}; // the element at an extent near 1: no det J overflows or underflows
@@ -74,15 +81,16 @@ class ReducedKernel final : public ElementKernel {
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
     Work w;
-    compute(in, w);
+    compute(in, w, in.state);
     Eigen::Map<VecD> r(out.residual.data());
-    r.noalias() += w.g.V * (w.B.transpose() * w.S);
+    const bool want_K =
+        out.want_tangent && out.tangent.size() == static_cast<std::size_t>(NDOF * NDOF);
+    MatK Km;
+    if (want_K) Km.setZero();
+    add_point<NS>(w.law, w.B, w.S, w.g.V, r, want_K ? &Km : nullptr);
     r.noalias() += w.Khg * Eigen::Map<const VecD>(in.u.data());
-    if (!out.want_tangent || out.tangent.size() != static_cast<std::size_t>(NDOF * NDOF)) return;
+    if (!want_K) return;
     Eigen::Map<MatK> Kout(out.tangent.data());
-    MatB DB;
-    w.law.apply(NNRM, w.B, DB);
-    MatK Km = w.g.V * w.B.transpose().lazyProduct(DB);
     Km += w.Khg;
     if (in.ctx && in.ctx->nlgeom) add_geometric(w, Km);
     Kout += Km;
@@ -95,26 +103,14 @@ class ReducedKernel final : public ElementKernel {
                  in.temperature.size() == static_cast<std::size_t>(NN),
              "temperature_tangent: sizes");
     Work w;
-    compute(in, w);
-    const double T =
-        w.g.nbar.dot(Eigen::Map<const Eigen::Matrix<double, NN, 1>>(in.temperature.data()));
-    const double deth = _setup.material.thermal_strain_derivative(T);
-    double dlambda = 0.0, dmu = 0.0;
-    if (!const_elastic())
-      continuum_detail::elastic_derivatives(K, _setup.material, T, dlambda, dmu);
-    const ElasticPoint& law = w.law;
-    double tr = 0.0;
-    for (int c = 0; c < NNRM; ++c) tr += w.E(c) - law.eps_th;
-    VecS dS;
-    for (int c = 0; c < NNRM; ++c)
-      dS(c) = dlambda * tr + 2.0 * dmu * (w.E(c) - law.eps_th) -
-              deth * (law.lambda * NNRM + 2.0 * law.mu);
-    for (int c = NNRM; c < NS; ++c) dS(c) = dmu * w.E(c);
-    VecD col = w.g.V * (w.B.transpose() * dS);
-    if (dlambda != 0.0 || dmu != 0.0) {
+    compute(in, w, in.state, {.dstress_dT = true});
+    VecD col = w.g.V * (w.B.transpose() * w.dS);
+    IsotropicModuli dm;
+    _law->elastic_moduli(w.T, &dm);
+    if (dm.lambda != 0.0 || dm.mu != 0.0) {
       typename Geo::MatK Khg, dK;
-      w.g.stiffness(_setup.hourglass, _setup.hourglass_scale, law.lambda, law.mu, Khg, dlambda, dmu,
-                    &dK);
+      w.g.stiffness(_setup.hourglass, _setup.hourglass_scale, w.moduli.lambda, w.moduli.mu, Khg,
+                    dm.lambda, dm.mu, &dK);
       col.noalias() += dK * Eigen::Map<const VecD>(in.u.data());
     }
     for (int i = 0; i < NDOF; ++i)
@@ -137,12 +133,14 @@ class ReducedKernel final : public ElementKernel {
   }
   void recover(const ElementInput& in, ElementRecovery& out) const override {
     Work w;
-    compute(in, w);
+    std::vector<double> trial(static_cast<std::size_t>(n_state())); // history is not written here
+    compute(in, w, trial, {.recovery = true});
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<K>(1, sb, eb);
-    const VecS sig = in.ctx && in.ctx->nlgeom
-                         ? continuum_detail::cauchy_stress<K>(w.S, w.E, w.F, w.F33, w.law)
-                         : w.S;
+    const VecS sig =
+        in.ctx && in.ctx->nlgeom
+            ? continuum_detail::cauchy_stress<K>(w.S, w.F, w.F33, w.law.thickness_strain)
+            : w.S;
     for (int c = 0; c < NS; ++c) {
       sb.values[c] = sig(c);
       eb.values[c] = w.E(c);
@@ -151,7 +149,7 @@ class ReducedKernel final : public ElementKernel {
     out.blocks.push_back(std::move(eb));
     const Eigen::Map<const VecD> u(in.u.data());
     out.artificial_energy = 0.5 * u.dot(w.Khg * u);
-    out.strain_energy = w.g.V * continuum_detail::energy_density(NNRM, w.S, w.E, w.law.eps_th);
+    out.strain_energy = w.g.V * w.law.energy;
   }
 
  private:
@@ -160,14 +158,14 @@ class ReducedKernel final : public ElementKernel {
     MatF F = MatF::Identity();
     double F33 = 1.0;
     VecS E, S;
+    VecS dS; ///< dS/dT (temperature_tangent only)
     MatB B;
-    ElasticPoint law;
+    PointLaw<NS> law;
+    typename PointLaw<NS>::MatD D; ///< the law's tangent when not isotropic
+    double T = 0.0;                ///< the element's mean temperature
+    IsotropicModuli moduli;        ///< the law's elastic moduli at T (hourglass stiffness)
     typename Geo::MatK Khg;
   };
-
-  bool const_elastic() const {
-    return _setup.material.elastic.n_rows() <= 1 || _setup.material.elastic.keys.size() <= 1;
-  }
 
   bool radius_at_fault(const ElementInput& in, int point) const {
     const auto rule = full_integration_rule(kShape);
@@ -178,21 +176,10 @@ class ReducedKernel final : public ElementKernel {
     return !(R > 0.0);
   }
 
-  /// The law at the element's mean temperature.
-  ElasticPoint mean_law(const ElementInput& in, const Geo& g) const {
-    const bool thermal = !in.temperature.empty();
-    double T = 0.0, Ti = 0.0;
-    for (int a = 0; a < NN; ++a) {
-      if (thermal) T += g.nbar(a) * in.temperature[a];
-      if (!in.initial_temperature.empty()) Ti += g.nbar(a) * in.initial_temperature[a];
-    }
-    if (!thermal) T = Ti;
-    double E = 0.0, nu = 0.0;
-    _setup.material.elastic_at(T, E, nu);
-    return ElasticPoint::make(K, E, nu, thermal ? _setup.material.thermal_strain(T, Ti) : 0.0);
-  }
-
-  void compute(const ElementInput& in, Work& w) const {
+  /// The uniform strain, the law's stress at the mean temperature (trial history to `trial`) and
+  /// the hourglass stiffness.
+  void compute(const ElementInput& in, Work& w, std::span<double> trial,
+               PointRequest request = {}) const {
     int bad = 0;
     if (!w.g.build(in.X, _setup.thickness, bad))
       throw ConvergenceFailure(fmt::format("element {}: degenerate geometry", in.label));
@@ -236,9 +223,12 @@ class ReducedKernel final : public ElementKernel {
           w.B(c, a * ND + i) =
               I == J ? w.F(i, I) * w.g.b(a, I) : w.F(i, I) * w.g.b(a, J) + w.F(i, J) * w.g.b(a, I);
     }
-    w.law = mean_law(in, w.g);
-    w.law.stress(NNRM, w.E, w.S);
-    w.g.stiffness(_setup.hourglass, _setup.hourglass_scale, w.law.lambda, w.law.mu, w.Khg);
+    const PointTemperature t = point_temperature(in, w.g.nbar, NN, true);
+    w.law.D = &w.D;
+    update_point<NS>(_law, in, 0, trial, t, w.E, w.S, w.law, request, &w.dS);
+    w.T = t.T;
+    w.moduli = _law->elastic_moduli(t.T);
+    w.g.stiffness(_setup.hourglass, _setup.hourglass_scale, w.moduli.lambda, w.moduli.mu, w.Khg);
   }
 
   /// V S : d2E/du2 of the uniform strain.
@@ -263,6 +253,7 @@ class ReducedKernel final : public ElementKernel {
   }
 
   ContinuumSetup _setup;
+  SolidLawHandle _law;
 };
 
 } // namespace gapfem
