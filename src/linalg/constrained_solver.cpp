@@ -1,6 +1,8 @@
 #include "linalg/constrained_solver.hpp"
 
+#include "common/error.hpp"
 #include "linalg/kkt_solver.hpp"
+#include "linalg/norms.hpp"
 
 #include <deque>
 #include <fmt/format.h>
@@ -23,6 +25,37 @@ std::deque<SolverBackend>& registry() { // a deque: found entries stay where the
 std::mutex g_registry_mutex;
 
 } // namespace
+
+std::unique_ptr<ConstrainedFactor>
+ConstrainedSolver::factorize(const CsrMatrix&, const ConstraintBlock&, bool, RunStatistics*) {
+  throw AnalysisError(fmt::format("the solver '{}' cannot factorise a system for many "
+                                  "right-hand sides; use --solver cholmod",
+                                  name()));
+}
+
+KktStatistics ConstrainedSolver::solve(CsrMatrix& K, std::span<const double> b,
+                                       const ConstraintBlock& C, std::span<double> du,
+                                       std::span<double> dl, bool symmetric,
+                                       const KktOptions& options, RunStatistics* stats) {
+  KktStatistics out;
+  if (!options.matrix_current) { // no kept factor: only the current matrix serves
+    out.needs_matrix = true;
+    return out;
+  }
+  const auto factor = factorize(K, C, symmetric, stats);
+  {
+    ScopedTimer timer(stats, TimeCategory::Solve);
+    if (stats) ++stats->linear_solves;
+    factor->solve(b, C.g, du, dl);
+  }
+  out.solves = 1;
+  // what the solve leaves of the rows: C du - E dl + g
+  std::vector<double> row(static_cast<std::size_t>(C.n_rows()));
+  C.multiply(du, row);
+  for (int r = 0; r < C.n_rows(); ++r) row[r] += C.g[r] - C.row_compliance(r) * dl[r];
+  out.constraint_residual = norm_inf(row);
+  return out;
+}
 
 void register_solver_backend(SolverBackend backend) {
   const std::lock_guard lock(g_registry_mutex);

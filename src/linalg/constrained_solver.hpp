@@ -69,28 +69,74 @@ struct NearNullSpace {
   std::vector<LocalIndex> padded;
 };
 
+/// One factorisation of a constrained system: the system above with K and the rows of C (their
+/// coefficients, columns and compliances) fixed, solved for as many right-hand sides (b, g) as the
+/// caller has ("factorise once, solve many": a shift-invert eigensolver, the reduction
+/// K_II^-1 K_IR of a substructure, the recovery of its internal DOFs). Made by
+/// ConstrainedSolver::factorize(); independent of the solver's own kept factor (Newton's) and of
+/// every other factor, so several may live at once. It must not outlive its solver.
+class ConstrainedFactor {
+ public:
+  virtual ~ConstrainedFactor() = default;
+  /// Solve for k right-hand sides at once, column-major: b and x are n x k, g and l are m x k (n
+  /// equations, m rows of the factored system; g and l empty when m = 0). The rows' values are g,
+  /// never the C.g the factor was made with. b, g may not alias x, l.
+  virtual void solve(std::span<const double> b, std::span<const double> g, std::span<double> x,
+                     std::span<double> l, int k = 1) = 0;
+};
+
+/// The backend interface. What a new backend must implement at minimum: name(), analyze() and
+/// factorize() with its factor's solve(); everything else has a default. Such a backend works
+/// everywhere: Newton's solve() then factorises every system afresh (its factor reuse is "never",
+/// whatever KktOptions::reuse says, and matrix_optional() is false). (factorize() is not pure
+/// only so that a Newton-only test double, overriding solve() alone, needs no factor; the
+/// default throws.)
+///
+/// Where the factor-reuse policy lives: inside a backend's own solve() override, because it
+/// works on the factor's insides. KktOptions (reuse, force_fresh, max_drift, matrix_current) says
+/// what Newton allows; KktSolver decides per system whether its kept factor serves (kkt_reuse.cpp:
+/// identical system, drift and the measured factor/solve/update times), corrects it for changed
+/// rows (Woodbury, the dense multiplier matrix) and solves a stale one as modified Newton;
+/// PetscKktSolver keeps MUMPS's factor for the identical system only. factorize() never reuses.
 class ConstrainedSolver {
  public:
   virtual ~ConstrainedSolver() = default;
+
+  // ---- the minimum
   virtual std::string_view name() const = 0;
-  /// Symbolic analysis for a step's pattern (once per step).
+  /// Symbolic analysis for a pattern (once per step, or before the factorisations of another
+  /// matrix: a substructure's K_II). Drops any kept factor.
   virtual void analyze(std::shared_ptr<const SparsityPattern> pattern) = 0;
+  /// Factorise (K, C) once, K of the analysed pattern and unchanged (a row's DOF block must lie in
+  /// the pattern: the backend may augment K by C^T R C), for solves with many right-hand sides.
+  /// `symmetric`: K is (a backend may then use one triangle). Throws SingularSystem when the
+  /// system is singular; the factorisation's time and count go to `stats` (when given).
+  virtual std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock& C,
+                                                       bool symmetric,
+                                                       RunStatistics* stats = nullptr);
+
+  // ---- optional, with defaults
+  /// The bytes a factor of the analysed pattern will hold (the symbolic analysis's prediction;
+  /// 0: the backend cannot tell). `gapfem check` reports it; it never stops anything.
+  virtual std::size_t factor_bytes_estimate() { return 0; }
   /// True when the backend uses a near null space (an AMG preconditioner): the analysis then
   /// gives it one per step, after analyze().
   virtual bool wants_near_null_space() const { return false; }
   virtual void set_near_null_space(NearNullSpace modes) { (void)modes; }
-  /// Drop any factor: the next solve starts afresh, exactly as a new solver would (restart points).
-  virtual void forget_factor() = 0;
+  /// Drop any kept factor: the next solve starts afresh, exactly as a new solver would (restart
+  /// points). The default keeps none.
+  virtual void forget_factor() {}
   /// True when the next solve can most likely do without the tangent's values (a kept factor of
   /// a stiffness that has barely drifted): Newton then assembles the residual alone and solves
   /// with KktOptions::matrix_current = false.
   virtual bool matrix_optional() const { return false; }
-  /// Solve the system above; K may be modified in place. du has one entry per equation, dl one
-  /// per constraint row. Throws SingularSystem when K (with the constraints) is singular, and
-  /// AnalysisError when the factor cannot fit in memory.
+  /// Newton's system; K may be modified in place. du has one entry per equation, dl one per
+  /// constraint row. Throws SingularSystem when K (with the constraints) is singular, and
+  /// AnalysisError when the factor cannot fit in memory. The default factorises (K, C) with
+  /// factorize() and solves once; without the current matrix it sets needs_matrix.
   virtual KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                               std::span<double> du, std::span<double> dl, bool symmetric,
-                              const KktOptions& options, RunStatistics* stats = nullptr) = 0;
+                              const KktOptions& options, RunStatistics* stats = nullptr);
 };
 
 /// How the serial backend (KktSolver) works, never what it solves (docs/performance.md). Set by the

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "common/memory.hpp"
+#include "linalg/kkt_factor.hpp"
 #include "linalg/norms.hpp"
 
 #include <algorithm>
@@ -71,7 +72,7 @@ void KktSolver::forget_factor() {
 
 void KktSolver::analyze(std::shared_ptr<const SparsityPattern> pattern) {
   _pattern = std::move(pattern);
-  _cholmod_ready = _umfpack_ready = false;
+  _cholmod_ready = _umfpack_ready = _memory_checked = false;
   _active = nullptr;
   _factored.clear();
   _frows.clear();
@@ -93,6 +94,23 @@ void KktSolver::check_memory(std::size_t factor_bytes) const {
       _pattern->n, memory_size_text(need), memory_size_text(static_cast<double>(*available))));
 }
 
+std::unique_ptr<ConstrainedFactor> KktSolver::factorize(const CsrMatrix& K,
+                                                        const ConstraintBlock& C, bool symmetric,
+                                                        RunStatistics* stats) {
+  FE_CHECK(_pattern && K.n() == _pattern->n, "KKT solver not analysed for this pattern");
+  return std::make_unique<KktFactor>(K, C, symmetric, KktOptions{}.augmentation, stats);
+}
+
+std::size_t KktSolver::factor_bytes_estimate() {
+  FE_CHECK(_pattern, "KKT solver not analysed");
+  if (!_cholmod) _cholmod = make_cholmod_solver();
+  if (!_cholmod_ready) {
+    _cholmod->analyze(*_pattern);
+    _cholmod_ready = true;
+  }
+  return _cholmod->factor_bytes();
+}
+
 void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* stats) {
   ScopedTimer timer(stats, TimeCategory::Factorization);
   Stopwatch watch;
@@ -102,7 +120,10 @@ void KktSolver::factorize(const CsrMatrix& M, bool symmetric, RunStatistics* sta
     if (!_cholmod_ready) {
       _cholmod->analyze(*_pattern);
       _cholmod_ready = true;
+    }
+    if (!_memory_checked) {
       check_memory(_cholmod->factor_bytes());
+      _memory_checked = true;
     }
     try {
       _cholmod->factorize(M);
@@ -216,18 +237,7 @@ void KktSolver::fresh_factor(CsrMatrix& K, const ConstraintBlock& C, std::span<c
   for (LocalIndex i = 0; i < K.n(); ++i)
     _factored_diag[i] = std::max(std::abs(K.diagonal(i)), 1e-12 * (scale > 0 ? scale : 1.0));
   // M = K + C^T R C (entries lie inside each row's element block, hence inside the pattern).
-  std::vector<LocalIndex> eqs;
-  std::vector<double> block;
-  for (int r = 0; r < C.n_rows(); ++r) {
-    const LocalIndex b0 = C.row_ptr[r], b1 = C.row_ptr[r + 1];
-    const auto len = static_cast<std::size_t>(b1 - b0);
-    eqs.assign(C.col.begin() + b0, C.col.begin() + b1);
-    block.resize(len * len);
-    for (std::size_t i = 0; i < len; ++i)
-      for (std::size_t j = 0; j < len; ++j)
-        block[i * len + j] = R[r] * C.val[b0 + i] * C.val[b0 + j];
-    K.add_block(eqs, eqs, block);
-  }
+  add_row_springs(K, C, R);
   factorize(K, symmetric, stats);
   _factored = std::move(raw);
   _mcols.reset(_active == _cholmod.get() ? K.n() : 0);
@@ -272,31 +282,157 @@ void KktSolver::multipliers(const ConstraintBlock& C, std::span<const int> p_of,
     if (p_of[r] >= 0) dl[r] += _fR[p_of[r]] * (cdu[r] + gg[r]);
 }
 
+void KktSolver::row_weights(const CsrMatrix& K, const ConstraintBlock& C, const KktOptions& opt,
+                            System& sys) const {
+  // Augmentation weights from the stiffness at each row's DOFs (before augmenting); without the
+  // current matrix, from the factored one's diagonal (which has drifted little).
+  if (opt.matrix_current)
+    augmentation_weights(K, C, opt.augmentation, sys.R, sys.ks);
+  else
+    weights_from_diagonal(
+        K.n(), [&](LocalIndex i) { return _factored.empty() ? 1.0 : _factored_diag[i]; }, C,
+        opt.augmentation, sys.R, sys.ks);
+}
+
+bool KktSolver::use_dense(const System& sys, bool reused, const KktOptions& opt) const {
+  // A kept symmetric factor serves the changed rows through the dense multiplier matrix of
+  // its own rows, new rows and anti-rows (one forward and one backward solve per step), or,
+  // where that cannot be used, is made exact for the current rows by updating and downdating
+  // it (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
+  // A fresh factor that will be kept (reuse is allowed and a factorisation is not too cheap
+  // to keep) makes its columns at once: the next system needs them anyway.
+  const ConstraintBlock& C = *sys.C;
+  const int m = C.n_rows();
+  const bool kept =
+      reused || (opt.reuse == FactorReuse::Always ||
+                 (opt.reuse == FactorReuse::Auto && _t_factor >= kMinReusedFactorSeconds));
+  return _dense && !_dense_failed && kept && m > 0 && _active == _cholmod.get() &&
+         _cholmod->has_split_solves() &&
+         dense_pays(m + static_cast<int>(sys.gone.size()), C.has_columns());
+}
+
+void KktSolver::prepare_rows(System& sys, const KktOptions& opt, bool stale,
+                             bool unsymmetric) const {
+  const ConstraintBlock& C = *sys.C;
+  const int m = C.n_rows();
+  // A compliant row in the factor whose column D differs from its row C (friction that depends
+  // on a penalty gap's force): in the unknown w = (1 - R_F E) dl its column is
+  // C^T + (D - C^T) / (1 - R_F E), which keeps K du + D dl = b exact (see solve's derivation in
+  // docs/theory/gap_elements.md).
+  sys.Cs = &C;
+  if (C.has_columns())
+    for (int r = 0; r < m; ++r) {
+      const double E = C.row_compliance(r);
+      if (sys.p_of[r] < 0 || E == 0.0) continue;
+      if (sys.Cs == &C) {
+        sys.scaled = C;
+        sys.Cs = &sys.scaled;
+      }
+      const double f = 1.0 / (1.0 - _fR[sys.p_of[r]] * E);
+      for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k)
+        sys.scaled.dval[k] = C.val[k] + (C.dval[k] - C.val[k]) * f;
+    }
+  // Extended rows: the current rows, then anti-rows cancelling the springs of rows gone.
+  sys.Ch = sys.Cs;
+  if (!sys.gone.empty()) {
+    sys.ext = *sys.Cs;
+    for (int f : sys.gone) {
+      const LocalIndex b0 = _frows.row_ptr[f], b1 = _frows.row_ptr[f + 1];
+      sys.ext.add_row({_frows.col.data() + b0, static_cast<std::size_t>(b1 - b0)},
+                      {_frows.val.data() + b0, static_cast<std::size_t>(b1 - b0)}, 0.0, -1);
+    }
+    sys.Ch = &sys.ext;
+  }
+  const int mt = sys.Ch->n_rows();
+  sys.d.assign(static_cast<std::size_t>(mt), 0.0);
+  sys.p.assign(static_cast<std::size_t>(mt), 0.0);
+  // Rows in the factor (spring R_F) carry w = (1 - R_F E) dl: their Schur block is
+  // C M^-1 C^T + E / (1 - R_F E); new rows carry w = dl with C M^-1 C^T + E. The preconditioner
+  // is the inverse of the block's estimate (C M^-1 C^T ~ 1/R_F for rows in the factor).
+  for (int r = 0; r < m; ++r) {
+    const double E = C.row_compliance(r);
+    if (sys.p_of[r] >= 0) {
+      const double Rf = _fR[sys.p_of[r]];
+      sys.d[r] = -E / (1.0 - Rf * E);
+      sys.p[r] = 1.0 / (1.0 / (Rf + _fks[sys.p_of[r]]) - sys.d[r]);
+    } else {
+      sys.d[r] = -E;
+      sys.p[r] = 1.0 / (1.0 / sys.ks[r] + E);
+    }
+  }
+  for (std::size_t k = 0; k < sys.gone.size(); ++k) {
+    const double Rf = _fR[sys.gone[k]];
+    sys.d[m + k] = 1.0 / Rf;
+    sys.p[m + k] = -opt.augmentation * Rf; // the anti-row block is ~ -1/(augmentation R)
+  }
+  sys.cg = !unsymmetric && !sys.Ch->has_columns() && sys.gone.empty();
+  sys.max_iterations = opt.max_iterations;
+  if (stale && opt.reuse == FactorReuse::Auto)
+    sys.max_iterations = std::min(
+        sys.max_iterations, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
+}
+
+KktSolver::SchurResult KktSolver::solve_step(const System& sys, std::span<const double> bb,
+                                             std::span<const double> gg, std::span<double> x_u,
+                                             std::span<double> x_l, const KktOptions& opt,
+                                             RunStatistics* stats) {
+  const ConstraintBlock& C = *sys.C;
+  const LocalIndex n = _pattern->n;
+  const int m = C.n_rows(), mt = sys.Ch->n_rows();
+  if (sys.dense) {
+    if (dense_step(C, *sys.Cs, sys.p_of, sys.gone, sys.d, bb, gg, x_u, x_l, stats)) {
+      SchurResult exact;
+      exact.residual = _dense_residual;
+      return exact;
+    }
+    _dense_failed = true;
+  }
+  // y = M^-1 b1
+  const std::vector<double> b1 = spring_rhs(C, sys.p_of, bb, gg);
+  std::vector<double> y(static_cast<std::size_t>(n));
+  back_solve(b1, y, stats);
+  SchurResult sr;
+  if (mt == 0) {
+    std::copy(y.begin(), y.end(), x_u.begin());
+    return sr;
+  }
+  // Schur system; its residual is the predicted constraint value C du + g.
+  std::vector<double> rhs(static_cast<std::size_t>(mt));
+  sys.Ch->multiply(y, rhs);
+  for (int r = 0; r < m; ++r) rhs[r] += gg[r];
+  // Per-row tolerances. An exact row's residual is a length: the constraint tolerance. A
+  // compliant row's residual r means a force error r / E, large for a stiff penalty: it is
+  // solved until that error is 1e-13 of the largest force of bb (what a direct solve of the
+  // penalty matrix would give), or to round-off.
+  const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
+  std::vector<double> tol_r(static_cast<std::size_t>(mt), tol);
+  const double force_scale = norm_inf(bb), floor = 1e-15 * norm_inf(rhs);
+  for (int r = 0; r < m; ++r)
+    if (const double E = C.row_compliance(r); E > 0)
+      tol_r[r] = std::min(tol, std::max(1e-8 * force_scale * E, floor));
+  std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
+  sr = schur(*sys.Ch, sys.d, sys.p, rhs, w, x, sys.cg, sys.max_iterations, tol_r, stats);
+  for (LocalIndex i = 0; i < n; ++i) x_u[i] = y[i] - x[i];
+  multipliers(C, sys.p_of, w, x_u, gg, x_l);
+  return sr;
+}
+
 KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                                std::span<double> du, std::span<double> dl, bool symmetric,
                                const KktOptions& opt, RunStatistics* stats) {
   FE_CHECK(_pattern && K.n() == _pattern->n, "KKT solver not analysed for this pattern");
   KktStatistics out;
   _solves = 0;
-  const LocalIndex n = K.n();
   const int m = C.n_rows();
   if (opt.matrix_current) _max_drift = opt.max_drift;
   _reuse = opt.reuse;
-
-  // Augmentation weights from the stiffness at each row's DOFs (before augmenting); without the
-  // current matrix, from the factored one's diagonal (which has drifted little).
-  std::vector<double> R, ks;
-  if (opt.matrix_current)
-    augmentation_weights(K, C, opt.augmentation, R, ks);
-  else
-    weights_from_diagonal(
-        n, [&](LocalIndex i) { return _factored.empty() ? 1.0 : _factored_diag[i]; }, C,
-        opt.augmentation, R, ks);
+  System sys;
+  sys.C = &C;
+  row_weights(K, C, opt, sys);
 
   // Compare with what the current factor is of: rows kept (P), new rows (N), rows gone (O).
-  std::vector<int> p_of(static_cast<std::size_t>(m), -1); // row of _frows, for P rows
-  std::vector<int> gone;                                  // rows of _frows no longer present
-  const Plan plan = compare(K, C, symmetric, opt, p_of, gone);
+  sys.p_of.assign(static_cast<std::size_t>(m), -1); // row of _frows, for P rows
+  const Plan plan = compare(K, C, symmetric, opt, sys.p_of, sys.gone);
   out.changed_rows = plan.changes;
   bool exact_same = plan.exact_same, stale = plan.stale;
   // without the current matrix only the kept factor can be used
@@ -309,131 +445,23 @@ KktStatistics KktSolver::solve(CsrMatrix& K, std::span<const double> b, const Co
 
   for (;;) {
     if (!exact_same && !stale) {
-      fresh_factor(K, C, R, ks, symmetric, stats);
-      for (int r = 0; r < m; ++r) p_of[r] = r;
-      gone.clear();
+      fresh_factor(K, C, sys.R, sys.ks, symmetric, stats);
+      for (int r = 0; r < m; ++r) sys.p_of[r] = r;
+      sys.gone.clear();
     }
     out.reused_factor = exact_same || stale;
     out.stale_factor = stale;
     out.used_unsymmetric = _active != _cholmod.get();
-
-    // A kept symmetric factor serves the changed rows through the dense multiplier matrix of
-    // its own rows, new rows and anti-rows (one forward and one backward solve per step), or,
-    // where that cannot be used, is made exact for the current rows by updating and downdating
-    // it (no anti-rows, no new rows: the multiplier iteration is the one of a fresh factor)
-    // A fresh factor that will be kept (reuse is allowed and a factorisation is not too cheap
-    // to keep) makes its columns at once: the next system needs them anyway.
-    const bool kept = stale || exact_same ||
-                      (opt.reuse == FactorReuse::Always ||
-                       (opt.reuse == FactorReuse::Auto && _t_factor >= kMinReusedFactorSeconds));
-    const bool dense = _dense && !_dense_failed && kept && m > 0 && _active == _cholmod.get() &&
-                       _cholmod->has_split_solves() &&
-                       dense_pays(m + static_cast<int>(gone.size()), C.has_columns());
-    if (stale && !dense && _modify && _active == _cholmod.get() &&
-        (!gone.empty() || std::find(p_of.begin(), p_of.end(), -1) != p_of.end()) &&
-        !modify_factor(C, R, ks, p_of, gone, stats)) {
+    sys.dense = use_dense(sys, stale || exact_same, opt);
+    if (stale && !sys.dense && _modify && _active == _cholmod.get() &&
+        (!sys.gone.empty() || std::find(sys.p_of.begin(), sys.p_of.end(), -1) != sys.p_of.end()) &&
+        !modify_factor(C, sys.R, sys.ks, sys.p_of, sys.gone, stats)) {
       if (!opt.matrix_current) return need_matrix();
       stale = false;
       continue;
     }
-    // A compliant row in the factor whose column D differs from its row C (friction that depends
-    // on a penalty gap's force): in the unknown w = (1 - R_F E) dl its column is
-    // C^T + (D - C^T) / (1 - R_F E), which keeps K du + D dl = b exact (see solve's derivation in
-    // docs/theory/gap_elements.md).
-    const ConstraintBlock* Cs = &C;
-    ConstraintBlock scaled;
-    if (C.has_columns())
-      for (int r = 0; r < m; ++r) {
-        const double E = C.row_compliance(r);
-        if (p_of[r] < 0 || E == 0.0) continue;
-        if (Cs == &C) {
-          scaled = C;
-          Cs = &scaled;
-        }
-        const double f = 1.0 / (1.0 - _fR[p_of[r]] * E);
-        for (LocalIndex k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k)
-          scaled.dval[k] = C.val[k] + (C.dval[k] - C.val[k]) * f;
-      }
-    // Extended rows: the current rows, then anti-rows cancelling the springs of rows gone.
-    const ConstraintBlock* Ch = Cs;
-    ConstraintBlock ext;
-    if (!gone.empty()) {
-      ext = *Cs;
-      for (int f : gone) {
-        const LocalIndex b0 = _frows.row_ptr[f], b1 = _frows.row_ptr[f + 1];
-        ext.add_row({_frows.col.data() + b0, static_cast<std::size_t>(b1 - b0)},
-                    {_frows.val.data() + b0, static_cast<std::size_t>(b1 - b0)}, 0.0, -1);
-      }
-      Ch = &ext;
-    }
-    const int mt = Ch->n_rows();
-    std::vector<double> d(static_cast<std::size_t>(mt), 0.0), p(static_cast<std::size_t>(mt));
-    // Rows in the factor (spring R_F) carry w = (1 - R_F E) dl: their Schur block is
-    // C M^-1 C^T + E / (1 - R_F E); new rows carry w = dl with C M^-1 C^T + E. The preconditioner
-    // is the inverse of the block's estimate (C M^-1 C^T ~ 1/R_F for rows in the factor).
-    for (int r = 0; r < m; ++r) {
-      const double E = C.row_compliance(r);
-      if (p_of[r] >= 0) {
-        const double Rf = _fR[p_of[r]];
-        d[r] = -E / (1.0 - Rf * E);
-        p[r] = 1.0 / (1.0 / (Rf + _fks[p_of[r]]) - d[r]);
-      } else {
-        d[r] = -E;
-        p[r] = 1.0 / (1.0 / ks[r] + E);
-      }
-    }
-    for (std::size_t k = 0; k < gone.size(); ++k) {
-      const double Rf = _fR[gone[k]];
-      d[m + k] = 1.0 / Rf;
-      p[m + k] = -opt.augmentation * Rf; // the anti-row block is ~ -1/(augmentation R)
-    }
-
-    const bool cg = !out.used_unsymmetric && !Ch->has_columns() && gone.empty();
-    int max_it = opt.max_iterations;
-    if (stale && opt.reuse == FactorReuse::Auto)
-      max_it =
-          std::min(max_it, std::max(20, static_cast<int>(_t_factor / std::max(_t_solve, 1e-9))));
-    // One solve of the system for the right-hand side (bb, -gg) with this factor.
-    auto step = [&](std::span<const double> bb, std::span<const double> gg, std::span<double> x_u,
-                    std::span<double> x_l) {
-      if (dense) {
-        if (dense_step(C, *Cs, p_of, gone, d, bb, gg, x_u, x_l, stats)) {
-          SchurResult exact;
-          exact.residual = _dense_residual;
-          return exact;
-        }
-        _dense_failed = true;
-      }
-      // y = M^-1 b1
-      const std::vector<double> b1 = spring_rhs(C, p_of, bb, gg);
-      std::vector<double> y(static_cast<std::size_t>(n));
-      back_solve(b1, y, stats);
-      SchurResult sr;
-      if (mt == 0) {
-        std::copy(y.begin(), y.end(), x_u.begin());
-        return sr;
-      }
-      // Schur system; its residual is the predicted constraint value C du + g.
-      std::vector<double> rhs(static_cast<std::size_t>(mt));
-      Ch->multiply(y, rhs);
-      for (int r = 0; r < m; ++r) rhs[r] += gg[r];
-      // Per-row tolerances. An exact row's residual is a length: the constraint tolerance. A
-      // compliant row's residual r means a force error r / E, large for a stiff penalty: it is
-      // solved until that error is 1e-13 of the largest force of bb (what a direct solve of the
-      // penalty matrix would give), or to round-off.
-      const double tol = std::max(opt.constraint_tolerance, 1e-14 * norm_inf(rhs));
-      std::vector<double> tol_r(static_cast<std::size_t>(mt), tol);
-      const double force_scale = norm_inf(bb), floor = 1e-15 * norm_inf(rhs);
-      for (int r = 0; r < m; ++r)
-        if (const double E = C.row_compliance(r); E > 0)
-          tol_r[r] = std::min(tol, std::max(1e-8 * force_scale * E, floor));
-      std::vector<double> w(static_cast<std::size_t>(mt), 0.0), x(static_cast<std::size_t>(n));
-      sr = schur(*Ch, d, p, rhs, w, x, cg, max_it, tol_r, stats);
-      for (LocalIndex i = 0; i < n; ++i) x_u[i] = y[i] - x[i];
-      multipliers(C, p_of, w, x_u, gg, x_l);
-      return sr;
-    };
-    const SchurResult sr = step(b, C.g, du, dl);
+    prepare_rows(sys, opt, stale, out.used_unsymmetric);
+    const SchurResult sr = solve_step(sys, b, C.g, du, dl, opt, stats);
     out.schur_iterations += sr.iterations;
     if (stale && sr.ratio > 1.0) {
       log::debug("stale factor: multiplier iteration stalled ({} iterations, residual {:.3e}); "

@@ -50,6 +50,14 @@ class KktSolver final : public ConstrainedSolver {
   /// the iteration before, stays within the reuse limit, and reusing the factor paid with as
   /// many changed rows as the last system had.
   bool matrix_optional() const override;
+  /// A factor of its own for many right-hand sides (KktFactor, kkt_factor.hpp), with the
+  /// augmentation of KktOptions's default; the Newton state (the kept factor) is untouched.
+  std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock& C,
+                                               bool symmetric,
+                                               RunStatistics* stats = nullptr) override;
+  /// CHOLMOD's symbolic estimate for the analysed pattern (the analysis is the one the next
+  /// factorisation uses; the memory check stays with that factorisation).
+  std::size_t factor_bytes_estimate() override;
   /// Solve; K may be modified in place (augmented). du has n entries, dl one per constraint row.
   /// Throws SingularSystem when M is singular (a rigid-body mode).
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
@@ -68,6 +76,31 @@ class KktSolver final : public ConstrainedSolver {
     bool stale = false;      ///< reuse it (modified Newton)
     int changes = 0;         ///< constraint rows that differ from the factored ones
   };
+  /// One system as the kept factor sees it, built by solve()'s stages.
+  struct System {
+    const ConstraintBlock* C = nullptr;  ///< the rows
+    const ConstraintBlock* Cs = nullptr; ///< C, force columns scaled for the factor's springs
+    const ConstraintBlock* Ch = nullptr; ///< Cs and the anti-rows of the rows gone
+    ConstraintBlock scaled, ext;         ///< Cs's and Ch's storage where they differ from C
+    std::vector<int> p_of;               ///< row of _frows each row repeats (-1: new)
+    std::vector<int> gone;               ///< rows of _frows no longer present
+    std::vector<double> R, ks;           ///< C's augmentation weights, stiffness along each row
+    std::vector<double> d, p;            ///< Ch's Schur diagonal and preconditioner
+    bool dense = false;                  ///< the dense multiplier path serves it
+    bool cg = true;                      ///< the multiplier system is symmetric (CG, not GMRES)
+    int max_iterations = 0;              ///< of the multiplier iteration
+  };
+  /// solve()'s stages: the rows' weights (from K or, without it, the factored diagonal); whether
+  /// the dense multiplier path serves the factor (`reused`: it is kept from before); the rows as
+  /// the factor sees them (Cs, Ch, d, p, the iteration's kind and limit); one solve for the
+  /// right-hand side (bb, -gg).
+  void row_weights(const CsrMatrix& K, const ConstraintBlock& C, const KktOptions& opt,
+                   System& sys) const;
+  bool use_dense(const System& sys, bool reused, const KktOptions& opt) const;
+  void prepare_rows(System& sys, const KktOptions& opt, bool stale, bool unsymmetric) const;
+  SchurResult solve_step(const System& sys, std::span<const double> bb, std::span<const double> gg,
+                         std::span<double> x_u, std::span<double> x_l, const KktOptions& opt,
+                         RunStatistics* stats);
   /// Compare a system with what the factor is of: p_of[r] is the row of _frows that row r of C
   /// repeats (-1: a new row), `gone` the rows of _frows no longer present.
   Plan compare(const CsrMatrix& K, const ConstraintBlock& C, bool symmetric, const KktOptions& opt,
@@ -133,6 +166,7 @@ class KktSolver final : public ConstrainedSolver {
   std::unique_ptr<LinearSolver> _cholmod, _umfpack;
   LinearSolver* _active = nullptr;
   bool _cholmod_ready = false, _umfpack_ready = false;
+  bool _memory_checked = false; ///< check_memory() done for the analysed pattern
   int _solves = 0;
   // What the current factor is of: K_F (before augmentation) and the augmenting rows.
   std::vector<double> _factored;

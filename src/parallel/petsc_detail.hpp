@@ -41,6 +41,9 @@ int changed_rows(const ConstraintBlock& a, const ConstraintBlock& b);
 double row_factor(std::span<const double> R, const ConstraintBlock& C, int r);
 /// The multiplier scale s: the mean of |diag K| (1 for an empty or zero diagonal).
 double multiplier_scale(const CsrMatrix& K);
+/// The serial backend's symbolic estimate of a direct factor of the pattern (CHOLMOD's; MUMPS's
+/// is near it): the memory checks and factor_bytes_estimate() use it.
+std::size_t serial_factor_bytes(std::shared_ptr<const SparsityPattern> pattern);
 
 /// Destroys a PETSc object when it goes (PETSc's XxxDestroy set the handle to null).
 template <class T, PetscErrorCode (*Destroy)(T*)>
@@ -150,6 +153,14 @@ struct PetscKktSolver::Impl {
                                 const KktOptions& opt, RunStatistics* stats);
   void build_kkt(const CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R, double s,
                  bool symmetric, const KktLayout& L);
+  /// MUMPS's stages: factorise the bordered matrix of K + C^T R C (K augmented in place; b only
+  /// for naming a singular system), and solve with that factor for b and C.g.
+  void factor_mumps(CsrMatrix& K, const ConstraintBlock& C, std::span<const double> R, double s,
+                    bool symmetric, const KktLayout& L, std::span<const double> b,
+                    RunStatistics* stats);
+  void solve_direct(std::span<const double> b, const ConstraintBlock& C, std::span<const double> R,
+                    double s, const KktLayout& L, std::span<double> du, std::span<double> dl,
+                    RunStatistics* stats) const;
   /// Factorise kkt with MUMPS (workspace relaxation ICNTL(14) in percent); MUMPS's INFOG(1),
   /// -10 also for null pivots.
   PetscInt factorize_mumps(int workspace_percent);

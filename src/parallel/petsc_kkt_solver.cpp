@@ -47,6 +47,12 @@ double row_factor(std::span<const double> R, const ConstraintBlock& C, int r) {
   return 1.0 - R[r] * C.row_compliance(r);
 }
 
+std::size_t serial_factor_bytes(std::shared_ptr<const SparsityPattern> pattern) {
+  KktSolver serial;
+  serial.analyze(std::move(pattern));
+  return serial.factor_bytes_estimate();
+}
+
 /// The multiplier scale s: the mean of |diag K| (1 for an empty or zero diagonal).
 double multiplier_scale(const CsrMatrix& K) {
   double sum = 0.0;
@@ -230,9 +236,7 @@ void PetscKktSolver::Impl::singular(const CsrMatrix& K, std::span<const double> 
 }
 
 void PetscKktSolver::Impl::require_direct_fits(const std::string& what) const {
-  auto estimate = make_cholmod_solver();
-  estimate->analyze(*pattern);
-  const double need = kDirectMemoryFactor * static_cast<double>(estimate->factor_bytes());
+  const double need = kDirectMemoryFactor * static_cast<double>(serial_factor_bytes(pattern));
   // the rank with the least memory left decides, for every rank alike
   const auto available = available_memory_bytes();
   const double here =
@@ -310,6 +314,55 @@ PetscInt PetscKktSolver::Impl::factorize_mumps(int workspace_percent) {
   return info1;
 }
 
+void PetscKktSolver::Impl::factor_mumps(CsrMatrix& K, const ConstraintBlock& C,
+                                        std::span<const double> R, double s, bool symmetric,
+                                        const KktLayout& L, std::span<const double> b,
+                                        RunStatistics* stats) {
+  ScopedTimer timer(stats, TimeCategory::Factorization);
+  if (stats) ++stats->factorizations;
+  const auto vals = K.values();
+  factored.assign(vals.begin(), vals.end());
+  factored_rows = C;
+  augment(K, C, R);
+  build_kkt(K, C, R, s, symmetric, L);
+  PetscInt info1 = 0;
+  for (int percent = 35; percent <= 35 * 16; percent *= 2)
+    if (info1 = factorize_mumps(percent); !mumps_workspace_short(info1)) break;
+  if (info1 >= 0) return;
+  direct.reset();
+  factored.clear();
+  if (info1 == -10) {
+    augment(K, C, R, -1.0);
+    singular(K, b, C, symmetric, "the system of equations is singular (MUMPS's factor)");
+  }
+  throw std::runtime_error(
+      fmt::format("MUMPS could not factorise the system of {} equations and {} constraint rows "
+                  "(INFOG(1) = {}{})",
+                  L.n, L.m, info1,
+                  mumps_workspace_short(info1) || info1 == -13 || info1 == -19
+                      ? ": not enough memory; more ranks (mpirun -np N) or --solver iterative"
+                      : ""));
+}
+
+void PetscKktSolver::Impl::solve_direct(std::span<const double> b, const ConstraintBlock& C,
+                                        std::span<const double> R, double s, const KktLayout& L,
+                                        std::span<double> du, std::span<double> dl,
+                                        RunStatistics* stats) const {
+  // right-hand side [b; -s g] in this rank's rows
+  VecH rhs, x;
+  petsc_check(MatCreateVecs(kkt, x.out(), rhs.out()), "MatCreateVecs");
+  fill_rhs(rhs, b, C, R, s, L, true);
+  {
+    ScopedTimer timer(stats, TimeCategory::Solve);
+    petsc_check(KSPSolve(direct, rhs, x), "KSPSolve");
+    if (stats) ++stats->linear_solves;
+  }
+  std::vector<double> all;
+  gather_all(x, all);
+  for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
+  for (PetscInt r = 0; r < L.m; ++r) dl[r] = s * all[L.kkt_l(r)];
+}
+
 KktStatistics PetscKktSolver::Impl::solve_mumps(CsrMatrix& K, std::span<const double> b,
                                                 const ConstraintBlock& C, std::span<double> du,
                                                 std::span<double> dl, bool symmetric,
@@ -329,50 +382,60 @@ KktStatistics PetscKktSolver::Impl::solve_mumps(CsrMatrix& K, std::span<const do
   // that K alone leaves free, which spares MUMPS most delayed pivots
   std::vector<double> R, ks;
   augmentation_weights(K, C, opt.augmentation, R, ks);
-  if (!same) {
-    ScopedTimer timer(stats, TimeCategory::Factorization);
-    if (stats) ++stats->factorizations;
-    factored.assign(vals.begin(), vals.end());
-    factored_rows = C;
-    augment(K, C, R);
-    build_kkt(K, C, R, s, symmetric, L);
-    PetscInt info1 = 0;
-    for (int percent = 35; percent <= 35 * 16; percent *= 2)
-      if (info1 = factorize_mumps(percent); !mumps_workspace_short(info1)) break;
-    if (info1 < 0) {
-      direct.reset();
-      factored.clear();
-      if (info1 == -10) {
-        augment(K, C, R, -1.0);
-        singular(K, b, C, symmetric, "the system of equations is singular (MUMPS's factor)");
-      }
-      throw std::runtime_error(
-          fmt::format("MUMPS could not factorise the system of {} equations and {} constraint rows "
-                      "(INFOG(1) = {}{})",
-                      L.n, L.m, info1,
-                      mumps_workspace_short(info1) || info1 == -13 || info1 == -19
-                          ? ": not enough memory; more ranks (mpirun -np N) or --solver iterative"
-                          : ""));
-    }
-  } else {
+  if (!same)
+    factor_mumps(K, C, R, s, symmetric, L, b, stats);
+  else
     out.reused_factor = true;
-  }
-  // right-hand side [b; -s g] in this rank's rows
-  VecH rhs, x;
-  petsc_check(MatCreateVecs(kkt, x.out(), rhs.out()), "MatCreateVecs");
-  fill_rhs(rhs, b, C, R, s, L, true);
-  {
-    ScopedTimer timer(stats, TimeCategory::Solve);
-    petsc_check(KSPSolve(direct, rhs, x), "KSPSolve");
-    if (stats) ++stats->linear_solves;
-  }
-  std::vector<double> all;
-  gather_all(x, all);
-  for (PetscInt i = 0; i < L.n; ++i) du[i] = all[L.kkt_u(i)];
-  for (PetscInt r = 0; r < L.m; ++r) dl[r] = s * all[L.kkt_l(r)];
+  solve_direct(b, C, R, s, L, du, dl, stats);
   out.solves = 1;
   log::debug("  MUMPS: {} factor of {} equations and {} rows", same ? "same" : "new", L.n, L.m);
   return out;
+}
+
+/// MUMPS's factor of one bordered system for many right-hand sides (both methods: a shift-invert
+/// eigensolver or a reduction needs a direct factor), with a bordered matrix of its own.
+class PetscKktSolver::Factor final : public ConstrainedFactor {
+ public:
+  Factor(std::shared_ptr<const SparsityPattern> pattern, const CsrMatrix& K,
+         const ConstraintBlock& C, bool symmetric, RunStatistics* stats)
+      : _layout(K.n(), C.n_rows()), _s(multiplier_scale(K)), _rows(C) {
+    _impl.method = Method::Mumps;
+    _impl.pattern = std::move(pattern);
+    std::vector<double> ks;
+    augmentation_weights(K, C, KktOptions{}.augmentation, _R, ks);
+    CsrMatrix A = K;
+    const std::vector<double> zero(static_cast<std::size_t>(K.n()), 0.0);
+    _impl.factor_mumps(A, C, _R, _s, symmetric, _layout, zero, stats);
+  }
+  void solve(std::span<const double> b, std::span<const double> g, std::span<double> x,
+             std::span<double> l, int k) override {
+    const auto n = static_cast<std::size_t>(_layout.n), m = static_cast<std::size_t>(_layout.m);
+    for (std::size_t j = 0; j < static_cast<std::size_t>(k); ++j) {
+      std::copy(g.begin() + j * m, g.begin() + (j + 1) * m, _rows.g.begin());
+      _impl.solve_direct(b.subspan(j * n, n), _rows, _R, _s, _layout, x.subspan(j * n, n),
+                         l.subspan(j * m, m), nullptr);
+    }
+  }
+
+ private:
+  Impl _impl;
+  KktLayout _layout;
+  double _s;
+  ConstraintBlock _rows; ///< g: the right-hand side being solved
+  std::vector<double> _R;
+};
+
+std::unique_ptr<ConstrainedFactor> PetscKktSolver::factorize(const CsrMatrix& K,
+                                                             const ConstraintBlock& C,
+                                                             bool symmetric, RunStatistics* stats) {
+  FE_CHECK(_impl->pattern && K.n() == _impl->pattern->n,
+           "PETSc solver not analysed for this pattern");
+  return std::make_unique<Factor>(_impl->pattern, K, C, symmetric, stats);
+}
+
+std::size_t PetscKktSolver::factor_bytes_estimate() {
+  FE_CHECK(_impl->pattern, "PETSc solver not analysed");
+  return serial_factor_bytes(_impl->pattern);
 }
 
 namespace parallel {

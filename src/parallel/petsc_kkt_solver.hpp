@@ -24,14 +24,15 @@
 ///   one AMG cycle as preconditioner solves K' du = b' (GMRES for the rest of the step if CG
 ///   finds the cycle indefinite). Where every equation is a translation, A is numbered by nodes
 ///   (block size 3, NearNullSpace::padded) so that GAMG aggregates nodes. Otherwise the remaining
-///   exact constraints are kept as constraints (no penalty): K is augmented to A = K + C^T R C (R_r ~ 100 x the stiffness along the row, as KktSolver does; D becomes
-///   D - C^T R E so the solution is unchanged), and right-preconditioned GMRES solves the bordered
-///   system with the block upper-triangular preconditioner [A  sD'; 0  -S], where A^-1 is one AMG
-///   cycle (GAMG; options prefix `inner_`) and S = s²(E + (1 - RE)/(R + ks)) is the diagonal
-///   estimate of the Schur complement that the augmentation makes accurate (within 1% for exact
-///   rows). The AMG hierarchy is rebuilt only when the iterations it takes grow to twice (plus 5)
-///   those after it was built; GMRES iterates on the true matrix, so a reused hierarchy costs
-///   iterations, never accuracy. Default tolerance: relative residual 1e-10 (`-ksp_rtol`).
+///   exact constraints are kept as constraints (no penalty): K is augmented to A = K + C^T R C (R_r
+///   ~ 100 x the stiffness along the row, as KktSolver does; D becomes D - C^T R E so the solution
+///   is unchanged), and right-preconditioned GMRES solves the bordered system with the block
+///   upper-triangular preconditioner [A  sD'; 0  -S], where A^-1 is one AMG cycle (GAMG; options
+///   prefix `inner_`) and S = s²(E + (1 - RE)/(R + ks)) is the diagonal estimate of the Schur
+///   complement that the augmentation makes accurate (within 1% for exact rows). The AMG hierarchy
+///   is rebuilt only when the iterations it takes grow to twice (plus 5) those after it was built;
+///   GMRES iterates on the true matrix, so a reused hierarchy costs iterations, never accuracy.
+///   Default tolerance: relative residual 1e-10 (`-ksp_rtol`).
 #include "linalg/constrained_solver.hpp"
 
 #include <memory>
@@ -48,12 +49,19 @@ class PetscKktSolver final : public ConstrainedSolver {
   void forget_factor() override;
   bool wants_near_null_space() const override;
   void set_near_null_space(NearNullSpace modes) override;
+  /// MUMPS's factor of the bordered system (either method), with its own matrix.
+  std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock& C,
+                                               bool symmetric,
+                                               RunStatistics* stats = nullptr) override;
+  /// The serial backend's symbolic estimate (CHOLMOD's), as the memory check uses it.
+  std::size_t factor_bytes_estimate() override;
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,
                       std::span<double> du, std::span<double> dl, bool symmetric,
                       const KktOptions& options, RunStatistics* stats = nullptr) override;
 
  private:
   struct Impl;
+  class Factor;
   std::unique_ptr<Impl> _impl;
 };
 

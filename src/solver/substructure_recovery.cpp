@@ -4,7 +4,7 @@
 #include "common/log.hpp"
 #include "fem/assembler.hpp"
 #include "fem/discretization.hpp"
-#include "linalg/linear_solver.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "model/model.hpp"
 #include "model/substructure_file.hpp"
 #include "solver/analysis.hpp"
@@ -19,8 +19,7 @@ namespace gapfem {
 /// deck is there and unchanged (for stresses).
 struct SubstructureRecoverer::Library {
   SubstructureLibrary lib;
-  std::shared_ptr<SparsityPattern> pattern;
-  std::unique_ptr<LinearSolver> solver;
+  std::unique_ptr<ConstrainedFactor> factor; ///< of K_II (none without internal DOFs)
   std::unique_ptr<Model> model;
   std::unique_ptr<Discretization> disc;
   std::unique_ptr<Assembler> assembler;
@@ -31,20 +30,21 @@ namespace {
 
 using Library = SubstructureRecoverer::Library;
 
-/// K_II of the library, factorised.
+/// K_II of the library, factorised through the solver seam.
 void factorise_internal(Library& d) {
   const SubstructureRecovery& r = d.lib.recovery;
   const auto nI = r.internal_node.size();
   if (nI == 0) return;
-  d.pattern = std::make_shared<SparsityPattern>();
-  d.pattern->n = static_cast<LocalIndex>(nI);
-  d.pattern->row_ptr.assign(r.ii_ptr.begin(), r.ii_ptr.end());
-  d.pattern->col.assign(r.ii_col.begin(), r.ii_col.end());
-  CsrMatrix K(d.pattern);
+  auto pattern = std::make_shared<SparsityPattern>();
+  pattern->n = static_cast<LocalIndex>(nI);
+  pattern->row_ptr.assign(r.ii_ptr.begin(), r.ii_ptr.end());
+  pattern->col.assign(r.ii_col.begin(), r.ii_col.end());
+  CsrMatrix K(pattern);
   std::copy(r.ii_val.begin(), r.ii_val.end(), K.values().begin());
-  d.solver = make_cholmod_solver();
-  d.solver->analyze(*d.pattern);
-  d.solver->factorize(K);
+  // the serial backend, as at the generation (every rank recovers alike)
+  const auto solver = make_constrained_solver("cholmod");
+  solver->analyze(pattern);
+  d.factor = solver->factorize(K, ConstraintBlock{}, true);
 }
 
 /// The generation model, for stresses: its deck as it was when the library was written.
@@ -227,7 +227,7 @@ RecoveredSubstructure SubstructureRecoverer::recover_one(const Model& model, con
   for (std::size_t i = 0; i < nI; ++i)
     for (std::int64_t k = rec.ir_ptr[i]; k < rec.ir_ptr[i + 1]; ++k)
       b[i] -= rec.ir_val[k] * uR[static_cast<std::size_t>(rec.ir_col[k])];
-  if (nI > 0) d.solver->solve(b, uI);
+  if (nI > 0) d.factor->solve(b, {}, uI, {});
   if (d.model) // every node of the substructure, fixed ones too
     for (Label l : d.model->mesh.node_labels) out.nodes[l] = {};
   auto put = [&](Label node, int dof, double v) {
