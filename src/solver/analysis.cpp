@@ -247,7 +247,7 @@ ModelCheck Analysis::check(bool time_factorization) {
 void Analysis::Impl::initial_gap_status(ModelCheck& c) {
   // the gaps' own recovery at the reference configuration, before any load
   const std::vector<double> T0 = st.T_initial;
-  const FieldView fields{st.u, st.u, T0, T0, T0, {}};
+  const FieldView fields{st.u, st.u, T0, T0, T0, {}, {}, {}};
   StepContext ctx;
   ctx.space = model.space;
   ctx.model_size = model.model_size();

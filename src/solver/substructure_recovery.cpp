@@ -133,7 +133,7 @@ void element_results(const Library& d, RecoveredSubstructure& out) {
   }
   std::vector<double> T0 = gm.initial_temperature;
   T0.resize(static_cast<std::size_t>(gm.mesh.n_nodes()), 0.0);
-  const FieldView fields{u, u, T0, T0, T0, {}};
+  const FieldView fields{u, u, T0, T0, T0, {}, {}, {}};
   StepContext ctx;
   ctx.space = gm.space;
   ctx.model_size = gm.model_size();
