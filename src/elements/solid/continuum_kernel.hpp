@@ -20,6 +20,7 @@
 #include "elements/element_kernel.hpp"
 #include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_loads.hpp"
+#include "elements/solid/continuum_mass.hpp"
 #include "elements/solid/solid_point.hpp"
 #include "fe/element_faces.hpp"
 #include "fe/quadrature.hpp"
@@ -200,6 +201,9 @@ class ContinuumKernel final : public ElementKernel {
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
   int n_state() const override { return NIP * _law.n_state(); }
+  /// The consistent mass, full rule (continuum_mass.hpp); zero without *DENSITY.
+  bool has_mass() const override { return true; }
+  bool has_damping() const override { return false; }
   void initialize(const ElementInput& in) const override { initialize_points(_law, NIP, in.state); }
   /// The material law at the points (for the coupled and the tests).
   const SolidLaw& law() const { return *_law; }
@@ -228,6 +232,8 @@ class ContinuumKernel final : public ElementKernel {
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    if (out.want_mass && !out.mass.empty())
+      add_continuum_mass<kShape, kKin>(in, _setup.material, _setup.thickness, out.mass);
     Work w;
     compute(in, w, in.state);
     Eigen::Map<VecD> r(out.residual.data());

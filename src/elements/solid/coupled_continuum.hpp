@@ -12,6 +12,9 @@
 /// K_uT makes the tangent unsymmetric (ElementOutput::unsymmetric). The heat equation has no
 /// mechanical source (no thermoelastic or plastic heating), as in Abaqus's elastic coupled
 /// elements. Theory: docs/theory/thermal.md.
+/// Operators: the mass is the mechanical kernel's consistent mass on the displacement DOFs (none
+/// on NT); the damping operator is the heat capacity on NT, whose flux HeatCore integrates itself
+/// (damping_in_residual), as in the heat kernels.
 #include "elements/heat/heat_core.hpp"
 #include "elements/solid/continuum_kernel.hpp"
 
@@ -64,6 +67,9 @@ class CoupledContinuumKernel final : public ElementKernel {
   }
 
   bool has_artificial_energy() const override { return _mech.has_artificial_energy(); }
+  bool has_mass() const override { return _mech.has_mass(); }
+  bool has_damping() const override { return _heat.material().has_capacity(); }
+  bool damping_in_residual() const override { return true; }
   /// The history is the mechanical kernel's (its solid law's, point by point).
   int n_state() const override { return _mech.n_state(); }
   void initialize(const ElementInput& in) const override {
@@ -89,8 +95,20 @@ class CoupledContinuumKernel final : public ElementKernel {
     mo.residual = rm;
     mo.tangent = want_K ? std::span<double>(Km) : std::span<double>{};
     mo.want_tangent = want_K;
+    const bool want_M = out.want_mass && out.mass.size() == NDOF * NDOF;
+    std::array<double, NDM * NDM> Mm; // zeroed only when the mass is asked for
+    if (want_M) {
+      Mm.fill(0.0);
+      mo.mass = Mm;
+      mo.want_mass = true;
+    }
     _mech.evaluate(l.in, mo);
     for (int i = 0; i < NDM; ++i) out.residual[slot(i)] += rm[i];
+    if (want_M)
+      for (int i = 0; i < NDM; ++i)
+        for (int j = 0; j < NDM; ++j) out.mass[slot(i) * NDOF + slot(j)] += Mm[i * NDM + j];
+    if (out.want_damping && out.damping.size() == NDOF * NDOF)
+      _heat.add_capacity_block(in.X, l.T, layout(), out.damping);
     if (want_K) {
       for (int i = 0; i < NDM; ++i)
         for (int j = 0; j < NDM; ++j) out.tangent[slot(i) * NDOF + slot(j)] += Km[i * NDM + j];

@@ -21,6 +21,7 @@
 #include "elements/element_kernel.hpp"
 #include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_kernel.hpp"
+#include "elements/solid/continuum_mass.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -80,6 +81,10 @@ class IncompatibleKernel final : public ElementKernel {
   }
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
   int n_state() const override { return NIP * _law.n_state(); }
+  /// The consistent mass of the nodes (the modes carry none; continuum_mass.hpp); zero without
+  /// *DENSITY.
+  bool has_mass() const override { return true; }
+  bool has_damping() const override { return false; }
   void initialize(const ElementInput& in) const override { initialize_points(_law, NIP, in.state); }
   const SolidLaw& law() const { return *_law; }
 
@@ -102,6 +107,8 @@ class IncompatibleKernel final : public ElementKernel {
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    if (out.want_mass && !out.mass.empty())
+      add_continuum_mass<Cell, K>(in, _setup.material, _setup.thickness, out.mass);
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     VecX x, r;
     MatX Kx;

@@ -19,6 +19,7 @@
 #include "elements/element_kernel.hpp"
 #include "elements/reference_scale.hpp"
 #include "elements/solid/continuum_kernel.hpp"
+#include "elements/solid/continuum_mass.hpp"
 #include "elements/solid/hourglass.hpp"
 
 #include <Eigen/Dense>
@@ -57,6 +58,9 @@ class ReducedKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return _setup.needs_temperature; }
   bool has_artificial_energy() const override { return true; }
   int n_state() const override { return _law.n_state(); }
+  /// The consistent mass with the full 2x2(x2) rule (continuum_mass.hpp); zero without *DENSITY.
+  bool has_mass() const override { return true; }
+  bool has_damping() const override { return false; }
   void initialize(const ElementInput& in) const override { initialize_points(_law, 1, in.state); }
   const SolidLaw& law() const { return *_law; }
 
@@ -80,6 +84,8 @@ class ReducedKernel final : public ElementKernel {
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
+    if (out.want_mass && !out.mass.empty())
+      add_continuum_mass<kShape, K>(in, _setup.material, _setup.thickness, out.mass);
     Work w;
     compute(in, w, in.state);
     Eigen::Map<VecD> r(out.residual.data());
