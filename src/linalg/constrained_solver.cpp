@@ -26,13 +26,6 @@ std::mutex g_registry_mutex;
 
 } // namespace
 
-std::unique_ptr<ConstrainedFactor>
-ConstrainedSolver::factorize(const CsrMatrix&, const ConstraintBlock&, bool, RunStatistics*) {
-  throw AnalysisError(fmt::format("the solver '{}' cannot factorise a system for many "
-                                  "right-hand sides; use --solver cholmod",
-                                  name()));
-}
-
 KktStatistics ConstrainedSolver::solve(CsrMatrix& K, std::span<const double> b,
                                        const ConstraintBlock& C, std::span<double> du,
                                        std::span<double> dl, bool symmetric,

@@ -88,9 +88,7 @@ class ConstrainedFactor {
 /// The backend interface. What a new backend must implement at minimum: name(), analyze() and
 /// factorize() with its factor's solve(); everything else has a default. Such a backend works
 /// everywhere: Newton's solve() then factorises every system afresh (its factor reuse is "never",
-/// whatever KktOptions::reuse says, and matrix_optional() is false). (factorize() is not pure
-/// only so that a Newton-only test double, overriding solve() alone, needs no factor; the
-/// default throws.)
+/// whatever KktOptions::reuse says, and matrix_optional() is false).
 ///
 /// Where the factor-reuse policy lives: inside a backend's own solve() override, because it
 /// works on the factor's insides. KktOptions (reuse, force_fresh, max_drift, matrix_current) says
@@ -113,7 +111,7 @@ class ConstrainedSolver {
   /// system is singular; the factorisation's time and count go to `stats` (when given).
   virtual std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock& C,
                                                        bool symmetric,
-                                                       RunStatistics* stats = nullptr);
+                                                       RunStatistics* stats = nullptr) = 0;
 
   // ---- optional, with defaults
   /// The bytes a factor of the analysed pattern will hold (the symbolic analysis's prediction;

@@ -124,6 +124,20 @@ class KeptFactorSolver final : public ConstrainedSolver {
   void analyze(std::shared_ptr<const SparsityPattern>) override {}
   void forget_factor() override { _k = 0.0; }
   bool matrix_optional() const override { return _k != 0.0; }
+  /// One unknown without rows: x = b / K.
+  struct OneFactor final : ConstrainedFactor {
+    double k = 1.0;
+    void solve(std::span<const double> b, std::span<const double>, std::span<double> x,
+               std::span<double>, int n) override {
+      for (int j = 0; j < n; ++j) x[j] = b[j] / k;
+    }
+  };
+  std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock&, bool,
+                                               RunStatistics*) override {
+    auto f = std::make_unique<OneFactor>();
+    f->k = K.values()[0];
+    return f;
+  }
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock&,
                       std::span<double> du, std::span<double>, bool, const KktOptions& opt,
                       RunStatistics*) override {
