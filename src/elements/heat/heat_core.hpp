@@ -286,10 +286,11 @@ class HeatCore {
   }
 
   /// The damping operator of the capacity, d(capacity flux) / d(temperature rate) = integral
-  /// C(T) N_a N_b dV (lumped at the nodes for first-order elements, like the flux), added to D.
+  /// C(T) N_a N_b dV (lumped at the nodes for first-order elements, like the flux), added to
+  /// `damping`.
   void add_capacity_block(std::span<const Vec3> X, const Temps& T, const HeatLayout& L,
-                          std::span<double> D) const {
-    auto Dat = [&](int a, int b) -> double& { return D[L.index(a) * L.n_dofs + L.index(b)]; };
+                          std::span<double> damping) const {
+    auto Dat = [&](int a, int b) -> double& { return damping[L.index(a) * L.n_dofs + L.index(b)]; };
     if constexpr (kLumped) {
       const Temps V = nodal_volumes(X);
       for (int a = 0; a < NN; ++a) Dat(a, a) += V[a] * _mat.capacity(T[a]);
