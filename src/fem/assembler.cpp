@@ -318,10 +318,11 @@ std::vector<double> Assembler::diagonal_stiffness(const FieldView& fields, const
                                                   bool skip_gaps) {
   std::vector<double> diag(static_cast<std::size_t>(_disc.dofs().n_slots()), 0.0);
   ElementGather& g = _scratch[0];
-  std::vector<double> state_backup;
+  std::vector<double> state_backup, mult_backup;
   for (auto& b : _disc.blocks()) {
     if (skip_gaps && element_info(b.type).family == ElementFamily::Gap) continue;
     state_backup = b.state_trial;
+    mult_backup = b.mult_trial;
     const auto nd = static_cast<std::size_t>(b.n_dofs);
     for (std::size_t i = 0; i < b.size(); ++i) {
       ElementInput& in = g.gather(_disc, b, i, fields, &ctx);
@@ -330,7 +331,8 @@ std::vector<double> Assembler::diagonal_stiffness(const FieldView& fields, const
       const auto slots = b.element_slots(i);
       for (std::size_t k = 0; k < nd; ++k) diag[slots[k]] += std::abs(out.tangent[k * nd + k]);
     }
-    b.state_trial = state_backup; // evaluation must not leave trial history behind
+    b.state_trial = state_backup; // evaluation must not leave trial history behind, nor
+    b.mult_trial = mult_backup;   // a gap's multiplier (a kernel may project it)
   }
   _disc.matrix_terms().add_diagonal(diag);
   return diag;

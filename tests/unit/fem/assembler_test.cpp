@@ -259,6 +259,11 @@ TEST(AssemblerUnit, DiagonalStiffnessWithAndWithoutGaps) {
   expect_diag(hard, a_hard.diagonal_stiffness(hard.fields(), hard.ctx, true), 0.0);
   // the evaluation leaves no trial history behind (the gap would have closed)
   EXPECT_EQ(hard.gap_block().state_trial, hard.gap_block().state_committed);
+  // nor a changed trial multiplier: a negative one (a gap pulled open in the iteration) that the
+  // kernel would project to 0 is the same after the estimate
+  std::fill(hard.gap_block().mult_trial.begin(), hard.gap_block().mult_trial.end(), -3.0);
+  a_hard.diagonal_stiffness(hard.fields(), hard.ctx, false);
+  for (double l : hard.gap_block().mult_trial) EXPECT_EQ(l, -3.0);
 
   TwoTrussGap soft("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1000.\n",
                    KernelOptions{.penalty_rows = false, .friction_rows = true});
