@@ -7,6 +7,7 @@
 #include "io/inp/reader.hpp"
 #include "model/model.hpp"
 #include "solver/time_integrator.hpp"
+#include "unit/dense_inserter.hpp"
 #include "unit/elements/kernel_probe.hpp"
 
 #include <gtest/gtest.h>
@@ -226,22 +227,7 @@ TEST(KernelDamping, HeatCapacityBlockIsTheDerivativeByTheRate) {
 
 // ------------------------------------------------------------------------------ the assembler
 
-/// A dense n x n target for the assembler (equations = slots).
-class DenseInserter final : public MatrixInserter {
- public:
-  explicit DenseInserter(std::size_t n) : n(n), A(n * n, 0.0) {}
-  void set_zero() override { std::fill(A.begin(), A.end(), 0.0); }
-  void open(int) override {}
-  void add(int, std::span<const LocalIndex> rows, std::span<const LocalIndex> cols,
-           std::span<const double> block) override {
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      for (std::size_t j = 0; j < cols.size(); ++j)
-        if (rows[i] >= 0 && cols[j] >= 0) A[rows[i] * n + cols[j]] += block[i * cols.size() + j];
-  }
-  void close() override {}
-  std::size_t n;
-  std::vector<double> A;
-};
+using test::DenseInserter;
 
 /// Three coupled trusses in a row (mass on U, capacity on NT) and a spring (massless).
 std::string assembly_deck() {

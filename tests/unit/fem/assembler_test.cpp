@@ -7,6 +7,7 @@
 #include "io/inp/reader.hpp"
 #include "linalg/csr_matrix.hpp"
 #include "model/model.hpp"
+#include "unit/dense_inserter.hpp"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -17,23 +18,7 @@
 namespace gapfem {
 namespace {
 
-/// A dense n x n target (equations index rows and columns), single lane.
-class DenseInserter final : public MatrixInserter {
- public:
-  explicit DenseInserter(std::size_t size) : n(size), A(size * size, 0.0) {}
-  void set_zero() override { std::fill(A.begin(), A.end(), 0.0); }
-  void open(int) override {}
-  void add(int, std::span<const LocalIndex> rows, std::span<const LocalIndex> cols,
-           std::span<const double> block) override {
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      for (std::size_t j = 0; j < cols.size(); ++j)
-        if (rows[i] >= 0 && cols[j] >= 0) A[rows[i] * n + cols[j]] += block[i * cols.size() + j];
-  }
-  void close() override {}
-  double at(LocalIndex i, LocalIndex j) const { return A[i * n + j]; }
-  std::size_t n;
-  std::vector<double> A;
-};
+using test::DenseInserter;
 
 // Truss 1 from node 1 (0,0,0) to node 2 (3,4,0): L = 5, n1 = (0.6, 0.8, 0), EA/L = 200 x 0.5 / 5
 // = 20. Truss 2 from node 2 to node 3 (5,4,0): L = 2, n2 = (1,0,0), EA/L = 200 x 0.5 / 2 = 50.
