@@ -19,6 +19,9 @@ void elastic_derivatives(Kinematics kin, const Material& mat, double T, double& 
     const double mu = E / (2.0 * (1.0 + nu));
     const double s = l3 + 2.0 * mu;
     dlambda = (2.0 * (dl3 * mu + l3 * dmu) * s - 2.0 * l3 * mu * (dl3 + 2.0 * dmu)) / (s * s);
+  } else if (kin == Kinematics::Beam) { // lambda* = 2 mu nu
+    const double mu = E / (2.0 * (1.0 + nu));
+    dlambda = 2.0 * (dmu * nu + mu * dnu);
   } else {
     dlambda = dl3;
   }
@@ -40,6 +43,8 @@ void IsotropicElasticLaw::update(const MaterialPointInput& in, MaterialPointOutp
   const double T = in.temperature, Ti = in.initial_temperature;
   if (n == 6)
     stress<6>(e, T, Ti, in.thermal, out.stress.data(), out.moduli);
+  else if (_kin == Kinematics::Beam)
+    stress<3, 1>(e, T, Ti, in.thermal, out.stress.data(), out.moduli);
   else if (n == 4)
     stress<4>(e, T, Ti, in.thermal, out.stress.data(), out.moduli);
   else

@@ -3,7 +3,8 @@
 /// The first solid law: isotropic linear (thermo-)elasticity, sigma = C : (eps - eps_th I) for
 /// small strain and S = C : (E - eps_th I) (St. Venant-Kirchhoff) under NLGEOM, with E and nu
 /// from the *ELASTIC table and the thermal strain from *EXPANSION at the point's temperature.
-/// Plane stress condenses sigma33 = 0 into lambda* = 2 lambda mu / (lambda + 2 mu). No history.
+/// Plane stress condenses sigma33 = 0 into lambda* = 2 lambda mu / (lambda + 2 mu), a beam fibre
+/// sigma22 = sigma33 = 0 into sigma11 = E eps11 (lambda* = 2 mu nu), tau = G gamma. No history.
 #include "elements/material/solid_law.hpp"
 
 namespace gapfem {
@@ -17,8 +18,9 @@ struct ElasticPoint : IsotropicModuli {
     ElasticPoint p;
     p.mu = E / (2.0 * (1.0 + nu));
     p.lambda3 = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    p.lambda = kin == Kinematics::PlaneStress ? 2.0 * p.lambda3 * p.mu / (p.lambda3 + 2.0 * p.mu)
-                                              : p.lambda3;
+    p.lambda = kin == Kinematics::PlaneStress
+                   ? 2.0 * p.lambda3 * p.mu / (p.lambda3 + 2.0 * p.mu)
+                   : (kin == Kinematics::Beam ? 2.0 * p.mu * nu : p.lambda3);
     p.eps_th = eps_th;
     return p;
   }
@@ -39,15 +41,17 @@ class IsotropicElasticLaw final : public SolidLaw {
   IsotropicElasticLaw(const Material& material, Kinematics kinematics);
 
   bool temperature_dependent() const override { return !_const_elastic; }
+  bool linear_isotropic_elastic() const override { return true; }
   void update(const MaterialPointInput& in, MaterialPointOutput& out) const override;
   IsotropicModuli elastic_moduli(double T, IsotropicModuli* dT = nullptr) const override;
 
-  /// The hot part of update(): the stress s of the strain e (NS Voigt components) and the
-  /// isotropic tangent's moduli. The kernels call it directly for this law (solid_point.hpp).
-  template <int NS>
+  /// The hot part of update(): the stress s of the strain e (NS Voigt components, NN of them
+  /// normal) and the isotropic tangent's moduli. The kernels call it directly for this law
+  /// (solid_point.hpp).
+  template <int NS, int NN = (NS == 3 ? 2 : 3)>
   void stress(const double* e, double T, double Ti, bool thermal, double* s,
               IsotropicModuli& moduli) const {
-    constexpr int nn = NS == 3 ? 2 : 3;
+    constexpr int nn = NN;
     const ElasticPoint p = point(T, Ti, thermal);
     double tr = 0.0;
     for (int c = 0; c < nn; ++c) tr += e[c] - p.eps_th;

@@ -11,6 +11,8 @@
 ///   PlaneStrain   11 22 33 12         (eps33 = 0 kinematically; sigma33 from the law)
 ///   Axisymmetric  11 22 33 12         (r, z, hoop, rz)
 ///   PlaneStress   11 22 12            (sigma33 = 0: the law condenses the thickness direction)
+///   Beam          11 12 13            (a fibre of a beam section: sigma22 = sigma33 = sigma23 = 0,
+///                                      the law condenses the lateral directions)
 /// Small strain: the strain is sym(grad u) and the stress Cauchy's. NLGEOM (total Lagrangian): the
 /// strain is Green-Lagrange's and the stress the second Piola-Kirchhoff stress, so an elastic law
 /// is St. Venant-Kirchhoff.
@@ -33,21 +35,23 @@
 
 namespace gapfem {
 
-/// Kinematic class of a continuum element.
-enum class Kinematics : std::uint8_t { ThreeD, PlaneStress, PlaneStrain, Axisymmetric };
+/// Kinematic class of a material point: a continuum element's, a shell's section point (plane
+/// stress) or a beam section's fibre.
+enum class Kinematics : std::uint8_t { ThreeD, PlaneStress, PlaneStrain, Axisymmetric, Beam };
 
 /// Voigt components of a kinematic class (3, 4 or 6).
 constexpr int voigt_size(Kinematics k) {
-  return k == Kinematics::ThreeD ? 6 : (k == Kinematics::PlaneStress ? 3 : 4);
+  return k == Kinematics::ThreeD ? 6
+                                 : (k == Kinematics::PlaneStress || k == Kinematics::Beam ? 3 : 4);
 }
-/// Normal components among them (2 for plane stress, else 3).
+/// Normal components among them (1 for a beam fibre, 2 for plane stress, else 3).
 constexpr int voigt_normals(Kinematics k) {
-  return k == Kinematics::PlaneStress ? 2 : 3;
+  return k == Kinematics::Beam ? 1 : (k == Kinematics::PlaneStress ? 2 : 3);
 }
 
 /// Isotropic elastic constants in the form the kernels use: `lambda` is the effective constant of
-/// the kinematics (lambda* = 2 lambda mu / (lambda + 2 mu) for plane stress), `lambda3` the 3-D
-/// value, `mu` the shear modulus.
+/// the kinematics (lambda* = 2 lambda mu / (lambda + 2 mu) for plane stress, 2 mu nu for a beam
+/// fibre, so that lambda + 2 mu = E), `lambda3` the 3-D value, `mu` the shear modulus.
 struct IsotropicModuli {
   double lambda = 0.0;
   double lambda3 = 0.0;
@@ -101,6 +105,11 @@ class SolidLaw {
   /// Does the response depend on temperature without a temperature field (temperature-dependent
   /// constants read at the initial temperature)? The kernels then interpolate it at every point.
   virtual bool temperature_dependent() const { return false; }
+  /// Is the law isotropic linear (thermo-)elasticity without history, its stress C(E(T), nu(T))
+  /// (strain - thermal strain)? Shell and beam sections then integrate it in closed form through
+  /// the thickness or over the section (today's pre-integrated sections) instead of calling it at
+  /// their section points. Only the built-in elastic law says yes.
+  virtual bool linear_isotropic_elastic() const { return false; }
   /// Stress, tangent, dS/dT and trial history from the strain and the committed history.
   virtual void update(const MaterialPointInput& in, MaterialPointOutput& out) const = 0;
   /// The elastic (initial) moduli at temperature T and, with `dT`, their derivatives: what

@@ -1,9 +1,9 @@
 // The material-point seam of the solids (elements/material/solid_law.hpp) proven by a toy law
-// that lives in this file alone: "linear elastic with a state counter". It is registered here
-// (one register_solid_law call, no other file touched) for materials named COUNTING, and then
-// runs through every continuum kernel the registry has (full, B-bar, reduced with hourglass
-// control, incompatible modes, quadratic, plane stress/strain, axisymmetric and the coupled
-// temperature-displacement twins):
+// that lives in the tests alone: "linear elastic with a state counter" (counting_law.hpp). It is
+// registered there (one register_solid_law call, no file of src/ touched) for materials named
+// COUNTING, and then runs through every continuum kernel the registry has (full, B-bar, reduced
+// with hourglass control, incompatible modes, quadratic, plane stress/strain, axisymmetric and the
+// coupled temperature-displacement twins):
 //   - residual, tangent (and the coupled kernels' d r / d T columns) equal the built-in elastic
 //     law's, small strain and NLGEOM, although the toy law hands its tangent over as a full Voigt
 //     matrix (the general D B path) where the built-in law takes the isotropic fast path;
@@ -12,9 +12,9 @@
 //   - the tangent passes the harness's central differences, revert-then-evaluate is exact.
 // A restart (solver/analysis_restart.cpp saves the flat committed arrays) carries the counter
 // over: RestartCarriesTheLawHistory.
-#include "elements/material/isotropic_elastic.hpp"
 #include "elements/material/solid_law.hpp"
 #include "test_util.hpp"
+#include "unit/elements/counting_law.hpp"
 #include "unit/elements/solid/continuum_fixture.hpp"
 
 #include <algorithm>
@@ -23,56 +23,6 @@
 
 namespace gapfem::test {
 namespace {
-
-/// Largest committed counter any COUNTING point has been evaluated from (the restart test).
-std::atomic<int> g_most_commits_seen{0};
-
-/// Linear elasticity (the built-in law's stress) with one history slot per point counting the
-/// increments the point has been committed in; its tangent is given as a full Voigt matrix.
-class CountingElasticLaw final : public SolidLaw {
- public:
-  CountingElasticLaw(const Material& m, Kinematics k) : _elastic(m, k), _kin(k) {}
-
-  int n_state() const override { return 1; }
-  void initialize(std::span<double> state) const override { state[0] = 0.0; }
-  bool temperature_dependent() const override { return _elastic.temperature_dependent(); }
-
-  void update(const MaterialPointInput& in, MaterialPointOutput& out) const override {
-    MaterialPointOutput elastic = out;
-    elastic.tangent = {};
-    elastic.state = {};
-    _elastic.update(in, elastic);
-    out.energy = elastic.energy;
-    out.thickness_strain = elastic.thickness_strain;
-    out.isotropic = false;
-    if (!out.tangent.empty()) { // D = lambda 1 1^T + 2 mu I on the normals, mu on the shears
-      const int n = voigt_size(_kin), nn = voigt_normals(_kin);
-      const IsotropicModuli& m = elastic.moduli;
-      std::fill(out.tangent.begin(), out.tangent.end(), 0.0);
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-          out.tangent[i * n + j] =
-              i < nn && j < nn ? m.lambda + (i == j ? 2.0 * m.mu : 0.0) : (i == j ? m.mu : 0.0);
-    }
-    const int commits = static_cast<int>(in.state_start[0]);
-    int seen = g_most_commits_seen.load();
-    while (commits > seen && !g_most_commits_seen.compare_exchange_weak(seen, commits)) {
-    }
-    out.state[0] = in.state_start[0] + 1.0;
-  }
-  IsotropicModuli elastic_moduli(double T, IsotropicModuli* dT) const override {
-    return _elastic.elastic_moduli(T, dT);
-  }
-
- private:
-  IsotropicElasticLaw _elastic;
-  Kinematics _kin;
-};
-
-// The one registration: materials named COUNTING get the toy law.
-const bool kRegistered = register_solid_law(
-    "counting elastic (test)", [](const Material& m) { return m.name == "COUNTING"; },
-    [](const Material& m, Kinematics k) { return std::make_unique<CountingElasticLaw>(m, k); });
 
 /// Every continuum type, stress/displacement and coupled.
 std::vector<ElementType> every_continuum_type() {
@@ -126,7 +76,7 @@ std::vector<double> all_of(std::vector<double> v, double x) {
 }
 
 TEST(SolidLaw, ToyLawIsRegisteredFromItsTestFile) {
-  EXPECT_TRUE(kRegistered);
+  EXPECT_TRUE(counting_law_registered());
   Material m;
   m.name = "COUNTING";
   m.elastic.n_values = 2;
@@ -134,6 +84,49 @@ TEST(SolidLaw, ToyLawIsRegisteredFromItsTestFile) {
   EXPECT_EQ(make_solid_law(m, Kinematics::ThreeD)->n_state(), 1);
   m.name = "STEEL";
   EXPECT_EQ(make_solid_law(m, Kinematics::ThreeD)->n_state(), 0);
+}
+
+// A beam fibre (Kinematics::Beam: 11, 12, 13 with the lateral stresses zero): sigma11 = E (eps11 -
+// eps_th), tau = G gamma, and lambda* + 2 mu = E in the fast path's moduli; dS/dT by differences.
+TEST(SolidLaw, BuiltInElasticLawOnABeamFibre) {
+  Material m;
+  m.name = "STEEL";
+  m.elastic.n_values = 2;
+  m.elastic.keys = {0.0, 200.0};
+  m.elastic.values = {200000.0, 0.3, 180000.0, 0.25};
+  m.expansion.n_values = 1;
+  m.expansion.values = {1.2e-5};
+  const auto law = make_solid_law(m, Kinematics::Beam);
+  EXPECT_TRUE(law->linear_isotropic_elastic());
+  const double T = 100.0, Ti = 20.0, E = 190000.0, nu = 0.275, G = E / (2.0 * (1.0 + nu));
+  const std::array<double, 3> e{1e-3, 2e-4, -3e-4};
+  std::array<double, 3> s{}, ds{};
+  auto update = [&](double temp, std::span<double> out_s, std::span<double> out_ds) {
+    MaterialPointInput in;
+    in.strain = e;
+    in.temperature = temp;
+    in.initial_temperature = Ti;
+    in.thermal = true;
+    MaterialPointOutput out;
+    out.stress = out_s;
+    out.dstress_dT = out_ds;
+    law->update(in, out);
+    return out.moduli;
+  };
+  const IsotropicModuli mod = update(T, s, ds);
+  const double eth = m.thermal_strain(T, Ti);
+  EXPECT_NEAR(s[0], E * (e[0] - eth), 1e-9 * E * 1e-3);
+  EXPECT_NEAR(s[1], G * e[1], 1e-9 * E * 1e-3);
+  EXPECT_NEAR(s[2], G * e[2], 1e-9 * E * 1e-3);
+  EXPECT_NEAR(mod.lambda + 2.0 * mod.mu, E, 1e-9 * E);
+  const double h = 1e-3;
+  std::array<double, 3> sp{}, sm{};
+  update(T + h, sp, {});
+  update(T - h, sm, {});
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(ds[c], (sp[c] - sm[c]) / (2.0 * h), 1e-6 * std::abs(ds[c]) + 1e-9);
+  m.name = "COUNTING";
+  EXPECT_FALSE(make_solid_law(m, Kinematics::Beam)->linear_isotropic_elastic());
 }
 
 // The toy law against the built-in one in every kernel: same residual and tangent (small strain
