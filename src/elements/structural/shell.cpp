@@ -2,10 +2,12 @@
 
 #include "common/jet.hpp"
 #include "elements/structural/shell_section.hpp"
+#include "elements/structural/shell_section_points.hpp"
 #include "elements/structural/shell_strains.hpp"
 #include "elements/structural/structural_common.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace gapfem {
 
@@ -37,11 +39,17 @@ class ShellKernel final : public ElementKernel {
   using J = Jet<kN>;
 
  public:
-  explicit ShellKernel(ShellData data) : _d(std::move(data)) {}
+  /// A law other than the built-in isotropic elasticity is integrated at the section points
+  /// (shell_section_points.hpp); the built-in one through the closed-form section.
+  ShellKernel(ShellData data, std::shared_ptr<const SolidLaw> law) : _d(std::move(data)) {
+    if (!law->linear_isotropic_elastic()) _points.emplace(std::move(law), _d.n_points);
+  }
 
   ElementType type() const override { return _d.type; }
   std::span<const DofType> node_dofs(int) const override { return kDofs; }
-  int n_state() const override { return 4 * NN; } ///< a unit quaternion per node
+  /// A unit quaternion per node, then the law's history at each integration point's section
+  /// points (section-point path only).
+  int n_state() const override { return kRotState + rule().n * points_state(); }
   bool uses_temperature_field() const override { return material_uses_temperature(_d.material); }
 
   std::string validate(const ElementInput& in) const override {
@@ -53,6 +61,8 @@ class ShellKernel final : public ElementKernel {
       in.state[4 * a] = 1.0;
       for (int i = 1; i < 4; ++i) in.state[4 * a + i] = 0.0;
     }
+    if (_points)
+      for (int q = 0; q < rule().n; ++q) _points->initialize(point_state(in.state, q));
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
@@ -62,6 +72,11 @@ class ShellKernel final : public ElementKernel {
     if (!nl) {
       linear_evaluate(in, law, out);
       write_rotations(in, false);
+      return;
+    }
+    if (_points) {
+      integrated_evaluate(in, law, out);
+      write_rotations(in, nl);
       return;
     }
     const auto nv = gather<J>(in, nl);
@@ -114,6 +129,7 @@ class ShellKernel final : public ElementKernel {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
     const SectionLaw law = section_law(_d, in);
     const auto nv = gather<double>(in, nl);
+    if (_points) return integrated_recover(in, law, nv, nl, out);
     const auto D = directors(in);
     const auto t = thickness(in);
     std::array<SectionStrains<double>, 9> e{};
@@ -148,6 +164,70 @@ class ShellKernel final : public ElementKernel {
           }
         }
     }
+  }
+
+  static constexpr int kRotState = 4 * NN;
+  int points_state() const { return _points ? _points->n_state() : 0; }
+  /// The section-point history of integration point q in a state array.
+  template <class Span>
+  Span point_state(Span state, int q) const {
+    const auto m = static_cast<std::size_t>(points_state());
+    return state.subspan(kRotState + q * m, m);
+  }
+
+  /// The section-point path under NLGEOM: the strains as Jets, the section's response at their
+  /// values, r and K by the chain rule (add_section_terms), the drilling penalty as an energy.
+  void integrated_evaluate(const ElementInput& in, const SectionLaw& law,
+                           ElementOutput& out) const {
+    const auto nv = gather<J>(in, true);
+    const Tying<J> ty = tying(in, nv, true);
+    const SectionTemperature temp = section_temperature(_d.material, in);
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    double area = 0.0;
+    const Rule q = rule();
+    for (int k = 0; k < q.n; ++k) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, q.pts[k][0], q.pts[k][1], q.pts[k][2], p)) continue;
+      area += p.dA;
+      const SectionStrains<J> e = strains_at(p, nv, true, ty);
+      SectionResponse resp;
+      _points->respond(law, temp, p.thickness, strain_values(e), point_state(in.state_start, k),
+                       point_state(in.state, k), out.want_tangent, resp);
+      add_section_terms(p.dA, e, resp, out.want_tangent, out.residual, out.tangent);
+    }
+    const J W = drilling(in, law, nv, true, area);
+    for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
+    if (out.want_tangent)
+      for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
+  }
+
+  /// Output of the section-point path: the law at the integration points' section points
+  /// (recover_section_points), the drilling energy on top.
+  void integrated_recover(const ElementInput& in, const SectionLaw& law,
+                          const ShellNodal<double, NN>& nv, bool nl, ElementRecovery& out) const {
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    const Rule q = rule();
+    const auto ty = tying(in, nv, nl);
+    std::array<SectionStrains<double>, 9> e{};
+    std::array<double, 9> thick{}, dA{};
+    double area = 0.0;
+    for (int k = 0; k < q.n; ++k) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, q.pts[k][0], q.pts[k][1], q.pts[k][2], p)) continue;
+      e[k] = strains_at(p, nv, nl, ty);
+      thick[k] = p.thickness;
+      dA[k] = p.dA;
+      area += p.dA;
+    }
+    const auto n = static_cast<std::size_t>(q.n);
+    const double W = recover_section_points(
+        *_points, law, section_temperature(_d.material, in), std::span(e.data(), n),
+        std::span(thick.data(), n), std::span(dA.data(), n), in.state_start.subspan(kRotState),
+        output_rule().n != q.n, out);
+    out.strain_energy = W + drilling(in, law, nv, nl, area);
   }
 
   std::span<const Vec3> directors(const ElementInput& in) const {
@@ -352,11 +432,19 @@ class ShellKernel final : public ElementKernel {
     const auto D = directors(in);
     const auto t = thickness(in);
     double area = 0.0;
-    auto add = [&](double r, double s, double w) {
+    const SectionTemperature temp =
+        _points ? section_temperature(_d.material, in) : SectionTemperature{};
+    auto add = [&](int qk, double r, double s, double w) {
       SurfacePoint p;
       if (!surface_point(in.X, D, t, r, s, w, p)) return;
       area += p.dA;
       const SectionStrains<Du> e = strains_at(p, nv, false, ty);
+      if (_points) {
+        SectionResponse resp;
+        _points->respond(law, temp, p.thickness, strain_values(e), point_state(in.state_start, qk),
+                         point_state(in.state, qk), out.want_tangent, resp);
+        return add_section_terms(p.dA, e, resp, out.want_tangent, out.residual, out.tangent);
+      }
       const std::array<const Du*, 8> b{&e.eps[0], &e.eps[1], &e.eps[2], &e.kap[0],
                                        &e.kap[1], &e.kap[2], &e.gam[0], &e.gam[1]};
       const auto C = section_matrix(law, p.thickness);
@@ -381,7 +469,7 @@ class ShellKernel final : public ElementKernel {
             for (int j = 0; j < kN; ++j) out.tangent[a * kN + j] += ba * CB[i][j];
     };
     const Rule q = rule();
-    for (int k = 0; k < q.n; ++k) add(q.pts[k][0], q.pts[k][1], q.pts[k][2]);
+    for (int k = 0; k < q.n; ++k) add(k, q.pts[k][0], q.pts[k][1], q.pts[k][2]);
     for (int a = 0; a < NN; ++a) {
       const Du d = drill_at(in, nv, false, a);
       const double k = kDrillFactor * law.G * t[a] * area / NN;
@@ -450,6 +538,7 @@ class ShellKernel final : public ElementKernel {
   }
 
   ShellData _d;
+  std::optional<ShellSectionPoints> _points; ///< the section-point path, or closed form
 };
 
 } // namespace
@@ -458,13 +547,14 @@ class ShellKernel final : public ElementKernel {
 
 std::unique_ptr<ElementKernel> make_shell_kernel(const KernelContext& ctx) {
   shell::ShellData data = shell::shell_data(ctx);
+  auto law = make_solid_law(data.material, Kinematics::PlaneStress);
   switch (element_info(ctx.type).n_nodes) {
   case 3:
-    return std::make_unique<shell::ShellKernel<3>>(std::move(data));
+    return std::make_unique<shell::ShellKernel<3>>(std::move(data), std::move(law));
   case 4:
-    return std::make_unique<shell::ShellKernel<4>>(std::move(data));
+    return std::make_unique<shell::ShellKernel<4>>(std::move(data), std::move(law));
   case 8:
-    return std::make_unique<shell::ShellKernel<8>>(std::move(data));
+    return std::make_unique<shell::ShellKernel<8>>(std::move(data), std::move(law));
   default:
     break;
   }

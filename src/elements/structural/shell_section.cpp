@@ -150,16 +150,23 @@ std::array<double, 64> section_matrix(const SectionLaw& l, double t) {
   return C;
 }
 
-void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<double>> e,
-                          std::span<const double> thickness, ElementRecovery& out) {
-  const int np = static_cast<int>(e.size()), ns = l.n_points;
+ShellOutputBlocks add_shell_output_blocks(int np, int ns, ElementRecovery& out) {
   add_block(out, ElemVar::SF, kShellSF, np);
   add_block(out, ElemVar::S, kShellS, np * ns);
   add_block(out, ElemVar::E, kShellE, np * ns);
-  OutputBlock& SF = out.blocks[out.blocks.size() - 3];
-  OutputBlock& S = out.blocks[out.blocks.size() - 2];
-  OutputBlock& E = out.blocks.back();
-  S.section_points = E.section_points = ns;
+  const std::size_t n = out.blocks.size();
+  ShellOutputBlocks b{&out.blocks[n - 3], &out.blocks[n - 2], &out.blocks[n - 1]};
+  b.S->section_points = b.E->section_points = ns;
+  return b;
+}
+
+void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<double>> e,
+                          std::span<const double> thickness, ElementRecovery& out) {
+  const int np = static_cast<int>(e.size()), ns = l.n_points;
+  const ShellOutputBlocks b = add_shell_output_blocks(np, ns, out);
+  OutputBlock& SF = *b.SF;
+  OutputBlock& S = *b.S;
+  OutputBlock& E = *b.E;
   const double c = l.E / (1.0 - l.nu * l.nu);
   auto Q = [&](const std::array<double, 3>& a) {
     return std::array<double, 3>{c * (a[0] + l.nu * a[1]), c * (a[1] + l.nu * a[0]),

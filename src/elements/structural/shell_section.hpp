@@ -81,6 +81,15 @@ T section_energy(const SectionLaw& l, double t, const SectionStrains<T>& s) {
 /// a section with thickness t, row-major: the Hessian of section_energy.
 std::array<double, 64> section_matrix(const SectionLaw& l, double t);
 
+/// The output blocks of np output points with ns section points each: SF (SF1-SF5, SM1-SM3 per
+/// output point), S and E (3 per section point, rows point-major, SNEG to SPOS).
+struct ShellOutputBlocks {
+  OutputBlock* SF = nullptr;
+  OutputBlock* S = nullptr;
+  OutputBlock* E = nullptr;
+};
+ShellOutputBlocks add_shell_output_blocks(int np, int ns, ElementRecovery& out);
+
 /// S and E at the section points (rows point-major: output point, then section point 1..n from
 /// SNEG to SPOS) and SF1-SF5, SM1-SM3 per output point.
 void recover_shell_output(const SectionLaw& l, std::span<const SectionStrains<double>> e,
