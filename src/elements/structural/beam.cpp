@@ -1,6 +1,7 @@
 #include "elements/structural/beam.hpp"
 
 #include "common/jet.hpp"
+#include "elements/structural/beam_fibres.hpp"
 #include "elements/structural/beam_kinematics.hpp"
 #include "elements/structural/beam_loads.hpp"
 #include "elements/structural/structural_common.hpp"
@@ -32,24 +33,14 @@ struct SectionLaw {
   double E = 0.0, G = 0.0, nu = 0.0;
 };
 
-SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int n_nodes) {
-  SectionLaw s;
-  double nu = 0.0;
-  elastic_at(b.material, average(in.temperature), s.E, nu);
-  s.G = s.E / (2.0 * (1.0 + nu));
-  s.nu = nu;
+/// The transverse shear block (strains 1, 2) of the section stiffness Dm: k G A (or *TRANSVERSE
+/// SHEAR STIFFNESS) with the slenderness compensation of two-node elements (beam.hpp). Both
+/// paths use it: the fibres of an integrated section carry no transverse shear (Abaqus treats it
+/// as elastic), which then takes E and G from the law's elastic moduli.
+void transverse_shear(const BeamData& b, double E, double G, double L, int n_nodes,
+                      std::array<double, 36>& Dm) {
   const BeamSectionProperties& p = b.section;
-  const double E = s.E, G = s.G;
-  auto D = [&](int i, int j, double v) { s.D[6 * i + j] = s.D[6 * j + i] = v; };
-  // axial and bending about the section origin: fibre strain eps + kappa1 x2 - kappa2 x1
-  D(0, 0, E * p.A);
-  D(0, 3, E * p.Q2);
-  D(0, 4, -E * p.Q1);
-  D(3, 3, E * p.I11);
-  D(3, 4, -E * p.I12);
-  D(4, 4, E * p.I22);
-  D(5, 5, G * p.J);
-  // transverse shear, with the slenderness compensation of two-node elements (beam.hpp)
+  auto D = [&](int i, int j, double v) { Dm[6 * i + j] = Dm[6 * j + i] = v; };
   const double K2 = p.k23 > 0.0 ? p.k23 : p.k * G * p.A;
   const double K1 = p.k13 > 0.0 ? p.k13 : p.k * G * p.A;
   if (b.slenderness >= 0.0 || n_nodes != 2) {
@@ -80,6 +71,27 @@ SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int 
     D(2, 2, F22 / dF);
     D(1, 2, -F21 / dF);
   }
+}
+
+SectionLaw section_law(const BeamData& b, const ElementInput& in, double L, int n_nodes) {
+  SectionLaw s;
+  double nu = 0.0;
+  elastic_at(b.material, average(in.temperature), s.E, nu);
+  s.G = s.E / (2.0 * (1.0 + nu));
+  s.nu = nu;
+  const BeamSectionProperties& p = b.section;
+  const double E = s.E, G = s.G;
+  auto D = [&](int i, int j, double v) { s.D[6 * i + j] = s.D[6 * j + i] = v; };
+  // axial and bending about the section origin: fibre strain eps + kappa1 x2 - kappa2 x1
+  D(0, 0, E * p.A);
+  D(0, 3, E * p.Q2);
+  D(0, 4, -E * p.Q1);
+  D(3, 3, E * p.I11);
+  D(3, 4, -E * p.I12);
+  D(4, 4, E * p.I22);
+  D(5, 5, G * p.J);
+  // transverse shear, with the slenderness compensation of two-node elements (beam.hpp)
+  transverse_shear(b, E, G, L, n_nodes, s.D);
   s.initial[0] = element_thermal_strain(b.material, in);
   if (!in.temperature_gradient.empty() && !b.material.expansion.empty()) {
     // T(x1, x2) = T + x2 dT/dx2 + x1 dT/dx1 over the section (values 2, 3 of *TEMPERATURE): the
@@ -124,16 +136,39 @@ T point_energy(Strains<T> e, const SectionLaw& s) {
   return 0.5 * w;
 }
 
+/// What an integrated section (BeamData::law) evaluates with at one element: the fibres' law
+/// and temperatures, and the elastic transverse shear block (with E, G, nu at the element's
+/// temperature from the law's elastic moduli).
+struct FibreLaw {
+  FibreSection section;
+  std::array<double, 36> shear{};
+  double E = 0.0, G = 0.0, nu = 0.0;
+};
+
+/// Adds the elastic transverse shear (strains 1, 2; no initial strain) to a point's response.
+void add_shear(const std::array<double, 36>& K, const Strains<double>& e, SectionResponse& s) {
+  for (int i = 1; i < 3; ++i)
+    for (int j = 1; j < 3; ++j) {
+      s.R[i] += K[6 * i + j] * e[j];
+      s.C[6 * i + j] += K[6 * i + j];
+    }
+}
+
 /// B21/B22/B31/B32/PIPE31/PIPE32 with NN nodes, planar (DOFs 1, 2, 6) or in space (1-6).
+/// The section is pre-integrated (elastic: one energy, section_law) or integrated at its fibres
+/// through the material's solid law (BeamData::law; history after the kState slots, per
+/// integration point along the beam, per fibre, the law's n_state).
 template <int NN, bool Planar>
 class BeamKernel final : public ElementKernel {
   static constexpr int kDpn = Planar ? 3 : 6;
   static constexpr int kN = NN * kDpn;
   static constexpr int kPressureSlot = 4 * NN, kState = 4 * NN + 6;
+  static constexpr int kAlong = NN == 2 ? 1 : 2; ///< integration points along the beam
   using J = Jet<kN>;
 
  public:
-  explicit BeamKernel(BeamData data) : _b(std::move(data)) {}
+  explicit BeamKernel(BeamData data)
+      : _b(std::move(data)), _n_fibre_state(_b.law ? _b.fibres.size() * _b.law->n_state() : 0) {}
 
   ElementType type() const override { return _b.type; }
   std::span<const DofType> node_dofs(int) const override {
@@ -143,9 +178,11 @@ class BeamKernel final : public ElementKernel {
       return kSpaceDofs;
   }
   /// per node a unit quaternion; then the pipe pressures PI, PE with the step and time they were
-  /// applied at (load() records them for the output)
-  int n_state() const override { return kState; }
-  bool uses_temperature_field() const override { return material_uses_temperature(_b.material); }
+  /// applied at (load() records them for the output); then an integrated section's fibre history
+  int n_state() const override { return kState + kAlong * _n_fibre_state; }
+  bool uses_temperature_field() const override {
+    return material_uses_temperature(_b.material) || (_b.law && _b.law->temperature_dependent());
+  }
 
   std::string validate(const ElementInput& in) const override {
     std::string why;
@@ -163,18 +200,27 @@ class BeamKernel final : public ElementKernel {
       in.state[kPressureSlot + 3 * k + 1] = 0.0;
       in.state[kPressureSlot + 3 * k + 2] = -1.0; // never applied
     }
+    if (!_b.law) return;
+    const auto ns = static_cast<std::size_t>(_b.law->n_state());
+    for (int p = 0; p < kAlong; ++p)
+      for (int f = 0; f < _b.fibres.size(); ++f)
+        _b.law->initialize(history(in.state, p).subspan(f * ns, ns));
   }
 
   void evaluate(const ElementInput& in, ElementOutput& out) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
     const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
-    const SectionLaw law = section_law(_b, in, g.length, NN);
-    const auto nv = gather<J>(in, nl);
-    const J W = energy(g, law, in.X, nv, nl);
-    for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
-    if (out.want_tangent)
-      for (int i = 0; i < kN; ++i)
-        for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
+    if (_b.law) {
+      evaluate_fibres(in, out, g, nl);
+    } else {
+      const SectionLaw law = section_law(_b, in, g.length, NN);
+      const auto nv = gather<J>(in, nl);
+      const J W = energy(g, law, in.X, nv, nl);
+      for (int i = 0; i < kN; ++i) out.residual[i] += W.g[i];
+      if (out.want_tangent)
+        for (int i = 0; i < kN; ++i)
+          for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
+    }
     write_rotations(in, nl);
     if (out.want_mass) add_mass(in, g, out.mass);
   }
@@ -221,17 +267,141 @@ class BeamKernel final : public ElementKernel {
   void recover(const ElementInput& in, ElementRecovery& out) const override {
     const bool nl = in.ctx != nullptr && in.ctx->nlgeom;
     const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    if (_b.law) return recover_fibres(in, out, g, nl);
     const SectionLaw law = section_law(_b, in, g.length, NN);
     const auto nv = gather<double>(in, nl);
     std::array<Strains<double>, 2> e{};
     for (int p = 0; p < g.n_points; ++p) e[p] = strains(g.pts[p], in.X, nv, nl);
     BeamOutput o{law.D,   law.initial, law.E,
                  law.G,   _b.section,  Planar,
-                 _b.pipe, law.nu,      _b.pipe ? pressures(in) : PipePressures{}};
+                 _b.pipe, law.nu,      _b.pipe ? pressures(in) : PipePressures{},
+                 {},      {}};
     recover_beam_output(o, std::span(e.data(), static_cast<std::size_t>(g.n_points)), out);
   }
 
  private:
+  /// Integration point p's slice of an integrated section's history (empty when `state` is too
+  /// short to hold it, as for a kernel asked without history).
+  template <class T>
+  std::span<T> history(std::span<T> state, int p) const {
+    const auto at = static_cast<std::size_t>(kState + p * _n_fibre_state);
+    const auto n = static_cast<std::size_t>(_n_fibre_state);
+    return state.size() >= at + n ? state.subspan(at, n) : std::span<T>{};
+  }
+
+  /// The fibres' law, temperatures and the elastic transverse shear of an element of length L.
+  FibreLaw fibre_law(const ElementInput& in, double L, bool nl) const {
+    const SectionTemperature t = SectionTemperature::of(in);
+    const IsotropicModuli m = _b.law->elastic_moduli(t.T);
+    FibreLaw f{FibreSection{*_b.law, _b.fibres, t, in.ctx ? in.ctx->dt : 0.0, nl},
+               {},
+               m.lambda + 2.0 * m.mu,
+               m.mu,
+               m.lambda / (2.0 * m.mu)};
+    transverse_shear(_b, f.E, f.G, L, NN, f.shear);
+    return f;
+  }
+
+  /// The strains of every integration point.
+  template <class T>
+  static std::array<Strains<T>, 2> point_strains(const BeamGeometry& g, std::span<const Vec3> X,
+                                                 const BeamNodal<T, NN>& nv, bool nl) {
+    std::array<Strains<T>, 2> e{};
+    if (!nl) {
+      for (int p = 0; p < g.n_points; ++p) e[p] = linear_strains(g.pts[p], nv);
+      return e;
+    }
+    const auto lr = local_rotations(nv);
+    for (int p = 0; p < g.n_points; ++p) e[p] = nonlinear_strains(g.pts[p], X, nv, lr);
+    return e;
+  }
+
+  /// The integrated section: at each point the fibres' resultants R and tangent C (plus the
+  /// elastic transverse shear) at the strains' values; residual sum w R . grad e, tangent
+  /// sum w (grad e^T C grad e + R_c Hess e_c) from the strains' jets. The fibres' trial history
+  /// goes to in.state, always from in.state_start.
+  void evaluate_fibres(const ElementInput& in, ElementOutput& out, const BeamGeometry& g,
+                       bool nl) const {
+    const FibreLaw fl = fibre_law(in, g.length, nl);
+    const auto e = point_strains(g, in.X, gather<J>(in, nl), nl);
+    for (int p = 0; p < g.n_points; ++p) {
+      Strains<double> ev{};
+      for (int c = 0; c < 6; ++c) ev[c] = e[p][c].v;
+      SectionResponse s;
+      integrate_fibres(fl.section, ev, history(in.state_start, p), history(in.state, p),
+                       out.want_tangent, s);
+      add_shear(fl.shear, ev, s);
+      if (!s.symmetric) out.unsymmetric = true;
+      add_point(g.pts[p].weight, e[p], s, out);
+    }
+  }
+
+  /// One point's share of the residual and tangent (w: its weight along the beam).
+  static void add_point(double w, const Strains<J>& e, const SectionResponse& s,
+                        ElementOutput& out) {
+    for (int i = 0; i < kN; ++i) {
+      double r = 0.0;
+      for (int c = 0; c < 6; ++c) r += s.R[c] * e[c].g[i];
+      out.residual[i] += w * r;
+    }
+    if (!out.want_tangent) return;
+    std::array<std::array<double, kN>, 6> Cg{}; // C grad e
+    for (int c = 0; c < 6; ++c)
+      for (int d = 0; d < 6; ++d)
+        if (const double C = s.C[6 * c + d]; C != 0.0)
+          for (int j = 0; j < kN; ++j) Cg[c][j] += C * e[d].g[j];
+    for (int i = 0; i < kN; ++i)
+      for (int j = 0; j < kN; ++j) {
+        double k = 0.0;
+        for (int c = 0; c < 6; ++c) k += e[c].g[i] * Cg[c][j] + s.R[c] * e[c].hess(i, j);
+        out.tangent[i * kN + j] += w * k;
+      }
+  }
+
+  /// Output of an integrated section: section forces from the fibres' resultants and the elastic
+  /// transverse shear; S at each section point from the law there (fibre_point_stress: the
+  /// committed history of the nearest fibre, which is the point itself for every default output
+  /// point but L's, on the outer faces while the thin-walled fibres lie on the mid-lines). The
+  /// history is never written: the fibres update into a scratch copy.
+  void recover_fibres(const ElementInput& in, ElementRecovery& out, const BeamGeometry& g,
+                      bool nl) const {
+    const FibreLaw fl = fibre_law(in, g.length, nl);
+    const auto e = point_strains(g, in.X, gather<double>(in, nl), nl);
+    const BeamSectionProperties& sec = _b.section;
+    const auto ns = static_cast<std::size_t>(_b.law->n_state());
+    std::vector<double> scratch(static_cast<std::size_t>(_n_fibre_state));
+    std::array<std::array<double, 6>, 2> forces{};
+    std::array<PointStress, 2 * BeamSectionProperties::kMaxPoints> points{};
+    for (int p = 0; p < g.n_points; ++p) {
+      const auto start = history(in.state_start, p);
+      SectionResponse s;
+      integrate_fibres(fl.section, e[p], start, scratch, false, s);
+      add_shear(fl.shear, e[p], s);
+      forces[p] = s.R;
+      for (int k = 0; k < sec.n_points; ++k) {
+        const auto [x1, x2] = sec.points[k];
+        const auto f = static_cast<std::size_t>(_b.fibres.nearest(x1, x2));
+        points[p * sec.n_points + k] =
+            fibre_point_stress(fl.section, e[p], x1, x2, sec.torsion_radius[k],
+                               start.empty() ? start : start.subspan(f * ns, ns));
+      }
+    }
+    std::array<double, 6> initial{element_thermal_strain(_b.material, in)};
+    const auto np = static_cast<std::size_t>(g.n_points);
+    const BeamOutput o{fl.shear,
+                       initial,
+                       fl.E,
+                       fl.G,
+                       sec,
+                       Planar,
+                       _b.pipe,
+                       fl.nu,
+                       _b.pipe ? pressures(in) : PipePressures{},
+                       std::span(forces.data(), np),
+                       std::span(points.data(), np * static_cast<std::size_t>(sec.n_points))};
+    recover_beam_output(o, std::span(e.data(), np), out);
+  }
+
   void add_mass(const ElementInput& in, const BeamGeometry& g, std::span<double> M) const {
     const double rho_A = table_value(_b.material.density, average(in.temperature)) * _b.section.A;
     std::array<double, NN> m{};
@@ -402,6 +572,7 @@ class BeamKernel final : public ElementKernel {
   }
 
   BeamData _b;
+  int _n_fibre_state = 0; ///< history per integration point: fibres x the law's n_state
 };
 
 } // namespace

@@ -85,6 +85,15 @@ BeamData beam_data(const KernelContext& ctx) {
     d.material = section_material(model, sec.material, sec.loc, entity);
     check_density_for_gravity(ctx, d.material);
   }
+  // the path: the built-in elastic law and GENERAL (resultant) sections keep the pre-integrated
+  // section; any other law is called at the section's fibres (beam_fibres.hpp)
+  if (!sec.general && sec.shape != BeamSection::Shape::General) {
+    auto law = make_solid_law(d.material, Kinematics::Beam);
+    if (!law->linear_isotropic_elastic()) {
+      d.fibres = beam_section_fibres(sec, d.section);
+      d.law = std::move(law);
+    }
+  }
   return d;
 }
 
@@ -168,11 +177,13 @@ void recover_pipe_points(const BeamOutput& o, std::span<const Strains<double>> e
     for (int k = 0; k < sec.n_points; ++k) {
       const auto [e11, e0, e12, r] = fibre(o, e[p], k);
       const double hoop = pipe_hoop_at(sec, o.pressure, r);
-      const double s11 = o.E * (e11 - e0) + o.nu * pipe_lame_sum(sec, o.pressure);
+      const PointStress* at = o.points.empty() ? nullptr : &o.points[p * sec.n_points + k];
+      const double s11 = at ? at->s11 + o.nu * pipe_lame_sum(sec, o.pressure)
+                            : o.E * (e11 - e0) + o.nu * pipe_lame_sum(sec, o.pressure);
       const int row = 3 * (p * sec.n_points + k);
       S.values[row] = s11;
       S.values[row + 1] = hoop;
-      S.values[row + 2] = o.G * e12;
+      S.values[row + 2] = at ? at->s12 : o.G * e12;
       E.values[row] = e11;
       E.values[row + 1] =
           (hoop - o.nu * (s11 + pipe_radial_at(sec, o.pressure, r))) / o.E + o.initial[0];
@@ -191,8 +202,11 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
   const int nsf = o.planar ? 3 : 6;
   for (int p = 0; p < np; ++p) {
     std::array<double, 6> s{};
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) s[i] += o.D[6 * i + j] * (e[p][j] - o.initial[j]);
+    if (!o.forces.empty())
+      s = o.forces[p];
+    else
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) s[i] += o.D[6 * i + j] * (e[p][j] - o.initial[j]);
     for (int c = 0; c < nsf; ++c) sf.values[p * nsf + c] = s[o.planar ? kPlanarSF[c] : c];
   }
   const BeamSectionProperties& sec = o.section;
@@ -213,6 +227,11 @@ void recover_beam_output(const BeamOutput& o, std::span<const Strains<double>> e
       const int row = p * sec.n_points + k;
       E.values[2 * row] = e11;
       E.values[2 * row + 1] = e12;
+      if (!o.points.empty()) { // the integrated section: the law's stress there
+        S.values[2 * row] = o.points[row].s11;
+        S.values[2 * row + 1] = o.points[row].s12;
+        continue;
+      }
       S.values[2 * row] = o.E * (e11 - e0);
       S.values[2 * row + 1] = o.G * e12;
     }

@@ -4,13 +4,16 @@
 /// section, orientation), the reference geometry of the integration points, and the output of
 /// section forces and section-point stresses.
 #include "elements/element_kernel.hpp"
+#include "elements/material/solid_law.hpp"
 #include "elements/reference_scale.hpp"
+#include "elements/structural/beam_fibres.hpp"
 #include "elements/structural/beam_kinematics.hpp"
 #include "elements/structural/beam_section.hpp"
 #include "model/material.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
+#include <memory>
 #include <span>
 #include <string>
 
@@ -24,6 +27,10 @@ struct BeamData {
   Vec3 n1a{0.0, 0.0, -1.0};  ///< approximate n1 direction
   double slenderness = -1.0; ///< SCF of *TRANSVERSE SHEAR STIFFNESS (-1: gapfem's default)
   bool pipe = false;         ///< PIPE31/PIPE32
+  /// The material's solid law when the section is integrated at its fibres; null for the
+  /// pre-integrated elastic section (the built-in elastic law, and every GENERAL section)
+  std::shared_ptr<const SolidLaw> law;
+  BeamFibres fibres; ///< the section integration points (with `law` only)
 };
 
 /// The block's data from its section; InputError for wrong combinations.
@@ -142,6 +149,11 @@ struct BeamOutput {
   bool pipe = false;
   double nu = 0.0;
   PipePressures pressure; ///< pipes: the PI, PE acting now
+  /// The integrated section (BeamData::law): the section forces per integration point and the
+  /// stresses and strains per integration and section point, which then replace D (e - e0) and
+  /// the elastic section-point stresses (D, initial, E, G then serve the pipes' hoop strain only)
+  std::span<const std::array<double, 6>> forces;
+  std::span<const PointStress> points;
 };
 
 /// SF (per integration point) and S, E (per integration point and section point) from the strains
