@@ -127,6 +127,65 @@ TEST(ShellSectionLaw, ToyLawGivesTheClosedFormSectionResponse) {
     }
 }
 
+/// A coupled temperature-displacement shell (S3RT, S4T, S4RT) of the built-in law or the toy law,
+/// 5 temperatures through the thickness at each node.
+KernelProbe coupled_probe(Model& model, ElementType t, bool counting) {
+  const std::vector<Vec3> X = element_nodes(element_info(t).n_nodes, false);
+  test::add_lone_element(model, t, X);
+  model.source_files.push_back("test.inp");
+  Material m;
+  m.name = counting ? "COUNTING" : "M";
+  m.elastic.n_values = 2;
+  m.elastic.values = {2.0e5, 0.3};
+  m.expansion.n_values = 1;
+  m.expansion.values = {1.2e-5};
+  m.conductivity.n_values = 1;
+  m.conductivity.values = {40.0};
+  m.density.n_values = 1;
+  m.density.values = {7.8e-3};
+  m.specific_heat.n_values = 1;
+  m.specific_heat.values = {460.0};
+  model.materials.push_back(m);
+  ShellSection sec;
+  sec.elset = "SHELL";
+  sec.material = 0;
+  sec.thickness = 0.05;
+  sec.n_points = 5;
+  model.shell_sections.push_back(sec);
+  model.element_property.push_back({PropertyRef::Kind::Shell, 0});
+  model.initial_temperature.assign(X.size(), 20.0);
+  KernelProbe p = KernelProbe::of(model);
+  p.ctx.procedure = Procedure::CoupledTempDisp;
+  p.ctx.model_size = 1.5;
+  p.ctx.transient = true;
+  p.ctx.dt = 0.5;
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> d(-1e-3, 1e-3), r(-0.05, 0.05), T(20.0, 180.0);
+  for (int i = 0; i < p.n(); ++i) {
+    const int c = i % 11;
+    p.u[i] = c < 3 ? d(gen) : c < 6 ? r(gen) : T(gen);
+    p.u0[i] = c < 6 ? 0.0 : T(gen);
+  }
+  return p;
+}
+
+// The coupled shells wrap the stress shell: on the section-point path their residual and tangent
+// (K_uT by differences of the mechanical residual in the temperatures) are the closed form's.
+TEST(ShellSectionLaw, CoupledShellsTakeTheSectionPointsToo) {
+  for (ElementType t : {ElementType::S3RT, ElementType::S4T, ElementType::S4RT})
+    for (bool nl : {false, true}) {
+      SCOPED_TRACE(std::string(element_info(t).name) + (nl ? " NLGEOM" : " small strain"));
+      Model ma, mb;
+      KernelProbe ref = coupled_probe(ma, t, false), toy = coupled_probe(mb, t, true);
+      ref.ctx.nlgeom = toy.ctx.nlgeom = nl;
+      EXPECT_GT(toy.kernel->n_state(), ref.kernel->n_state());
+      const KernelResult a = ref.evaluate(), b = toy.evaluate();
+      expect_close(b.r, a.r, "residual");
+      expect_close(b.K, a.K, "tangent", 1e-7); // K_uT: central differences of both
+      expect_fd_tangent(toy);
+    }
+}
+
 /// The law's slots of a shell's history (after the quaternions).
 std::vector<double> law_slots(const std::vector<double>& state, int nn) {
   return {state.begin() + 4 * nn, state.end()};
