@@ -74,7 +74,6 @@ BeamGeometry beam_geometry(std::span<const Vec3> X, const Vec3& n1a, double size
       for (int i = 0; i < 3; ++i) d[i] += dN[a] * X[a][i];
     return d;
   };
-  const Vec3 chord{X[NN - 1][0] - X[0][0], X[NN - 1][1] - X[0][1], X[NN - 1][2] - X[0][2]};
   if (why != nullptr) {
     // on the nodes scaled to an extent near 1 (reference_scale.hpp): no product of coordinates
     // overflows or underflows, so nodes 1e300 apart do not "coincide"

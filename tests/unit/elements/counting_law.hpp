@@ -2,7 +2,8 @@
 // A toy solid law for the tests of the material-point seam (elements/material/solid_law.hpp):
 // "linear elastic with a state counter". Registered (counting_law.cpp, one register_solid_law
 // call) for materials named COUNTING; the continuum (solid/solid_law_test.cpp), shell and beam
-// (structural/section_law_test.cpp) kernels run it through their section/integration points.
+// (structural/shell_section_law_test.cpp, structural/beam_section_law_test.cpp) kernels run it
+// through their section/integration points.
 //   - its stress is the built-in elastic law's; it hands its tangent over as a full Voigt matrix
 //     and says it is not the built-in isotropic elastic law, so kernels take their general path;
 //   - one history slot per point counts the commits the point has seen.
