@@ -23,7 +23,9 @@ int default_thread_count(int ranks_here) {
 Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
-      _thread_f(static_cast<std::size_t>(_threads)) {}
+      _thread_f(static_cast<std::size_t>(_threads)),
+      _thread_inertia(static_cast<std::size_t>(_threads)),
+      _inertia_scratch(static_cast<std::size_t>(_threads)) {}
 
 namespace {
 /// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
@@ -86,20 +88,24 @@ BlockOperators block_operators(const ElementKernel& kernel, const StepContext& c
   return ops;
 }
 
-/// r += B x for a row-major n x n block B.
-void add_product(std::span<const double> B, std::span<const double> x, std::span<double> r) {
+/// r += scale B x for a row-major n x n block B; `plain` (if not empty) gets B x.
+void add_product(std::span<const double> B, std::span<const double> x, std::span<double> r,
+                 double scale = 1.0, std::span<double> plain = {}) {
   const std::size_t n = r.size();
   for (std::size_t i = 0; i < n; ++i) {
     double s = 0.0;
     for (std::size_t j = 0; j < n; ++j) s += B[i * n + j] * x[j];
-    r[i] += s;
+    r[i] += scale * s;
+    if (!plain.empty()) plain[i] = s;
   }
 }
 
 /// The operators' forces M a + C v into the residual (rates defined) and k K + c C + m M into the
 /// tangent (K alone, as the kernel left it, when k = 1 and no operator is weighted).
-void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorWeights& w) {
-  if (out.want_mass && !in.a.empty()) add_product(out.mass, in.a, out.residual);
+/// The element's inertia forces M a (unweighted) go to `inertia` when it is not empty.
+void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorWeights& w,
+                     std::span<double> inertia) {
+  if (out.want_mass && !in.a.empty()) add_product(out.mass, in.a, out.residual, w.inertia, inertia);
   if (out.want_damping && !in.v.empty()) add_product(out.damping, in.v, out.residual);
   if (!out.want_tangent) return;
   if (w.k != 1.0)
@@ -114,7 +120,7 @@ void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorW
 void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int t,
                                const FieldView& fields, const StepContext& ctx, std::span<double> f,
                                MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
-                               AssemblyResult& res) {
+                               std::span<double> inertia_out, AssemblyResult& res) {
   const DofMap& dofs = _disc.dofs();
   const int nd = block.n_dofs;
   ElementGather& g = _scratch[t];
@@ -125,8 +131,13 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
     ElementOutput& out = g.output(block, K != nullptr, ops.mass, ops.damping);
     block.kernel->evaluate(in, out);
     if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);
-    if (operators) apply_operators(in, out, w);
+    const bool inertia = !inertia_out.empty() && ops.mass && !in.a.empty();
+    if (inertia) _inertia_scratch[t].assign(static_cast<std::size_t>(nd), 0.0);
+    if (operators)
+      apply_operators(in, out, w, inertia ? std::span(_inertia_scratch[t]) : std::span<double>{});
     const auto slots = block.element_slots(i);
+    if (inertia)
+      for (int k = 0; k < nd; ++k) inertia_out[slots[k]] += _inertia_scratch[t][k];
     for (int k = 0; k < nd; ++k) {
       const double r = out.residual[k];
       if (!std::isfinite(r))
@@ -167,9 +178,10 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
 
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
                                    std::span<double> f_int, MatrixInserter* K, ConstraintBlock* C,
-                                   const OperatorWeights& weights) {
+                                   const OperatorWeights& weights, std::span<double> inertia) {
   const DofMap& dofs = _disc.dofs();
   std::fill(f_int.begin(), f_int.end(), 0.0);
+  std::fill(inertia.begin(), inertia.end(), 0.0);
   if (K) {
     K->set_zero();
     K->open(_threads);
@@ -185,15 +197,21 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     for (int t = 0; t < _threads; ++t) {
       _thread_constraints[t].clear();
       if (multi) _thread_f[t].assign(f_int.size(), 0.0);
+      if (multi && !inertia.empty()) _thread_inertia[t].assign(f_int.size(), 0.0);
     }
     parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
       std::span<double> f = multi ? std::span<double>(_thread_f[t]) : f_int;
-      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights,
+      std::span<double> in =
+          multi && !inertia.empty() ? std::span<double>(_thread_inertia[t]) : inertia;
+      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights, in,
                      partial[t]);
     });
     if (multi) {
       for (int t = 0; t < _threads; ++t)
         for (std::size_t s = 0; s < f_int.size(); ++s) f_int[s] += _thread_f[t][s];
+      if (!inertia.empty())
+        for (int t = 0; t < _threads; ++t)
+          for (std::size_t s = 0; s < inertia.size(); ++s) inertia[s] += _thread_inertia[t][s];
     }
     if (C)
       for (int t = 0; t < _threads; ++t) {

@@ -34,9 +34,10 @@ struct AssemblyResult {
 /// damping forces M a + C v of every kernel whose operator is weighted. A kernel that adds its
 /// damping itself (ElementKernel::damping_in_residual) is left alone while rates are defined.
 struct OperatorWeights {
-  double k = 1.0; ///< stiffness (the kernels' tangent)
-  double c = 0.0; ///< damping
-  double m = 0.0; ///< mass
+  double k = 1.0;       ///< stiffness (the kernels' tangent)
+  double c = 0.0;       ///< damping
+  double m = 0.0;       ///< mass
+  double inertia = 1.0; ///< the factor of the inertia forces M a in the residual (HHT)
 };
 
 /// A distributed load with its magnitude evaluated at the current time.
@@ -53,10 +54,11 @@ class Assembler {
 
   /// Internal forces per slot (f_int, overwritten), the matrix k K + c C + m M over equations (if
   /// K: zeroed, then written through one inserter lane per thread; `weights`, default K alone)
-  /// and active constraint rows (if C, overwritten).
+  /// and active constraint rows (if C, overwritten). `inertia` (per slot, if not empty:
+  /// overwritten) gets the elements' inertia forces M a alone, unweighted (HHT's history).
   AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
                           MatrixInserter* K, ConstraintBlock* C,
-                          const OperatorWeights& weights = {});
+                          const OperatorWeights& weights = {}, std::span<double> inertia = {});
   /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
   /// loads add -df/du to K if given (only its symmetric part when `symmetrize`).
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
@@ -81,13 +83,15 @@ class Assembler {
   void assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int thread,
                       const FieldView& fields, const StepContext& ctx, std::span<double> f,
                       MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
-                      AssemblyResult& res);
+                      std::span<double> inertia_out, AssemblyResult& res);
 
   Discretization& _disc;
   int _threads;
   std::vector<ElementGather> _scratch;
   std::vector<ConstraintBlock> _thread_constraints;
   std::vector<std::vector<double>> _thread_f;
+  std::vector<std::vector<double>> _thread_inertia;  ///< per thread: M a (multi-threaded blocks)
+  std::vector<std::vector<double>> _inertia_scratch; ///< per thread: one element's M a
 };
 
 /// Threads to use by default: min(hardware threads / the run's processes on this machine, 2), at

@@ -4,7 +4,8 @@ namespace gapfem {
 
 OperatorWeights TimeIntegrator::weights() const {
   const RateCoefficients c = coefficients();
-  return {1.0, c.v_du, c.a_du};
+  const double w = inertia_weight();
+  return {1.0, c.v_du, w * c.a_du, w};
 }
 
 bool TimeIntegrator::needs_rate_history() const {
@@ -23,6 +24,30 @@ void TimeIntegrator::rates(std::span<const double> u, std::span<const double> u_
     v[k] = c.velocity(du, v0, a0);
     if (c.second_order) a[k] = c.acceleration(du, v0, a0);
   }
+}
+
+RateCoefficients HilberHughesTaylor::coefficients() const {
+  RateCoefficients c;
+  if (!(_dt > 0.0)) return c;
+  const double b = _beta, g = _gamma, h = _dt;
+  c.first_order = c.second_order = true;
+  c.a_du = 1.0 / (b * h * h);
+  c.a_v = -1.0 / (b * h);
+  c.a_a = -(0.5 / b - 1.0);
+  c.v_du = g / (b * h);
+  c.v_v = 1.0 - g / b;
+  c.v_a = h * (1.0 - 0.5 * g / b);
+  return c;
+}
+
+RateCoefficients BackwardEulerDynamic::coefficients() const {
+  RateCoefficients c;
+  if (!(_dt > 0.0)) return c;
+  c.first_order = c.second_order = true;
+  c.v_du = 1.0 / _dt;
+  c.a_du = 1.0 / (_dt * _dt);
+  c.a_v = -1.0 / _dt;
+  return c;
 }
 
 std::unique_ptr<TimeIntegrator> make_time_integrator(const StepContext& ctx) {

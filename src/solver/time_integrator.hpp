@@ -8,9 +8,17 @@
 ///
 /// Backward Euler is the first integrator: the transient heat-transfer and coupled steps' capacity
 /// and the automatic stabilization's viscous forces of static steps (in the step's pseudo-time).
-/// Static steps have none (quasi-static: no rates, the weights of C and M are 0). A Newmark or HHT
-/// integrator for *DYNAMIC is another class here whose rates carry history (v_n, a_n): the
-/// solution state then keeps v, a and their committed copies (needs_rate_history()).
+/// Static steps have none (quasi-static: no rates, the weights of C and M are 0). *DYNAMIC has
+/// Hilber-Hughes-Taylor (HHT) and second-order backward Euler (APPLICATION=QUASI-STATIC), whose
+/// rates carry history (v_n, a_n): the solution state then keeps v, a and their committed copies
+/// (needs_rate_history()).
+///
+/// HHT's equation at t + dt, M a + (1 + alpha) R(t + dt) - alpha R(t) = 0 with R = I - P + L
+/// everything but inertia (internal, damping, external and constraint forces), is solved divided
+/// by 1 + alpha so that the constraint forces are the physical ones at t + dt:
+///   M a / (1 + alpha) + R(t + dt) - alpha / (1 + alpha) R(t) = 0,
+/// hence inertia_weight() = 1 / (1 + alpha) on M a (and on M in the tangent) and
+/// history_weight() = -alpha / (1 + alpha) on the committed R(t) (StepProblem keeps it).
 #include "elements/rate_coefficients.hpp"
 #include "fem/assembler.hpp"
 
@@ -32,7 +40,14 @@ class TimeIntegrator {
   /// damping * dv/du, formed as the integrator forms it (backward Euler: damping / dt).
   virtual double damping_weight(double damping) const = 0;
 
-  /// The weights of K, C and M in the effective tangent: 1, dv/du, da/du.
+  /// The factor of the inertia forces M a in the residual (HHT: 1 / (1 + alpha)).
+  virtual double inertia_weight() const { return 1.0; }
+  /// The factor of the committed non-inertial residual R(t) in the residual (HHT: -alpha / (1 +
+  /// alpha)); 0: none is kept.
+  virtual double history_weight() const { return 0.0; }
+
+  /// The weights of K, C and M in the effective tangent: 1, dv/du, inertia_weight() da/du; the
+  /// residual's factor of M a (OperatorWeights::inertia).
   OperatorWeights weights() const;
   /// Do the trial rates depend on the committed ones (the solution state must then keep them)?
   bool needs_rate_history() const;
@@ -48,6 +63,46 @@ class BackwardEuler final : public TimeIntegrator {
   std::string_view name() const override { return "backward Euler"; }
   void begin_increment(double dt) override { _dt = dt; }
   RateCoefficients coefficients() const override { return RateCoefficients::backward_euler(_dt); }
+  double damping_weight(double damping) const override { return _dt > 0.0 ? damping / _dt : 0.0; }
+
+ private:
+  double _dt = 0.0;
+};
+
+/// Newmark's parameters with Hilber-Hughes-Taylor's alpha (-1/2 <= alpha <= 0): from u = u_n + du,
+///   a = du / (beta dt^2) - v_n / (beta dt) - (1 / (2 beta) - 1) a_n,
+///   v = v_n + dt ((1 - gamma) a_n + gamma a).
+/// alpha = 0, beta = 1/4, gamma = 1/2 is the trapezoidal rule.
+class HilberHughesTaylor final : public TimeIntegrator {
+ public:
+  HilberHughesTaylor(double alpha, double beta, double gamma)
+      : _alpha(alpha), _beta(beta), _gamma(gamma) {}
+  /// beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha: second order, unconditionally stable.
+  static HilberHughesTaylor with_alpha(double alpha) {
+    return {alpha, 0.25 * (1.0 - alpha) * (1.0 - alpha), 0.5 - alpha};
+  }
+  std::string_view name() const override { return "Hilber-Hughes-Taylor"; }
+  void begin_increment(double dt) override { _dt = dt; }
+  RateCoefficients coefficients() const override;
+  double damping_weight(double damping) const override { return damping * coefficients().v_du; }
+  double inertia_weight() const override { return 1.0 / (1.0 + _alpha); }
+  double history_weight() const override { return -_alpha / (1.0 + _alpha); }
+  double alpha() const { return _alpha; }
+  double beta() const { return _beta; }
+  double gamma() const { return _gamma; }
+
+ private:
+  double _alpha, _beta, _gamma;
+  double _dt = 0.0;
+};
+
+/// Backward Euler for second-order problems (*DYNAMIC, APPLICATION=QUASI-STATIC):
+///   v = du / dt,  a = (v - v_n) / dt = du / dt^2 - v_n / dt.
+class BackwardEulerDynamic final : public TimeIntegrator {
+ public:
+  std::string_view name() const override { return "backward Euler (dynamic)"; }
+  void begin_increment(double dt) override { _dt = dt; }
+  RateCoefficients coefficients() const override;
   double damping_weight(double damping) const override { return _dt > 0.0 ? damping / _dt : 0.0; }
 
  private:
