@@ -16,6 +16,8 @@ std::string_view procedure_name(Procedure p) {
     return "COUPLED TEMPERATURE-DISPLACEMENT";
   case Procedure::SubstructureGenerate:
     return "SUBSTRUCTURE GENERATE";
+  case Procedure::Dynamic:
+    return "DYNAMIC";
   }
   return "?";
 }

@@ -96,6 +96,17 @@ struct Model {
     return local_axes(transforms[node_transform[n]], mesh.coords[n]);
   }
 
+  /// *INITIAL CONDITIONS, TYPE=VELOCITY | ROTATING VELOCITY: velocities at the start of the
+  /// analysis (a first step that is *DYNAMIC starts from them)
+  struct InitialVelocity {
+    NodeId node = -1;
+    int dof = 1; ///< 1-6
+    double value = 0.0;
+    bool global = false; ///< in global directions (ROTATING VELOCITY), else the node's system
+  };
+  std::vector<InitialVelocity> initial_velocities;
+  SourceLocation initial_velocity_loc;
+
   std::vector<double> initial_temperature; ///< per node (0 where not given)
   bool has_initial_temperature = false;
   /// some *TEMPERATURE gives through-section gradients (values 2, 3; shells and beams)

@@ -19,7 +19,8 @@ enum class Procedure : std::uint8_t {
   Static,
   HeatTransfer,
   CoupledTempDisp,
-  SubstructureGenerate ///< *SUBSTRUCTURE GENERATE: a linear reduction, no increments
+  SubstructureGenerate, ///< *SUBSTRUCTURE GENERATE: a linear reduction, no increments
+  Dynamic               ///< *DYNAMIC: implicit direct integration (HHT or backward Euler)
 };
 std::string_view procedure_name(Procedure p);
 /// Does the procedure solve for temperatures (heat transfer, coupled temperature-displacement)?
@@ -73,6 +74,22 @@ struct SolutionControls {
   double growth = 1.5;            ///< D_D
 };
 
+/// *DYNAMIC (implicit direct integration, docs/theory/dynamics.md): the application and the
+/// integrator's parameters as Abaqus/Standard resolves them.
+struct DynamicSettings {
+  enum class Application : std::uint8_t { TransientFidelity, ModerateDissipation, QuasiStatic };
+  Application application = Application::TransientFidelity;
+  /// Hilber-Hughes-Taylor (TRANSIENT FIDELITY, MODERATE DISSIPATION) or backward Euler
+  bool hht = true;
+  double alpha = -0.05, beta = 0.275625, gamma = 0.55;
+  /// INITIAL=YES: accelerations at the step start from the equation of motion; NO: zero
+  bool initial_accelerations = true;
+  /// HAFTOL: the half-increment residual tolerance (force) of automatic incrementation; without
+  /// it (and without DIRECT) the increments keep their size unless Newton needs a cut-back
+  std::optional<double> haftol;
+  SourceLocation loc;
+};
+
 /// *CHANGE FRICTION, ELSET= followed by *FRICTION: new friction for some gap elements.
 struct FrictionChange {
   std::vector<ElemId> elements;
@@ -109,6 +126,7 @@ struct Step {
   Incrementation inc;
   SolutionControls controls;
   Stabilization stabilize;
+  DynamicSettings dynamic; ///< *DYNAMIC steps
 
   std::vector<BoundaryEntry> boundary;
   std::vector<NodalLoad> cloads; ///< *CLOAD (DOF 1-6) and *CFLUX (DOF 11)

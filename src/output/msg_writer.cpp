@@ -81,8 +81,8 @@ void MsgWriter::increment(const IncrementInfo& info) {
                    "time increment {:.6g}; residuals:{}",
                    info.increment, info.attempts,
                    info.converged         ? "converged"
-                   : info.deltmx_exceeded ? "repeated (DELTMX)"
-                                          : "not converged, cut back",
+                   : info.deltmx_exceeded ? fmt::format("repeated ({})", info.accuracy_check)
+                                          : std::string("not converged, cut back"),
                    info.iterations, info.severe_discontinuities, info.step_time, info.dt,
                    residuals));
 }

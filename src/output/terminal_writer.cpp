@@ -21,9 +21,9 @@ void TerminalWriter::increment(const IncrementInfo& info) {
   log::progress("  step {} inc {:>4} att {}  step time {:<11.5g} dt {:<11.4g} "
                 "{:>3} iterations{}",
                 info.step, info.increment, info.attempts, info.step_time, info.dt, info.iterations,
-                info.deltmx_exceeded ? "  DELTMX exceeded: repeated"
-                : info.converged     ? ""
-                                     : "  not converged: cut back");
+                info.deltmx_exceeded ? fmt::format("  {} exceeded: repeated", info.accuracy_check)
+                : info.converged     ? std::string()
+                                     : std::string("  not converged: cut back"));
 }
 
 void TerminalWriter::end_step(const Model& model, int step_index, const StepSummary& s) {

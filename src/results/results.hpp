@@ -154,9 +154,11 @@ struct IncrementInfo {
   int step = 0, increment = 0, attempts = 0, iterations = 0, severe_discontinuities = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
   bool converged = true;
-  /// Newton converged, but the temperature change exceeded DELTMX: the increment is repeated
-  /// smaller (converged is then false)
+  /// Newton converged, but the procedure's accuracy check failed (the temperature change exceeded
+  /// DELTMX, the half-increment residual HAFTOL): the increment is repeated smaller (converged is
+  /// then false)
   bool deltmx_exceeded = false;
+  const char* accuracy_check = "DELTMX"; ///< which check (when deltmx_exceeded)
   /// *MONITOR: the monitored DOF's value after a converged increment (none when not due or the
   /// node does not carry the DOF)
   std::optional<double> monitor;

@@ -418,6 +418,7 @@ void Analysis::Impl::increment_loop(StepRun& r) {
       const IncrementAccuracy acc = r.proc->check_accuracy(r, info, dt);
       if (acc.growth > 0.0) growth = growth > 0.0 ? std::min(growth, acc.growth) : acc.growth;
       redo = acc.redo;
+      info.accuracy_check = acc.check;
     }
     info.converged = res.converged && !redo;
     info.deltmx_exceeded = redo;

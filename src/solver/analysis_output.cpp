@@ -341,6 +341,12 @@ void Analysis::Impl::equilibrium_checks(StepProblem& prob, StepChecks& c) {
     const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
     if (d < 3 && fstab[k] != 0.0) fb.to_ground(d, fstab[k]);
   }
+  // dynamic steps: the inertia forces (and HHT's history term) balance the rest
+  const auto fdyn = prob.inertial_forces();
+  for (std::size_t k = 0; k < fdyn.size(); ++k) {
+    const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
+    if (d < 3 && fdyn[k] != 0.0) fb.to_ground(d, fdyn[k]);
+  }
   grounded_forces(prob, fb.ground, fb.scale);
   fb.finish(c);
 }

@@ -11,7 +11,7 @@
 namespace gapfem {
 namespace {
 
-constexpr std::uint32_t kPayloadVersion = 3; // 3: the procedure's state last
+constexpr std::uint32_t kPayloadVersion = 4; // 3: the procedure's state last; 4: rates
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -155,6 +155,13 @@ void Analysis::Impl::begin_resume() {
   in.pod(st.allie);
   in.pod(st.allsd);
   in.vec(st.f_elem_start);
+  for (auto* r : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) { // dynamic steps
+    in.vec(*r);
+    if (!r->empty() && r->size() != ns)
+      throw RestartDataError("the restart record's velocities do not fit the model");
+  }
+  st.v = st.v_start;
+  st.a = st.a_start;
 
   for (ElementBlock& b : disc.blocks()) {
     read_sized(in, b.state_committed, b.state_trial.size(), "element states");
@@ -244,6 +251,7 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.pod(st.allie);
   a.pod(st.allsd);
   a.vec(st.f_elem_start);
+  for (const auto* v : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) a.vec(*v);
   for (const ElementBlock& b : disc.blocks()) {
     a.vec(b.state_committed);
     a.vec(b.mult_committed);

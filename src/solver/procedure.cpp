@@ -15,7 +15,8 @@ std::map<Procedure, ProcedureFactory> builtin_procedures() {
   return {{Procedure::Static, make_static_procedure},
           {Procedure::HeatTransfer, make_heat_transfer_procedure},
           {Procedure::CoupledTempDisp, make_heat_transfer_procedure},
-          {Procedure::SubstructureGenerate, make_substructure_generate_procedure}};
+          {Procedure::SubstructureGenerate, make_substructure_generate_procedure},
+          {Procedure::Dynamic, make_dynamic_procedure}};
 }
 
 /// The table, the built-in procedures in it before anything else is registered or made.

@@ -14,5 +14,7 @@ std::unique_ptr<StepProcedure> make_heat_transfer_procedure(Analysis::Impl& a);
 /// *SUBSTRUCTURE GENERATE: one reduction of the stiffness, no increments
 /// (procedure_substructure.cpp; the reduction itself: substructure_generate.cpp).
 std::unique_ptr<StepProcedure> make_substructure_generate_procedure(Analysis::Impl& a);
+/// *DYNAMIC: implicit direct integration, HHT or backward Euler (procedure_dynamic.cpp).
+std::unique_ptr<StepProcedure> make_dynamic_procedure(Analysis::Impl& a);
 
 } // namespace gapfem

@@ -39,6 +39,11 @@ void StepProblem::begin_rates(double dt) {
   } else {
     for (auto* r : {&_s.v, &_s.a, &_s.v_start, &_s.a_start}) r->clear();
   }
+  if (!_integrator || !_integrator->second_order()) { // no inertia: no dynamic history
+    _s.r_start.clear();
+    _s.r_prev.clear();
+    _f_dyn.clear();
+  }
 }
 
 void StepProblem::begin_increment(double t0, double dt, int increment,
@@ -84,6 +89,7 @@ void StepProblem::commit() {
     _s.allsd += fs * du;
     _s.f_elem_start[k] = fe;
   }
+  if (!_s.r_start.empty() && _ctx.rates.defined()) commit_rate_history();
   if (!_s.v_start.empty()) { // the trial rates of the converged increment become the committed
     _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
     _s.v_start = _s.v;
@@ -125,7 +131,11 @@ Evaluation StepProblem::evaluate(bool tangent) {
   }
   const FieldView f = fields();
   MatrixInserter* K = tangent ? &_Kin : nullptr;
-  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C, _weights);
+  const bool history = !_s.r_start.empty() && _ctx.rates.defined();
+  if (history) _inertia.resize(_s.u.size());
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C, _weights,
+                                    history ? std::span<double>(_inertia) : std::span<double>{});
+  if (history) add_rate_history();
   if (_stats) { // gap elements are reported as "gap work", not assembly
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;
     (*_stats)[TimeCategory::Assembly] -= ar.gap_seconds;
@@ -136,7 +146,9 @@ Evaluation StepProblem::evaluate(bool tangent) {
   _loads.distributed_loads(_ctx.step_time, _active);
   bool follower = false;
   if (!_active.empty()) {
-    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, K, !_unsymmetric_loads);
+    // load stiffness belongs to K: none when K's weight is 0 (M alone)
+    _asm.assemble_loads(_active, f, _ctx, _s.f_ext, _weights.k != 0.0 ? K : nullptr,
+                        !_unsymmetric_loads);
     for (const auto& a : _active)
       follower |= _unsymmetric_loads && _ctx.nlgeom &&
                   (a.load->kind == DistLoadKind::Pressure ||

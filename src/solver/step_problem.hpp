@@ -4,6 +4,7 @@
 /// evaluation at the trial state of the current increment, corrections, reactions.
 #include "common/timer.hpp"
 #include "fem/assembler.hpp"
+#include "linalg/constrained_solver.hpp"
 #include "solver/nonlinear_problem.hpp"
 #include "solver/step_loads.hpp"
 #include "solver/time_integrator.hpp"
@@ -30,6 +31,16 @@ struct SolutionState {
   /// stabilization) per slot at the last committed state, for ALLIE's trapezoidal rule.
   double allie = 0.0, allsd = 0.0;
   std::vector<double> f_elem_start;
+  /// HHT (dynamic steps): the non-inertial residual R = I - P + L per slot at the committed
+  /// state (time_integrator.hpp); empty outside dynamic steps.
+  std::vector<double> r_start;
+  std::vector<double> r_prev; ///< R one committed increment earlier (the half-step residual)
+};
+
+/// What restarting the dynamics at a state found (StepProblem::restart_dynamics).
+struct DynamicRestart {
+  double amax = 0.0;        ///< the largest acceleration
+  double energy_lost = 0.0; ///< kinetic energy removed by the velocity projection
 };
 
 class StepProblem final : public NonlinearProblem {
@@ -55,11 +66,35 @@ class StepProblem final : public NonlinearProblem {
   /// (StepContext::rates) and the assembler its weights from the next begin_increment on.
   void set_integrator(std::unique_ptr<TimeIntegrator> integrator);
   const TimeIntegrator* integrator() const { return _integrator.get(); }
+  /// The start of a dynamic step (step_problem_dynamic.cpp): the non-inertial residual R(0) at
+  /// the committed state and, with `initial_accelerations`, the accelerations of M a + R(0) = 0
+  /// on the DOFs with mass (the active exact constraint rows held, C a = 0), factorised by
+  /// `solver`; without them the committed accelerations stand (zero after a static step).
+  /// Returns the largest |a| found (0 without).
+  double start_dynamic_step(ConstrainedSolver& solver, bool initial_accelerations);
+  /// A fully plastic impact at the committed state (step time t), after an increment in which
+  /// exact constraint rows (hard gaps) became active: the velocities are projected with the
+  /// mass onto C v = 0 (the contacting points take a common normal velocity), the accelerations
+  /// made consistent (M a + R = 0, C a = 0) and HHT's history R(t) reset to -M a. Returns the
+  /// kinetic energy the impact removed. The increment's forces (frame, checks) are kept.
+  double impact(ConstrainedSolver& solver, double t);
+  /// The half-increment residual of the converged increment [t0, t0 + dt] (Abaqus Theory Guide,
+  /// "Implicit dynamic analysis"): the largest component over the free equations of
+  ///   M a + (1 + alpha) R - alpha/2 (R(t0) + R(t0 - dt_prev))
+  /// at t0 + dt/2, the state there from the integrator's midpoint rule; zero to second order
+  /// when the increment's states interpolate linearly. The trial state and the last evaluation
+  /// are left as they were. Negative when the integrator has no midpoint rule.
+  double half_increment_residual(double t0, double dt);
+
   /// Automatic stabilization: the damping operator c M* (M* a unit-density lumped mass, per slot,
   /// on the free translational slots) with velocities by backward Euler in the step's time,
   /// whatever the step's own integrator: forces c m (u - u_start) / dt; c = 0 switches it off.
   void set_stabilization(std::shared_ptr<const std::vector<double>> mass, double c);
   double stabilization_factor() const { return _stab_c; }
+  /// Dynamic steps: the inertia forces M a (weighted as in the residual) plus HHT's history term
+  /// per slot at the last evaluation, which the element and external forces balance (empty
+  /// outside dynamic steps).
+  std::span<const double> inertial_forces() const { return _f_dyn; }
   /// The stabilization forces per slot at the last evaluation (empty when off).
   std::span<const double> stabilization_forces() const { return _f_stab; }
 
@@ -92,6 +127,18 @@ class StepProblem final : public NonlinearProblem {
   /// The integrator's coefficients and weights for an increment of size dt, and the rate vectors
   /// sized (or dropped) as it needs them.
   void begin_rates(double dt);
+  /// R(t) at the committed state and, on request, the accelerations of M a + R = 0 and the
+  /// velocities projected onto the active exact rows (start_dynamic_step, impact).
+  DynamicRestart restart_dynamics(ConstrainedSolver& solver, double t, bool accelerations,
+                                  bool project_velocities);
+  double project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
+                                 const std::vector<bool>& massive);
+  double consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
+                                  const std::vector<bool>& massive);
+  /// HHT's history term: history_weight() R(t) into f_int (after the assembly).
+  void add_rate_history();
+  /// R(t + dt) = f_int - f_ext - history term - inertia_weight() M a at a converged state.
+  void commit_rate_history();
 
   Discretization& _disc;
   Assembler& _asm;
@@ -115,6 +162,8 @@ class StepProblem final : public NonlinearProblem {
   std::shared_ptr<const std::vector<double>> _stab_mass;
   double _stab_c = 0.0;
   std::vector<double> _f_stab;
+  std::vector<double> _inertia; ///< M a per slot at the last evaluation (HHT's history)
+  std::vector<double> _f_dyn;   ///< inertial_forces()
   RunStatistics* _stats = nullptr;
 };
 

@@ -9,6 +9,7 @@ OperatorWeights TimeIntegrator::weights() const {
 }
 
 bool TimeIntegrator::needs_rate_history() const {
+  if (second_order()) return true;
   const RateCoefficients c = coefficients();
   return c.velocity_has_history() || c.acceleration_has_history();
 }
@@ -38,6 +39,19 @@ RateCoefficients HilberHughesTaylor::coefficients() const {
   c.v_v = 1.0 - g / b;
   c.v_a = h * (1.0 - 0.5 * g / b);
   return c;
+}
+
+bool HilberHughesTaylor::midpoint(double dt, std::span<const double> u, std::span<const double> u_n,
+                                  std::span<const double> v_n, std::span<const double> a_n,
+                                  std::span<double> u_mid) const {
+  const double b = _beta, h = 0.5 * dt;
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    const double v0 = v_n.empty() ? 0.0 : v_n[k], a0 = a_n.empty() ? 0.0 : a_n[k];
+    const double du = u[k] - u_n[k];
+    const double a = (du - dt * v0 - dt * dt * (0.5 - b) * a0) / (b * dt * dt);
+    u_mid[k] = u_n[k] + h * v0 + h * h * ((0.5 - b) * a0 + b * 0.5 * (a0 + a));
+  }
+  return true;
 }
 
 RateCoefficients BackwardEulerDynamic::coefficients() const {

@@ -46,9 +46,21 @@ class TimeIntegrator {
   /// alpha)); 0: none is kept.
   virtual double history_weight() const { return 0.0; }
 
+  /// The state halfway through the increment of size dt that ends at u (for the half-increment
+  /// residual of automatic incrementation): writes u_mid per slot and returns true, or false
+  /// when the integrator has no such rule (then u_mid is untouched).
+  virtual bool midpoint(double dt, std::span<const double> u, std::span<const double> u_n,
+                        std::span<const double> v_n, std::span<const double> a_n,
+                        std::span<double> u_mid) const {
+    return false;
+  }
+
   /// The weights of K, C and M in the effective tangent: 1, dv/du, inertia_weight() da/du; the
   /// residual's factor of M a (OperatorWeights::inertia).
   OperatorWeights weights() const;
+  /// Does the integrator solve a second-order problem (its rates always carry history, also
+  /// before the first increment sets dt)?
+  virtual bool second_order() const { return false; }
   /// Do the trial rates depend on the committed ones (the solution state must then keep them)?
   bool needs_rate_history() const;
   /// The trial rates per slot from the trial u and the committed u_n, v_n, a_n (v_n, a_n may be
@@ -87,6 +99,13 @@ class HilberHughesTaylor final : public TimeIntegrator {
   double damping_weight(double damping) const override { return damping * coefficients().v_du; }
   double inertia_weight() const override { return 1.0 / (1.0 + _alpha); }
   double history_weight() const override { return -_alpha / (1.0 + _alpha); }
+  bool second_order() const override { return true; }
+  /// Newmark's displacement over dt/2 with the acceleration's mean a_mid = (a_n + a) / 2 (a the
+  /// acceleration at the end): u_mid = u_n + h v_n + h^2 ((1/2 - beta) a_n + beta a_mid), h = dt/2
+  /// (Hibbitt and Karlsson's half-step state).
+  bool midpoint(double dt, std::span<const double> u, std::span<const double> u_n,
+                std::span<const double> v_n, std::span<const double> a_n,
+                std::span<double> u_mid) const override;
   double alpha() const { return _alpha; }
   double beta() const { return _beta; }
   double gamma() const { return _gamma; }
@@ -101,6 +120,7 @@ class HilberHughesTaylor final : public TimeIntegrator {
 class BackwardEulerDynamic final : public TimeIntegrator {
  public:
   std::string_view name() const override { return "backward Euler (dynamic)"; }
+  bool second_order() const override { return true; }
   void begin_increment(double dt) override { _dt = dt; }
   RateCoefficients coefficients() const override;
   double damping_weight(double damping) const override { return _dt > 0.0 ? damping / _dt : 0.0; }

@@ -25,6 +25,8 @@ int procedure_code(const StepContext& ctx) {
     return ctx.transient ? 72 : 71;
   case Procedure::SubstructureGenerate: // the stiffness of a linear step
     return 1;
+  case Procedure::Dynamic: // implicit dynamics: automatic (11) or fixed (12) increments
+    return ctx.direct ? 12 : 11;
   }
   return 1;
 }

@@ -99,6 +99,7 @@ void handle_end_step(BuildState& s, const Keyword& kw);
 void set_procedure(BuildState& s, const Keyword& kw, Procedure p);
 void handle_static(BuildState& s, const Keyword& kw);
 void handle_heat_transfer(BuildState& s, const Keyword& kw);
+void handle_dynamic(BuildState& s, const Keyword& kw);
 void handle_coupled(BuildState& s, const Keyword& kw);
 void handle_change_friction(BuildState& s, const Keyword& kw);
 /// *CONTROLS (handlers_controls.cpp)

@@ -3,6 +3,7 @@
 #include "io/inp/handlers.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <numeric>
 
@@ -134,11 +135,69 @@ void handle_amplitude(BuildState& s, const Keyword& kw) {
   s.model.amplitudes.push_back(std::move(a));
 }
 
+namespace {
+
+/// TYPE=VELOCITY: node or set, DOF (1-6), velocity in the node's system, one per line.
+void read_initial_velocities(BuildState& s, const Keyword& kw) {
+  s.model.initial_velocity_loc = kw.loc;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(3, "node or node set, degree of freedom, velocity");
+    const auto dof = static_cast<int>(r.integer(1, "degree of freedom", 1, 6));
+    const double v = r.real(2, "velocity");
+    for (NodeId n : resolve_nodes(s, r, 0))
+      s.model.initial_velocities.push_back({n, dof, v, false});
+  });
+}
+
+/// TYPE=ROTATING VELOCITY: node or set, omega, point a, point b (the axis from a to b); an
+/// optional line after it with a translational velocity (x, y, z) superposed. Global components.
+void read_rotating_velocities(BuildState& s, const Keyword& kw) {
+  s.model.initial_velocity_loc = kw.loc;
+  std::vector<NodeId> last;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    if (!last.empty() && line.fields.size() == 3) { // the translation of the line before
+      const Vec3 t{r.real(0, "velocity x"), r.real(1, "velocity y"), r.real(2, "velocity z")};
+      for (NodeId n : last)
+        for (int i = 0; i < 3; ++i) s.model.initial_velocities.push_back({n, i + 1, t[i], true});
+      last.clear();
+      return;
+    }
+    r.at_most(8, "node or node set, angular velocity, axis point a (x, y, z), point b (x, y, z)");
+    const double w = r.real(1, "angular velocity");
+    const Vec3 a{r.real(2, "a x"), r.real(3, "a y"), r.real(4, "a z")};
+    const Vec3 b{r.real(5, "b x"), r.real(6, "b y"), r.real(7, "b z")};
+    const Vec3 ab{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double len = std::sqrt(ab[0] * ab[0] + ab[1] * ab[1] + ab[2] * ab[2]);
+    if (!(len > 0.0))
+      r.fail("fields 3-8",
+             "the axis points a and b coincide; give two distinct points on the axis");
+    const Vec3 e{ab[0] / len, ab[1] / len, ab[2] / len};
+    last = resolve_nodes(s, r, 0);
+    for (NodeId n : last) {
+      const Vec3& x = s.model.mesh.coords[n];
+      const Vec3 d{x[0] - a[0], x[1] - a[1], x[2] - a[2]};
+      const Vec3 v{w * (e[1] * d[2] - e[2] * d[1]), w * (e[2] * d[0] - e[0] * d[2]),
+                   w * (e[0] * d[1] - e[1] * d[0])};
+      for (int i = 0; i < 3; ++i) {
+        s.model.initial_velocities.push_back({n, i + 1, v[i], true});
+        s.model.initial_velocities.push_back({n, i + 4, w * e[i], true}); // rotational DOFs
+      }
+    }
+  });
+}
+
+} // namespace
+
 void handle_initial_conditions(BuildState& s, const Keyword& kw) {
   const std::string type = canonical(param_value(kw, "TYPE", true));
+  if (type == "VELOCITY") return read_initial_velocities(s, kw);
+  if (type == "ROTATINGVELOCITY") return read_rotating_velocities(s, kw);
   if (type != "TEMPERATURE")
     throw InputError(kw.loc, fmt::format("TYPE={}", kw.value("TYPE").value_or("")),
-                     "gapfem supports only TYPE=TEMPERATURE initial conditions");
+                     "gapfem supports TYPE=TEMPERATURE, VELOCITY and ROTATING VELOCITY initial "
+                     "conditions");
   s.model.has_initial_temperature = true;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);

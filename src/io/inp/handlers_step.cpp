@@ -4,6 +4,7 @@
 // load handlers then modify them (handlers_loads.cpp).
 #include "io/inp/handlers.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 
 namespace gapfem::inp {
@@ -168,7 +169,7 @@ void close_step(BuildState& s) {
   Step& st = s.step;
   if (!s.scratch.procedure_given)
     s.error(st.loc, fmt::format("step {}", st.number),
-            "the step has no procedure; add *STATIC, *HEAT TRANSFER or *COUPLED "
+            "the step has no procedure; add *STATIC, *DYNAMIC, *HEAT TRANSFER or *COUPLED "
             "TEMPERATURE-DISPLACEMENT after *STEP");
   // default variation of magnitudes: RAMP, except transient heat transfer / coupled steps (STEP)
   if (!s.scratch.amplitude_given) st.ramp_default = !s.scratch.transient;
@@ -177,6 +178,11 @@ void close_step(BuildState& s) {
       s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");
   check_predefined_temperatures(s);
   resolve_preset_outputs(s);
+  if (st.number == 1 && !s.model.initial_velocities.empty() && st.procedure != Procedure::Dynamic)
+    s.warn(s.model.initial_velocity_loc,
+           fmt::format("the initial velocities apply at the start of the analysis, but its first "
+                       "step is *{}, which has no velocities: they are not used",
+                       procedure_name(st.procedure)));
   if (st.nlgeom && !s.model.substructures.empty() &&
       (s.model.steps.empty() || !s.model.steps.back().nlgeom)) // once: NLGEOM stays on
     s.warn(st.loc, fmt::format("step {} has NLGEOM, but gapfem's substructures respond linearly "
@@ -235,6 +241,85 @@ void handle_static(BuildState& s, const Keyword& kw) {
   if (st.allsdtol < 0)
     throw InputError(kw.loc, param_text(kw, "ALLSDTOL"), "ALLSDTOL must not be negative");
   st.carry = yes_no_param(kw, "CONTINUE", false);
+}
+
+namespace {
+
+/// Does the model have contact (gap elements)? Abaqus's default APPLICATION depends on it.
+bool model_has_contact(const Model& m) {
+  for (ElementType t : m.mesh.elem_types)
+    if (element_info(t).family == ElementFamily::Gap) return true;
+  return false;
+}
+
+/// ALPHA, BETA, GAMMA of *DYNAMIC over the application's defaults (docs/theory/dynamics.md):
+/// an explicit ALPHA gives beta = (1 - alpha)^2 / 4 and gamma = 1/2 - alpha unless they are given.
+void read_hht_parameters(const Keyword& kw, DynamicSettings& d) {
+  if (!d.hht) {
+    for (const char* p : {"ALPHA", "BETA", "GAMMA"})
+      if (kw.has(p))
+        throw InputError(kw.loc, param_text(kw, p),
+                         fmt::format("{} is a parameter of the Hilber-Hughes-Taylor integrator; "
+                                     "APPLICATION=QUASI-STATIC integrates with backward Euler: "
+                                     "remove {} or choose another APPLICATION",
+                                     p, p));
+    return;
+  }
+  if (const auto a = real_param(kw, "ALPHA")) {
+    if (!(*a >= -0.5 && *a <= 0.0))
+      throw InputError(kw.loc, param_text(kw, "ALPHA"),
+                       "ALPHA must lie between -0.5 and 0 (Abaqus's range; -0.05 by default)");
+    d.alpha = *a;
+    d.beta = 0.25 * (1.0 - d.alpha) * (1.0 - d.alpha);
+    d.gamma = 0.5 - d.alpha;
+  }
+  if (const auto b = real_param(kw, "BETA")) d.beta = *b;
+  if (const auto g = real_param(kw, "GAMMA")) d.gamma = *g;
+  if (!(d.beta > 0.0) || !(d.gamma >= 0.5))
+    throw InputError(kw.loc, param_text(kw, kw.has("BETA") ? "BETA" : "GAMMA"),
+                     fmt::format("BETA = {} and GAMMA = {} make the integration unstable: give "
+                                 "BETA > 0 and GAMMA >= 1/2 (or leave them to ALPHA)",
+                                 d.beta, d.gamma));
+}
+
+} // namespace
+
+void handle_dynamic(BuildState& s, const Keyword& kw) {
+  set_procedure(s, kw, Procedure::Dynamic);
+  reject_param(kw, "EXPLICIT", "gapfem is an implicit code; use *DYNAMIC without EXPLICIT");
+  reject_param(kw, "SUBSPACE", "use the implicit integration of *DYNAMIC (SUBSPACE omitted)");
+  reject_param(kw, "ADIABATIC", "gapfem's materials are elastic: there is no plastic heating");
+  reject_param(kw, "IMPACT", "gap contact in dynamic steps needs no IMPACT parameter");
+  DynamicSettings& d = s.step.dynamic;
+  d.loc = kw.loc;
+  using A = DynamicSettings::Application;
+  const int def = model_has_contact(s.model) ? 1 : 0;
+  d.application = static_cast<A>(enum_param(
+      kw, "APPLICATION", {"TRANSIENT FIDELITY", "MODERATE DISSIPATION", "QUASI-STATIC"}, def));
+  // the integrator: the application's, or TIME INTEGRATOR's (HHT-TF, HHT-MD, BWE)
+  const int integrator = enum_param(kw, "TIME INTEGRATOR", {"HHT-TF", "HHT-MD", "BWE"},
+                                    static_cast<int>(d.application));
+  d.hht = integrator != 2;
+  if (integrator == 1) {
+    d.alpha = 1.0 - std::sqrt(2.0); // -0.41421
+    d.beta = 0.25 * (1.0 - d.alpha) * (1.0 - d.alpha);
+    d.gamma = 0.5 - d.alpha;
+  }
+  d.initial_accelerations = yes_no_param(kw, "INITIAL", d.application == A::TransientFidelity);
+  read_hht_parameters(kw, d);
+  s.step.inc.direct = kw.has("DIRECT");
+  if (const auto h = real_param(kw, "HAFTOL")) {
+    if (s.step.inc.direct)
+      throw InputError(kw.loc, param_text(kw, "HAFTOL"),
+                       "DIRECT (fixed increments) and HAFTOL (automatic increments) exclude each "
+                       "other; remove one");
+    if (!(*h > 0.0))
+      throw InputError(kw.loc, param_text(kw, "HAFTOL"),
+                       "the half-increment residual tolerance must be a positive force");
+    d.haftol = *h;
+  }
+  s.step.inc.steady_state = true;
+  read_incrementation(s, kw, 4);
 }
 
 void handle_heat_transfer(BuildState& s, const Keyword& kw) {

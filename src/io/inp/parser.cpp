@@ -98,6 +98,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE"},
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
   {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
+  {"*DYNAMIC", handle_dynamic, W::History, "ALPHA|BETA|GAMMA|APPLICATION|INITIAL|DIRECT|HAFTOL|NOHAF|TIME INTEGRATOR|IMPACT|SUBSPACE|EXPLICIT|ADIABATIC"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*SUBSTRUCTURE GENERATE", handle_substructure_generate, W::History, "TYPE|OVERWRITE|LIBRARY|MASS MATRIX|STRUCTURAL DAMPING MATRIX|VISCOUS DAMPING MATRIX|GRAVITY LOAD|RECOVERY MATRIX|NSET|ELSET|PROPERTY EVALUATION"},
   {"*RETAINED NODAL DOFS", handle_retained_nodal_dofs, W::History, "SORTED"},
@@ -210,7 +211,6 @@ bool output_keyword(const std::string& key) {
 /// Analysis procedures of Abaqus and CalculiX that gapfem does not run.
 bool procedure_keyword(const std::string& key) {
   static const char* const kProcedures[] = {"FREQUENCY",
-                                            "DYNAMIC",
                                             "MODALDYNAMIC",
                                             "STEADYSTATEDYNAMICS",
                                             "BUCKLE",
@@ -571,11 +571,12 @@ void dispatch(BuildState& s, Keyword& kw) {
     if (s.in_step && procedure_keyword(kw.key)) {
       // the step has its procedure, one gapfem does not run: no "step has no procedure" later
       s.scratch.procedure_given = true;
-      s.error(kw.loc, "",
-              fmt::format("the procedure {} is not supported by gapfem, which runs *STATIC, *HEAT "
-                          "TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT steps; replace the step "
-                          "or remove it",
-                          kw.name));
+      s.error(
+          kw.loc, "",
+          fmt::format("the procedure {} is not supported by gapfem, which runs *STATIC, *DYNAMIC, "
+                      "*HEAT TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT steps; replace the "
+                      "step or remove it",
+                      kw.name));
       return;
     }
     unknown_keyword(s, kw, after_empty_heading);

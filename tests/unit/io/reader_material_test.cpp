@@ -290,7 +290,8 @@ TEST(ReaderMaterial, InitialTemperatures) {
   EXPECT_EQ(m.initial_temperature, (std::vector<double>{20.0, 100.0}));
   EXPECT_CONTAINS(
       error_text(std::string(kTrussModel) + "*INITIAL CONDITIONS, TYPE=STRESS\n1, 2.\n"),
-      "deck.inp:11: *INITIAL CONDITIONS: TYPE=STRESS: gapfem supports only TYPE=TEMPERATURE");
+      "deck.inp:11: *INITIAL CONDITIONS: TYPE=STRESS: gapfem supports TYPE=TEMPERATURE, VELOCITY "
+      "and ROTATING VELOCITY");
   const Model none = read(kTrussModel);
   EXPECT_FALSE(none.has_initial_temperature);
   EXPECT_EQ(none.initial_temperature, (std::vector<double>{0.0, 0.0}));

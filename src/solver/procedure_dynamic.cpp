@@ -1,0 +1,161 @@
+// *DYNAMIC steps: implicit direct integration as Abaqus/Standard does it (Hilber-Hughes-Taylor for
+// APPLICATION=TRANSIENT FIDELITY and MODERATE DISSIPATION, backward Euler for QUASI-STATIC), the
+// step starting from the committed velocities and accelerations (or the initial accelerations of
+// INITIAL=YES). Theory and the parameters per application: docs/theory/dynamics.md.
+#include "common/log.hpp"
+#include "solver/analysis_impl.hpp"
+#include "solver/procedures.hpp"
+
+#include <algorithm>
+
+namespace gapfem {
+
+namespace {
+
+class DynamicProcedure final : public StepProcedure {
+ public:
+  using StepProcedure::StepProcedure;
+
+  std::unique_ptr<TimeIntegrator> make_integrator(const Step& step,
+                                                  const StepContext&) const override {
+    const DynamicSettings& d = step.dynamic;
+    if (!d.hht) return std::make_unique<BackwardEulerDynamic>();
+    return std::make_unique<HilberHughesTaylor>(d.alpha, d.beta, d.gamma);
+  }
+
+  /// Without HAFTOL (and without DIRECT) nothing measures the accuracy: the increments keep the
+  /// initial size (Newton's cut-backs allowed) rather than grow unchecked.
+  void adjust_rules(const Step& step, IncrementRules& rules) const override {
+    if (!step.inc.direct && !step.dynamic.haftol) rules.growth = 1.0;
+  }
+  IncrementAccuracy check_accuracy(StepRun& r, const IncrementInfo& info, double dt) override;
+
+  void set_up(StepRun& r, bool resuming) override {
+    if (!resuming) { // a resumed step has the record's rates and history
+      if (r.index == 0) initial_velocities(r.loads->prescribed());
+      _amax = r.prob->start_dynamic_step(*_a.solver, r.step->dynamic.initial_accelerations);
+    }
+    _active = exact_rows_of(r.prob->constraints());
+  }
+  void accepted(StepRun& r, double dt) override;
+  void save(ArchiveWriter& a, const StepRun&) const override {
+    a.vec(_active);
+    a.pod(_easy);
+    a.pod(_lost);
+    a.pod(_amax);
+  }
+  void restore(ArchiveReader& in, StepRun&) override {
+    in.vec(_active);
+    in.pod(_easy);
+    in.pod(_lost);
+    in.pod(_amax);
+  }
+
+  void report_set_up(const StepRun& r) const override {
+    const DynamicSettings& d = r.step->dynamic;
+    const TimeIntegrator* ti = r.prob->integrator();
+    if (d.hht)
+      log::progress("  {} (alpha {:.5g}, beta {:.5g}, gamma {:.5g}); initial accelerations {}",
+                    ti->name(), d.alpha, d.beta, d.gamma,
+                    d.initial_accelerations ? fmt::format("computed (largest {:.4g})", _amax)
+                                            : std::string("zero"));
+    else
+      log::progress("  {}; initial accelerations {}", ti->name(),
+                    d.initial_accelerations ? fmt::format("computed (largest {:.4g})", _amax)
+                                            : std::string("zero"));
+    const Step& step = *r.step;
+    if (d.haftol)
+      log::progress("  automatic increments: half-increment residual tolerance HAFTOL {:.4g}",
+                    *d.haftol);
+    else if (!step.inc.direct)
+      log::progress("  increments kept at {:.4g} (no HAFTOL to measure accuracy; give HAFTOL for "
+                    "automatic increments or DIRECT to say fixed)",
+                    step.inc.initial > 0 ? step.inc.initial : r.loads->period());
+  }
+
+ private:
+  /// *INITIAL CONDITIONS, TYPE=VELOCITY / ROTATING VELOCITY into the committed velocities (the
+  /// analysis's first step): a transformed node's components are in its own system.
+  void initial_velocities(std::span<const std::uint8_t> prescribed) {
+    const Model& m = _a.model;
+    if (m.initial_velocities.empty()) return;
+    SolutionState& st = _a.st;
+    const DofMap& dofs = _a.disc.dofs();
+    st.v_start.assign(st.u.size(), 0.0);
+    for (const Model::InitialVelocity& iv : m.initial_velocities) {
+      const auto axes = iv.global ? std::nullopt : m.node_axes(iv.node);
+      const int base = iv.dof <= 3 ? 0 : 3, i = iv.dof - 1 - base;
+      for (int j = 0; j < 3; ++j) { // v_global = Q^T v_local
+        const double c = axes ? (*axes)[3 * i + j] : (i == j ? 1.0 : 0.0);
+        if (c == 0.0) continue;
+        const LocalIndex s = dofs.slot(iv.node, static_cast<DofType>(base + j));
+        if (s >= 0) st.v_start[s] += c * iv.value;
+      }
+    }
+    for (std::size_t s = 0; s < st.v_start.size() && s < prescribed.size(); ++s)
+      if (prescribed[s]) st.v_start[s] = 0.0; // a boundary condition prescribes the motion there
+    st.v = st.v_start;
+  }
+
+  double _amax = 0.0;
+  double _lost = 0.0; ///< kinetic energy removed by impacts in the step
+  int _easy = 0;      ///< consecutive increments with a half-increment residual below 0.75 HAFTOL
+  std::vector<std::int64_t> _active; ///< the exact constraint rows active at the last commit
+
+  /// The multiplier ids of the exact rows of a constraint block, sorted.
+  static std::vector<std::int64_t> exact_rows_of(const ConstraintBlock& C) {
+    std::vector<std::int64_t> ids;
+    for (int r = 0; r < C.n_rows(); ++r)
+      if (C.compliance[r] == 0.0) ids.push_back(C.multiplier[r]);
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  }
+};
+
+/// An increment in which exact rows (hard gaps) became active is an impact: velocities and
+/// accelerations are made compatible with them (StepProblem::impact; docs/theory/dynamics.md).
+void DynamicProcedure::accepted(StepRun& r, double dt) {
+  std::vector<std::int64_t> now = exact_rows_of(r.prob->constraints());
+  const bool impact = !std::includes(_active.begin(), _active.end(), now.begin(), now.end());
+  _active = std::move(now);
+  if (!impact) return;
+  const double t = r.ctrl->step_time() + dt;
+  const double lost = r.prob->impact(*_a.solver, t);
+  _lost += lost;
+  log::debug("  impact at step time {:.6g}: kinetic energy {:.4g} removed", t, lost);
+}
+
+/// HAFTOL: the half-increment residual against the tolerance. Above it the increment is redone
+/// with 0.85 HAFTOL / residual of its size; after three increments in a row below 0.75 HAFTOL the
+/// next may grow by 0.8 HAFTOL / residual, at most 1.25 (docs/theory/dynamics.md).
+IncrementAccuracy DynamicProcedure::check_accuracy(StepRun& r, const IncrementInfo& info,
+                                                   double dt) {
+  const auto& haftol = r.step->dynamic.haftol;
+  if (!haftol) return {};
+  const double res = r.prob->half_increment_residual(info.step_time - dt, dt);
+  IncrementAccuracy out;
+  out.growth = 1.0;
+  out.check = "HAFTOL";
+  if (res < 0.0) return out; // backward Euler: no half-step rule
+  const double ratio = res > 0.0 ? *haftol / res : 1e30;
+  if (ratio < 1.0) {
+    _easy = 0;
+    out.redo = r.ctrl->retry_smaller(std::max(0.85 * ratio, 0.25));
+    if (out.redo)
+      log::progress("  increment {} attempt {}: half-increment residual {:.4g} exceeds HAFTOL "
+                    "{:.4g}; repeating it with a time increment of {:.4g}",
+                    info.increment, info.attempts, res, *haftol, r.ctrl->next());
+    return out;
+  }
+  _easy = ratio > 1.0 / 0.75 ? _easy + 1 : 0;
+  if (_easy >= 3) out.growth = std::min(1.25, 0.8 * ratio);
+  return out;
+}
+
+} // namespace
+
+std::unique_ptr<StepProcedure> make_dynamic_procedure(Analysis::Impl& a) {
+  return std::make_unique<DynamicProcedure>(a);
+}
+
+} // namespace gapfem

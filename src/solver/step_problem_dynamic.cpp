@@ -1,0 +1,201 @@
+// The dynamic parts of the step problem (step_problem.hpp): HHT's history term and the start of
+// a dynamic step (initial accelerations). Theory: docs/theory/dynamics.md.
+#include "common/log.hpp"
+#include "solver/step_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gapfem {
+
+void StepProblem::add_rate_history() {
+  const double wh = _integrator ? _integrator->history_weight() : 0.0;
+  const double wi = _integrator ? _integrator->inertia_weight() : 1.0;
+  _f_dyn.resize(_s.f_int.size());
+  for (std::size_t s = 0; s < _s.f_int.size(); ++s) {
+    const double h = wh * _s.r_start[s];
+    _s.f_int[s] += h;
+    _f_dyn[s] = wi * _inertia[s] + h;
+  }
+}
+
+void StepProblem::commit_rate_history() {
+  const double wh = _integrator ? _integrator->history_weight() : 0.0;
+  const double wi = _integrator ? _integrator->inertia_weight() : 1.0;
+  const bool inertia = _inertia.size() == _s.u.size();
+  _s.r_prev = _s.r_start;
+  for (std::size_t s = 0; s < _s.r_start.size(); ++s)
+    _s.r_start[s] =
+        _s.f_int[s] - _s.f_ext[s] - wh * _s.r_start[s] - (inertia ? wi * _inertia[s] : 0.0);
+}
+
+namespace {
+
+/// The exact rows of a constraint block (compliant rows are forces of the displacements: they
+/// hold no acceleration).
+ConstraintBlock exact_rows(const ConstraintBlock& C) {
+  ConstraintBlock out;
+  const bool columns = C.has_columns();
+  for (int r = 0; r < C.n_rows(); ++r) {
+    if (C.compliance[r] != 0.0) continue;
+    const auto b = C.row_ptr[r], e = C.row_ptr[r + 1];
+    out.col.insert(out.col.end(), C.col.begin() + b, C.col.begin() + e);
+    out.val.insert(out.val.end(), C.val.begin() + b, C.val.begin() + e);
+    if (columns) out.dval.insert(out.dval.end(), C.dval.begin() + b, C.dval.begin() + e);
+    out.row_ptr.push_back(static_cast<LocalIndex>(out.col.size()));
+    out.g.push_back(0.0);
+    out.compliance.push_back(0.0);
+    out.multiplier.push_back(C.multiplier[r]);
+  }
+  return out;
+}
+
+} // namespace
+
+double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_accelerations) {
+  _s.r_start.clear();
+  _f_dyn.clear();
+  if (_s.a_start.size() != _s.u.size()) _s.a_start.assign(_s.u.size(), 0.0);
+  if (_s.v_start.size() != _s.u.size()) _s.v_start.assign(_s.u.size(), 0.0);
+  return restart_dynamics(solver, 0.0, initial_accelerations, false).amax;
+}
+
+DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t,
+                                             bool accelerations, bool project_velocities) {
+  DynamicRestart out;
+  // R(t): the residual at the committed state and the step's loads at t, no rates (dt = 0)
+  begin_increment(t, 0.0);
+  evaluate(false);
+  _s.r_start.resize(_s.u.size());
+  for (std::size_t s = 0; s < _s.u.size(); ++s) _s.r_start[s] = _s.f_int[s] - _s.f_ext[s];
+  _s.r_prev.clear(); // a fresh start: no earlier increment to lag behind
+  if (!accelerations && !project_velocities) return out;
+  // M alone (the weights of K and C zero) with the active exact constraint rows
+  const OperatorWeights keep = _weights;
+  _weights = {0.0, 0.0, 1.0, 1.0};
+  evaluate(true);
+  _weights = keep;
+  const EquationMap& eqm = _loads.equations();
+  const LocalIndex n = eqm.n_eq();
+  std::vector<bool> massive(static_cast<std::size_t>(n));
+  for (LocalIndex i = 0; i < n; ++i) {
+    massive[i] = _K.diagonal(i) > 0.0;
+    if (!massive[i]) _K.add(i, i, 1.0); // a massless DOF: a placeholder, keeps a = 0
+  }
+  const ConstraintBlock C = exact_rows(_C);
+  const auto factor = solver.factorize(_K, C, true, _stats);
+  for (LocalIndex i = 0; i < n; ++i)
+    if (!massive[i]) _K.add(i, i, -1.0); // M again (energies)
+  if (project_velocities) out.energy_lost = project_velocities_onto(*factor, C, massive);
+  if (accelerations) out.amax = consistent_accelerations(*factor, C, massive);
+  return out;
+}
+
+double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
+                                            const std::vector<bool>& massive) {
+  // [M C^T; C 0] [dv; mu] = [0; -C v]: the least change of kinetic energy that makes the
+  // velocities compatible with the rows (a fully plastic impact)
+  const EquationMap& eqm = _loads.equations();
+  const LocalIndex n = eqm.n_eq();
+  std::vector<double> v(static_cast<std::size_t>(n)), b(v.size(), 0.0), dv(v.size());
+  for (LocalIndex i = 0; i < n; ++i) v[i] = _s.v_start[eqm.eq_slot[i]];
+  std::vector<double> g(static_cast<std::size_t>(C.n_rows())), mu(g.size());
+  for (int r = 0; r < C.n_rows(); ++r) {
+    double cv = 0.0;
+    for (auto k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) cv += C.val[k] * v[C.col[k]];
+    g[r] = cv; // the solver drives C dv + g to 0
+  }
+  factor.solve(b, g, dv, mu);
+  std::vector<double> Mdv(v.size());
+  _K.multiply(dv, Mdv);
+  double lost = 0.0;
+  for (LocalIndex i = 0; i < n; ++i) {
+    _s.v_start[eqm.eq_slot[i]] += dv[i];
+    if (massive[i]) lost += 0.5 * dv[i] * Mdv[i];
+  }
+  return lost;
+}
+
+double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
+                                             const std::vector<bool>& massive) {
+  // M a + R = 0 on the DOFs with mass, C a = 0; then R there is -M a (the constraint forces
+  // that hold C a = 0 included); a massless DOF keeps its R and a = 0
+  const EquationMap& eqm = _loads.equations();
+  const LocalIndex n = eqm.n_eq();
+  std::vector<double> b(static_cast<std::size_t>(n)), a(b.size()), Ma(b.size());
+  for (LocalIndex i = 0; i < n; ++i) b[i] = massive[i] ? -_s.r_start[eqm.eq_slot[i]] : 0.0;
+  std::vector<double> g(static_cast<std::size_t>(C.n_rows()), 0.0), l(g.size());
+  factor.solve(b, g, a, l);
+  for (LocalIndex i = 0; i < n; ++i)
+    if (!massive[i]) a[i] = 0.0;
+  _K.multiply(a, Ma);
+  double amax = 0.0;
+  for (LocalIndex i = 0; i < n; ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    _s.a_start[s] = a[i];
+    if (massive[i]) _s.r_start[s] = -Ma[i];
+    amax = std::max(amax, std::abs(a[i]));
+  }
+  return amax;
+}
+
+double StepProblem::impact(ConstrainedSolver& solver, double t) {
+  // keep the converged increment's forces for its frame and the step's checks
+  const std::vector<double> f_int = _s.f_int, f_ext = _s.f_ext, f_dyn = _f_dyn;
+  const DynamicRestart r = restart_dynamics(solver, t, true, true);
+  _s.f_int = f_int;
+  _s.f_ext = f_ext;
+  _f_dyn = f_dyn;
+  return r.energy_lost;
+}
+
+double StepProblem::half_increment_residual(double t0, double dt) {
+  std::vector<double> u_mid(_s.u.size());
+  if (!_integrator || !_integrator->midpoint(dt, _s.u, _s.u_start, _s.v_start, _s.a_start, u_mid))
+    return -1.0;
+  // keep what the commit reads: the end state, its forces and the elements' trial history
+  const std::vector<double> u_end = _s.u, f_int = _s.f_int, f_ext = _s.f_ext, inertia = _inertia,
+                            f_dyn = _f_dyn;
+  const std::vector<double> T_end = _s.T, G_end = _s.G, rhs = _rhs;
+  std::vector<double> trial;
+  _disc.save_trial(trial);
+  const StepContext ctx = _ctx;
+  const ConstraintBlock C = _C;
+  const double h = 0.5 * dt;
+  _ctx.dt = h;
+  _ctx.step_time = t0 + h;
+  _ctx.total_time = _s.total_time + t0 + h;
+  begin_rates(h); // the rates of u_mid over h are the midpoint's (Newmark's maps)
+  _s.u = u_mid;
+  _loads.apply_prescribed(_ctx.step_time, _s.u);
+  if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
+  evaluate(false);
+  // f_int - f_ext = R_mid + wi M a + wh R(t0): take R_mid out and form the half-step residual
+  const double wh = _integrator->history_weight(), wi = _integrator->inertia_weight();
+  const double alpha = 1.0 / wi - 1.0;
+  const EquationMap& eqm = _loads.equations();
+  const bool prev = _s.r_prev.size() == _s.r_start.size();
+  double r = 0.0;
+  for (LocalIndex i = 0; i < eqm.n_eq(); ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    const double Ma = _inertia.size() == _s.u.size() ? _inertia[s] : 0.0;
+    const double R0 = _s.r_start[s], R1 = prev ? _s.r_prev[s] : R0;
+    const double R_mid = -_rhs[i] - wi * Ma - wh * R0;
+    r = std::max(r, std::abs(Ma + (1.0 + alpha) * R_mid - 0.5 * alpha * (R0 + R1)));
+  }
+  _s.u = u_end;
+  _s.f_int = f_int;
+  _s.f_ext = f_ext;
+  _inertia = inertia;
+  _f_dyn = f_dyn;
+  _s.T = T_end;
+  _s.G = G_end;
+  _rhs = rhs;
+  _C = C;
+  _disc.restore_trial(trial);
+  _ctx = ctx;
+  begin_rates(dt);
+  return r;
+}
+
+} // namespace gapfem
