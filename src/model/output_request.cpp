@@ -5,7 +5,7 @@
 
 namespace gapfem {
 namespace {
-constexpr std::array<std::pair<std::string_view, NodeVar>, 9> kNodeVars = {{
+constexpr std::array<std::pair<std::string_view, NodeVar>, kNumNodeVars> kNodeVars = {{
     {"U", NodeVar::U},
     {"UR", NodeVar::UR},
     {"RF", NodeVar::RF},
@@ -15,6 +15,10 @@ constexpr std::array<std::pair<std::string_view, NodeVar>, 9> kNodeVars = {{
     {"NT", NodeVar::NT},
     {"RFL", NodeVar::RFL},
     {"CFL", NodeVar::CFL},
+    {"V", NodeVar::V},
+    {"VR", NodeVar::VR},
+    {"A", NodeVar::A},
+    {"AR", NodeVar::AR},
 }};
 // SM (section moments) reads as SF: gapfem's SF table of beams and shells holds the section
 // forces and the moments (SM1…) side by side

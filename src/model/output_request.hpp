@@ -11,7 +11,14 @@
 
 namespace gapfem {
 
-enum class NodeVar : std::uint8_t { U, UR, RF, RM, CF, CM, NT, RFL, CFL };
+/// Node variables. V, VR (velocities) and A, AR (accelerations) exist in *DYNAMIC steps only: a
+/// request for them in another step writes nothing (the deck gets a warning).
+enum class NodeVar : std::uint8_t { U, UR, RF, RM, CF, CM, NT, RFL, CFL, V, VR, A, AR };
+inline constexpr std::size_t kNumNodeVars = 13;
+/// V, VR, A, AR: the rates of a dynamic step.
+constexpr bool is_rate_var(NodeVar v) {
+  return v == NodeVar::V || v == NodeVar::VR || v == NodeVar::A || v == NodeVar::AR;
+}
 enum class ElemVar : std::uint8_t {
   S,   ///< stress (gaps: S11 contact pressure, S12/S13 friction shear)
   E,   ///< strain (gaps: E11 clearance, E12/E13 accumulated slip)

@@ -20,6 +20,10 @@ constexpr std::array<std::string_view, 3> kCF = {"CF1", "CF2", "CF3"};
 constexpr std::array<std::string_view, 3> kUR = {"UR1", "UR2", "UR3"};
 constexpr std::array<std::string_view, 3> kRM = {"RM1", "RM2", "RM3"};
 constexpr std::array<std::string_view, 3> kCM = {"CM1", "CM2", "CM3"};
+constexpr std::array<std::string_view, 3> kV = {"V1", "V2", "V3"};
+constexpr std::array<std::string_view, 3> kVR = {"VR1", "VR2", "VR3"};
+constexpr std::array<std::string_view, 3> kA = {"A1", "A2", "A3"};
+constexpr std::array<std::string_view, 3> kAR = {"AR1", "AR2", "AR3"};
 
 /// The columns of one nodal variable: which array, which components, which
 /// nodes carry it.
@@ -108,8 +112,37 @@ NodeColumns node_columns(const Model& model, const NodeResults& r, NodeVar var) 
   case NodeVar::CFL:
     scalar(r.CFL, r.CFL_more, "CFL");
     break;
+  case NodeVar::V:
+    translations(r.V, kV);
+    break;
+  case NodeVar::VR:
+    rotations(r.VR, kVR);
+    break;
+  case NodeVar::A:
+    translations(r.A, kA);
+    break;
+  case NodeVar::AR:
+    rotations(r.AR, kAR);
+    break;
   }
   return c;
+}
+
+/// Does the frame hold `var` at all? Velocities and accelerations exist in dynamic steps only;
+/// elsewhere a request for them prints nothing (the input layer warned).
+bool printable(const NodeResults& r, NodeVar var) {
+  switch (var) {
+  case NodeVar::V:
+    return !r.V.empty();
+  case NodeVar::VR:
+    return !r.VR.empty();
+  case NodeVar::A:
+    return !r.A.empty();
+  case NodeVar::AR:
+    return !r.AR.empty();
+  default:
+    return true;
+  }
 }
 
 bool carries(const NodeResults& r, NodeId n, NodeColumns::Carrier carrier) {
@@ -301,8 +334,11 @@ void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
   std::vector<bool> node_due(step.node_prints.size()), el_due(step.el_prints.size());
   bool any_node = false, any_el = false;
   for (std::size_t k = 0; k < step.node_prints.size(); ++k) {
-    node_due[k] = k < frame.node_print_due.size() && frame.node_print_due[k] &&
-                  !(repeated && _printed_node[k]);
+    const auto& vars = step.node_prints[k].vars;
+    node_due[k] =
+        k < frame.node_print_due.size() && frame.node_print_due[k] &&
+        !(repeated && _printed_node[k]) &&
+        std::any_of(vars.begin(), vars.end(), [&](NodeVar v) { return printable(frame.nodes, v); });
     any_node |= node_due[k];
   }
   for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
@@ -345,6 +381,7 @@ void DatWriter::write_node_table(const Model& model, const Frame& frame,
                                  const NodePrintRequest& request, const std::vector<NodeId>& nodes,
                                  NodeVar var) {
   const NodeResults& r = frame.nodes;
+  if (!printable(r, var)) return;
   const NodeColumns cols = node_columns(model, r, var);
   auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);

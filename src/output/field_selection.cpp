@@ -9,7 +9,8 @@ FieldSelection::FieldSelection(const Model& model, int step_index, const Frame& 
   const auto ne = static_cast<std::size_t>(model.mesh.n_elements());
   const bool known_step = step_index >= 0 && step_index < static_cast<int>(model.steps.size());
   if (frame.field_output_due.empty() || !known_step) { // no *OUTPUT, FIELD: all but the loads
-    for (NodeVar v : {NodeVar::U, NodeVar::UR, NodeVar::RF, NodeVar::RM, NodeVar::NT, NodeVar::RFL})
+    for (NodeVar v : {NodeVar::U, NodeVar::UR, NodeVar::RF, NodeVar::RM, NodeVar::NT, NodeVar::RFL,
+                      NodeVar::V, NodeVar::VR, NodeVar::A, NodeVar::AR})
       _node[static_cast<std::size_t>(v)].assign(nn, 1);
     for (auto& m : _elem) m.assign(ne, 1);
     return;

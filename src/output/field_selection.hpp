@@ -4,7 +4,7 @@
 /// due in the frame. A variable of a `*NODE OUTPUT, NSET=` / `*ELEMENT OUTPUT, ELSET=` line is
 /// written on that set only (NaN elsewhere). A step without `*OUTPUT, FIELD` writes, at its end,
 /// every variable gapfem has but the applied loads CF, CM, CFL (docs/results.md, "ParaView
-/// frames").
+/// frames"); velocities and accelerations only in dynamic steps, the only ones that have them.
 #include "model/model.hpp"
 #include "results/results.hpp"
 
@@ -30,8 +30,8 @@ class FieldSelection {
   static const std::vector<char>* get(const std::array<std::vector<char>, N>& a, int i) {
     return a[static_cast<std::size_t>(i)].empty() ? nullptr : &a[static_cast<std::size_t>(i)];
   }
-  std::array<std::vector<char>, 9> _node; ///< per NodeVar
-  std::array<std::vector<char>, 4> _elem; ///< per ElemVar
+  std::array<std::vector<char>, kNumNodeVars> _node; ///< per NodeVar
+  std::array<std::vector<char>, 4> _elem;            ///< per ElemVar
 };
 
 } // namespace gapfem::output

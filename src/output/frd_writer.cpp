@@ -228,12 +228,29 @@ void FrdWriter::node_blocks(const Model& model, const Frame& frame,
     case NodeVar::CFL:
       b = {"CFL", 1, {"CFL"}, {}}, scalar = &r.CFL;
       break;
+    // CalculiX's velocity block (VELO: V1 V2 V3 ALL); it writes no accelerations or rotational
+    // rates, which take names of the same form (cgx shows any named vector block)
+    case NodeVar::V:
+      b = {"VELO", 2, {"V1", "V2", "V3"}, {}}, vec = &r.V;
+      break;
+    case NodeVar::VR:
+      b = {"VELR", 2, {"VR1", "VR2", "VR3"}, {}}, vec = &r.VR;
+      break;
+    case NodeVar::A:
+      b = {"ACCE", 2, {"A1", "A2", "A3"}, {}}, vec = &r.A;
+      break;
+    case NodeVar::AR:
+      b = {"ACCR", 2, {"AR1", "AR2", "AR3"}, {}}, vec = &r.AR;
+      break;
     }
+    // velocities and accelerations of a step that has none (not *DYNAMIC): nothing to write
+    if (vec && vec->size() != static_cast<std::size_t>(model.mesh.n_nodes())) continue;
     std::vector<NodeId> nodes;
     for (NodeId n = 0; n < model.mesh.n_nodes(); ++n) {
       if (!masks[k][static_cast<std::size_t>(n)]) continue;
       const output::NodeFields f = output::node_fields(r, n);
-      const bool rotational = v == NodeVar::UR || v == NodeVar::RM || v == NodeVar::CM;
+      const bool rotational = v == NodeVar::UR || v == NodeVar::RM || v == NodeVar::CM ||
+                              v == NodeVar::VR || v == NodeVar::AR;
       const bool carried = vec ? (rotational ? f.rotation : f.displacement)
                                : (v == NodeVar::NT ? f.nt : f.temperature);
       if (!carried) continue;

@@ -274,11 +274,16 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
     if (idx < r.U.size()) vec_field(b, sep, "U", r.U[idx], nt, false);
     if (idx < r.RF.size()) vec_field(b, sep, "RF", r.RF[idx], nt, false);
     if (idx < r.CF.size() && nonzero(r.CF[idx])) vec_field(b, sep, "CF", r.CF[idx], nt, false);
+    // velocity and acceleration: dynamic steps only (empty elsewhere)
+    if (idx < r.V.size()) vec_field(b, sep, "V", r.V[idx], nt, false);
+    if (idx < r.A.size()) vec_field(b, sep, "A", r.A[idx], nt, false);
   }
   if (f.rotation) {
     if (idx < r.UR.size()) vec_field(b, sep, "UR", r.UR[idx], 3, planar);
     if (idx < r.RM.size()) vec_field(b, sep, "RM", r.RM[idx], 3, planar);
     if (idx < r.CM.size() && nonzero(r.CM[idx])) vec_field(b, sep, "CM", r.CM[idx], 3, planar);
+    if (idx < r.VR.size()) vec_field(b, sep, "VR", r.VR[idx], 3, planar);
+    if (idx < r.AR.size()) vec_field(b, sep, "AR", r.AR[idx], 3, planar);
   }
   if (const auto it = r.local_axes.find(n); it != r.local_axes.end()) {
     // a *TRANSFORM node: the vectors above are in its local system, whose axes follow (rows)

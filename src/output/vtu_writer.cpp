@@ -229,11 +229,15 @@ std::vector<Array> node_arrays(const Model& model, const Frame& frame,
     vec("U", NodeVar::U, r.U);
     vec("RF", NodeVar::RF, r.RF);
     vec("CF", NodeVar::CF, r.CF);
+    vec("V", NodeVar::V, r.V); // velocities and accelerations: dynamic steps only (else empty)
+    vec("A", NodeVar::A, r.A);
   }
   if (r.any_rotation) {
     vec("UR", NodeVar::UR, r.UR);
     vec("RM", NodeVar::RM, r.RM);
     vec("CM", NodeVar::CM, r.CM);
+    vec("VR", NodeVar::VR, r.VR);
+    vec("AR", NodeVar::AR, r.AR);
   }
   if (!r.any_temperature) return arrays;
   if (!r.nt_field.empty()) {

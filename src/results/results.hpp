@@ -23,6 +23,10 @@ struct Model;
 /// not carry a DOF are zero, and `has_*` tell which nodes carry which field.
 struct NodeResults {
   std::vector<Vec3> U, UR, RF, RM, CF, CM;
+  /// Velocities (V, VR) and accelerations (A, AR) of a *DYNAMIC step, sized n_nodes like U and UR
+  /// (zero at nodes without the DOF; local systems at *TRANSFORM nodes like U); empty in steps
+  /// without them, whose writers then leave them out.
+  std::vector<Vec3> V, VR, A, AR;
   std::vector<double> NT, RFL, CFL;
   /// Heat-transfer shells carry temperatures at points through their thickness (DOFs 11, 12, …):
   /// NT/RFL/CFL above hold DOF 11; the further points 12 … 10 + temperature_points are in the

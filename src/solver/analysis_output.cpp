@@ -17,7 +17,8 @@ void Analysis::Impl::to_local_systems(NodeResults& nr) const {
     const auto Q = model.node_axes(n);
     if (!Q) continue;
     nr.local_axes[n] = *Q;
-    for (auto* v : {&nr.U, &nr.UR, &nr.CF, &nr.CM}) rotate(*Q, (*v)[n]);
+    for (auto* v : {&nr.U, &nr.UR, &nr.CF, &nr.CM, &nr.V, &nr.VR, &nr.A, &nr.AR})
+      if (!v->empty()) rotate(*Q, (*v)[n]);
     for (int d = 1; d <= 6; ++d) {
       const int r = rows.bc_row(n, d);
       const double reaction = r >= 0 && rows.active(r) ? -rows.mult_committed[r] : 0.0;
@@ -88,6 +89,15 @@ void Analysis::Impl::frame_nodes(StepProblem& prob, Frame& fr) {
   nr.NT_more.assign(more * static_cast<std::size_t>(nn), 0.0);
   nr.RFL_more = nr.CFL_more = nr.NT_more;
   nr.dof_mask.resize(nn);
+  // velocities and accelerations: the committed ones of a dynamic step, the increment's end values
+  // (empty in other steps, which have none)
+  const bool rates = !st.v_start.empty() && st.v_start.size() == st.u_start.size() &&
+                     st.a_start.size() == st.u_start.size();
+  nr.V.clear();
+  nr.VR.clear();
+  nr.A.clear();
+  nr.AR.clear();
+  if (rates) nr.V = nr.VR = nr.A = nr.AR = nr.U;
   const std::vector<double> reaction = prob.reactions();
   const std::vector<double> cload = prob.concentrated_loads();
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
@@ -98,11 +108,19 @@ void Analysis::Impl::frame_nodes(StepProblem& prob, Frame& fr) {
       nr.U[n][d] = u;
       nr.RF[n][d] = reaction[s];
       nr.CF[n][d] = cload[s];
+      if (rates) {
+        nr.V[n][d] = st.v_start[s];
+        nr.A[n][d] = st.a_start[s];
+      }
       nr.any_displacement = true;
     } else if (d < 6) {
       nr.UR[n][d - 3] = u;
       nr.RM[n][d - 3] = reaction[s];
       nr.CM[n][d - 3] = cload[s];
+      if (rates) {
+        nr.VR[n][d - 3] = st.v_start[s];
+        nr.AR[n][d - 3] = st.a_start[s];
+      }
       nr.any_rotation = true;
     } else if (d == static_cast<int>(DofType::NT)) {
       nr.NT[n] = u;

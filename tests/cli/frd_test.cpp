@@ -11,6 +11,7 @@
 #include "test_util.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <map>
@@ -239,6 +240,59 @@ TEST(ElPrintAveragedAtNodes, OneRowPerNodeWithTheExtrapolatedValues) {
   }
   EXPECT_EQ(tables, 2);
   EXPECT_EQ(rows, 24); // 12 nodes, S and E
+}
+
+/// A bar with a mass at its free end, pulled by 5 from t = 0 (*DYNAMIC, trapezoidal rule), or
+/// statically when `procedure` says so; `output` goes into the step.
+std::string dynamic_bar(const std::string& procedure, const std::string& output) {
+  return "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n"
+         "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n*DENSITY\n2.\n"
+         "*SOLID SECTION, ELSET=BAR, MATERIAL=M\n0.5\n*BOUNDARY\n1, 1, 3\n2, 2, 3\n"
+         "*AMPLITUDE, NAME=CONST\n0., 1., 10., 1.\n*STEP\n" +
+         procedure + "\n0.01, 0.02\n*CLOAD, AMPLITUDE=CONST\n2, 1, 5.\n" + output + "*END STEP\n";
+}
+
+TEST(FrdFile, VelocityAndAccelerationOfADynamicStep) {
+  // CalculiX's velocity block VELO (V1 V2 V3 ALL) and, of the same form, ACCE (A1 A2 A3 ALL)
+  const JobResult r =
+      test::run_deck(dynamic_bar("*DYNAMIC, DIRECT, ALPHA=0.", "*NODE FILE\nU, V, A\n"), true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const std::string text = test::slurp(test::test_dir() / "job.frd");
+  EXPECT_NE(text.find(" -4  VELO        4    1\n -5  V1          1    2    1    0\n"),
+            std::string::npos);
+  EXPECT_NE(text.find(" -4  ACCE        4    1\n -5  A1          1    2    1    0\n"),
+            std::string::npos);
+  const FrdFile f = read_frd(test::test_dir() / "job.frd");
+  ASSERT_EQ(f.datasets.size(), 6u); // two increments, three variables
+  const Frame& end = test::last_frame(r);
+  const NodeId tip = r.model->mesh.find_node(2);
+  const char* names[] = {"DISP", "VELO", "ACCE"};
+  const Vec3* expected[] = {&end.nodes.U[tip], &end.nodes.V[tip], &end.nodes.A[tip]};
+  for (int k = 0; k < 3; ++k) {
+    const FrdDataset& d = f.datasets[3 + k];
+    EXPECT_EQ(d.name, names[k]);
+    EXPECT_EQ(d.increment, 2);
+    const auto& x = d.values.at(2);
+    ASSERT_EQ(x.size(), 3u);
+    const double value = (*expected[k])[0];
+    EXPECT_NE(value, 0.0) << names[k];
+    EXPECT_NEAR(x[0], value, 1e-5 * std::abs(value)) << names[k]; // the format's E12.5
+  }
+  if (std::system("command -v cgx > /dev/null 2>&1") != 0) return; // cgx: see below
+  const auto dir = test::test_dir();
+  std::ofstream(dir / "read.fbd") << "read job.frd\nprnt info\nquit\n";
+  const std::string cmd = "cd '" + dir.string() + "' && timeout 60 cgx -bg read.fbd > cgx.log 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_NE(test::slurp(dir / "cgx.log").find("ds:6"), std::string::npos)
+      << test::slurp(dir / "cgx.log");
+}
+
+TEST(FrdFile, NoVelocitiesInAStaticStep) {
+  const JobResult r = test::run_deck(dynamic_bar("*STATIC, DIRECT", "*NODE FILE\nU, V, A\n"), true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const FrdFile f = read_frd(test::test_dir() / "job.frd");
+  ASSERT_EQ(f.datasets.size(), 2u);
+  for (const FrdDataset& d : f.datasets) EXPECT_EQ(d.name, "DISP");
 }
 
 TEST(FrdFile, CgxReadsItInBatchMode) {

@@ -167,6 +167,9 @@ void handle_print_control(BuildState& s, const Keyword& kw);
 void handle_output_suboption(BuildState& s, const Keyword& kw);
 /// Fills VARIABLE=PRESELECT/ALL field requests once the step's procedure is known.
 void resolve_preset_outputs(BuildState& s);
+/// A step that is not *DYNAMIC and whose output requests (its own or carried over) name V, VR, A
+/// or AR: one warning naming them; the writers leave them out.
+void check_rate_outputs(BuildState& s, Step& st);
 ///@}
 
 } // namespace gapfem::inp

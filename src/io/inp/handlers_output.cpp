@@ -40,7 +40,7 @@ void add_unique(std::vector<T>& list, T v) {
   if (std::find(list.begin(), list.end(), v) == list.end()) list.push_back(v);
 }
 
-constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL";
+constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL, V, VR, A, AR";
 constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC";
 
 /// A data line of whole numbers only (a list of section points, read by read_vars)?
@@ -408,6 +408,7 @@ void resolve_preset_outputs(BuildState& s) {
   Step& st = s.step;
   const bool mech = st.procedure != Procedure::HeatTransfer;
   const bool thermal = is_thermal(st.procedure);
+  const bool dynamic = st.procedure == Procedure::Dynamic;
   for (auto [index, all] : s.scratch.preset_fields) {
     FieldOutputRequest& req = st.field_outputs[index];
     // PRESELECT: Abaqus's default field output (U, RF, S, E; NT, HFL for thermal procedures); ALL:
@@ -428,6 +429,11 @@ void resolve_preset_outputs(BuildState& s) {
         elem(ElemVar::SF);
       }
     }
+    if (dynamic) { // Abaqus/Standard preselects V and A in dynamic steps
+      for (NodeVar v : {NodeVar::V, NodeVar::A}) node(v);
+      if (all)
+        for (NodeVar v : {NodeVar::VR, NodeVar::AR}) node(v);
+    }
     if (thermal) {
       node(NodeVar::NT);
       elem(ElemVar::HFL);
@@ -445,6 +451,30 @@ void resolve_preset_outputs(BuildState& s) {
       ++it;
     }
   }
+}
+
+void check_rate_outputs(BuildState& s, Step& st) {
+  if (st.procedure == Procedure::Dynamic) return;
+  // V, VR, A, AR requested (or carried over from a dynamic step) where there are no rates: the
+  // requests stay (a later dynamic step may inherit them) and the writers leave them out
+  std::vector<NodeVar> asked;
+  const SourceLocation* where = nullptr;
+  auto note = [&](const std::vector<NodeVar>& vars, const SourceLocation& loc) {
+    for (NodeVar v : vars) {
+      if (!is_rate_var(v)) continue;
+      add_unique(asked, v);
+      if (!where) where = &loc;
+    }
+  };
+  for (const NodePrintRequest& r : st.node_prints) note(r.vars, r.loc);
+  for (const FieldOutputRequest& r : st.field_outputs) note(r.node_vars, r.loc);
+  for (const FileOutputRequest& r : st.file_outputs) note(r.node_vars, r.loc);
+  if (asked.empty()) return;
+  std::string names;
+  for (NodeVar v : asked) names += fmt::format("{}{}", names.empty() ? "" : ", ", node_var_name(v));
+  s.warn(*where,
+         fmt::format("{} {} output of dynamic steps; step {} is *{}: not written", names,
+                     asked.size() == 1 ? "is" : "are", st.number, procedure_name(st.procedure)));
 }
 
 } // namespace gapfem::inp

@@ -199,6 +199,7 @@ void close_step(BuildState& s) {
       if (!(r.element ? s.scratch.el_file_given : s.scratch.node_file_given))
         st.file_outputs.push_back(r);
   }
+  check_rate_outputs(s, st);
   s.model.steps.push_back(std::move(st));
   s.step = Step{};
   s.in_step = false;

@@ -264,6 +264,75 @@ TEST(OutputDat, PlanarColumns) {
   EXPECT_EQ(lines[ur + 7].substr(0, 8), " MAXIMUM");
 }
 
+/// The planar model's frame with the rates of a dynamic step: V = 10 U, A = -100 U, and at node 9
+/// VR3 = 0.5, AR3 = -2.
+Frame planar_frame_with_rates(const Model& m) {
+  Frame fr = make_planar_frame(m);
+  auto& r = fr.nodes;
+  r.V = r.A = r.U;
+  for (std::size_t i = 0; i < r.U.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      r.V[i][c] = 10.0 * r.U[i][c];
+      r.A[i][c] = -100.0 * r.U[i][c];
+    }
+  r.VR.assign(r.U.size(), Vec3{});
+  r.AR = r.VR;
+  r.VR[4] = {0.0, 0.0, 0.5};
+  r.AR[4] = {0.0, 0.0, -2.0};
+  return fr;
+}
+
+std::vector<std::string> run_planar_dat(const Model& m, const Frame& frame,
+                                        const std::filesystem::path& dir) {
+  DatWriter w(dir / "p.dat");
+  w.begin(m);
+  w.begin_step(m, 0);
+  w.frame(m, 0, frame);
+  w.end(m, RunSummary{});
+  return read_lines(dir / "p.dat");
+}
+
+TEST(OutputDat, VelocityAndAccelerationTables) {
+  Model m = make_planar_model();
+  m.steps[0].procedure = Procedure::Dynamic;
+  m.steps[0].node_prints[0].vars = {NodeVar::V, NodeVar::VR, NodeVar::A, NodeVar::AR};
+  const auto lines = run_planar_dat(m, planar_frame_with_rates(m), fresh_dir());
+  // V and A as U (V1 V2 in 2-D, every node), VR and AR as UR (VR3 only, node 9 only)
+  const int v = find_line(lines, "NODE FOOT-   V1");
+  ASSERT_GE(v, 0);
+  EXPECT_EQ(lines[v], "       NODE FOOT-   V1          V2");
+  EXPECT_EQ(lines[v + 3], fmt::format("{:>11}    {}{}", 1, e12(10.0), e12(20.0)));
+  const int vr = find_line(lines, "NODE FOOT-   VR3", v);
+  ASSERT_GT(vr, v);
+  EXPECT_EQ(lines[vr], "       NODE FOOT-   VR3");
+  EXPECT_EQ(lines[vr + 3], fmt::format("{:>11}    {}", 9, e12(0.5)));
+  EXPECT_EQ(lines[vr + 4], "");
+  const int a = find_line(lines, "NODE FOOT-   A1", vr);
+  ASSERT_GT(a, vr);
+  EXPECT_EQ(lines[a], "       NODE FOOT-   A1          A2");
+  EXPECT_EQ(lines[a + 3], fmt::format("{:>11}    {}{}", 1, e12(-100.0), e12(-200.0)));
+  const int ar = find_line(lines, "NODE FOOT-   AR3", a);
+  ASSERT_GT(ar, a);
+  EXPECT_EQ(lines[ar + 3], fmt::format("{:>11}    {}", 9, e12(-2.0)));
+}
+
+TEST(OutputDat, RatesOfAStepWithoutThemAreLeftOut) {
+  // a static frame has no V or A: their tables are not printed (the input layer warned), and a
+  // request of nothing else prints no node output at all
+  Model m = make_planar_model();
+  m.steps[0].node_prints[0].vars = {NodeVar::U, NodeVar::V, NodeVar::A};
+  auto lines = run_planar_dat(m, make_planar_frame(m), fresh_dir());
+  EXPECT_GE(find_line(lines, "NODE FOOT-   U1"), 0);
+  EXPECT_EQ(find_line(lines, "V1"), -1);
+  EXPECT_EQ(find_line(lines, "A1"), -1);
+  EXPECT_EQ(find_line(lines, "NOTHING TO PRINT"), -1);
+  EXPECT_EQ(count_lines(lines, "THE FOLLOWING TABLE IS PRINTED"), 1);
+  m.steps[0].node_prints[0].vars = {NodeVar::V};
+  lines = run_planar_dat(m, make_planar_frame(m), fresh_dir());
+  EXPECT_EQ(find_line(lines, "N O D E   O U T P U T"), -1);
+  EXPECT_EQ(find_line(lines, "INCREMENT     1 SUMMARY"), -1);
+}
+
 TEST(OutputDat, ThermalAndDampingChecks) {
   const Model m = make_model();
   const auto dir = fresh_dir();

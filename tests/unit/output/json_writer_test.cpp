@@ -291,6 +291,42 @@ TEST(OutputJson, PlanarModelHasTwoDisplacementComponents) {
   EXPECT_EQ(nodes["9"]["RM"], (std::vector<double>{0.0}));
 }
 
+TEST(OutputJson, VelocityAndAccelerationOfDynamicFrames) {
+  const Model m = make_planar_model();
+  auto write = [&](const Frame& frame, const std::filesystem::path& dir) {
+    JsonWriter w(dir / "p.results.json", "p");
+    w.begin(m);
+    w.begin_step(m, 0);
+    w.frame(m, 0, frame);
+    w.end_step(m, 0, StepSummary{});
+    w.end(m, RunSummary{});
+    return json::parse(read_file(dir / "p.results.json"))["steps"][0]["frames"][0]["nodes"];
+  };
+  Frame fr = make_planar_frame(m);
+  const auto dir = fresh_dir();
+  std::filesystem::create_directories(dir / "rates");
+  // without rates (a static step): no V, VR, A, AR keys
+  json nodes = write(fr, dir);
+  for (const char* k : {"V", "VR", "A", "AR"}) {
+    EXPECT_FALSE(nodes["3"].contains(k)) << k;
+    EXPECT_FALSE(nodes["9"].contains(k)) << k;
+  }
+  // with them: V and A like U (2 components in 2-D), VR and AR like UR ([VR3]) where UR is
+  auto& r = fr.nodes;
+  r.V.assign(r.U.size(), Vec3{});
+  r.A = r.VR = r.AR = r.V;
+  r.V[2] = {1.5, -2.5, 0.0};
+  r.A[2] = {-30.0, 40.0, 0.0};
+  r.VR[4] = {0.0, 0.0, 0.25};
+  r.AR[4] = {0.0, 0.0, -4.0};
+  nodes = write(fr, dir / "rates");
+  EXPECT_EQ(nodes["3"]["V"], (std::vector<double>{1.5, -2.5}));
+  EXPECT_EQ(nodes["3"]["A"], (std::vector<double>{-30.0, 40.0}));
+  EXPECT_FALSE(nodes["3"].contains("VR"));
+  EXPECT_EQ(nodes["9"]["VR"], (std::vector<double>{0.25}));
+  EXPECT_EQ(nodes["9"]["AR"], (std::vector<double>{-4.0}));
+}
+
 TEST(OutputJson, FactoryWritesAllFiles) {
   const Model m = make_model();
   const auto dir = fresh_dir() / "sub" / "dir"; // created by the factory

@@ -457,6 +457,59 @@ TEST(OutputVtu, NodeOutputOnASetIsNaNElsewhere) {
   EXPECT_FALSE(std::isnan(rf[3 * 1 + 1]));
 }
 
+TEST(OutputVtu, VelocityAndAccelerationInGlobalComponents) {
+  // a dynamic bar along x whose free node has a *TRANSFORM (local 1 = y, local 2 = -x): the frame
+  // and job.dat hold V and A in that system, the VTU in global components, like U
+  const std::string deck = R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+*NSET, NSET=TIP
+2
+*TRANSFORM, NSET=TIP
+0., 1., 0., -1., 0., 0.
+*ELEMENT, TYPE=T3D2, ELSET=BAR
+1, 1, 2
+*MATERIAL, NAME=M
+*ELASTIC
+1000., 0.
+*DENSITY
+2.
+*SOLID SECTION, ELSET=BAR, MATERIAL=M
+0.5
+*BOUNDARY
+1, 1, 3
+2, 1, 1
+2, 3, 3
+*STEP
+*DYNAMIC, DIRECT, ALPHA=0.
+0.01, 0.02
+*CLOAD
+2, 2, -5.
+*OUTPUT, FIELD
+*NODE OUTPUT
+U, V, A
+*END STEP
+)";
+  const JobResult r = test::run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  const Frame& f = test::last_frame(r);
+  const NodeId tip = r.model->mesh.find_node(2);
+  ASSERT_EQ(f.nodes.V.size(), 2u);
+  const Vec3 v_local = f.nodes.V[tip], a_local = f.nodes.A[tip];
+  EXPECT_LT(v_local[1], 0.0); // pulled along +x = -local 2
+  EXPECT_EQ(v_local[0], 0.0);
+  const Vtu v = parse_vtu(test::test_dir() / "job_1_2.vtu");
+  for (const char* absent : {"RF", "VR", "AR"}) EXPECT_EQ(v.arrays.count(absent), 0u) << absent;
+  const auto vel = v.values<double>("V"), acc = v.values<double>("A"), u = v.values<double>("U");
+  ASSERT_EQ(vel.size(), 6u);
+  EXPECT_DOUBLE_EQ(vel[3 * tip], -v_local[1]);
+  EXPECT_DOUBLE_EQ(vel[3 * tip + 1], v_local[0]);
+  EXPECT_DOUBLE_EQ(acc[3 * tip], -a_local[1]);
+  EXPECT_DOUBLE_EQ(acc[3 * tip + 1], a_local[0]);
+  EXPECT_DOUBLE_EQ(u[3 * tip], -f.nodes.U[tip][1]);
+  EXPECT_GT(vel[3 * tip], 0.0);
+}
+
 TEST(OutputVtu, BeamStressIsTheExtremeFibre) {
   // pure bending by a tip moment M = 1e5 about global y = n2: the section average of S11 is 0;
   // the extreme fibre, a/2 from the axis along n1, carries S11 = M (a/2) / I22, I22 = b a^3 / 12

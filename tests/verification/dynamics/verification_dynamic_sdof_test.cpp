@@ -32,7 +32,8 @@ constexpr double kK = 500.0, kM = 0.5, kF = 5.0;
 const double kW = std::sqrt(kK / kM);
 const double kT = 2.0 * std::numbers::pi / kW;
 
-std::string sdof_deck(const std::string& dynamic, double dt, double period) {
+std::string sdof_deck(const std::string& dynamic, double dt, double period,
+                      const std::string& print = "U") {
   return fmt::format(R"(*HEADING
 SDOF: a bar with its mass lumped at the free end, a constant force from t = 0
 *NODE
@@ -58,10 +59,10 @@ SDOF: a bar with its mass lumped at the free end, a constant force from t = 0
 *CLOAD, AMPLITUDE=CONST
 2, 1, 5.
 *NODE PRINT, FREQUENCY=1
-U
+{}
 *END STEP
 )",
-                     dynamic, dt, period);
+                     dynamic, dt, period, print);
 }
 
 /// u of node 2 at the end of every increment, with its step time.
@@ -85,12 +86,17 @@ TEST(VerificationDynamicSdof, TrapezoidalRuleIsExactUpToItsPeriodElongation) {
   for (const IncrementInfo& i : r.increments) EXPECT_EQ(i.iterations, 1); // linear
 }
 
+/// Displacement, velocity and acceleration at the end of an increment.
+struct Motion {
+  double u = 0.0, v = 0.0, a = 0.0;
+};
+
 /// HHT on m a + k u = F by hand: M a / (1 + alpha) + R - alpha / (1 + alpha) R_n = 0,
 /// R = k u - F, Newmark's u and v updates; from rest with a(0) = F/m.
-std::vector<double> hht_by_hand(double alpha, double dt, int n) {
+std::vector<Motion> hht_motion_by_hand(double alpha, double dt, int n) {
   const double beta = 0.25 * (1.0 - alpha) * (1.0 - alpha), gamma = 0.5 - alpha;
   double u = 0.0, v = 0.0, a = kF / kM, R = -kF;
-  std::vector<double> out;
+  std::vector<Motion> out;
   for (int i = 0; i < n; ++i) {
     // a_new = (du - dt v - dt^2 (1/2 - beta) a) / (beta dt^2), linear in du: solve for du
     const double c = 1.0 / (beta * dt * dt);
@@ -103,9 +109,16 @@ std::vector<double> hht_by_hand(double alpha, double dt, int n) {
     a = an;
     u += du;
     R = kK * u - kF;
-    out.push_back(u);
+    out.push_back({u, v, a});
   }
   return out;
+}
+
+/// The displacements of hht_motion_by_hand.
+std::vector<double> hht_by_hand(double alpha, double dt, int n) {
+  std::vector<double> u;
+  for (const Motion& m : hht_motion_by_hand(alpha, dt, n)) u.push_back(m.u);
+  return u;
 }
 
 TEST(VerificationDynamicSdof, TransientFidelityFollowsHhtAndTheClosedForm) {
@@ -214,6 +227,97 @@ TEST(VerificationDynamicSdof, RestartCarriesTheMotion) {
   const double b = test::U(resumed, test::last_frame(resumed, 2), 2)[0];
   EXPECT_NE(a, 0.0);
   EXPECT_EQ(a, b);
+}
+
+// V and A as node output (*NODE PRINT U, V, A): the frames hold the increment's end values.
+// The trapezoidal rule's discrete solution by hand, from rest with a_0 = F/m: the equation of
+// motion holds at every t_n, so a_n = (F - k u_n) / m = F/m cos(n theta). With v_n = C sin(n theta)
+// Newmark's velocity update v_{n+1} - v_n = dt/2 (a_n + a_{n+1}) reads
+//   2 C cos((n + 1/2) theta) sin(theta/2) = dt F/m cos((n + 1/2) theta) cos(theta/2),
+// so C = (F/m) (dt/2) / tan(theta/2) = F / (m w) = (F/k) w, as tan(theta/2) = w dt / 2; the
+// displacement update u_{n+1} - u_n = dt/2 (v_n + v_{n+1}) gives the same C, and v_0 = 0:
+//   v_n = (F/k) w sin(n theta),   a_n = (F/m) cos(n theta).
+TEST(VerificationDynamicSdof, VelocityAndAccelerationOutputAsTheTrapezoidalClosedForm) {
+  const double dt = kT / 40.0;
+  const JobResult r = run_deck(sdof_deck(", DIRECT, ALPHA=0.", dt, kT, "U, V, A"), true);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const double theta = 2.0 * std::atan(kW * dt / 2.0);
+  const NodeId tip = r.model->mesh.find_node(2);
+  int n = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    ++n;
+    ASSERT_EQ(f.nodes.V.size(), f.nodes.U.size());
+    ASSERT_EQ(f.nodes.A.size(), f.nodes.U.size());
+    EXPECT_NEAR(f.nodes.V[tip][0], kF / kK * kW * std::sin(n * theta), 1e-9 * kF / kK * kW)
+        << "increment " << n;
+    EXPECT_NEAR(f.nodes.A[tip][0], kF / kM * std::cos(n * theta), 1e-9 * kF / kM)
+        << "increment " << n;
+    for (int c : {1, 2}) {
+      EXPECT_EQ(f.nodes.V[tip][c], 0.0);
+      EXPECT_EQ(f.nodes.A[tip][c], 0.0);
+    }
+  }
+  EXPECT_EQ(n, 40);
+  // job.dat: a V and an A table after U's, Abaqus's column names
+  const std::string dat = test::slurp(test::test_dir() / "job.dat");
+  EXPECT_NE(dat.find("NODE FOOT-   V1          V2          V3"), std::string::npos);
+  EXPECT_NE(dat.find("NODE FOOT-   A1          A2          A3"), std::string::npos);
+  // the JSON frames carry them beside U
+  const std::string json = test::slurp(test::test_dir() / "job.results.json");
+  EXPECT_NE(json.find("\"V\":["), std::string::npos);
+  EXPECT_NE(json.find("\"A\":["), std::string::npos);
+}
+
+TEST(VerificationDynamicSdof, VelocityAndAccelerationOutputFollowHht) {
+  const double dt = kT / 50.0;
+  const JobResult r = run_deck(sdof_deck(", DIRECT", dt, kT, "V, A"));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const auto oracle = hht_motion_by_hand(-0.05, dt, 50);
+  const NodeId tip = r.model->mesh.find_node(2);
+  std::size_t n = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    ASSERT_LT(n, oracle.size());
+    EXPECT_NEAR(f.nodes.V[tip][0], oracle[n].v, 1e-9 * kF / kK * kW) << "increment " << n + 1;
+    EXPECT_NEAR(f.nodes.A[tip][0], oracle[n].a, 1e-9 * kF / kM) << "increment " << n + 1;
+    ++n;
+  }
+  EXPECT_EQ(n, oracle.size());
+}
+
+TEST(VerificationDynamicSdof, VelocityRequestedInAStaticStepIsAWarning) {
+  // the same bar loaded statically: V and A are not there; one warning, nothing written for them
+  std::string deck = sdof_deck(", DIRECT, ALPHA=0.", 0.5, 1.0, "U, V, A");
+  deck.replace(deck.find("*DYNAMIC, DIRECT, ALPHA=0."), 26, "*STATIC, DIRECT");
+  deck.replace(deck.find("*END STEP"), 9,
+               "*NODE FILE\nU, V\n*OUTPUT, FIELD\n*NODE OUTPUT\nU, A\n*END STEP");
+  const JobResult r = run_deck(deck, true);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  int warned = 0;
+  for (const std::string& w : r.model->warnings)
+    if (w.find("output of dynamic steps") != std::string::npos) {
+      ++warned;
+      EXPECT_NE(w.find("V, A are output of dynamic steps; step 1 is *STATIC: not written"),
+                std::string::npos)
+          << w;
+    }
+  EXPECT_EQ(warned, 1);
+  const Frame& f = test::last_frame(r);
+  EXPECT_TRUE(f.nodes.V.empty());
+  EXPECT_TRUE(f.nodes.A.empty());
+  EXPECT_NEAR(test::U(r, f, 2)[0], kF / kK, 1e-12);
+  const std::string dat = test::slurp(test::test_dir() / "job.dat");
+  EXPECT_NE(dat.find("U1"), std::string::npos);
+  EXPECT_EQ(dat.find("V1"), std::string::npos);
+  EXPECT_EQ(dat.find("A1"), std::string::npos);
+  EXPECT_EQ(dat.find("NOTHING TO PRINT"), std::string::npos);
+  const std::string frd = test::slurp(test::test_dir() / "job.frd");
+  EXPECT_NE(frd.find("DISP"), std::string::npos);
+  EXPECT_EQ(frd.find("VELO"), std::string::npos);
+  const std::string vtu = test::slurp(test::test_dir() / "job_1_2.vtu");
+  EXPECT_NE(vtu.find("Name=\"U\""), std::string::npos);
+  EXPECT_EQ(vtu.find("Name=\"A\""), std::string::npos);
 }
 
 } // namespace
