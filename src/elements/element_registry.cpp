@@ -28,6 +28,7 @@ std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
     if (element_info(ctx.type).temperature) return make_coupled_shell_kernel(ctx); // S4RT, …
     return make_structural_kernel(ctx);
   case ElementFamily::Spring:
+  case ElementFamily::Mass:
   case ElementFamily::Truss:
   case ElementFamily::Beam:
     return make_structural_kernel(ctx);

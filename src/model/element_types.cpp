@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 97> kInfo = {{
+constexpr std::array<ElementTypeInfo, 99> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -155,6 +155,8 @@ constexpr std::array<ElementTypeInfo, 97> kInfo = {{
     {ElementType::S4RT, "S4RT", 4, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad4},
     {ElementType::S8RT, "S8RT", 8, F::Shell, S::ThreeD, P::None, true, true, Shape::Quad8},
     // the DOFs of these are the deck's (Model::element_fields)
+    {ElementType::MASS, "MASS", 1, F::Mass, S::Any, P::None, true, false},
+    {ElementType::ROTARYI, "ROTARYI", 1, F::Mass, S::Any, P::None, true, false},
     {ElementType::USER, "U", 0, F::User, S::Any, P::None, false, false},
     {ElementType::SUBSTRUCTURE, "Z", 0, F::Substructure, S::Any, P::None, false, false},
 }};

@@ -117,6 +117,9 @@ enum class ElementType : std::uint8_t {
   S4T,
   S4RT,
   S8RT,
+  // point inertias (*MASS, *ROTARY INERTIA)
+  MASS,
+  ROTARYI,
   // elements the deck defines: user elements U1, U2, … (*USER ELEMENT) and substructures Z1, …
   // (*SUBSTRUCTURE GENERATE); their nodes, DOFs and names come from the model
   // (Mesh::elem_variant, Model::user_elements / Model::substructures)
@@ -132,8 +135,9 @@ enum class ElementFamily : std::uint8_t {
   Gap,
   HeatTransfer,
   Shell,
-  User,        ///< *USER ELEMENT (linear matrix or UEL)
-  Substructure ///< a reduced linear part (Zn)
+  User,         ///< *USER ELEMENT (linear matrix or UEL)
+  Substructure, ///< a reduced linear part (Zn)
+  Mass          ///< MASS, ROTARYI: a point inertia (*MASS, *ROTARY INERTIA)
 };
 
 /// Which model space an element type requires.

@@ -67,6 +67,7 @@ struct Model {
   /// *NODAL THICKNESS: per node (0 where not given; empty when the deck has none)
   std::vector<double> nodal_thickness;
   std::vector<SpringSection> spring_sections;
+  std::vector<MassSection> mass_sections; ///< *MASS and *ROTARY INERTIA
   std::vector<GapSection> gap_sections;
   std::vector<PropertyRef> element_property; ///< per element
   /// *USER ELEMENT definitions (Mesh::elem_variant of a USER element indexes them) and the

@@ -92,6 +92,16 @@ struct SpringSection {
   SourceLocation loc;
 };
 
+/// *MASS (MASS elements: the mass on the translational DOFs) or *ROTARY INERTIA (ROTARYI: the
+/// inertia tensor about the node, on the rotational DOFs), for an element set.
+struct MassSection {
+  std::string elset;
+  bool rotary = false;
+  double mass = 0.0;               ///< MASS
+  std::array<double, 6> inertia{}; ///< ROTARYI: I11, I22, I33, I12, I13, I23 (global axes)
+  SourceLocation loc;
+};
+
 // ---------------------------------------------------------------- gap contact properties
 
 enum class PressureOverclosure { Hard, Exponential, Linear, Tabular };
@@ -192,7 +202,17 @@ struct GapSection {
 
 /// Which property record an element uses.
 struct PropertyRef {
-  enum class Kind : std::uint8_t { None, Solid, Beam, Spring, Gap, Shell, User, Substructure };
+  enum class Kind : std::uint8_t {
+    None,
+    Solid,
+    Beam,
+    Spring,
+    Gap,
+    Shell,
+    User,
+    Substructure,
+    Mass
+  };
   Kind kind = Kind::None;
   std::int32_t index = -1;
   friend bool operator==(const PropertyRef&, const PropertyRef&) = default;

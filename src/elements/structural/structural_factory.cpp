@@ -3,6 +3,7 @@
 
 #include "elements/structural/beam.hpp"
 #include "elements/structural/coupled_truss.hpp"
+#include "elements/structural/point_inertia.hpp"
 #include "elements/structural/shell.hpp"
 #include "elements/structural/spring.hpp"
 #include "elements/structural/truss.hpp"
@@ -106,6 +107,9 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   case ElementType::T2D2T:
   case ElementType::T3D2T:
     return make_coupled_truss_kernel(ctx);
+  case ElementType::MASS:
+  case ElementType::ROTARYI:
+    return make_point_inertia_kernel(ctx);
   default:
     break;
   }

@@ -452,8 +452,11 @@ void add_element_dload(BuildState& s, const FieldReader& r, ElemId e, Distribute
   if (d.kind != DistLoadKind::Pressure) {
     // body loads act on elements with volume; springs, gaps and heat-only elements in a set are
     // skipped, named alone they are an error
+    // (a point mass takes GRAV alone)
     const bool massless = info.family == ElementFamily::Spring ||
-                          info.family == ElementFamily::Gap || !info.displacement;
+                          info.family == ElementFamily::Gap || !info.displacement ||
+                          (info.family == ElementFamily::Mass &&
+                           (d.kind != DistLoadKind::Gravity || info.type == ElementType::ROTARYI));
     if (massless) {
       if (single)
         r.fail(elem_entity(s, e), "body loads need an element with volume and displacement DOFs");

@@ -357,6 +357,68 @@ void handle_spring(BuildState& s, const Keyword& kw) {
   s.spring_dof_line.push_back(kw.data[0]);
 }
 
+namespace {
+
+/// The one data line of *MASS / *ROTARY INERTIA, checked: `n` values, the first `required` of
+/// them given; none negative (`what` names them).
+std::array<double, 6> read_inertia_line(BuildState& s, const Keyword& kw, const std::string& elset,
+                                        std::size_t n, std::size_t required,
+                                        std::span<const std::string_view> names) {
+  std::array<double, 6> v{};
+  bool seen = false;
+  for (const DataLine& line : kw.data) {
+    if (line.blank()) continue;
+    const FieldReader r = s.reader(kw, line);
+    if (seen) r.fail("", fmt::format("{} takes one data line; this is a second one", kw.name));
+    seen = true;
+    r.at_most(n, names.front());
+    for (std::size_t i = 0; i < n; ++i) {
+      v[i] = i < required ? r.real(i, names[i + 1]) : r.real_or(i, 0.0, names[i + 1]);
+      if (i < 3 && v[i] < 0.0)
+        r.fail(fmt::format("field {} ({})", i + 1, names[i + 1]),
+               fmt::format("{} must not be negative, not {}", names[i + 1], v[i]));
+    }
+  }
+  if (!seen)
+    throw InputError(kw.loc, fmt::format("ELSET={}", elset),
+                     fmt::format("the data line is missing: give {}", names.front()));
+  return v;
+}
+
+void reject_point_damping(const Keyword& kw) {
+  reject_param(kw, "ALPHA",
+               "mass-proportional damping of point masses is not in gapfem yet; remove ALPHA");
+  reject_param(kw, "COMPOSITE", "remove COMPOSITE (composite damping is not in gapfem)");
+}
+
+} // namespace
+
+void handle_mass(BuildState& s, const Keyword& kw) {
+  reject_point_damping(kw);
+  enum_param(kw, "TYPE", {"ISOTROPIC"}, 0); // the translational mass is isotropic
+  MassSection sec;
+  sec.elset = set_param(s, kw, "ELSET", true);
+  sec.loc = kw.loc;
+  static constexpr std::array<std::string_view, 2> kNames{"the mass", "mass"};
+  sec.mass = read_inertia_line(s, kw, sec.elset, 1, 1, kNames)[0];
+  s.model.mass_sections.push_back(std::move(sec));
+}
+
+void handle_rotary_inertia(BuildState& s, const Keyword& kw) {
+  reject_point_damping(kw);
+  reject_param(kw, "ORIENTATION",
+               "give the inertia tensor in global axes (the orientation of a rotary inertia is "
+               "not in gapfem yet)");
+  MassSection sec;
+  sec.elset = set_param(s, kw, "ELSET", true);
+  sec.loc = kw.loc;
+  sec.rotary = true;
+  static constexpr std::array<std::string_view, 7> kNames{
+      "I11, I22, I33, I12, I13, I23", "I11", "I22", "I33", "I12", "I13", "I23"};
+  sec.inertia = read_inertia_line(s, kw, sec.elset, 6, 3, kNames);
+  s.model.mass_sections.push_back(std::move(sec));
+}
+
 } // namespace gapfem::inp
 
 namespace gapfem::inp {

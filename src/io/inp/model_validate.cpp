@@ -28,6 +28,8 @@ const char* keyword_of(Kind k) {
     return "*UEL PROPERTY";
   case Kind::Substructure:
     return "*SUBSTRUCTURE PROPERTY";
+  case Kind::Mass:
+    return "*MASS";
   default:
     return "?";
   }
@@ -52,6 +54,8 @@ Kind kind_for(ElementFamily f) {
     return Kind::User;
   case ElementFamily::Substructure:
     return Kind::Substructure;
+  case ElementFamily::Mass:
+    return Kind::Mass;
   }
   return Kind::None;
 }
@@ -505,6 +509,9 @@ void finish_model_data(BuildState& s) {
                     m.uel_properties[i].loc, owner);
       check_uel_property(s, m.uel_properties[i]);
     }
+    for (std::size_t i = 0; i < m.mass_sections.size(); ++i)
+      bind_property(s, Kind::Mass, static_cast<int>(i), m.mass_sections[i].elset,
+                    m.mass_sections[i].loc, owner);
     check_user_types(s);
     for (std::size_t i = 0; i < m.substructure_properties.size(); ++i)
       bind_property(s, Kind::Substructure, static_cast<int>(i), m.substructure_properties[i].elset,

@@ -61,6 +61,8 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*SHELL GENERAL SECTION", handle_shell_general_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|DENSITY|ZERO|USER|DEPENDENCIES|UNSYMM", 0, P::ShellSection},
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
+  {"*MASS", handle_mass, W::Model, "ELSET|ALPHA|COMPOSITE|TYPE"},
+  {"*ROTARY INERTIA", handle_rotary_inertia, W::Model, "ELSET|ALPHA|COMPOSITE|ORIENTATION"},
   {"*USER ELEMENT", handle_user_element, W::Model, "TYPE|NODES|COORDINATES|LINEAR|PROPERTIES|I PROPERTIES|VARIABLES|UNSYMM|FILE|OLD ELEMENT|STEP|INCREMENT|INTEGRATION|TENSOR", 0, P::UserElement},
   {"*MATRIX", handle_matrix, W::Model, "TYPE|INPUT", kUserElement},
   {"*UEL PROPERTY", handle_uel_property, W::Model, "ELSET|MATERIAL|ORIENTATION|ALPHA|BETA"},

@@ -77,6 +77,9 @@ std::string property_for(const ElementTypeInfo& info) {
     return material + "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=RECT\n1., 2.\n0., 0., -1.\n";
   case ElementFamily::Shell:
     return material + "*SHELL SECTION, ELSET=E, MATERIAL=M\n0.1\n";
+  case ElementFamily::Mass:
+    return info.type == ElementType::MASS ? "*MASS, ELSET=E\n1.\n"
+                                          : "*ROTARY INERTIA, ELSET=E\n1., 1., 1.\n";
   case ElementFamily::Gap:
     // GAPCYL needs an axis (z), GAPSPHER a non-zero diameter; the others a direction (x).
     return info.type == ElementType::GAPCYL ? "*GAP, ELSET=E\n0.1, 0., 0., 1., 1.\n"
