@@ -80,7 +80,7 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   std::vector<bool> massive(static_cast<std::size_t>(n));
   for (LocalIndex i = 0; i < n; ++i) {
     massive[i] = _K.diagonal(i) > 0.0;
-    if (!massive[i]) _K.add(i, i, 1.0); // a massless DOF: a placeholder, keeps a = 0
+    if (!massive[i]) _K.add(i, i, 1.0); // a massless DOF: unit diagonal, zero right side: a = 0
   }
   const ConstraintBlock C = exact_rows(_C);
   const auto factor = solver.factorize(_K, C, true, _stats);
