@@ -11,7 +11,7 @@ namespace {
 using F = ElementFamily;
 using S = SpaceRequirement;
 using P = PlaneKind;
-constexpr std::array<ElementTypeInfo, 99> kInfo = {{
+constexpr std::array<ElementTypeInfo, 102> kInfo = {{
     {ElementType::SPRING1, "SPRING1", 1, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRING2, "SPRING2", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::SPRINGA, "SPRINGA", 2, F::Spring, S::Any, P::None, true, false},
@@ -157,6 +157,9 @@ constexpr std::array<ElementTypeInfo, 99> kInfo = {{
     // the DOFs of these are the deck's (Model::element_fields)
     {ElementType::MASS, "MASS", 1, F::Mass, S::Any, P::None, true, false},
     {ElementType::ROTARYI, "ROTARYI", 1, F::Mass, S::Any, P::None, true, false},
+    {ElementType::DASHPOT1, "DASHPOT1", 1, F::Spring, S::Any, P::None, true, false},
+    {ElementType::DASHPOT2, "DASHPOT2", 2, F::Spring, S::Any, P::None, true, false},
+    {ElementType::DASHPOTA, "DASHPOTA", 2, F::Spring, S::Any, P::None, true, false},
     {ElementType::USER, "U", 0, F::User, S::Any, P::None, false, false},
     {ElementType::SUBSTRUCTURE, "Z", 0, F::Substructure, S::Any, P::None, false, false},
 }};

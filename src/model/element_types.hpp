@@ -120,6 +120,10 @@ enum class ElementType : std::uint8_t {
   // point inertias (*MASS, *ROTARY INERTIA)
   MASS,
   ROTARYI,
+  // dashpots (*DASHPOT): a force per relative velocity, like SPRING1, SPRING2, SPRINGA
+  DASHPOT1,
+  DASHPOT2,
+  DASHPOTA,
   // elements the deck defines: user elements U1, U2, … (*USER ELEMENT) and substructures Z1, …
   // (*SUBSTRUCTURE GENERATE); their nodes, DOFs and names come from the model
   // (Mesh::elem_variant, Model::user_elements / Model::substructures)

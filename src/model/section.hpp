@@ -83,12 +83,18 @@ struct ShellSection {
   SourceLocation loc;
 };
 
-/// *SPRING (SPRING1, SPRING2, SPRINGA): linear stiffness, optionally temperature dependent.
+/// *SPRING (SPRING1, SPRING2, SPRINGA): linear stiffness, optionally temperature dependent; or
+/// *DASHPOT (DASHPOT1, DASHPOT2, DASHPOTA, `dashpot`): the same record with the coefficient c
+/// (force per relative velocity) in `stiffness`, or with NONLINEAR the force-velocity table.
 struct SpringSection {
   std::string elset;
   int dof1 = 0;            ///< Abaqus DOF number at node 1 (SPRING1/SPRING2); 0 for SPRINGA
   int dof2 = 0;            ///< Abaqus DOF number at node 2 (SPRING2)
-  PropertyTable stiffness; ///< k; key temperature
+  PropertyTable stiffness; ///< k (dashpot: c); key temperature
+  bool dashpot = false;    ///< *DASHPOT: a force per relative velocity, not per displacement
+  bool nonlinear = false;  ///< *DASHPOT, NONLINEAR: F(v) from `force` at `velocity`
+  /// NONLINEAR: the force at each relative velocity (strictly ascending); constant outside
+  std::vector<double> force, velocity;
   SourceLocation loc;
 };
 
@@ -99,6 +105,8 @@ struct MassSection {
   bool rotary = false;
   double mass = 0.0;               ///< MASS
   std::array<double, 6> inertia{}; ///< ROTARYI: I11, I22, I33, I12, I13, I23 (global axes)
+  double alpha = 0.0;     ///< ALPHA: mass-proportional damping, C = alpha M (direct integration)
+  double composite = 0.0; ///< COMPOSITE: for mode-based procedures only (not used by gapfem)
   SourceLocation loc;
 };
 

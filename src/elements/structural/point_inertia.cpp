@@ -9,7 +9,7 @@ namespace gapfem {
 
 PointInertiaKernel::PointInertiaKernel(ElementType type, const MassSection& section,
                                        ModelSpace space)
-    : _type(type) {
+    : _type(type), _alpha(section.alpha) {
   const bool planar = space != ModelSpace::ThreeD;
   if (type == ElementType::MASS) {
     _n = planar ? 2 : 3;
@@ -32,9 +32,12 @@ PointInertiaKernel::PointInertiaKernel(ElementType type, const MassSection& sect
 }
 
 void PointInertiaKernel::evaluate(const ElementInput&, ElementOutput& out) const {
-  // no stiffness: residual and tangent stay zero; the inertia forces come from the mass block
-  if (!out.want_mass) return;
-  for (int i = 0; i < _n * _n; ++i) out.mass[i] += _M[i];
+  // no stiffness: residual and tangent stay zero; the inertia (and ALPHA's damping) forces come
+  // from the mass (damping) block
+  if (out.want_mass)
+    for (int i = 0; i < _n * _n; ++i) out.mass[i] += _M[i];
+  if (out.want_damping)
+    for (int i = 0; i < _n * _n; ++i) out.damping[i] += _alpha * _M[i];
 }
 
 void PointInertiaKernel::load(const ElementInput&, const DistributedLoad& load, double magnitude,

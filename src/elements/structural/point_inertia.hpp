@@ -6,7 +6,8 @@
 /// I13, I23 about the node, global axes) on its rotational DOFs (4-6; 6 alone in planar models).
 /// They have no stiffness: their residual and tangent are zero, their mass block is m I or the
 /// tensor (docs/conventions.md, "Mass and damping"); GRAV loads a MASS element with m g. Under
-/// NLGEOM the rotary inertia stays in global axes (it does not rotate with the node).
+/// NLGEOM the rotary inertia stays in global axes (it does not rotate with the node). ALPHA gives
+/// the element the damping block alpha M (Rayleigh mass-proportional damping).
 #include "elements/element_kernel.hpp"
 #include "model/section.hpp"
 
@@ -24,7 +25,9 @@ class PointInertiaKernel final : public ElementKernel {
   }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
   bool has_mass() const override { return true; }
-  bool has_damping() const override { return false; }
+  /// ALPHA on *MASS / *ROTARY INERTIA: mass-proportional damping C = alpha M (Abaqus applies it
+  /// in direct-integration dynamics; the assembler adds C v in every step with rates)
+  bool has_damping() const override { return _alpha != 0.0; }
   bool supports_load(DistLoadKind kind, int face) const override {
     return _type == ElementType::MASS && kind == DistLoadKind::Gravity && face == 0;
   }
@@ -36,6 +39,7 @@ class PointInertiaKernel final : public ElementKernel {
   std::array<DofType, 3> _dofs{};
   int _n = 0;
   std::array<double, 9> _M{}; ///< the _n x _n mass block
+  double _alpha = 0.0;        ///< ALPHA: C = alpha M
 };
 
 /// Factory for MASS and ROTARYI blocks: the block's *MASS / *ROTARY INERTIA (InputError naming the

@@ -1,6 +1,7 @@
 #include "elements/structural/spring.hpp"
 
 #include "elements/reference_scale.hpp"
+#include "elements/structural/dashpot.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "model/model.hpp"
 
@@ -101,39 +102,55 @@ void SpringKernel::recover(const ElementInput& in, ElementRecovery& out) const {
   add_block(out, ElemVar::E, kE11, 1).values[0] = du;
 }
 
+namespace {
+bool is_dashpot(ElementType t) {
+  return t == ElementType::DASHPOT1 || t == ElementType::DASHPOT2 || t == ElementType::DASHPOTA;
+}
+} // namespace
+
 std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx) {
   const Model& model = ctx.model;
   const std::string_view name = element_info(ctx.type).name;
+  const bool dashpot = is_dashpot(ctx.type);
+  const char* keyword = dashpot ? "*DASHPOT" : "*SPRING";
   const ElemId first = ctx.elements.empty() ? -1 : ctx.elements[0];
   if (ctx.property.kind != PropertyRef::Kind::Spring || ctx.property.index < 0 ||
       ctx.property.index >= static_cast<int>(model.spring_sections.size()))
     throw InputError(model.element_location(first),
                      first >= 0 ? fmt::format("element {}", model.element_label(first)) : "",
-                     fmt::format("{} elements need a *SPRING property; add *SPRING, ELSET=... "
+                     fmt::format("{} elements need a {} property; add {}, ELSET=... "
                                  "for the element set that contains them",
-                                 name));
+                                 name, keyword, keyword));
   const SpringSection& sec = model.spring_sections[ctx.property.index];
   const std::string entity = fmt::format("ELSET={}", sec.elset);
-  if (sec.stiffness.empty() || sec.stiffness.n_values < 1)
+  if (sec.dashpot != dashpot)
     throw InputError(sec.loc, entity,
-                     "no spring stiffness is given; add a data line with the stiffness");
+                     fmt::format("{} elements take {}, not {}; give the element set its own "
+                                 "keyword",
+                                 name, keyword, dashpot ? "*SPRING" : "*DASHPOT"));
+  if (!sec.nonlinear && (sec.stiffness.empty() || sec.stiffness.n_values < 1))
+    throw InputError(sec.loc, entity,
+                     dashpot ? "no dashpot coefficient is given; add a data line with it"
+                             : "no spring stiffness is given; add a data line with the stiffness");
   const bool planar = model.space != ModelSpace::ThreeD;
   auto check_dof = [&](int dof, const char* which) {
     DofType d{};
     if (!dof_from_abaqus(dof, d) || is_temperature(d))
       throw InputError(sec.loc, entity,
                        fmt::format("{} degree of freedom {} is not a displacement or rotation "
-                                   "(1-6); give the DOF the spring acts on",
-                                   which, dof));
+                                   "(1-6); give the DOF the {} acts on",
+                                   which, dof, dashpot ? "dashpot" : "spring"));
     if (planar && dof > 2)
       throw InputError(sec.loc, entity,
                        fmt::format("{} degree of freedom {} does not exist in this {} model; "
                                    "only DOFs 1 and 2 are available",
                                    which, dof, model_space_name(model.space)));
   };
-  if (ctx.type == ElementType::SPRING1 || ctx.type == ElementType::SPRING2)
-    check_dof(sec.dof1, ctx.type == ElementType::SPRING1 ? "the" : "the first node's");
-  if (ctx.type == ElementType::SPRING2) check_dof(sec.dof2, "the second node's");
+  const bool one = ctx.type == ElementType::SPRING1 || ctx.type == ElementType::DASHPOT1;
+  const bool two = ctx.type == ElementType::SPRING2 || ctx.type == ElementType::DASHPOT2;
+  if (one || two) check_dof(sec.dof1, one ? "the" : "the first node's");
+  if (two) check_dof(sec.dof2, "the second node's");
+  if (dashpot) return std::make_unique<DashpotKernel>(ctx.type, sec, model.space);
   return std::make_unique<SpringKernel>(ctx.type, sec, model.space);
 }
 

@@ -28,8 +28,8 @@ class SpringKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return _stiffness.n_rows() > 1; }
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
-  /// Springs are massless and undamped (Abaqus's SPRING elements; a point mass or a dashpot is an
-  /// element of its own, MASS / DASHPOT, which gapfem does not have yet).
+  /// Springs are massless and undamped (Abaqus's SPRING elements: *SPRING has no damping; a
+  /// damped spring is a SPRING and a DASHPOT on the same nodes, a point mass is a MASS element).
   bool has_mass() const override { return false; }
   bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override;
@@ -49,8 +49,9 @@ class SpringKernel final : public ElementKernel {
   int _n0 = 0, _n1 = 0;
 };
 
-/// Factory for SPRING1/SPRING2/SPRINGA blocks: checks the *SPRING property (stiffness given, DOFs
-/// valid in the model space) and throws InputError naming the *SPRING line otherwise.
+/// Factory for SPRING1/SPRING2/SPRINGA and DASHPOT1/DASHPOT2/DASHPOTA blocks (dashpot.hpp): checks
+/// the *SPRING / *DASHPOT property (the right keyword, stiffness or coefficient given, DOFs valid
+/// in the model space) and throws InputError naming its line otherwise.
 std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx);
 
 } // namespace gapfem

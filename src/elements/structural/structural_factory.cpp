@@ -85,6 +85,9 @@ std::unique_ptr<ElementKernel> make_structural_kernel(const KernelContext& ctx) 
   case ElementType::SPRING1:
   case ElementType::SPRING2:
   case ElementType::SPRINGA:
+  case ElementType::DASHPOT1:
+  case ElementType::DASHPOT2:
+  case ElementType::DASHPOTA:
     return make_spring_kernel(ctx);
   case ElementType::T2D2:
   case ElementType::T3D2:

@@ -385,33 +385,48 @@ std::array<double, 6> read_inertia_line(BuildState& s, const Keyword& kw, const 
   return v;
 }
 
-void reject_point_damping(const Keyword& kw) {
-  reject_param(kw, "ALPHA",
-               "mass-proportional damping of point masses is not in gapfem yet; remove ALPHA");
-  reject_param(kw, "COMPOSITE", "remove COMPOSITE (composite damping is not in gapfem)");
+/// ALPHA= (mass-proportional damping, C = alpha M, in direct-integration dynamics) and
+/// COMPOSITE= (a fraction of critical damping for mode-based procedures; Abaqus ignores it in
+/// direct integration, and gapfem has no mode-based procedure): both at least 0.
+void read_point_damping(BuildState& s, const Keyword& kw, MassSection& sec) {
+  for (const char* name : {"ALPHA", "COMPOSITE"}) {
+    const std::optional<double> v = real_param(kw, name);
+    if (v && !(*v >= 0.0))
+      throw InputError(kw.loc, param_text(kw, name),
+                       fmt::format("{} must not be negative; give the {} or leave it out", name,
+                                   name[0] == 'A' ? "mass-proportional damping factor (C = "
+                                                    "ALPHA M)"
+                                                  : "fraction of critical damping"));
+    (name[0] == 'A' ? sec.alpha : sec.composite) = v.value_or(0.0);
+  }
+  if (sec.composite > 0.0)
+    s.warn(kw.loc, fmt::format("{}, ELSET={}: COMPOSITE is used by mode-based dynamics only, "
+                               "which gapfem does not have; it has no effect here (Abaqus "
+                               "ignores it in direct-integration dynamics too)",
+                               kw.name, sec.elset));
 }
 
 } // namespace
 
 void handle_mass(BuildState& s, const Keyword& kw) {
-  reject_point_damping(kw);
   enum_param(kw, "TYPE", {"ISOTROPIC"}, 0); // the translational mass is isotropic
   MassSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
+  read_point_damping(s, kw, sec);
   static constexpr std::array<std::string_view, 2> kNames{"the mass", "mass"};
   sec.mass = read_inertia_line(s, kw, sec.elset, 1, 1, kNames)[0];
   s.model.mass_sections.push_back(std::move(sec));
 }
 
 void handle_rotary_inertia(BuildState& s, const Keyword& kw) {
-  reject_point_damping(kw);
   reject_param(kw, "ORIENTATION",
                "give the inertia tensor in global axes (the orientation of a rotary inertia is "
                "not in gapfem yet)");
   MassSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
+  read_point_damping(s, kw, sec);
   sec.rotary = true;
   static constexpr std::array<std::string_view, 7> kNames{
       "I11, I22, I33, I12, I13, I23", "I11", "I22", "I33", "I12", "I13", "I23"};

@@ -60,6 +60,15 @@ Kind kind_for(ElementFamily f) {
   return Kind::None;
 }
 
+/// The property keyword an element type takes (its family's; *DASHPOT for the dashpots, which
+/// share the spring's property record).
+const char* keyword_of_type(const ElementTypeInfo& info) {
+  const ElementType t = info.type;
+  if (t == ElementType::DASHPOT1 || t == ElementType::DASHPOT2 || t == ElementType::DASHPOTA)
+    return "*DASHPOT";
+  return keyword_of(kind_for(info.family));
+}
+
 std::string elem_name(const BuildState& s, ElemId e) {
   return fmt::format("element {} ({})", s.model.element_label(e), s.model.element_type_name(e));
 }
@@ -97,7 +106,7 @@ void bind_property(BuildState& s, Kind kind, int index, const std::string& elset
                                   elset)
                     : fmt::format("this element is in ELSET {} but {} element needs a {}, not a "
                                   "{}; remove it from the set",
-                                  elset, with_article(info.name), keyword_of(kind_for(info.family)),
+                                  elset, with_article(info.name), keyword_of_type(info),
                                   keyword_of(kind)));
       family_reported = true;
       owner_loc[e] = loc; // reported: no "has no section" for it later
@@ -118,34 +127,42 @@ void bind_property(BuildState& s, Kind kind, int index, const std::string& elset
   }
 }
 
-/// SPRING1: dof; SPRING2: dof1, dof2; SPRINGA: blank first line.
+/// SPRING1/DASHPOT1: dof; SPRING2/DASHPOT2: dof1, dof2; SPRINGA/DASHPOTA: blank first line.
+/// (*DASHPOT is kept as a SpringSection with `dashpot` set: handlers_dashpot.cpp.)
 void check_spring(BuildState& s, int index) {
   SpringSection& sec = s.model.spring_sections[index];
   const auto* set = find_elset(s, sec.elset);
   if (!set || set->empty()) return;
   const ElementType type = s.model.mesh.elem_types[set->front()];
+  const char* keyword = sec.dashpot ? "*DASHPOT" : "*SPRING";
+  const char* what = sec.dashpot ? "dashpot" : "spring";
   for (ElemId e : *set)
     if (s.model.mesh.elem_types[e] != type) {
       s.error(sec.loc, elem_name(s, e),
-              fmt::format("ELSET {} mixes spring types ({} and {}); use one *SPRING per type",
-                          sec.elset, element_info(type).name,
-                          element_info(s.model.mesh.elem_types[e]).name));
+              fmt::format("ELSET {} mixes {} types ({} and {}); use one {} per type", sec.elset,
+                          what, element_info(type).name,
+                          element_info(s.model.mesh.elem_types[e]).name, keyword));
       return;
     }
+  const bool axial = type == ElementType::SPRINGA || type == ElementType::DASHPOTA;
+  const bool one = type == ElementType::SPRING1 || type == ElementType::DASHPOT1;
   const DataLine& line = s.spring_dof_line[index];
-  SourceLocation loc{s.model.source_files[line.file], line.line, "*SPRING"};
+  SourceLocation loc{s.model.source_files[line.file], line.line, keyword};
   const FieldReader r(line, loc);
   try {
     auto dof = [&](std::size_t f) {
       return static_cast<int>(r.integer(f, f == 0 ? "DOF at node 1" : "DOF at node 2", 1, 6,
-                                        "springs act on DOFs 1-6, not {}"));
+                                        sec.dashpot ? "dashpots act on DOFs 1-6, not {}"
+                                                    : "springs act on DOFs 1-6, not {}"));
     };
-    if (type == ElementType::SPRINGA) {
+    if (axial) {
       if (!line.empty())
         r.fail(fmt::format("ELSET={}", sec.elset),
-               "for SPRINGA elements the first data line must be blank (the spring acts along the "
-               "line between its nodes); put the stiffness on the second line");
-    } else if (type == ElementType::SPRING1) {
+               fmt::format("for {} elements the first data line must be blank (the {} acts along "
+                           "the line between its nodes); put the {} on the second line",
+                           element_info(type).name, what,
+                           sec.dashpot ? "dashpot data" : "stiffness"));
+    } else if (one) {
       r.at_most(1, "DOF");
       sec.dof1 = dof(0);
     } else {
@@ -155,12 +172,11 @@ void check_spring(BuildState& s, int index) {
       if (sec.dof1 == sec.dof2)
         for (ElemId e : *set)
           if (const auto n = s.model.mesh.element_nodes(e); n[0] == n[1])
-            s.error(
-                s.model.element_location(e), elem_name(s, e),
-                fmt::format("node {} is both nodes of this spring and both DOFs are {} (*SPRING "
-                            "at {}), so it never stretches and carries no force; give two "
-                            "distinct nodes, or two DOFs of the node to couple",
-                            s.model.node_label(n[0]), sec.dof1, sec.loc.str()));
+            s.error(s.model.element_location(e), elem_name(s, e),
+                    fmt::format("node {} is both nodes of this {} and both DOFs are {} ({} "
+                                "at {}), so it never stretches and carries no force; give two "
+                                "distinct nodes, or two DOFs of the node to couple",
+                                s.model.node_label(n[0]), what, sec.dof1, keyword, sec.loc.str()));
     }
   } catch (const InputError& e) {
     s.diag.error(e);
@@ -541,7 +557,7 @@ void finish_model_data(BuildState& s) {
                           type == ElementType::USER           ? "properties"
                           : type == ElementType::SUBSTRUCTURE ? "placement"
                                                               : "section",
-                          keyword_of(kind_for(info.family)),
+                          keyword_of_type(info),
                           count > 1 ? fmt::format(" ({} {} elements have none)", count, name)
                                     : std::string()));
     }

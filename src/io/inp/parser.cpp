@@ -62,6 +62,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
   {"*SPRING", handle_spring, W::Model, "ELSET|NONLINEAR|ORIENTATION"},
   {"*MASS", handle_mass, W::Model, "ELSET|ALPHA|COMPOSITE|TYPE"},
+  {"*DASHPOT", handle_dashpot, W::Model, "DEPENDENCIES|ELSET|NONLINEAR|ORIENTATION|RTOL"},
   {"*ROTARY INERTIA", handle_rotary_inertia, W::Model, "ELSET|ALPHA|COMPOSITE|ORIENTATION"},
   {"*USER ELEMENT", handle_user_element, W::Model, "TYPE|NODES|COORDINATES|LINEAR|PROPERTIES|I PROPERTIES|VARIABLES|UNSYMM|FILE|OLD ELEMENT|STEP|INCREMENT|INTEGRATION|TENSOR", 0, P::UserElement},
   {"*MATRIX", handle_matrix, W::Model, "TYPE|INPUT", kUserElement},

@@ -65,11 +65,14 @@ std::string property_for(const ElementTypeInfo& info) {
   const std::string material = "*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n*CONDUCTIVITY\n50.\n"
                                "*DENSITY\n7.8e-9\n*SPECIFIC HEAT\n4.6e8\n*EXPANSION\n1.2e-5\n";
   switch (info.family) {
-  case ElementFamily::Spring: {
-    const std::string dofs = info.type == ElementType::SPRING1   ? "1"
-                             : info.type == ElementType::SPRING2 ? "1, 1"
-                                                                 : "";
-    return "*SPRING, ELSET=E\n" + dofs + "\n100.\n";
+  case ElementFamily::Spring: { // (and the dashpots, which take *DASHPOT with the same lines)
+    const ElementType t = info.type;
+    const std::string dofs = t == ElementType::SPRING1 || t == ElementType::DASHPOT1   ? "1"
+                             : t == ElementType::SPRING2 || t == ElementType::DASHPOT2 ? "1, 1"
+                                                                                       : "";
+    const bool dashpot =
+        t == ElementType::DASHPOT1 || t == ElementType::DASHPOT2 || t == ElementType::DASHPOTA;
+    return std::string(dashpot ? "*DASHPOT" : "*SPRING") + ", ELSET=E\n" + dofs + "\n100.\n";
   }
   case ElementFamily::Beam:
     if (info.type == ElementType::PIPE31 || info.type == ElementType::PIPE32)

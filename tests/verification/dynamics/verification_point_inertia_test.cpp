@@ -6,7 +6,7 @@
 //   under a moment M = 0.4: phi_n = M/k (1 - cos(n theta)) with w = sqrt(k / I33);
 // - GRAV on the MASS element in a static step: u = m g / k;
 // - input errors: each keyword on the other element type, a negative mass, a missing data line,
-//   ALPHA (point damping not there yet).
+//   a negative ALPHA (ALPHA itself: verification_dashpot_test.cpp).
 #include "test_util.hpp"
 
 #include <cmath>
@@ -122,9 +122,9 @@ TEST(VerificationPointInertia, InputErrors) {
             std::string::npos);
   EXPECT_NE(error("*ELEMENT, TYPE=MASS, ELSET=M\n2, 1\n*MASS, ELSET=M\n").find("data line"),
             std::string::npos);
-  EXPECT_NE(
-      error("*ELEMENT, TYPE=MASS, ELSET=M\n2, 1\n*MASS, ELSET=M, ALPHA=0.1\n0.5\n").find("ALPHA"),
-      std::string::npos);
+  EXPECT_NE(error("*ELEMENT, TYPE=MASS, ELSET=M\n2, 1\n*MASS, ELSET=M, ALPHA=-0.1\n0.5\n")
+                .find("ALPHA must not be negative"),
+            std::string::npos);
   EXPECT_NE(error("*ELEMENT, TYPE=MASS, ELSET=M\n2, 1\n").find("*MASS"), std::string::npos);
 }
 
