@@ -76,9 +76,9 @@ void handle_beam_transverse_shear(BuildState& s, const Keyword& kw);
 void handle_beam_general_section(BuildState& s, const Keyword& kw);
 void handle_transverse_shear(BuildState& s, const Keyword& kw);
 void handle_spring(BuildState& s, const Keyword& kw);
+void handle_dashpot(BuildState& s, const Keyword& kw);
 void handle_mass(BuildState& s, const Keyword& kw);
 void handle_rotary_inertia(BuildState& s, const Keyword& kw);
-void handle_dashpot(BuildState& s, const Keyword& kw);
 ///@}
 
 /// @name *GAP and its sub-options (handlers_gap.cpp)
