@@ -24,8 +24,8 @@ Assembler::Assembler(Discretization& disc, int threads)
     : _disc(disc), _threads(std::max(1, threads)), _scratch(static_cast<std::size_t>(_threads)),
       _thread_constraints(static_cast<std::size_t>(_threads)),
       _thread_f(static_cast<std::size_t>(_threads)),
-      _thread_inertia(static_cast<std::size_t>(_threads)),
-      _inertia_scratch(static_cast<std::size_t>(_threads)) {}
+      _thread_rates(static_cast<std::size_t>(_threads)),
+      _rate_scratch(static_cast<std::size_t>(_threads)) {}
 
 namespace {
 /// Runs body(thread, begin, end) over [0, n) split into `threads` contiguous chunks.
@@ -100,13 +100,29 @@ void add_product(std::span<const double> B, std::span<const double> x, std::span
   }
 }
 
+/// plain = B x for a row-major n x n block B.
+void product(std::span<const double> B, std::span<const double> x, std::span<double> plain) {
+  const std::size_t n = plain.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    double s = 0.0;
+    for (std::size_t j = 0; j < n; ++j) s += B[i * n + j] * x[j];
+    plain[i] = s;
+  }
+}
+
+/// One element's M a, C v and M v alone (RateForces), where asked.
+using ElementRates = std::array<std::span<double>, 3>;
+
 /// The operators' forces M a + C v into the residual (rates defined) and k K + c C + m M into the
 /// tangent (K alone, as the kernel left it, when k = 1 and no operator is weighted).
-/// The element's inertia forces M a (unweighted) go to `inertia` when it is not empty.
+/// The element's M a, C v (unweighted) and M v go to `plain` where not empty.
 void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorWeights& w,
-                     std::span<double> inertia) {
-  if (out.want_mass && !in.a.empty()) add_product(out.mass, in.a, out.residual, w.inertia, inertia);
-  if (out.want_damping && !in.v.empty()) add_product(out.damping, in.v, out.residual);
+                     const ElementRates& plain) {
+  if (out.want_mass && !in.a.empty())
+    add_product(out.mass, in.a, out.residual, w.inertia, plain[0]);
+  if (out.want_damping && !in.v.empty())
+    add_product(out.damping, in.v, out.residual, 1.0, plain[1]);
+  if (out.want_mass && !in.v.empty() && !plain[2].empty()) product(out.mass, in.v, plain[2]);
   if (!out.want_tangent) return;
   if (w.k != 1.0)
     for (double& t : out.tangent) t *= w.k;
@@ -115,12 +131,17 @@ void apply_operators(const ElementInput& in, ElementOutput& out, const OperatorW
   if (out.want_damping)
     for (std::size_t i = 0; i < out.tangent.size(); ++i) out.tangent[i] += w.c * out.damping[i];
 }
+
+/// The spans of RateForces in order (M a, C v, M v).
+std::array<std::span<double>, 3> rate_spans(const RateForces& r) {
+  return {r.inertia, r.damping, r.momentum};
+}
 } // namespace
 
 void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int t,
                                const FieldView& fields, const StepContext& ctx, std::span<double> f,
                                MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
-                               std::span<double> inertia_out, AssemblyResult& res) {
+                               const RateForces& rate_out, AssemblyResult& res) {
   const DofMap& dofs = _disc.dofs();
   const int nd = block.n_dofs;
   ElementGather& g = _scratch[t];
@@ -131,13 +152,21 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
     ElementOutput& out = g.output(block, K != nullptr, ops.mass, ops.damping);
     block.kernel->evaluate(in, out);
     if (ctx.symmetric_only && (out.unsymmetric || out.has_columns)) symmetrize(out, nd);
-    const bool inertia = !inertia_out.empty() && ops.mass && !in.a.empty();
-    if (inertia) _inertia_scratch[t].assign(static_cast<std::size_t>(nd), 0.0);
-    if (operators)
-      apply_operators(in, out, w, inertia ? std::span(_inertia_scratch[t]) : std::span<double>{});
+    // the element's M a, C v, M v where asked and the block has the operator and its rates
+    const auto global = rate_spans(rate_out);
+    const bool has[3] = {ops.mass && !in.a.empty(), ops.damping && !in.v.empty(),
+                         ops.mass && !in.v.empty()};
+    ElementRates local{};
+    for (int q = 0; q < 3; ++q)
+      if (!global[q].empty() && has[q]) {
+        _rate_scratch[t][q].assign(static_cast<std::size_t>(nd), 0.0);
+        local[q] = _rate_scratch[t][q];
+      }
+    if (operators) apply_operators(in, out, w, local);
     const auto slots = block.element_slots(i);
-    if (inertia)
-      for (int k = 0; k < nd; ++k) inertia_out[slots[k]] += _inertia_scratch[t][k];
+    for (int q = 0; q < 3; ++q)
+      if (!local[q].empty())
+        for (int k = 0; k < nd; ++k) global[q][slots[k]] += local[q][k];
     for (int k = 0; k < nd; ++k) {
       const double r = out.residual[k];
       if (!std::isfinite(r))
@@ -178,10 +207,11 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
 
 AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& ctx,
                                    std::span<double> f_int, MatrixInserter* K, ConstraintBlock* C,
-                                   const OperatorWeights& weights, std::span<double> inertia) {
+                                   const OperatorWeights& weights, const RateForces& rate_forces) {
   const DofMap& dofs = _disc.dofs();
   std::fill(f_int.begin(), f_int.end(), 0.0);
-  std::fill(inertia.begin(), inertia.end(), 0.0);
+  const auto rates = rate_spans(rate_forces);
+  for (const auto& r : rates) std::fill(r.begin(), r.end(), 0.0);
   if (K) {
     K->set_zero();
     K->open(_threads);
@@ -197,21 +227,28 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
     for (int t = 0; t < _threads; ++t) {
       _thread_constraints[t].clear();
       if (multi) _thread_f[t].assign(f_int.size(), 0.0);
-      if (multi && !inertia.empty()) _thread_inertia[t].assign(f_int.size(), 0.0);
+      for (int q = 0; q < 3; ++q)
+        if (multi && !rates[q].empty()) _thread_rates[t][q].assign(f_int.size(), 0.0);
     }
     parallel_chunks(multi ? _threads : 1, block->size(), [&](int t, std::size_t b, std::size_t e) {
       std::span<double> f = multi ? std::span<double>(_thread_f[t]) : f_int;
-      std::span<double> in =
-          multi && !inertia.empty() ? std::span<double>(_thread_inertia[t]) : inertia;
-      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights, in,
-                     partial[t]);
+      RateForces mine = rate_forces;
+      if (multi) {
+        auto& tr = _thread_rates[t];
+        mine = {rates[0].empty() ? std::span<double>{} : std::span<double>(tr[0]),
+                rates[1].empty() ? std::span<double>{} : std::span<double>(tr[1]),
+                rates[2].empty() ? std::span<double>{} : std::span<double>(tr[2])};
+      }
+      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights,
+                     mine, partial[t]);
     });
     if (multi) {
       for (int t = 0; t < _threads; ++t)
         for (std::size_t s = 0; s < f_int.size(); ++s) f_int[s] += _thread_f[t][s];
-      if (!inertia.empty())
-        for (int t = 0; t < _threads; ++t)
-          for (std::size_t s = 0; s < inertia.size(); ++s) inertia[s] += _thread_inertia[t][s];
+      for (int q = 0; q < 3; ++q)
+        if (!rates[q].empty())
+          for (int t = 0; t < _threads; ++t)
+            for (std::size_t s = 0; s < rates[q].size(); ++s) rates[q][s] += _thread_rates[t][q][s];
     }
     if (C)
       for (int t = 0; t < _threads; ++t) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace gapfem {
@@ -40,6 +41,14 @@ struct OperatorWeights {
   double inertia = 1.0; ///< the factor of the inertia forces M a in the residual (HHT)
 };
 
+/// What an assembly under rates may also return per slot, each unweighted and only where not
+/// empty (overwritten): the inertia forces M a (HHT's history), the damping forces C v of the
+/// damping operators it applies, the momenta M v (kinetic energy): solver/step_problem_dynamic.cpp.
+struct RateForces {
+  std::span<double> inertia, damping, momentum;
+  bool any() const { return !inertia.empty() || !damping.empty() || !momentum.empty(); }
+};
+
 /// A distributed load with its magnitude evaluated at the current time.
 struct ActiveLoad {
   const DistributedLoad* load = nullptr;
@@ -54,11 +63,10 @@ class Assembler {
 
   /// Internal forces per slot (f_int, overwritten), the matrix k K + c C + m M over equations (if
   /// K: zeroed, then written through one inserter lane per thread; `weights`, default K alone)
-  /// and active constraint rows (if C, overwritten). `inertia` (per slot, if not empty:
-  /// overwritten) gets the elements' inertia forces M a alone, unweighted (HHT's history).
+  /// and active constraint rows (if C, overwritten); `rate_forces`: M a, C v and M v alone.
   AssemblyResult assemble(const FieldView& fields, const StepContext& ctx, std::span<double> f_int,
                           MatrixInserter* K, ConstraintBlock* C,
-                          const OperatorWeights& weights = {}, std::span<double> inertia = {});
+                          const OperatorWeights& weights = {}, const RateForces& rate_forces = {});
   /// Equivalent nodal loads of distributed loads, added to f_ext (per slot); solution-dependent
   /// loads add -df/du to K if given (only its symmetric part when `symmetrize`).
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
@@ -83,15 +91,16 @@ class Assembler {
   void assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e, int thread,
                       const FieldView& fields, const StepContext& ctx, std::span<double> f,
                       MatrixInserter* K, int lane, bool rows, const OperatorWeights& w,
-                      std::span<double> inertia_out, AssemblyResult& res);
+                      const RateForces& rate_out, AssemblyResult& res);
 
   Discretization& _disc;
   int _threads;
   std::vector<ElementGather> _scratch;
   std::vector<ConstraintBlock> _thread_constraints;
   std::vector<std::vector<double>> _thread_f;
-  std::vector<std::vector<double>> _thread_inertia;  ///< per thread: M a (multi-threaded blocks)
-  std::vector<std::vector<double>> _inertia_scratch; ///< per thread: one element's M a
+  /// per thread and rate force (M a, C v, M v): the sums of multi-threaded blocks
+  std::vector<std::array<std::vector<double>, 3>> _thread_rates;
+  std::vector<std::array<std::vector<double>, 3>> _rate_scratch; ///< per thread: one element's
 };
 
 /// Threads to use by default: min(hardware threads / the run's processes on this machine, 2), at

@@ -12,6 +12,44 @@ namespace gapfem {
 
 using output::append_e12;
 
+namespace {
+
+/// Dynamic steps: the whole-model energies at the step end and the balance over the step
+/// (docs/theory/dynamics.md §8).
+void write_energies(fmt::memory_buffer& buf, const StepChecks& c) {
+  auto out = std::back_inserter(buf);
+  const Energies& e = c.energies;
+  fmt::format_to(out, " ENERGIES (SINCE THE ANALYSIS START)\n");
+  const std::pair<const char*, double> rows[] = {
+      {"ALLKE (KINETIC ENERGY)            ", e.allke},
+      {"ALLIE (INTERNAL ENERGY)           ", e.allie},
+      {"ALLVD (VISCOUS DISSIPATION)       ", e.allvd},
+      {"ALLFD (FRICTIONAL DISSIPATION)    ", e.allfd},
+      {"ALLSD (STABILIZATION DISSIPATION) ", e.allsd},
+      {"ALLKL (KINETIC ENERGY LOST, IMPACT)", e.allkl},
+      {"ALLWK (EXTERNAL WORK)             ", e.allwk},
+      {"ETOTAL (ENERGY BALANCE)           ", e.etotal()}};
+  for (const auto& [name, v] : rows) {
+    fmt::format_to(out, "   {:<36}", name);
+    append_e12(buf, v);
+    fmt::format_to(out, "\n");
+  }
+  fmt::format_to(out, " ENERGY BALANCE OVER THE STEP\n   CHANGE OF ETOTAL                  ");
+  append_e12(buf, c.energy_change);
+  fmt::format_to(out, "\n   ENERGY SCALE (LARGEST ENERGY)     ");
+  append_e12(buf, c.energy_scale);
+  fmt::format_to(out, "\n   RELATIVE CHANGE                   ");
+  if (c.energy_scale > 0)
+    append_e12(buf, c.energy_change / c.energy_scale);
+  else
+    fmt::format_to(out, "{:>12}", "N/A");
+  fmt::format_to(out, "\n   {}\n\n",
+                 c.conserving ? "(TRAPEZOIDAL RULE: ENERGY IS CONSERVED UP TO THE TOLERANCES)"
+                              : "(THE INTEGRATOR'S NUMERICAL DISSIPATION LOWERS ETOTAL)");
+}
+
+} // namespace
+
 void DatWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {
   write_checks(model, step_index, summary);
   _out.flush();
@@ -104,6 +142,7 @@ void DatWriter::write_checks(const Model& model, int step_index, const StepSumma
       fmt::format_to(out, "{:>12}", "N/A");
     fmt::format_to(out, "\n\n");
   }
+  if (c.dynamic) write_energies(buf, c);
   if (c.stabilized) {
     fmt::format_to(out, " AUTOMATIC STABILIZATION\n   DAMPING FACTOR AT STEP END        ");
     append_e12(buf, c.stabilization_factor);

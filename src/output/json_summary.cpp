@@ -40,6 +40,20 @@ void JsonWriter::close_step(const StepSummary* s) {
 void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
                                  std::string_view unfinished) const {
   b.push_back(']');
+  if (!_energy_history.empty()) { // the dynamic step's energies per increment
+    b.append(std::string_view(",\"history\":{\"energies\":{\"columns\":[\"increment\","
+                              "\"step_time\",\"total_time\",\"ALLKE\",\"ALLIE\",\"ALLVD\","
+                              "\"ALLFD\",\"ALLKL\",\"ALLWK\",\"ETOTAL\"],\"rows\":["));
+    for (std::size_t i = 0; i < _energy_history.size(); ++i) {
+      b.append(i ? std::string_view(",[") : std::string_view("["));
+      for (std::size_t k = 0; k < _energy_history[i].size(); ++k) {
+        if (k) b.push_back(',');
+        append_json_number(b, _energy_history[i][k]);
+      }
+      b.push_back(']');
+    }
+    b.append(std::string_view("]}}"));
+  }
   if (!s) {
     b.append(std::string_view(",\"converged\":false,\"failure\":"));
     append_json_string(b, unfinished);
@@ -102,6 +116,15 @@ void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
     b.append(std::string_view(",\"energy\":{\"ALLAE\":"));
     append_json_number(b, c.allae);
     number_field(b, "ALLSE", c.allse);
+    b.push_back('}');
+  }
+  if (c.dynamic) {
+    b.append(std::string_view(",\"energy_balance\":{\"change\":"));
+    append_json_number(b, c.energy_change);
+    number_field(b, "scale", c.energy_scale);
+    b.append(c.conserving ? std::string_view(",\"conserving\":true")
+                          : std::string_view(",\"conserving\":false"));
+    output::append_energies(b, c.energies);
     b.push_back('}');
   }
   if (c.stabilized) {
@@ -187,6 +210,12 @@ void JsonWriter::increment(const IncrementInfo& info) {
   ++_seen.attempts;
   _seen.iterations += info.iterations;
   if (!info.converged) return;
+  if (info.energies) {
+    const Energies& e = *info.energies;
+    _energy_history.push_back({static_cast<double>(info.increment), info.step_time,
+                               info.total_time, e.allke, e.allie, e.allvd, e.allfd, e.allkl,
+                               e.allwk, e.etotal()});
+  }
   ++_seen.increments;
   _last = info;
   _has_last = true;

@@ -123,6 +123,7 @@ void JsonWriter::save_state(ArchiveWriter& a) {
   a.pod(_open_step_number);
   a.pod(_last_increment);
   a.pod(_publish_seconds);
+  a.vec(_energy_history);
   a.pod(static_cast<std::uint64_t>(_components.size()));
   for (const auto& [k, c] : _components) {
     a.pod(k.first);
@@ -154,6 +155,7 @@ void JsonWriter::resume(const Model& model, int step_index, ArchiveReader& a,
   a.pod(_open_step_number);
   a.pod(_last_increment);
   a.pod(_publish_seconds);
+  a.vec(_energy_history);
   _components.clear();
   for (auto n = a.get<std::uint64_t>(); n > 0; --n) {
     const auto t = a.get<int>();
@@ -179,6 +181,7 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   prepare_step(model, step_index);
   _step_open = true;
   _first_frame = true;
+  _energy_history.clear();
   _open_step_number = step.number;
   _last_increment = -1;
 }
@@ -239,6 +242,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   _last_increment = frame.increment;
   b.append(repeated ? std::string_view(",\"repeated\":true")
                     : std::string_view(",\"repeated\":false"));
+  if (frame.energies) output::append_energies(b, *frame.energies);
   b.append(std::string_view(",\"nodes\":{"));
   bool first = true;
   for (NodeId n : _frame_nodes) {

@@ -74,6 +74,9 @@ class JsonWriter : public ResultWriter {
   /// Increment of the last frame written in the open step (-1: none): a step that stops early
   /// hands that increment over again as its final frame, which is then marked "repeated".
   int _last_increment = -1;
+  /// The open dynamic step's energies per converged increment: increment, step time, total time,
+  /// ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL (the step's "history": docs/results.md)
+  std::vector<std::array<double, 10>> _energy_history;
 
   std::vector<std::vector<NodeId>> _node_lists;   ///< per *NODE PRINT of the step, by label
   std::vector<std::vector<ElemId>> _elem_lists;   ///< per *EL PRINT of the step

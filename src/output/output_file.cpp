@@ -276,6 +276,23 @@ std::string spaced(std::string_view text) {
   return out;
 }
 
+void append_energies(fmt::memory_buffer& out, const Energies& e) {
+  const std::pair<std::string_view, double> terms[] = {
+      {"ALLKE", e.allke}, {"ALLIE", e.allie}, {"ALLVD", e.allvd},       {"ALLFD", e.allfd},
+      {"ALLSD", e.allsd}, {"ALLKL", e.allkl}, {"ALLWK", e.allwk}, {"ETOTAL", e.etotal()}};
+  out.append(std::string_view(",\"energies\":{"));
+  bool first = true;
+  for (const auto& [name, v] : terms) {
+    if (!first) out.push_back(',');
+    first = false;
+    out.push_back('"');
+    out.append(name);
+    out.append(std::string_view("\":"));
+    append_json_number(out, v);
+  }
+  out.push_back('}');
+}
+
 void append_json_number(fmt::memory_buffer& out, double v) {
   if (!std::isfinite(v)) {
     out.append(std::string_view("null"));

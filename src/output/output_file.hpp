@@ -122,6 +122,8 @@ inline void append_e12(fmt::memory_buffer& out, double v) {
 /// Append a JSON number with full round-trip precision, or null when not
 /// finite.
 void append_json_number(fmt::memory_buffer& out, double v);
+/// Append `,"energies":{"ALLKE":…,…,"ETOTAL":…}` (results.hpp, Energies).
+void append_energies(fmt::memory_buffer& out, const Energies& e);
 /// Append a JSON string literal (quoted, escaped; invalid UTF-8 bytes become
 /// U+FFFD).
 void append_json_string(fmt::memory_buffer& out, std::string_view s);

@@ -56,6 +56,13 @@ if (DATA.gaps.length) {
       data: DATA.contact_set.map(p => ({x: p[0], y: p[1]}))}]},
     options: {scales: {x: linear('total time'), y: Object.assign(linear('gaps'), {min: 0})}}});
 }
+if (DATA.energies.length) {
+  const names = ['ALLKE', 'ALLIE', 'ALLVD', 'ALLFD', 'ALLKL', 'ALLWK', 'ETOTAL'];
+  chart('energies', {type: 'line', data: {datasets: names.map((n, i) => ({
+      label: n, borderColor: palette[i % palette.length], backgroundColor: palette[i % palette.length],
+      pointRadius: 1, data: DATA.energies.map(e => ({x: e[0], y: e[i + 1]}))}))},
+    options: {scales: {x: linear('total time'), y: linear('energy')}}});
+}
 {
   const ok = [], cut = [];
   let it = 0;
@@ -165,6 +172,12 @@ void write_report_page(fmt::memory_buffer& out, const ReportContent& c) {
     canvas(out, "gap-status");
     fmt::format_to(o, "<h2>Contact set</h2>\n");
     canvas(out, "contact-set");
+  }
+  if (c.has_energies) {
+    fmt::format_to(o, "<h2>Energies</h2>\n<p class=\"note\">Whole-model energies after each "
+                      "increment of the dynamic steps (ETOTAL = ALLKE + ALLIE + ALLVD + ALLFD + "
+                      "ALLKL - ALLWK; docs/theory/dynamics.md).</p>\n");
+    canvas(out, "energies");
   }
   fmt::format_to(o, "<h2>Newton iterations</h2>\n<p class=\"note\">The residual after each "
                     "iteration of every attempt; attempts that did not converge (cut back) in "

@@ -14,10 +14,11 @@ namespace gapfem::output {
 
 struct ReportContent {
   std::string job;
-  std::string data_json; ///< gaps, contact_set, attempts, time_split, wall_seconds
+  std::string data_json; ///< gaps, contact_set, energies, attempts, time_split, wall_seconds
   const RunSummary* run = nullptr;
   const std::vector<StepSummary>* steps = nullptr;
   bool has_gaps = false;
+  bool has_energies = false; ///< dynamic steps: the energies chart
   bool named_gaps = false;
 };
 

@@ -74,6 +74,7 @@ void ReportWriter::save_state(ArchiveWriter& a) {
     a.vec(t.residuals);
   }
   a.vec(_contact_set);
+  a.vec(_energies);
   a.pod(static_cast<std::uint64_t>(_steps.size()));
   for (const StepSummary& s : _steps) save(a, s);
   a.vec(_gap_ids);
@@ -101,6 +102,7 @@ void ReportWriter::resume(const Model& model, int, ArchiveReader& a, const Resum
     a.vec(t.residuals);
   }
   a.vec(_contact_set);
+  a.vec(_energies);
   _steps.resize(a.get<std::uint64_t>());
   for (StepSummary& s : _steps) load(a, s);
   a.vec(_gap_ids);
@@ -120,6 +122,11 @@ void ReportWriter::resume(const Model& model, int, ArchiveReader& a, const Resum
 void ReportWriter::increment(const IncrementInfo& info) {
   _attempts.push_back({info.step, info.increment, info.attempts, info.total_time, info.converged,
                        info.residual_history});
+  if (info.converged && info.energies) {
+    const Energies& e = *info.energies;
+    _energies.push_back(
+        {info.total_time, e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal()});
+  }
   if (!info.converged || info.gaps_closed < 0) return;
   _contact_set.emplace_back(info.total_time, info.gaps_closed);
   if (_gap_ids.empty()) {
@@ -205,6 +212,13 @@ std::string ReportWriter::data_json(const Model& model, const RunSummary& run) c
   json cs = json::array();
   for (const auto& [t, n] : _contact_set) cs.push_back({finite(t), n});
   d["contact_set"] = std::move(cs);
+  json en = json::array();
+  for (const auto& e : _energies) {
+    json row = json::array();
+    for (double v : e) row.push_back(finite(v));
+    en.push_back(std::move(row));
+  }
+  d["energies"] = std::move(en);
   json at = json::array();
   for (const Attempt& a : _attempts) {
     json r = json::array();
@@ -233,6 +247,7 @@ void ReportWriter::end(const Model& model, const RunSummary& summary) {
   page.run = &summary;
   page.steps = &_steps;
   page.has_gaps = !_gap_ids.empty();
+  page.has_energies = !_energies.empty();
   page.named_gaps = !_named.empty();
   output::OutputFile out;
   out.open(_path, output::OutputFile::Mode::Replace);

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string>
+#include <array>
 #include <vector>
 
 namespace gapfem {
@@ -58,6 +59,8 @@ class ReportWriter : public ResultWriter {
   std::vector<ElemId> _named; ///< resolved at begin()
   std::vector<Attempt> _attempts;
   std::vector<std::pair<double, int>> _contact_set; ///< (total time, closed gaps)
+  /// dynamic steps: (total time, ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL) per increment
+  std::vector<std::array<double, 8>> _energies;
   std::vector<StepSummary> _steps;
   std::vector<ElemId> _gap_ids;    ///< gaps in the order of IncrementInfo::gaps
   std::vector<History> _histories; ///< per _gap_ids entry

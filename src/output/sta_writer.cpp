@@ -59,6 +59,9 @@ void StaWriter::increment(const IncrementInfo& info) {
                  fmt::format("{:.5G}", info.step_time - back),
                  info.monitor ? fmt::format("{:<11}", inc) : inc);
   if (info.monitor) fmt::format_to(std::back_inserter(_out.buffer()), "{:.4E}", *info.monitor);
+  if (info.converged && info.energies) // dynamic steps, after Abaqus's columns
+    fmt::format_to(std::back_inserter(_out.buffer()), "  ALLKE={:.4E} ETOTAL={:.4E}",
+                   info.energies->allke, info.energies->etotal());
   _out.buffer().push_back('\n');
   _out.flush();
 }

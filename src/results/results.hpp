@@ -8,7 +8,9 @@
 #include "common/types.hpp"
 #include "elements/element_kernel.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -67,6 +69,25 @@ struct ElementResult {
   ElementRecovery data;
 };
 
+/// Whole-model energies since the analysis start, Abaqus's names (docs/theory/dynamics.md §8):
+/// kinetic ALLKE = 1/2 v.M v; internal ALLIE (the work of the element, contact and constraint
+/// forces, friction's dissipation taken out); viscous ALLVD (the damping operators: Rayleigh,
+/// dashpots, point-mass ALPHA); stabilization ALLSD; frictional ALLFD (the gaps'); external work
+/// ALLWK (loads and the reactions of prescribed motion); kinetic energy lost at impacts ALLKL.
+struct Energies {
+  double allke = 0.0, allie = 0.0, allvd = 0.0, allsd = 0.0, allfd = 0.0, allwk = 0.0,
+         allkl = 0.0;
+  /// ETOTAL = ALLKE + ALLIE + ALLVD + ALLSD + ALLFD + ALLKL - ALLWK: constant (zero from a
+  /// state at rest) when energy is conserved; HHT's numerical dissipation lowers it.
+  double etotal() const { return allke + allie + allvd + allsd + allfd + allkl - allwk; }
+  /// The largest magnitude of the terms, for judging ETOTAL.
+  double scale() const {
+    double m = 0.0;
+    for (double e : {allke, allie, allvd, allsd, allfd, allwk, allkl}) m = std::max(m, std::abs(e));
+    return m;
+  }
+};
+
 /// Self-checks after each step (.dat block, terminal summary, JSON "checks").
 struct StepChecks {
   int n_gaps = 0, n_open = 0, n_closed = 0, n_stick = 0, n_slip = 0;
@@ -99,6 +120,14 @@ struct StepChecks {
   /// hourglass forces, and ALLSE, the elastic strain energy of all continuum elements
   bool hourglass = false;
   double allae = 0.0, allse = 0.0;
+  /// Dynamic steps: the energies at the step end and the balance over the step: the change of
+  /// ETOTAL from the step start (energy_change; > 0: energy was gained), judged against the
+  /// largest energy of the step (energy_scale), and the integrator's expected dissipation
+  /// (none for the trapezoidal rule: conserving)
+  bool dynamic = false;
+  Energies energies;
+  double energy_change = 0.0, energy_scale = 0.0;
+  bool conserving = false; ///< trapezoidal rule (alpha = 0, beta = 1/4, gamma = 1/2)
 };
 
 /// One substructure element's internal results at a frame (*SUBSTRUCTURE PATH): recovered by the
@@ -124,6 +153,7 @@ struct Frame {
   int increment = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
   bool last_in_step = false;
+  std::optional<Energies> energies; ///< dynamic steps: the whole-model energies at the frame
   NodeResults nodes;
   /// Element output for the elements needed by the due requests (all elements at the last frame).
   std::vector<ElementResult> elements;
@@ -172,6 +202,8 @@ struct IncrementInfo {
   /// gaps that are closed (closed, stick or slip) and every gap's state (else -1 and empty).
   int gaps_closed = -1;
   std::vector<GapSample> gaps;
+  /// Dynamic steps: the whole-model energies after the increment.
+  std::optional<Energies> energies;
 };
 
 struct StepSummary {

@@ -463,6 +463,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   step_damping_peak = std::max(step_damping_peak, damping_peak(prob));
   write_frame(r.index, prob, ctrl.increment(), ctrl.finished(), dt);
   info.monitor = monitor_value(*r.step, ctrl.increment(), ctrl.finished());
+  if (prob.integrator() && prob.integrator()->second_order()) info.energies = st.energies();
   if (want_gap_samples && disc.has_gaps()) gap_samples(prob, info);
   {
     ScopedTimer timer(&stats, TimeCategory::Output); // the JSON checkpoint is output time

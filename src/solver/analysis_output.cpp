@@ -189,6 +189,7 @@ void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bo
   if (!due) return;
   Frame& fr = *due;
   ScopedTimer timer(&stats, TimeCategory::Output);
+  if (prob.integrator() && prob.integrator()->second_order()) fr.energies = st.energies();
   frame_nodes(prob, fr);
   frame_elements(step, prob, field_elements, fr);
   if (const std::string bad = first_non_finite_output(model, fr); !bad.empty())

@@ -11,7 +11,7 @@
 namespace gapfem {
 namespace {
 
-constexpr std::uint32_t kPayloadVersion = 4; // 3: the procedure's state last; 4: rates
+constexpr std::uint32_t kPayloadVersion = 5; // 3: the procedure's state last; 4: rates; 5: energies
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -155,6 +155,12 @@ void Analysis::Impl::begin_resume() {
   in.pod(st.allie);
   in.pod(st.allsd);
   in.vec(st.f_elem_start);
+  for (double* e : {&st.allke, &st.allvd, &st.allwk, &st.allkl, &st.allcw, &st.allfd}) in.pod(*e);
+  for (auto* f : {&st.f_damp_start, &st.f_ext_start, &st.f_other_start}) {
+    in.vec(*f);
+    if (!f->empty() && f->size() != ns)
+      throw RestartDataError("the restart record's forces do not fit the model");
+  }
   for (auto* r : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) { // dynamic steps
     in.vec(*r);
     if (!r->empty() && r->size() != ns)
@@ -251,6 +257,8 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.pod(st.allie);
   a.pod(st.allsd);
   a.vec(st.f_elem_start);
+  for (const double e : {st.allke, st.allvd, st.allwk, st.allkl, st.allcw, st.allfd}) a.pod(e);
+  for (const auto* f : {&st.f_damp_start, &st.f_ext_start, &st.f_other_start}) a.vec(*f);
   for (const auto* v : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) a.vec(*v);
   for (const ElementBlock& b : disc.blocks()) {
     a.vec(b.state_committed);

@@ -12,6 +12,9 @@ namespace gapfem {
 
 namespace {
 
+/// The energy gain over a step, as a fraction of its largest energy, that draws a warning.
+constexpr double kEnergyGainTolerance = 1e-3;
+
 class DynamicProcedure final : public StepProcedure {
  public:
   using StepProcedure::StepProcedure;
@@ -36,19 +39,28 @@ class DynamicProcedure final : public StepProcedure {
       _amax = r.prob->start_dynamic_step(*_a.solver, r.step->dynamic.initial_accelerations);
     }
     _active = exact_rows_of(r.prob->constraints());
+    if (!resuming) {
+      _etotal_start = _a.st.energies().etotal();
+      _scale = _a.st.energies().scale();
+    }
   }
   void accepted(StepRun& r, double dt) override;
+  void finish(StepRun& r) override;
   void save(ArchiveWriter& a, const StepRun&) const override {
     a.vec(_active);
     a.pod(_easy);
     a.pod(_lost);
     a.pod(_amax);
+    a.pod(_etotal_start);
+    a.pod(_scale);
   }
   void restore(ArchiveReader& in, StepRun&) override {
     in.vec(_active);
     in.pod(_easy);
     in.pod(_lost);
     in.pod(_amax);
+    in.pod(_etotal_start);
+    in.pod(_scale);
   }
 
   void report_set_up(const StepRun& r) const override {
@@ -98,6 +110,10 @@ class DynamicProcedure final : public StepProcedure {
   }
 
   double _amax = 0.0;
+  double _etotal_start = 0.0; ///< ETOTAL at the step start
+  double _scale = 0.0;        ///< the largest energy of the step so far
+  /// ALLFD: the gaps' accumulated frictional dissipation at the committed state.
+  double friction_dissipation(StepRun& r) const;
   double _lost = 0.0; ///< kinetic energy removed by impacts in the step
   int _easy = 0;      ///< consecutive increments with a half-increment residual below 0.75 HAFTOL
   std::vector<std::int64_t> _active; ///< the exact constraint rows active at the last commit
@@ -115,14 +131,53 @@ class DynamicProcedure final : public StepProcedure {
 /// An increment in which exact rows (hard gaps) became active is an impact: velocities and
 /// accelerations are made compatible with them (StepProblem::impact; docs/theory/dynamics.md).
 void DynamicProcedure::accepted(StepRun& r, double dt) {
+  if (_a.disc.has_gaps()) _a.st.allfd = friction_dissipation(r);
   std::vector<std::int64_t> now = exact_rows_of(r.prob->constraints());
   const bool impact = !std::includes(_active.begin(), _active.end(), now.begin(), now.end());
   _active = std::move(now);
-  if (!impact) return;
-  const double t = r.ctrl->step_time() + dt;
-  const double lost = r.prob->impact(*_a.solver, t);
-  _lost += lost;
-  log::debug("  impact at step time {:.6g}: kinetic energy {:.4g} removed", t, lost);
+  if (impact) {
+    const double t = r.ctrl->step_time() + dt;
+    const double lost = r.prob->impact(*_a.solver, t);
+    _lost += lost;
+    log::debug("  impact at step time {:.6g}: kinetic energy {:.4g} removed", t, lost);
+  }
+  _scale = std::max(_scale, _a.st.energies().scale());
+}
+
+double DynamicProcedure::friction_dissipation(StepRun& r) const {
+  const FieldView fields = r.prob->fields();
+  ElementRecovery rec;
+  double d = 0.0;
+  for (const ElementBlock& b : _a.disc.blocks()) {
+    const ElementTypeInfo& info = element_info(b.type);
+    if (info.family != ElementFamily::Gap || !info.displacement) continue;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      _a.assembler.recover(b.elements[i], fields, r.prob->context(), rec);
+      if (rec.gap) d += rec.gap->dissipation;
+    }
+  }
+  return d;
+}
+
+/// The step's energy balance (docs/theory/dynamics.md §8): ETOTAL's change over the step against
+/// the largest energy of the step; the trapezoidal rule conserves, HHT with alpha < 0 and
+/// backward Euler dissipate.
+void DynamicProcedure::finish(StepRun& r) {
+  StepChecks& c = r.sum.checks;
+  c.dynamic = true;
+  c.energies = _a.st.energies();
+  c.energy_change = c.energies.etotal() - _etotal_start;
+  c.energy_scale = std::max(_scale, c.energies.scale());
+  const DynamicSettings& d = r.step->dynamic;
+  c.conserving = d.hht && d.alpha == 0.0 && d.beta == 0.25 && d.gamma == 0.5;
+  // the integrators conserve (trapezoidal) or dissipate: a gain beyond the tolerances means an
+  // input that feeds energy the balance does not see, or an increment too large for the physics
+  if (c.energy_scale > 0.0 && c.energy_change > kEnergyGainTolerance * c.energy_scale)
+    _a.solver_warnings.push_back(fmt::format(
+        "step {}: the energy balance ETOTAL grew by {:.3g} ({:.2e} of the largest energy {:.4g}) "
+        "although the time integrator only conserves or dissipates energy; check the increment "
+        "size (a smaller time increment or HAFTOL) and the loads' amplitudes",
+        r.step->number, c.energy_change, c.energy_change / c.energy_scale, c.energy_scale));
 }
 
 /// HAFTOL: the half-increment residual against the tolerance. Above it the increment is redone

@@ -78,20 +78,11 @@ void StepProblem::set_stabilization(std::shared_ptr<const std::vector<double>> m
 }
 
 void StepProblem::commit() {
-  // ALLIE: trapezoidal work of the element forces (the constraint forces do no work on a
-  // compatible increment); ALLSD: the stabilization forces' work
-  if (_s.f_elem_start.size() != _s.u.size()) _s.f_elem_start.assign(_s.u.size(), 0.0);
-  for (std::size_t k = 0; k < _s.u.size(); ++k) {
-    const double du = _s.u[k] - _s.u_start[k];
-    const double fs = _f_stab.empty() ? 0.0 : _f_stab[k];
-    const double fe = _s.f_int[k] - fs;
-    _s.allie += 0.5 * (_s.f_elem_start[k] + fe) * du;
-    _s.allsd += fs * du;
-    _s.f_elem_start[k] = fe;
-  }
+  // the trial rates of the converged increment (they become the committed below)
+  if (!_s.v_start.empty()) _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
+  account_energies();
   if (!_s.r_start.empty() && _ctx.rates.defined()) commit_rate_history();
-  if (!_s.v_start.empty()) { // the trial rates of the converged increment become the committed
-    _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
+  if (!_s.v_start.empty()) {
     _s.v_start = _s.v;
     _s.a_start = _s.a;
   }
@@ -132,9 +123,12 @@ Evaluation StepProblem::evaluate(bool tangent) {
   const FieldView f = fields();
   MatrixInserter* K = tangent ? &_Kin : nullptr;
   const bool history = !_s.r_start.empty() && _ctx.rates.defined();
-  if (history) _inertia.resize(_s.u.size());
-  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C, _weights,
-                                    history ? std::span<double>(_inertia) : std::span<double>{});
+  RateForces rate_forces;
+  if (history) {
+    for (auto* v : {&_inertia, &_damping_forces, &_momentum}) v->resize(_s.u.size());
+    rate_forces = {_inertia, _damping_forces, _momentum};
+  }
+  AssemblyResult ar = _asm.assemble(f, _ctx, _s.f_int, K, &_C, _weights, rate_forces);
   if (history) add_rate_history();
   if (_stats) { // gap elements are reported as "gap work", not assembly
     (*_stats)[TimeCategory::GapWork] += ar.gap_seconds;

@@ -5,6 +5,7 @@
 #include "common/timer.hpp"
 #include "fem/assembler.hpp"
 #include "linalg/constrained_solver.hpp"
+#include "results/results.hpp"
 #include "solver/nonlinear_problem.hpp"
 #include "solver/step_loads.hpp"
 #include "solver/time_integrator.hpp"
@@ -31,6 +32,18 @@ struct SolutionState {
   /// stabilization) per slot at the last committed state, for ALLIE's trapezoidal rule.
   double allie = 0.0, allsd = 0.0;
   std::vector<double> f_elem_start;
+  /// The other energies since the analysis start (results.hpp, Energies; accounted at each commit
+  /// in step_problem_energy.cpp): ALLKE at the last commit, ALLVD, ALLWK, ALLKL, and the work of
+  /// the constraint and contact forces (part of the reported ALLIE), ALLFD (the gaps' friction,
+  /// part of that work, taken out of the reported ALLIE); and per slot at the last commit the
+  /// damping forces C v, the external loads, and f_ext - f_int (the constraint forces at free
+  /// slots; the reactions, physical forces M a + I + C v - P, at prescribed ones).
+  double allke = 0.0, allvd = 0.0, allwk = 0.0, allkl = 0.0, allcw = 0.0, allfd = 0.0;
+  std::vector<double> f_damp_start, f_ext_start, f_other_start;
+  /// The reported energies (ALLIE = the element and constraint work less ALLFD).
+  Energies energies() const {
+    return {allke, allie + allcw - allfd, allvd, allsd, allfd, allwk, allkl};
+  }
   /// HHT (dynamic steps): the non-inertial residual R = I - P + L per slot at the committed
   /// state (time_integrator.hpp); empty outside dynamic steps.
   std::vector<double> r_start;
@@ -40,7 +53,8 @@ struct SolutionState {
 /// What restarting the dynamics at a state found (StepProblem::restart_dynamics).
 struct DynamicRestart {
   double amax = 0.0;        ///< the largest acceleration
-  double energy_lost = 0.0; ///< kinetic energy removed by the velocity projection
+  double energy_lost = 0.0;    ///< kinetic energy removed by the velocity projection
+  double kinetic_energy = 0.0; ///< 1/2 v.M v before it (0 when M was not assembled)
 };
 
 class StepProblem final : public NonlinearProblem {
@@ -162,7 +176,12 @@ class StepProblem final : public NonlinearProblem {
   std::shared_ptr<const std::vector<double>> _stab_mass;
   double _stab_c = 0.0;
   std::vector<double> _f_stab;
+  /// The energies of a committed increment into the solution state (step_problem_energy.cpp).
+  void account_energies();
+
   std::vector<double> _inertia; ///< M a per slot at the last evaluation (HHT's history)
+  std::vector<double> _damping_forces; ///< C v of the damping operators (dynamic steps)
+  std::vector<double> _momentum;       ///< M v per slot at the last evaluation (dynamic steps)
   std::vector<double> _f_dyn;   ///< inertial_forces()
   RunStatistics* _stats = nullptr;
 };

@@ -50,6 +50,17 @@ ConstraintBlock exact_rows(const ConstraintBlock& C) {
   return out;
 }
 
+/// 1/2 v.M v over the equations (M assembled over them).
+double kinetic_energy(const CsrMatrix& M, const EquationMap& eqm, std::span<const double> v_slot) {
+  const LocalIndex n = eqm.n_eq();
+  std::vector<double> v(static_cast<std::size_t>(n)), Mv(v.size());
+  for (LocalIndex i = 0; i < n; ++i) v[i] = v_slot[eqm.eq_slot[i]];
+  M.multiply(v, Mv);
+  double ke = 0.0;
+  for (LocalIndex i = 0; i < n; ++i) ke += 0.5 * v[i] * Mv[i];
+  return ke;
+}
+
 } // namespace
 
 double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_accelerations) {
@@ -57,7 +68,11 @@ double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_a
   _f_dyn.clear();
   if (_s.a_start.size() != _s.u.size()) _s.a_start.assign(_s.u.size(), 0.0);
   if (_s.v_start.size() != _s.u.size()) _s.v_start.assign(_s.u.size(), 0.0);
-  return restart_dynamics(solver, 0.0, initial_accelerations, false).amax;
+  _loads.prescribed_rates(0.0, 0.0, _s.v_start, _s.v_start, _s.a_start); // base motion at t = 0
+  const DynamicRestart r = restart_dynamics(solver, 0.0, initial_accelerations, false);
+  _s.f_ext_start = _s.f_ext; // the step's loads at its start (ALLWK)
+  _s.allke = r.kinetic_energy;
+  return r.amax;
 }
 
 DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t,
@@ -69,7 +84,9 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   _s.r_start.resize(_s.u.size());
   for (std::size_t s = 0; s < _s.u.size(); ++s) _s.r_start[s] = _s.f_int[s] - _s.f_ext[s];
   _s.r_prev.clear(); // a fresh start: no earlier increment to lag behind
-  if (!accelerations && !project_velocities) return out;
+  const bool moving = std::any_of(_s.v_start.begin(), _s.v_start.end(),
+                                  [](double v) { return v != 0.0; });
+  if (!accelerations && !project_velocities && !moving) return out;
   // M alone (the weights of K and C zero) with the active exact constraint rows
   const OperatorWeights keep = _weights;
   _weights = {0.0, 0.0, 1.0, 1.0};
@@ -77,6 +94,8 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   _weights = keep;
   const EquationMap& eqm = _loads.equations();
   const LocalIndex n = eqm.n_eq();
+  out.kinetic_energy = kinetic_energy(_K, eqm, _s.v_start);
+  if (!accelerations && !project_velocities) return out;
   std::vector<bool> massive(static_cast<std::size_t>(n));
   for (LocalIndex i = 0; i < n; ++i) {
     massive[i] = _K.diagonal(i) > 0.0;
@@ -146,6 +165,8 @@ double StepProblem::impact(ConstrainedSolver& solver, double t) {
   _s.f_int = f_int;
   _s.f_ext = f_ext;
   _f_dyn = f_dyn;
+  _s.allke = std::max(0.0, _s.allke - r.energy_lost); // ALLKL: what the impact took
+  _s.allkl += r.energy_lost;
   return r.energy_lost;
 }
 
@@ -155,7 +176,7 @@ double StepProblem::half_increment_residual(double t0, double dt) {
     return -1.0;
   // keep what the commit reads: the end state, its forces and the elements' trial history
   const std::vector<double> u_end = _s.u, f_int = _s.f_int, f_ext = _s.f_ext, inertia = _inertia,
-                            f_dyn = _f_dyn;
+                            f_dyn = _f_dyn, damping = _damping_forces, momentum = _momentum;
   const std::vector<double> T_end = _s.T, G_end = _s.G, rhs = _rhs;
   std::vector<double> trial;
   _disc.save_trial(trial);
@@ -168,6 +189,7 @@ double StepProblem::half_increment_residual(double t0, double dt) {
   begin_rates(h); // the rates of u_mid over h are the midpoint's (Newmark's maps)
   _s.u = u_mid;
   _loads.apply_prescribed(_ctx.step_time, _s.u);
+  _loads.apply_prescribed_motion(t0, _ctx.step_time, _s.u_start, _s.v_start, _s.u);
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
   evaluate(false);
   // f_int - f_ext = R_mid + wi M a + wh R(t0): take R_mid out and form the half-step residual
@@ -188,6 +210,8 @@ double StepProblem::half_increment_residual(double t0, double dt) {
   _s.f_ext = f_ext;
   _inertia = inertia;
   _f_dyn = f_dyn;
+  _damping_forces = damping;
+  _momentum = momentum;
   _s.T = T_end;
   _s.G = G_end;
   _rhs = rhs;

@@ -1,0 +1,49 @@
+// The energies of the step problem (results.hpp, Energies; docs/theory/dynamics.md §8): each
+// force's work by the trapezoidal rule over the increment, W += 1/2 (f_n + f_n+1) . du, which the
+// trapezoidal rule of time integration makes exact (M a's work then equals the change of 1/2 v.M v,
+// so ETOTAL stays constant to the Newton tolerance); the kinetic energy 1/2 v.M v at each commit.
+#include "solver/step_problem.hpp"
+
+namespace gapfem {
+
+void StepProblem::account_energies() {
+  const std::size_t n = _s.u.size();
+  for (auto* f : {&_s.f_elem_start, &_s.f_damp_start, &_s.f_ext_start, &_s.f_other_start})
+    if (f->size() != n) f->assign(n, 0.0);
+  // a dynamic step's evaluation gave M a, C v and M v alone (StepProblem::evaluate)
+  const bool dynamic = !_s.r_start.empty() && _ctx.rates.defined() && _inertia.size() == n &&
+                       _damping_forces.size() == n && _momentum.size() == n;
+  const double wh = dynamic ? _integrator->history_weight() : 0.0;
+  const double wi = dynamic ? _integrator->inertia_weight() : 1.0;
+  const auto prescribed = _loads.prescribed();
+  const bool rates = _s.v.size() == n;
+  double ke = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double du = _s.u[k] - _s.u_start[k];
+    const double fs = _f_stab.empty() ? 0.0 : _f_stab[k];
+    double fe = _s.f_int[k] - fs; // the element forces (all of f_int but stabilization)
+    double fi = 0.0, fd = 0.0;
+    if (dynamic) { // f_int = wi M a + I + C v + HHT's history (+ stabilization)
+      fi = _inertia[k];
+      fd = _damping_forces[k];
+      fe -= wi * fi + fd + wh * _s.r_start[k];
+      if (rates) ke += 0.5 * _s.v[k] * _momentum[k];
+    }
+    const double fx = _s.f_ext[k];
+    const bool fixed = k < prescribed.size() && prescribed[k];
+    // a prescribed slot's reaction (the physical forces there), a free slot's constraint forces
+    const double other = fixed ? fi + fe + fd - fx : fx - _s.f_int[k];
+    _s.allie += 0.5 * (_s.f_elem_start[k] + fe) * du;
+    _s.allsd += fs * du;
+    _s.allvd += 0.5 * (_s.f_damp_start[k] + fd) * du;
+    _s.allwk += 0.5 * (_s.f_ext_start[k] + fx) * du;
+    (fixed ? _s.allwk : _s.allcw) += 0.5 * (_s.f_other_start[k] + other) * du;
+    _s.f_elem_start[k] = fe;
+    _s.f_damp_start[k] = fd;
+    _s.f_ext_start[k] = fx;
+    _s.f_other_start[k] = other;
+  }
+  _s.allke = ke;
+}
+
+} // namespace gapfem
