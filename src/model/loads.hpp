@@ -5,14 +5,23 @@
 #include "common/error.hpp"
 #include "common/types.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace gapfem {
+
+/// *BOUNDARY, TYPE=: what the value prescribes (docs/theory/dynamics.md, "Base motion").
+enum class BoundaryType : std::uint8_t {
+  Displacement, ///< the DOF's value (the default)
+  Velocity,     ///< its time derivative; the displacement follows by exact integration
+  Acceleration  ///< its second time derivative (*DYNAMIC steps only)
+};
 
 /// *BOUNDARY entry: prescribed value of one DOF.
 struct BoundaryEntry {
   NodeId node = -1;
   DofType dof = DofType::U1;
+  BoundaryType type = BoundaryType::Displacement;
   double value = 0.0;
   int amplitude = -1;      ///< index into Model::amplitudes, -1: the step's default variation
   bool fixed = false;      ///< *BOUNDARY, FIXED: hold the value reached at the start of the step

@@ -39,7 +39,7 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
                      const LoadHistory& history, std::span<const double> u_now,
                      double step_start_total_time)
     : _model(model), _step(model.steps[step_index]), _period(_step.inc.period),
-      _step_start(step_start_total_time) {
+      _step_start(step_start_total_time), _step_index(step_index) {
   const Step* prev = step_index > 0 ? &model.steps[step_index - 1] : nullptr;
   set_boundary_conditions(disc, u_now);
   _eqmap = EquationMap::build(_prescribed);
@@ -58,6 +58,11 @@ void StepLoads::set_boundary_conditions(const Discretization& disc, std::span<co
     const int d = abaqus_number(bc.dof);
     if (d <= 6)
       if (const auto Q = _model.node_axes(bc.node)) {
+        if (bc.type != BoundaryType::Displacement)
+          throw InputError(bc.loc, fmt::format("node {}", _model.node_label(bc.node)),
+                           "a prescribed velocity or acceleration at a node with a *TRANSFORM "
+                           "system is not supported; prescribe it in global directions or give "
+                           "the integrated displacement");
         if (!add_local_bc(bc, d, local_value(dofs, u_now, bc.node, d, *Q), disc.constraints()))
           ignored.note(_model, bc);
         continue;
@@ -67,6 +72,11 @@ void StepLoads::set_boundary_conditions(const Discretization& disc, std::span<co
       ignored.note(_model, bc);
       continue;
     }
+    if (bc.type != BoundaryType::Displacement) {
+      add_motion(bc, s);
+      continue;
+    }
+    std::erase_if(_motion, [&](const Motion& m) { return m.slot == s; });
     Scalar sc;
     sc.start = u_now[s];
     sc.end = bc.fixed ? sc.start : bc.value;

@@ -53,6 +53,16 @@ class StepLoads {
 
   /// Write the prescribed values at `step_time` into u (prescribed slots only).
   void apply_prescribed(double step_time, std::span<double> u) const;
+  /// Prescribed velocities and accelerations (*BOUNDARY, TYPE=VELOCITY|ACCELERATION; docs/theory/
+  /// dynamics.md, "Base motion"): the displacement at step time t1 from the committed state at
+  /// t0 (u0, v0 per slot; v0 empty in steps without rates), the prescribed rate integrated
+  /// exactly over [t0, t1]: u0 + int v, or u0 + v0 (t1 - t0) + the double integral of a.
+  void apply_prescribed_motion(double t0, double t1, std::span<const double> u0,
+                               std::span<const double> v0, std::span<double> u) const;
+  /// Their velocities and accelerations at t1 into v and a (per slot): the prescribed ones, a
+  /// prescribed acceleration's velocity integrated from v0 at t0 (v0 may alias v).
+  void prescribed_rates(double t0, double t1, std::span<const double> v0, std::span<double> v,
+                        std::span<double> a) const;
   /// Boundary conditions of this step in local systems (*TRANSFORM nodes): (node, DOF 1-6).
   std::span<const std::pair<NodeId, int>> local_bcs() const { return _local_keys; }
   /// Their values at `step_time` as the right-hand sides of their constraint rows.
@@ -88,6 +98,26 @@ class StepLoads {
   };
   double value(const Scalar& s, double step_time) const;
 
+  /// A prescribed velocity or acceleration q(t) of one slot: m a(x0 + t) with an amplitude,
+  /// p + s t without (STEP, RAMP, or held at the previous step's end value).
+  struct Motion {
+    LocalIndex slot = -1;
+    bool acceleration = false;
+    int amplitude = -1;
+    double m = 0.0, x0 = 0.0; ///< magnitude; amplitude time at step time 0
+    double p = 0.0, s = 0.0;
+  };
+  /// q at t1 (which 0), its slope (1), its integral over [t0, t1] (2), its double integral
+  /// from t0 to t1 (3).
+  double motion(const Motion& mo, double t0, double t1, int which) const;
+  /// The motion of condition `bc` in step `k` (its step time starting at total time `start`).
+  Motion make_motion(int k, const BoundaryEntry& bc, double start) const;
+  /// The rate that the condition on bc's DOF of bc's type prescribed at the end of step k (0
+  /// when it prescribed none there).
+  double end_rate(int k, const BoundaryEntry& bc) const;
+  /// _motion: a TYPE=VELOCITY or ACCELERATION condition (checked against the procedure).
+  void add_motion(const BoundaryEntry& bc, LocalIndex s);
+
   // The constructor's stages, in this order (each appends to the members it names).
   /// _bc, _local, _prescribed; a warning for conditions on DOFs no element has.
   void set_boundary_conditions(const Discretization& disc, std::span<const double> u_now);
@@ -115,6 +145,8 @@ class StepLoads {
   std::vector<std::uint8_t> _prescribed;
   std::vector<std::string> _warnings;
   std::vector<std::pair<LocalIndex, Scalar>> _bc;
+  std::vector<Motion> _motion;
+  int _step_index = 0;
   struct NodalEntry {
     LocalIndex slot;
     Scalar value;

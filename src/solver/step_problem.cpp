@@ -60,6 +60,7 @@ void StepProblem::begin_increment(double t0, double dt, int increment,
   _disc.reset_trial();
   _trial_saved = false;
   _loads.apply_prescribed(_ctx.step_time, _s.u);
+  _loads.apply_prescribed_motion(t0, _ctx.step_time, _s.u_start, _s.v_start, _s.u);
   _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
   if (_loads.has_temperature_gradients()) {
@@ -80,6 +81,7 @@ void StepProblem::set_stabilization(std::shared_ptr<const std::vector<double>> m
 void StepProblem::commit() {
   // the trial rates of the converged increment (they become the committed below)
   if (!_s.v_start.empty()) _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
+  _loads.prescribed_rates(_ctx.step_time - _ctx.dt, _ctx.step_time, _s.v_start, _s.v, _s.a);
   account_energies();
   if (!_s.r_start.empty() && _ctx.rates.defined()) commit_rate_history();
   if (!_s.v_start.empty()) {

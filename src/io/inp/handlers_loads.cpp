@@ -190,6 +190,34 @@ DistributedLoad beam_dload(const BuildState& s, const FieldReader& r, ElemId e, 
 
 } // namespace
 
+/// *BOUNDARY, TYPE= (docs/theory/dynamics.md, "Base motion"): VELOCITY and ACCELERATION are
+/// history data, not with FIXED (the Keywords Reference: FIXED "cannot be used with the TYPE
+/// parameter"), ACCELERATION in *DYNAMIC steps only (also checked when the step runs, for a
+/// *BOUNDARY before the procedure keyword and for conditions carried into a later step).
+static BoundaryType boundary_type(const BuildState& s, const Keyword& kw, bool history,
+                                  bool fixed) {
+  const int i = enum_param(kw, "TYPE", {"DISPLACEMENT", "VELOCITY", "ACCELERATION"}, 0);
+  const auto type = static_cast<BoundaryType>(i);
+  if (type == BoundaryType::Displacement) return type;
+  const std::string what = param_text(kw, "TYPE");
+  if (!history)
+    throw InputError(kw.loc, what,
+                     "a prescribed velocity or acceleration is history data; give it on a "
+                     "*BOUNDARY inside a step");
+  if (fixed)
+    throw InputError(kw.loc, what,
+                     "FIXED holds the displacement reached at the step start and cannot be used "
+                     "with TYPE=VELOCITY or ACCELERATION; remove FIXED or TYPE");
+  if (type == BoundaryType::Acceleration && s.scratch.procedure_given &&
+      s.step.procedure != Procedure::Dynamic)
+    throw InputError(kw.loc, what,
+                     fmt::format("a prescribed acceleration needs a *DYNAMIC step; step {} is *{}. "
+                                 "Prescribe a displacement (or TYPE=VELOCITY) here, or make the "
+                                 "step *DYNAMIC",
+                                 s.step.number, procedure_name(s.step.procedure)));
+  return type;
+}
+
 void handle_boundary(BuildState& s, const Keyword& kw) {
   const bool history = s.in_step;
   if (!history)
@@ -199,6 +227,7 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
             kw.loc, p,
             fmt::format("{} is a history-data parameter; use it on a *BOUNDARY inside a step", p));
   const bool fixed = kw.has("FIXED");
+  const BoundaryType type = boundary_type(s, kw, history, fixed);
   const int amplitude = amplitude_param(s, kw);
   const bool is_new = history && op_new(kw);
   std::vector<BoundaryEntry> entries;
@@ -240,6 +269,11 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
         BoundaryEntry b;
         b.node = n;
         dof_from_abaqus(d, b.dof);
+        if (type != BoundaryType::Displacement && d > 6)
+          r.fail(fmt::format("DOF {}", d),
+                 "TYPE=VELOCITY and TYPE=ACCELERATION prescribe displacements and rotations "
+                 "(DOFs 1-6) only");
+        b.type = type;
         b.value = fixed ? 0.0 : value;
         b.amplitude = amplitude;
         b.fixed = fixed;

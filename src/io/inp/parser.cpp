@@ -70,7 +70,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*MATRIX INPUT", handle_matrix_input, W::Model, "NAME|INPUT|MATRIX|SCALE FACTOR|TYPE"},
   {"*MATRIX ASSEMBLE", handle_matrix_assemble, W::Model, "STIFFNESS|MASS|VISCOUS DAMPING|STRUCTURAL DAMPING|NSET"},
   {"*SUBSTRUCTURE PROPERTY", handle_substructure_property, W::Model, "ELSET|POSITION TOL"},
-  {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT"},
+  {"*AMPLITUDE", handle_amplitude, W::Both, "NAME|TIME|VALUE|DEFINITION|INPUT|FIXED INTERVAL|BEGIN|SCALEX|SCALEY|SHIFTX|SHIFTY|SMOOTH"},
   {"*INITIAL CONDITIONS", handle_initial_conditions, W::Model, "TYPE"},
   {"*PHYSICAL CONSTANTS", handle_physical_constants, W::Model, "*"},
   // gap contact
@@ -94,7 +94,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*KINEMATIC", handle_kinematic, W::Model, "", kCoupling},
   {"*DISTRIBUTING", handle_distributing, W::Model, "COUPLING|WEIGHTING METHOD|ROTATIONAL COUPLING|FREE NODES", kCoupling},
   // model or history
-  {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED"},
+  {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED|TYPE"},
   // history: steps and procedures
   {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION|EXTRAPOLATION"},
   {"*END STEP", handle_end_step, W::Both, ""},

@@ -268,8 +268,8 @@ TEST(ReaderMaterial, Amplitudes) {
   EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A\n0., 0., 1., 1.\n1., 2.\n"),
                   "deck.inp:3: *AMPLITUDE: time 1: amplitude times must increase strictly");
   EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A\n0., 0., 1.\n"), "odd number of values");
-  EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A, DEFINITION=SMOOTH STEP\n0., 0.\n"),
-                  "DEFINITION=SMOOTH STEP");
+  EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A, DEFINITION=SOLUTION DEPENDENT\n0., 0.\n"),
+                  "DEFINITION=SOLUTION DEPENDENT");
   EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A\n0., 0.\n*AMPLITUDE, NAME=a\n0., 1.\n"),
                   "deck.inp:3: *AMPLITUDE: amplitude A: this amplitude is defined twice");
   EXPECT_CONTAINS(error_text("*AMPLITUDE, NAME=A\n"), "no time, amplitude pairs");
