@@ -1,5 +1,6 @@
 #include "elements/element_kernel.hpp"
 #include "elements/heat/heat_shell.hpp"
+#include "elements/rayleigh_damping.hpp"
 #include "elements/structural/coupled_shell.hpp"
 #include "model/model.hpp"
 
@@ -21,7 +22,8 @@ std::string_view contact_status_name(ContactStatus s) {
   return "?";
 }
 
-std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
+namespace {
+std::unique_ptr<ElementKernel> make_family_kernel(const KernelContext& ctx) {
   switch (element_info(ctx.type).family) {
   case ElementFamily::Shell:
     if (!element_info(ctx.type).displacement) return make_heat_shell_kernel(ctx);  // DS3, DS4, DS8
@@ -44,6 +46,12 @@ std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
     return make_substructure_kernel(ctx);
   }
   throw InternalError("unknown element family");
+}
+} // namespace
+
+std::unique_ptr<ElementKernel> make_element_kernel(const KernelContext& ctx) {
+  // material Rayleigh damping (*DAMPING) wraps the kernels of the materials that have it
+  return with_material_damping(ctx, make_family_kernel(ctx));
 }
 
 } // namespace gapfem

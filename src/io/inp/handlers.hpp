@@ -41,6 +41,8 @@ void handle_specific_heat(BuildState& s, const Keyword& kw);
 void handle_amplitude(BuildState& s, const Keyword& kw);
 void handle_initial_conditions(BuildState& s, const Keyword& kw);
 void handle_physical_constants(BuildState& s, const Keyword& kw);
+/// *DAMPING in a material: Rayleigh ALPHA, BETA (handlers_damping.cpp)
+void handle_damping(BuildState& s, const Keyword& kw);
 ///@}
 
 /// @name *MATRIX INPUT, *MATRIX ASSEMBLE, substructures (handlers_substructure.cpp)

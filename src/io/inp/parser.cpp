@@ -27,7 +27,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 120> kTable = {{
+constexpr std::array<KeywordSpec, 121> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -49,6 +49,7 @@ constexpr std::array<KeywordSpec, 120> kTable = {{
   {"*EXPANSION", handle_expansion, W::Model, "TYPE|ZERO|DEPENDENCIES", kMaterial},
   {"*CONDUCTIVITY", handle_conductivity, W::Model, "TYPE|DEPENDENCIES", kMaterial},
   {"*SPECIFIC HEAT", handle_specific_heat, W::Model, "DEPENDENCIES", kMaterial},
+  {"*DAMPING", handle_damping, W::Model, "ALPHA|BETA|STRUCTURAL|COMPOSITE", kMaterial},
   {"*SOLID SECTION", handle_solid_section, W::Model, "ELSET|MATERIAL|ORIENTATION|CONTROLS"},
   {"*SECTION CONTROLS", handle_section_controls, W::Model,
    "NAME|HOURGLASS|DISTORTION CONTROL|LENGTH RATIO|KINEMATIC SPLIT|SECOND ORDER ACCURACY|"
