@@ -39,6 +39,7 @@ struct SubstructureGeneration {
   std::string library; ///< LIBRARY= (default: the job name); the file is <library>_<type>.sub
   bool overwrite = false;
   bool recovery = true; ///< RECOVERY MATRIX=YES: internal results can be recovered at usage
+  bool mass = false;    ///< MASS MATRIX=YES: the reduced mass is generated too
   /// the retained nodes with their Abaqus DOFs, in the element's node order (an empty list: every
   /// DOF the node carries)
   std::vector<std::pair<NodeId, std::vector<int>>> retained;
@@ -55,8 +56,10 @@ struct SubstructureType {
   std::vector<Vec3> coords;
   std::vector<std::vector<int>> node_dofs;
   std::vector<double> stiffness; ///< reduced, n_dofs x n_dofs row-major (generation frame)
-  double size = 1.0;             ///< the largest overall dimension of the substructure
-  bool recoverable = false;      ///< the library holds recovery data (*SUBSTRUCTURE PATH)
+  /// reduced mass (MASS MATRIX=YES at generation), like the stiffness; empty: massless
+  std::vector<double> mass;
+  double size = 1.0;        ///< the largest overall dimension of the substructure
+  bool recoverable = false; ///< the library holds recovery data (*SUBSTRUCTURE PATH)
   int n_dofs() const {
     int n = 0;
     for (const auto& d : node_dofs) n += static_cast<int>(d.size());

@@ -12,7 +12,9 @@ namespace gapfem {
 namespace {
 
 constexpr std::string_view kMagic = "GAPFEM-SUBSTRUCTURE\n";
-constexpr std::uint32_t kVersion = 1;
+/// 2: the reduced mass (a flag, then the matrix) follows the stiffness; files of version 1 (no
+/// mass) are still read
+constexpr std::uint32_t kVersion = 2;
 
 void lists(ArchiveWriter& a, const std::vector<std::vector<int>>& v) {
   a.pod(static_cast<std::uint64_t>(v.size()));
@@ -38,6 +40,8 @@ void write_substructure_file(const std::filesystem::path& file, const Substructu
   lists(a, t.node_dofs);
   a.pod(t.size);
   a.vec(t.stiffness);
+  a.pod(static_cast<std::uint8_t>(t.mass.empty() ? 0 : 1));
+  if (!t.mass.empty()) a.vec(t.mass);
   a.pod(static_cast<std::uint8_t>(lib.has_recovery ? 1 : 0));
   if (lib.has_recovery) {
     const SubstructureRecovery& r = lib.recovery;
@@ -89,7 +93,8 @@ SubstructureLibrary read_substructure_file(const std::filesystem::path& file, bo
   SubstructureLibrary lib;
   try {
     ArchiveReader head(std::string_view(data).substr(kMagic.size()));
-    if (head.get<std::uint32_t>() != kVersion)
+    const auto version = head.get<std::uint32_t>();
+    if (version != kVersion && version != 1)
       throw SubstructureFileError(fmt::format("'{}' was written by another version of gapfem; "
                                               "generate the substructure again",
                                               file.string()));
@@ -111,10 +116,11 @@ SubstructureLibrary read_substructure_file(const std::filesystem::path& file, bo
     lists(a, t.node_dofs);
     a.pod(t.size);
     a.vec(t.stiffness);
+    if (version >= 2 && a.get<std::uint8_t>() != 0) a.vec(t.mass);
     t.file = file.string();
     const auto n = static_cast<std::size_t>(t.n_dofs());
     if (t.coords.size() != t.node_labels.size() || t.node_dofs.size() != t.node_labels.size() ||
-        t.stiffness.size() != n * n)
+        t.stiffness.size() != n * n || (!t.mass.empty() && t.mass.size() != n * n))
       throw SubstructureFileError(fmt::format("'{}' is inconsistent", file.string()));
     lib.has_recovery = a.get<std::uint8_t>() != 0;
     if (recovery && lib.has_recovery) {

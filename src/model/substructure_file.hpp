@@ -8,7 +8,8 @@
 ///   "GAPFEM-SUBSTRUCTURE\n", format version (u32), checksum of what follows (u64), then
 ///   type name, generation deck path, generation job name, generation model fingerprint (u64),
 ///   retained nodes: labels (i64), coordinates (3 f64 each), DOFs per node (lists of i32),
-///   largest dimension (f64), reduced stiffness (n x n f64, row-major),
+///   largest dimension (f64), reduced stiffness (n x n f64, row-major), mass flag (u8) and,
+///   when set, the reduced mass (n x n f64, row-major; format version 2 on),
 ///   recovery flag (u8) and, when set: internal DOFs (node label i64, Abaqus DOF i32 each),
 ///   K_II and K_IR in compressed rows (row pointers i64, columns i32, values f64).
 #include "model/substructure.hpp"

@@ -5,6 +5,7 @@
 #include "common/log.hpp"
 #include "model/substructure_file.hpp"
 #include "solver/analysis_impl.hpp"
+#include "solver/substructure_mass.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -235,9 +236,11 @@ std::unique_ptr<ConstrainedFactor> factorise_internal(const Generation& gen, con
 }
 
 /// The reduced stiffness S = K_RR - K_RI K_II^-1 K_IR (exactly symmetric), with K_II and K_IR
-/// kept in `rec` for the recovery.
+/// kept in `rec` for the recovery; with `M` (the model's mass) also the reduced mass on the same
+/// static modes (substructure_mass.hpp) into `mass`.
 std::vector<double> reduce(const Generation& gen, const CsrMatrix& K, const Partition& part,
-                           SubstructureRecovery& rec, RunStatistics& stats) {
+                           SubstructureRecovery& rec, RunStatistics& stats,
+                           const CsrMatrix* M = nullptr, std::vector<double>* mass = nullptr) {
   const auto nR = part.retained_eq.size(), nI = part.internal_eq.size();
   extract(K, part.internal_eq, part.int_index, rec.ii_ptr, rec.ii_col, rec.ii_val);
   extract(K, part.internal_eq, part.ret_index, rec.ir_ptr, rec.ir_col, rec.ir_val);
@@ -248,11 +251,15 @@ std::vector<double> reduce(const Generation& gen, const CsrMatrix& K, const Part
     for (LocalIndex k = p.row_ptr[row]; k < p.row_ptr[row + 1]; ++k)
       if (part.ret_index[p.col[k]] >= 0) S[i * nR + part.ret_index[p.col[k]]] += K.values()[k];
   }
+  std::unique_ptr<ConstrainedFactor> Kii;
   if (nI > 0) {
     ScopedTimer timer(&stats, TimeCategory::Factorization);
-    const auto Kii = factorise_internal(gen, part, rec);
+    Kii = factorise_internal(gen, part, rec);
     subtract_internal(rec, *Kii, nI, nR, S);
   }
+  if (M != nullptr && mass != nullptr)
+    *mass = reduce_mass(*M, part.retained_eq, part.internal_eq, part.ret_index, part.int_index, rec,
+                        Kii.get());
   for (std::size_t i = 0; i < nR; ++i) // round-off: exactly symmetric
     for (std::size_t j = i + 1; j < nR; ++j)
       S[i * nR + j] = S[j * nR + i] = 0.5 * (S[i * nR + j] + S[j * nR + i]);
@@ -316,8 +323,19 @@ void Analysis::Impl::generate_substructure(StepRun& r) {
   // the stiffness at the step start
   StepProblem& prob = *r.prob;
   prob.begin_increment(0.0, 0.0);
-  prob.evaluate(true);
-  t.stiffness = reduce(gen, prob.matrix(), part, lib.recovery, stats);
+  if (g.mass) {
+    // the model's mass M alone over the same equations (MASS MATRIX=YES)
+    CsrMatrix M(prob.matrix().pattern_ptr());
+    CsrInserter Min(M);
+    std::vector<double> f(static_cast<std::size_t>(dofs.n_slots()), 0.0);
+    assembler.assemble(prob.fields(), prob.context(), f, &Min, nullptr,
+                       OperatorWeights{0.0, 0.0, 1.0, 1.0});
+    prob.evaluate(true);
+    t.stiffness = reduce(gen, prob.matrix(), part, lib.recovery, stats, &M, &t.mass);
+  } else {
+    prob.evaluate(true);
+    t.stiffness = reduce(gen, prob.matrix(), part, lib.recovery, stats);
+  }
   t.size = model_extent(model);
 
   lib.deck = options.restart_header.deck;

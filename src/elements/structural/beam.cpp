@@ -4,6 +4,7 @@
 #include "elements/structural/beam_fibres.hpp"
 #include "elements/structural/beam_kinematics.hpp"
 #include "elements/structural/beam_loads.hpp"
+#include "elements/structural/beam_mass.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "elements/structural/structural_factory.hpp"
 #include "model/model.hpp"
@@ -222,12 +223,11 @@ class BeamKernel final : public ElementKernel {
           for (int j = 0; j < kN; ++j) out.tangent[i * kN + j] += W.hess(i, j);
     }
     write_rotations(in, nl);
-    if (out.want_mass) add_mass(in, g, out.mass);
+    if (out.want_mass) add_mass(in, out.mass);
   }
 
-  /// Translational mass only (with *DENSITY): rho A integral N_a ds lumped at the nodes (the row
-  /// sums of the consistent mass: L/2 each for two nodes, L/6, 2L/3, L/6 for three); no rotary
-  /// inertia (the rotations' rows are zero; docs/conventions.md). A pipe's is its wall's.
+  /// With *DENSITY: the section's mass and exact rotary inertia about the node, lumped at the
+  /// nodes of two-node elements, consistent for three (beam_mass.hpp). A pipe's is its wall's.
   bool has_mass() const override { return !_b.material.density.empty(); }
   bool has_damping() const override { return false; }
 
@@ -402,12 +402,9 @@ class BeamKernel final : public ElementKernel {
     recover_beam_output(o, std::span(e.data(), np), out);
   }
 
-  void add_mass(const ElementInput& in, const BeamGeometry& g, std::span<double> M) const {
-    const double rho_A = table_value(_b.material.density, average(in.temperature)) * _b.section.A;
-    std::array<double, NN> m{};
-    for (int p = 0; p < g.n_points; ++p)
-      for (int a = 0; a < NN; ++a) m[a] += rho_A * g.pts[p].weight * g.pts[p].N[a];
-    add_nodal_mass(m, kDpn, Planar ? 2 : 3, M);
+  void add_mass(const ElementInput& in, std::span<double> M) const {
+    const double rho = table_value(_b.material.density, average(in.temperature));
+    add_beam_mass<NN, Planar>(in.X, _b.n1a, _b.section, rho, M);
   }
 
   /// PI/PE, closed-end condition: the axial force F of pipe_axial_force acting through the

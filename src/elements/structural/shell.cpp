@@ -88,10 +88,11 @@ class ShellKernel final : public ElementKernel {
     write_rotations(in, nl);
   }
 
-  /// Translational mass only (with *DENSITY): the consistent mass integral rho t N_a N_b dA over
-  /// the reference surface (the body-load rule; consistent because the row sums of S8R's would
-  /// make its corners negative), no rotary inertia (the rotations' rows are zero;
-  /// docs/conventions.md).
+  /// With *DENSITY, as Abaqus/Standard (Theory Guide, "Rotary inertia for five degree of freedom
+  /// shell elements"; docs/theory/dynamics.md §8): the translational mass integral rho t N_a N_b dA
+  /// and the rotary inertia integral rho t^3/12 N_a N_b dA on each of the three global rotations,
+  /// over the reference surface (the body-load rule); lumped (row sums) for the first-order S3,
+  /// S3R, S4, S4R, consistent for S8R (whose row sums would make its corners negative).
   bool has_mass() const override { return !_d.material.density.empty(); }
   bool has_damping() const override { return false; }
 
@@ -155,14 +156,29 @@ class ShellKernel final : public ElementKernel {
       SurfacePoint p;
       if (!surface_point(in.X, D, t, q[0], q[1], q[2], p)) continue;
       const double w = p.dA * rho * p.thickness;
+      const double eta = w * p.thickness * p.thickness / 12.0; // rho t^3 / 12 dA
       for (int a = 0; a < NN; ++a)
         for (int b = a; b < NN; ++b) { // symmetric to the last bit
-          const double m = w * p.sh.N[a] * p.sh.N[b];
-          for (int i = 0; i < 3; ++i) {
-            M[(6 * a + i) * kN + 6 * b + i] += m;
-            if (b != a) M[(6 * b + i) * kN + 6 * a + i] += m;
+          const double Nab = p.sh.N[a] * p.sh.N[b];
+          if (!kLumped) {
+            add_node_block(M, a, b, w * Nab, eta * Nab, b != a);
+            continue;
           }
+          // first order: lumped, each node's row sum on its diagonal
+          add_node_block(M, a, a, w * Nab, eta * Nab, false);
+          if (b != a) add_node_block(M, b, b, w * Nab, eta * Nab, false);
         }
+    }
+  }
+
+  static constexpr bool kLumped = NN < 8; ///< S3, S3R, S4, S4R: lumped; S8R: consistent
+  /// Adds m on the translations and eta on the rotations of the (a, b) node block (and of the
+  /// (b, a) block when `mirror`).
+  static void add_node_block(std::span<double> M, int a, int b, double m, double eta, bool mirror) {
+    for (int i = 0; i < 6; ++i) {
+      const double v = i < 3 ? m : eta;
+      M[(6 * a + i) * kN + 6 * b + i] += v;
+      if (mirror) M[(6 * b + i) * kN + 6 * a + i] += v;
     }
   }
 

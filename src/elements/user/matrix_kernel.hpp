@@ -19,9 +19,9 @@ class MatrixKernel final : public ElementKernel {
     return _dofs.node(local_node);
   }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
-  /// The deck's mass: a LINEAR user element's *MATRIX, TYPE=MASS (UserElementType::mass), the
-  /// block's own operator; without one, and for substructures (their reduction is of the
-  /// stiffness alone), massless. Undamped (Abaqus's LINEAR user elements have no damping matrix).
+  /// The deck's mass: a LINEAR user element's *MATRIX, TYPE=MASS (UserElementType::mass), or a
+  /// substructure's reduced mass (generated with MASS MATRIX=YES), the block's own operator;
+  /// without one, massless. Undamped (Abaqus's LINEAR user elements have no damping matrix).
   bool has_mass() const override { return !_M.empty(); }
   bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }

@@ -1,7 +1,8 @@
-// Substructure (Zn) elements: the reduced stiffness of the substructure's library, turned into the
-// global directions of its usage by *SUBSTRUCTURE PROPERTY: K = T K_gen T^T with T the rotation R
-// on each node's translations and det(R) R on its rotations (rotations are axial vectors, so a
-// reflection flips them once more). Linear, as Abaqus's substructures without large rotations.
+// Substructure (Zn) elements: the reduced stiffness (and, when generated with MASS MATRIX=YES, the
+// reduced mass) of the substructure's library, turned into the global directions of its usage by
+// *SUBSTRUCTURE PROPERTY: K = T K_gen T^T (M likewise) with T the rotation R on each node's
+// translations and det(R) R on its rotations (rotations are axial vectors, so a reflection flips
+// them once more). Linear, as Abaqus's substructures without large rotations.
 #include "elements/user/matrix_kernel.hpp"
 #include "model/model.hpp"
 
@@ -26,7 +27,7 @@ std::unique_ptr<ElementKernel> make_substructure_kernel(const KernelContext& ctx
   const auto n = static_cast<std::size_t>(t.n_dofs());
   if (R == std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1})
     return std::make_unique<MatrixKernel>(ElementType::SUBSTRUCTURE, NodeDofTable(t.node_dofs),
-                                          t.stiffness, false);
+                                          t.stiffness, false, t.mass);
   // T: the generation DOFs in the usage directions, block diagonal over the nodes (at most three
   // entries per row: kept sparse, so K = T K_gen T^T costs O(n^2))
   struct Entry {
@@ -52,18 +53,22 @@ std::unique_ptr<ElementKernel> make_substructure_kernel(const KernelContext& ctx
     }
     k += dofs.size();
   }
-  std::vector<double> TK(n * n, 0.0), K(n * n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (const Entry& a : T[i])
-      for (std::size_t j = 0; j < n; ++j) TK[i * n + j] += a.value * t.stiffness[a.col * n + j];
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      double v = 0.0;
-      for (const Entry& b : T[j]) v += TK[i * n + b.col] * b.value;
-      K[i * n + j] = v;
-    }
+  auto turned = [&](const std::vector<double>& A) { // T A T^T
+    if (A.empty()) return std::vector<double>{};
+    std::vector<double> TA(n * n, 0.0), B(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (const Entry& a : T[i])
+        for (std::size_t j = 0; j < n; ++j) TA[i * n + j] += a.value * A[a.col * n + j];
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        double v = 0.0;
+        for (const Entry& b : T[j]) v += TA[i * n + b.col] * b.value;
+        B[i * n + j] = v;
+      }
+    return B;
+  };
   return std::make_unique<MatrixKernel>(ElementType::SUBSTRUCTURE, NodeDofTable(t.node_dofs),
-                                        std::move(K), false);
+                                        turned(t.stiffness), false, turned(t.mass));
 }
 
 } // namespace gapfem

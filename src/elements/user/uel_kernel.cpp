@@ -124,11 +124,23 @@ void call_plugin(const UserCode& code, const UserElementType& type,
   if (!tangent.empty()) std::copy(uc.amatrx.begin(), uc.amatrx.end(), tangent.begin());
 }
 
+/// LFLAGS of a call: LFLAGS(3) = `what` (1 residual and Jacobian, 2 stiffness only, 4 mass only).
+/// In a dynamic step gapfem applies the inertia and the time integrator itself (M from the
+/// LFLAGS(3) = 4 call): the residual and stiffness calls are those of a static step, LFLAGS(1) = 1,
+/// so that a UEL written for Abaqus/Standard, which adds its own inertia and HHT operator when
+/// LFLAGS(1) = 11 or 12 and LFLAGS(3) = 1, returns only its internal forces here
+/// (docs/theory/dynamics.md, "Mass of each element type").
+std::array<int, 7> uel_flags(const StepContext& ctx, int what) {
+  int procedure = procedure_code(ctx);
+  if (ctx.procedure == Procedure::Dynamic && what != 4) procedure = 1;
+  return {procedure, ctx.nlgeom ? 1 : 0, what, 0, 0, 0, 1};
+}
+
 /// An Abaqus UEL: RHS = external - internal (gapfem's residual is its negative), AMATRX
-/// column-major.
+/// column-major (copied row-major to `tangent` when given).
 void call_uel(const UserCode& code, const UserElementType& type, const std::vector<double>& props,
-              const std::vector<int>& jprops, const ElementInput& in, UserCall& uc, bool probe,
-              std::span<double> residual, std::span<double> tangent) {
+              const std::vector<int>& jprops, const ElementInput& in, UserCall& uc,
+              std::array<int, 7> lflags, std::span<double> residual, std::span<double> tangent) {
   const StepContext& ctx = *in.ctx;
   int nrhs = 1, mlvarx = uc.ndofel, jtype = type.number, kstep = ctx.step_number,
       kinc = ctx.increment, jelem = static_cast<int>(uc.label), ndload = 0, mdload = 1, npredf = 1,
@@ -136,8 +148,6 @@ void call_uel(const UserCode& code, const UserElementType& type, const std::vect
   std::array<int, 1> jdltyp{};
   std::array<double, 1> adlmag{}, ddlmag{};
   std::array<double, 3> params{};
-  // outside an increment (the step's stiffness probes, dt = 0) only the stiffness is asked for
-  std::array<int, 7> lflags{procedure_code(ctx), ctx.nlgeom ? 1 : 0, probe ? 2 : 1, 0, 0, 0, 1};
   // TIME: step and total time at the start of the increment
   std::array<double, 2> time{ctx.step_time - ctx.dt, ctx.total_time - ctx.dt};
   double dtime = ctx.dt, period = ctx.step_period;
@@ -151,13 +161,16 @@ void call_uel(const UserCode& code, const UserElementType& type, const std::vect
           (in.temperature_start.empty() ? in.temperature[a] : in.temperature_start[a]);
     }
   std::vector<double> u(in.u.begin(), in.u.end());
+  // V and A: the trial rates in steps that have them (dynamic steps), zero otherwise
+  std::vector<double> v = in.v.empty() ? uc.zeros : std::vector<double>(in.v.begin(), in.v.end());
+  std::vector<double> a = in.a.empty() ? uc.zeros : std::vector<double>(in.a.begin(), in.a.end());
   {
     const std::lock_guard lock(code.mutex());
     code.uel()(uc.rhs.data(), uc.amatrx.data(), uc.svars, uc.energy, &uc.ndofel, &nrhs, &uc.nsvars,
                const_cast<double*>(props.data()), &nprops, uc.coords.data(), &uc.mcrd, &uc.nnode,
-               u.data(), uc.du.data(), uc.zeros.data(), uc.zeros.data(), &jtype, time.data(),
-               &dtime, &kstep, &kinc, &jelem, params.data(), &ndload, jdltyp.data(), adlmag.data(),
-               predef.data(), &npredf, lflags.data(), &mlvarx, ddlmag.data(), &mdload, &uc.pnewdt,
+               u.data(), uc.du.data(), v.data(), a.data(), &jtype, time.data(), &dtime, &kstep,
+               &kinc, &jelem, params.data(), &ndload, jdltyp.data(), adlmag.data(), predef.data(),
+               &npredf, lflags.data(), &mlvarx, ddlmag.data(), &mdload, &uc.pnewdt,
                const_cast<int*>(jprops.data()), &njprop, &period);
   }
   const std::size_t n = uc.n;
@@ -193,8 +206,9 @@ void check_returned(const UserCode& code, const UserElementType& type, const Ele
 } // namespace
 
 UelKernel::UelKernel(const UserElementType& type, const UelProperty* properties,
-                     std::shared_ptr<const UserCode> code, bool temperatures)
-    : _type(type), _dofs(type.node_dofs), _code(std::move(code)), _temperatures(temperatures) {
+                     std::shared_ptr<const UserCode> code, bool temperatures, bool dynamic)
+    : _type(type), _dofs(type.node_dofs), _code(std::move(code)), _temperatures(temperatures),
+      _mass(dynamic && _code && _code->uel() != nullptr) {
   if (properties) {
     _props = properties->properties;
     _jprops = properties->int_properties;
@@ -213,8 +227,9 @@ double UelKernel::call(const ElementInput& in, std::span<double> residual,
   const UserCode& code = *_code;
   if (code.plugin())
     call_plugin(code, _type, _props, _jprops, in, uc, residual, tangent);
-  else
-    call_uel(code, _type, _props, _jprops, in, uc, probe, residual, tangent);
+  else // outside an increment (the step's stiffness probes, dt = 0) only the stiffness is asked for
+    call_uel(code, _type, _props, _jprops, in, uc, uel_flags(ctx, probe ? 2 : 1), residual,
+             tangent);
   check_returned(code, _type, in, probe, code.uel() ? "RHS" : "residual", residual, residual,
                  tangent);
   if (!tangent.empty())
@@ -235,17 +250,44 @@ double UelKernel::call(const ElementInput& in, std::span<double> residual,
   return pnewdt;
 }
 
+namespace {
+
+/// Without UNSYMM Abaqus uses the symmetric part of AMATRX (n x n row-major).
+void symmetrize(std::span<double> A, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double m = 0.5 * (A[i * n + j] + A[j * n + i]);
+      A[i * n + j] = A[j * n + i] = m;
+    }
+}
+
+} // namespace
+
+void UelKernel::mass(const ElementInput& in, std::span<double> M) const {
+  // a call of its own (LFLAGS(3) = 4) on copies of the trial SVARS and ENERGY: asking for the
+  // mass never changes the element's history
+  std::vector<double> state(in.state.begin(), in.state.end());
+  ElementInput copy = in;
+  copy.state = state;
+  UserCall uc = prepare_call(copy, _dofs, _type);
+  std::vector<double> rhs(uc.n, 0.0);
+  call_uel(*_code, _type, _props, _jprops, copy, uc, uel_flags(*in.ctx, 4), rhs, M);
+  const int k = first_non_finite(M);
+  if (k >= 0)
+    throw AnalysisError(fmt::format(
+        "element {} ({}): the user subroutine UEL ({}) returned AMATRX({}) = {} when asked for "
+        "the mass matrix (LFLAGS(3) = 4); a user element must return finite numbers",
+        in.label, _type.name, _code->source(), k + 1, M[static_cast<std::size_t>(k)]));
+}
+
 void UelKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   const double pnewdt =
       call(in, out.residual, out.want_tangent ? out.tangent : std::span<double>{});
-  if (out.want_tangent && !_type.unsymmetric) {
-    // without UNSYMM Abaqus uses the symmetric part of AMATRX
-    const auto n = static_cast<std::size_t>(_dofs.n_dofs());
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const double m = 0.5 * (out.tangent[i * n + j] + out.tangent[j * n + i]);
-        out.tangent[i * n + j] = out.tangent[j * n + i] = m;
-      }
+  const auto n = static_cast<std::size_t>(_dofs.n_dofs());
+  if (out.want_tangent && !_type.unsymmetric) symmetrize(out.tangent, n);
+  if (out.want_mass) {
+    mass(in, out.mass);
+    if (!_type.unsymmetric) symmetrize(out.mass, n);
   }
   out.unsymmetric = _type.unsymmetric;
   if (pnewdt < kNoRequest) out.dt_ratio = pnewdt;
@@ -270,9 +312,12 @@ std::unique_ptr<ElementKernel> make_uel_kernel(const Model& model, const UserEle
                                  "deck.inp (a UEL in Fortran or C, a gapfem element plugin in "
                                  "C++, or a compiled .so)",
                                  type.name));
-  bool temperatures = model.has_initial_temperature;
-  for (const Step& s : model.steps) temperatures |= !s.temperatures.empty();
-  return std::make_unique<UelKernel>(type, properties, model.user_code, temperatures);
+  bool temperatures = model.has_initial_temperature, dynamic = false;
+  for (const Step& s : model.steps) {
+    temperatures |= !s.temperatures.empty();
+    dynamic |= s.procedure == Procedure::Dynamic;
+  }
+  return std::make_unique<UelKernel>(type, properties, model.user_code, temperatures, dynamic);
 }
 
 } // namespace gapfem

@@ -17,7 +17,7 @@ struct Model;
 class UelKernel final : public ElementKernel {
  public:
   UelKernel(const UserElementType& type, const UelProperty* properties,
-            std::shared_ptr<const UserCode> code, bool temperatures);
+            std::shared_ptr<const UserCode> code, bool temperatures, bool dynamic = false);
 
   ElementType type() const override { return ElementType::USER; }
   int n_nodes() const override { return _dofs.n_nodes(); }
@@ -29,9 +29,12 @@ class UelKernel final : public ElementKernel {
   int n_state() const override { return _type.n_variables + kEnergies + _dofs.n_dofs(); }
   bool uses_temperature_field() const override { return _temperatures; }
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
-  /// Massless and undamped for gapfem: a UEL's mass and damping matrices (LFLAGS(3) = 4, 5) are
-  /// not asked for yet (a later issue); whatever inertia the user codes is in its RHS/AMATRX.
-  bool has_mass() const override { return false; }
+  /// A UEL in a model with a *DYNAMIC step has the mass its subroutine returns when called with
+  /// LFLAGS(3) = 4 (AMATRX = M; the residual and stiffness calls of a dynamic step then say
+  /// LFLAGS(1) = 1: gapfem applies the inertia itself, docs/theory/dynamics.md). Otherwise, and
+  /// for element plugins (whose interface has no mass request), massless; never damped (the
+  /// damping matrix, LFLAGS(3) = 3, is not asked for).
+  bool has_mass() const override { return _mass; }
   bool has_damping() const override { return false; }
   bool supports_output(ElemVar var) const override { return var == ElemVar::NFORC; }
   /// NFORC (the internal force at the converged state) and ENERGY(2), the elastic strain energy
@@ -42,6 +45,8 @@ class UelKernel final : public ElementKernel {
   /// Calls the code at the trial state: residual (gapfem's sign) and, when wanted, the tangent
   /// (row-major); writes the trial SVARS and ENERGY; returns the PNEWDT request.
   double call(const ElementInput& in, std::span<double> residual, std::span<double> tangent) const;
+  /// The user's mass matrix at the trial state (row-major, not yet symmetrized).
+  void mass(const ElementInput& in, std::span<double> M) const;
 
   UserElementType _type;
   NodeDofTable _dofs;
@@ -49,6 +54,7 @@ class UelKernel final : public ElementKernel {
   std::vector<int> _jprops;
   std::shared_ptr<const UserCode> _code;
   bool _temperatures;
+  bool _mass = false; ///< the model has a *DYNAMIC step and the code is a UEL
 };
 
 /// The kernel of a user element type that is not LINEAR: InputError when no user code was given

@@ -194,12 +194,12 @@ void handle_substructure_generate(BuildState& s, const Keyword& kw) {
   g.overwrite = kw.has("OVERWRITE");
   if (kw.has("LIBRARY")) g.library = std::string(trim(param_value(kw, "LIBRARY", true)));
   g.recovery = yes_no_param(kw, "RECOVERY MATRIX", true);
-  for (const char* p :
-       {"MASS MATRIX", "STRUCTURAL DAMPING MATRIX", "VISCOUS DAMPING MATRIX", "GRAVITY LOAD"})
+  g.mass = yes_no_param(kw, "MASS MATRIX", false);
+  for (const char* p : {"STRUCTURAL DAMPING MATRIX", "VISCOUS DAMPING MATRIX", "GRAVITY LOAD"})
     if (yes_no_param(kw, p, false))
       throw InputError(kw.loc, fmt::format("{}=YES", p),
-                       "gapfem generates the reduced stiffness (and the recovery data) only; "
-                       "remove this parameter");
+                       "gapfem generates the reduced stiffness and mass (and the recovery data) "
+                       "only; remove this parameter");
   for (const char* p : {"NSET", "ELSET"})
     if (kw.has(p))
       s.warn(kw.loc, fmt::format("{}= limits the recovery region in Abaqus; gapfem keeps the "

@@ -1,5 +1,5 @@
 // The operators of the kernel contract (issue 44, item 3): each kernel's mass sums to rho x
-// volume per direction (rotations massless: no rotary inertia), the heat capacity block is the
+// volume per direction (beams and shells: element_mass_test.cpp), the heat capacity block is the
 // derivative of the capacity flux by the temperature rate, massless kernels say so, and the
 // assembler's k K + c C + m M equals the sum of its separate assemblies, with M a + C v in the
 // residual when the context defines rates.
@@ -119,39 +119,7 @@ TEST(KernelMass, CoupledTrussMassAndCapacity) {
   EXPECT_EQ(cross, 0.0);
 }
 
-TEST(KernelMass, BeamsAreRhoALPerTranslationWithoutRotaryInertia) {
-  const std::string rect =
-      "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=RECT\n0.2, 0.3\n0., 0., 1.\n";
-  for (const auto& [type, nodes] : {std::pair{"B31", 2}, std::pair{"B32", 3}}) {
-    SCOPED_TRACE(type);
-    auto p = KernelProbe::of(model_of(line_deck(type, nodes, rect)));
-    expect_mass(p, kRho * 0.06 * 5.0, 3, true);
-  }
-  const double ro = 0.5, t = 0.05, area = std::numbers::pi * (ro * ro - (ro - t) * (ro - t));
-  auto pipe = KernelProbe::of(model_of(line_deck(
-      "PIPE31", 2, "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=PIPE\n0.5, 0.05\n0., 0., 1.\n")));
-  expect_mass(pipe, kRho * area * 5.0, 3, true);
-  auto planar = KernelProbe::of(model_of(line_deck(
-      "B21", 2, "*BEAM SECTION, ELSET=E, MATERIAL=M, SECTION=RECT\n0.2, 0.3\n0., 0., -1.\n")));
-  expect_mass(planar, kRho * 0.06 * 5.0, 2, false);
-}
-
-TEST(KernelMass, ShellsAreRhoTAPerTranslationWithoutRotaryInertia) {
-  const std::string nodes = "*NODE\n1, 0., 0., 0.\n2, 2., 0., 0.\n3, 2., 3., 0.\n4, 0., 3., 0.\n"
-                            "5, 1., 0., 0.\n6, 2., 1.5, 0.\n7, 1., 3., 0.\n8, 0., 1.5, 0.\n";
-  const std::string section = "*SHELL SECTION, ELSET=E, MATERIAL=M\n0.02\n";
-  const std::pair<const char*, const char*> cases[] = {
-      {"S4R", "1, 1, 2, 3, 4"}, {"S4", "1, 1, 2, 3, 4"}, {"S8R", "1, 1, 2, 3, 4, 5, 6, 7, 8"}};
-  for (const auto& [type, conn] : cases) {
-    SCOPED_TRACE(type);
-    auto p = KernelProbe::of(model_of(nodes + "*ELEMENT, TYPE=" + type + ", ELSET=E\n" + conn +
-                                      "\n" + section + material()));
-    expect_mass(p, kRho * 0.02 * 6.0, 3, true);
-  }
-  auto tri = KernelProbe::of(
-      model_of(nodes + "*ELEMENT, TYPE=S3, ELSET=E\n1, 1, 2, 3\n" + section + material()));
-  expect_mass(tri, kRho * 0.02 * 3.0, 3, true);
-}
+// The beams' and shells' mass (with their rotary inertia since issue 46): element_mass_test.cpp.
 
 TEST(KernelMass, MasslessKernelsSaySo) {
   const std::string spring = "*NODE\n1, 0., 0., 0.\n2, 1., 0., 0.\n*ELEMENT, TYPE=SPRINGA, "
