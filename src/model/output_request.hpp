@@ -107,6 +107,19 @@ struct FieldOutputRequest {
   SourceLocation loc;
 };
 
+/// *OUTPUT, HISTORY: values over time after every n-th increment of the step, written as the
+/// step's history (job.results.json "history", the report's charts; docs/results.md): the
+/// whole-model energies (*ENERGY OUTPUT, or VARIABLE=PRESELECT/ALL as Abaqus preselects them),
+/// node variables at a node set's nodes (*NODE OUTPUT, NSET=) and element variables averaged
+/// over each element's points (*ELEMENT OUTPUT, ELSET=).
+struct HistoryOutputRequest {
+  int frequency = 1; ///< every n-th increment; the last increment of a step is always written
+  bool energies = false;
+  std::vector<std::pair<NodeVar, std::vector<NodeId>>> node_vars;
+  std::vector<std::pair<ElemVar, std::vector<ElemId>>> elem_vars;
+  SourceLocation loc;
+};
+
 /// *NODE FILE / *EL FILE: results written to job.frd, CalculiX's results format that its viewer
 /// cgx reads (docs/results.md, "The .frd file"). Element variables are written at the nodes,
 /// extrapolated and averaged (output/nodal_average.hpp).

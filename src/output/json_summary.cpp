@@ -37,23 +37,55 @@ void JsonWriter::close_step(const StepSummary* s) {
   _step_open = false;
 }
 
+namespace {
+
+/// `{"columns":[…],"rows":[[…],…]}`
+template <typename Rows>
+void append_table(fmt::memory_buffer& b, const std::vector<std::string>& columns,
+                  const Rows& rows) {
+  b.append(std::string_view("{\"columns\":["));
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (c) b.push_back(',');
+    append_json_string(b, columns[c]);
+  }
+  b.append(std::string_view("],\"rows\":["));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    b.append(i ? std::string_view(",[") : std::string_view("["));
+    for (std::size_t k = 0; k < rows[i].size(); ++k) {
+      if (k) b.push_back(',');
+      append_json_number(b, rows[i][k]);
+    }
+    b.push_back(']');
+  }
+  b.append(std::string_view("]}"));
+}
+
+} // namespace
+
+void JsonWriter::append_history(fmt::memory_buffer& b) const {
+  if (_energy_history.empty() && _history_rows.empty()) return;
+  static const std::vector<std::string> kEnergyColumns = {
+      "increment", "step_time", "total_time", "ALLKE", "ALLIE",
+      "ALLVD",     "ALLFD",     "ALLKL",      "ALLWK", "ETOTAL"};
+  b.append(std::string_view(",\"history\":{"));
+  if (!_energy_history.empty()) {
+    b.append(std::string_view("\"energies\":"));
+    append_table(b, kEnergyColumns, _energy_history);
+  }
+  if (!_history_rows.empty()) {
+    if (!_energy_history.empty()) b.push_back(',');
+    std::vector<std::string> columns = {"increment", "step_time", "total_time"};
+    columns.insert(columns.end(), _history_columns.begin(), _history_columns.end());
+    b.append(std::string_view("\"values\":"));
+    append_table(b, columns, _history_rows);
+  }
+  b.push_back('}');
+}
+
 void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
                                  std::string_view unfinished) const {
   b.push_back(']');
-  if (!_energy_history.empty()) { // the dynamic step's energies per increment
-    b.append(std::string_view(",\"history\":{\"energies\":{\"columns\":[\"increment\","
-                              "\"step_time\",\"total_time\",\"ALLKE\",\"ALLIE\",\"ALLVD\","
-                              "\"ALLFD\",\"ALLKL\",\"ALLWK\",\"ETOTAL\"],\"rows\":["));
-    for (std::size_t i = 0; i < _energy_history.size(); ++i) {
-      b.append(i ? std::string_view(",[") : std::string_view("["));
-      for (std::size_t k = 0; k < _energy_history[i].size(); ++k) {
-        if (k) b.push_back(',');
-        append_json_number(b, _energy_history[i][k]);
-      }
-      b.push_back(']');
-    }
-    b.append(std::string_view("]}}"));
-  }
+  append_history(b);
   if (!s) {
     b.append(std::string_view(",\"converged\":false,\"failure\":"));
     append_json_string(b, unfinished);
@@ -210,6 +242,13 @@ void JsonWriter::increment(const IncrementInfo& info) {
   ++_seen.attempts;
   _seen.iterations += info.iterations;
   if (!info.converged) return;
+  if (info.history_columns) {
+    if (_history_rows.empty()) _history_columns = *info.history_columns;
+    std::vector<double> row = {static_cast<double>(info.increment), info.step_time,
+                               info.total_time};
+    row.insert(row.end(), info.history.begin(), info.history.end());
+    _history_rows.push_back(std::move(row));
+  }
   if (info.energies) {
     const Energies& e = *info.energies;
     _energy_history.push_back({static_cast<double>(info.increment), info.step_time,

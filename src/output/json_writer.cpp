@@ -124,6 +124,9 @@ void JsonWriter::save_state(ArchiveWriter& a) {
   a.pod(_last_increment);
   a.pod(_publish_seconds);
   a.vec(_energy_history);
+  a.strings(_history_columns);
+  a.pod(static_cast<std::uint64_t>(_history_rows.size()));
+  for (const auto& row : _history_rows) a.vec(row);
   a.pod(static_cast<std::uint64_t>(_components.size()));
   for (const auto& [k, c] : _components) {
     a.pod(k.first);
@@ -156,6 +159,9 @@ void JsonWriter::resume(const Model& model, int step_index, ArchiveReader& a,
   a.pod(_last_increment);
   a.pod(_publish_seconds);
   a.vec(_energy_history);
+  a.strings(_history_columns);
+  _history_rows.resize(a.get<std::uint64_t>());
+  for (auto& row : _history_rows) a.vec(row);
   _components.clear();
   for (auto n = a.get<std::uint64_t>(); n > 0; --n) {
     const auto t = a.get<int>();
@@ -182,6 +188,8 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   _step_open = true;
   _first_frame = true;
   _energy_history.clear();
+  _history_columns.clear();
+  _history_rows.clear();
   _open_step_number = step.number;
   _last_increment = -1;
 }

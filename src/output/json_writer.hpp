@@ -77,6 +77,12 @@ class JsonWriter : public ResultWriter {
   /// The open dynamic step's energies per converged increment: increment, step time, total time,
   /// ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL (the step's "history": docs/results.md)
   std::vector<std::array<double, 10>> _energy_history;
+  /// The open step's *OUTPUT, HISTORY values: column names and one row per sample (increment,
+  /// step time, total time, then the values)
+  std::vector<std::string> _history_columns;
+  std::vector<std::vector<double>> _history_rows;
+  /// `,"history":{…}` of the open step (nothing when it has none).
+  void append_history(fmt::memory_buffer& b) const;
 
   std::vector<std::vector<NodeId>> _node_lists;   ///< per *NODE PRINT of the step, by label
   std::vector<std::vector<ElemId>> _elem_lists;   ///< per *EL PRINT of the step

@@ -63,6 +63,13 @@ if (DATA.energies.length) {
       pointRadius: 1, data: DATA.energies.map(e => ({x: e[0], y: e[i + 1]}))}))},
     options: {scales: {x: linear('total time'), y: linear('energy')}}});
 }
+if (DATA.history.length) { // at most 16 curves: the first columns of the history output
+  const cols = DATA.history_columns.slice(0, 16);
+  chart('history', {type: 'line', data: {datasets: cols.map((n, i) => ({
+      label: n, borderColor: palette[i % palette.length], backgroundColor: palette[i % palette.length],
+      pointRadius: 1, data: DATA.history.map(r => ({x: r[0], y: r[i + 1]}))}))},
+    options: {scales: {x: linear('total time'), y: linear('value')}}});
+}
 {
   const ok = [], cut = [];
   let it = 0;
@@ -178,6 +185,12 @@ void write_report_page(fmt::memory_buffer& out, const ReportContent& c) {
                       "increment of the dynamic steps (ETOTAL = ALLKE + ALLIE + ALLVD + ALLFD + "
                       "ALLKL - ALLWK; docs/theory/dynamics.md).</p>\n");
     canvas(out, "energies");
+  }
+  if (c.has_history) {
+    fmt::format_to(o, "<h2>History output</h2>\n<p class=\"note\">The *OUTPUT, HISTORY values "
+                      "(up to 16 curves; all of them in job.results.json, each step's "
+                      "history.values).</p>\n");
+    canvas(out, "history");
   }
   fmt::format_to(o, "<h2>Newton iterations</h2>\n<p class=\"note\">The residual after each "
                     "iteration of every attempt; attempts that did not converge (cut back) in "

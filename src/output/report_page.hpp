@@ -19,6 +19,7 @@ struct ReportContent {
   const std::vector<StepSummary>* steps = nullptr;
   bool has_gaps = false;
   bool has_energies = false; ///< dynamic steps: the energies chart
+  bool has_history = false;  ///< *OUTPUT, HISTORY: the values' chart
   bool named_gaps = false;
 };
 

@@ -75,6 +75,9 @@ void ReportWriter::save_state(ArchiveWriter& a) {
   }
   a.vec(_contact_set);
   a.vec(_energies);
+  a.strings(_history_columns);
+  a.pod(static_cast<std::uint64_t>(_history.size()));
+  for (const auto& row : _history) a.vec(row);
   a.pod(static_cast<std::uint64_t>(_steps.size()));
   for (const StepSummary& s : _steps) save(a, s);
   a.vec(_gap_ids);
@@ -103,6 +106,9 @@ void ReportWriter::resume(const Model& model, int, ArchiveReader& a, const Resum
   }
   a.vec(_contact_set);
   a.vec(_energies);
+  a.strings(_history_columns);
+  _history.resize(a.get<std::uint64_t>());
+  for (auto& row : _history) a.vec(row);
   _steps.resize(a.get<std::uint64_t>());
   for (StepSummary& s : _steps) load(a, s);
   a.vec(_gap_ids);
@@ -126,6 +132,15 @@ void ReportWriter::increment(const IncrementInfo& info) {
     const Energies& e = *info.energies;
     _energies.push_back(
         {info.total_time, e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal()});
+  }
+  if (info.converged && info.history_columns) {
+    // the columns of the first step with history output; a later step with others is not drawn
+    if (_history_columns.empty()) _history_columns = *info.history_columns;
+    if (*info.history_columns == _history_columns) {
+      std::vector<double> row = {info.total_time};
+      row.insert(row.end(), info.history.begin(), info.history.end());
+      _history.push_back(std::move(row));
+    }
   }
   if (!info.converged || info.gaps_closed < 0) return;
   _contact_set.emplace_back(info.total_time, info.gaps_closed);
@@ -219,6 +234,14 @@ std::string ReportWriter::data_json(const Model& model, const RunSummary& run) c
     en.push_back(std::move(row));
   }
   d["energies"] = std::move(en);
+  json hist = json::array();
+  for (const auto& row : _history) {
+    json r = json::array();
+    for (double v : row) r.push_back(finite(v));
+    hist.push_back(std::move(r));
+  }
+  d["history_columns"] = _history_columns;
+  d["history"] = std::move(hist);
   json at = json::array();
   for (const Attempt& a : _attempts) {
     json r = json::array();
@@ -248,6 +271,7 @@ void ReportWriter::end(const Model& model, const RunSummary& summary) {
   page.steps = &_steps;
   page.has_gaps = !_gap_ids.empty();
   page.has_energies = !_energies.empty();
+  page.has_history = !_history.empty();
   page.named_gaps = !_named.empty();
   output::OutputFile out;
   out.open(_path, output::OutputFile::Mode::Replace);

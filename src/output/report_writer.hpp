@@ -61,6 +61,9 @@ class ReportWriter : public ResultWriter {
   std::vector<std::pair<double, int>> _contact_set; ///< (total time, closed gaps)
   /// dynamic steps: (total time, ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL) per increment
   std::vector<std::array<double, 8>> _energies;
+  /// *OUTPUT, HISTORY: the columns (of the first step that has any) and (total time, values…)
+  std::vector<std::string> _history_columns;
+  std::vector<std::vector<double>> _history;
   std::vector<StepSummary> _steps;
   std::vector<ElemId> _gap_ids;    ///< gaps in the order of IncrementInfo::gaps
   std::vector<History> _histories; ///< per _gap_ids entry

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -204,6 +205,10 @@ struct IncrementInfo {
   std::vector<GapSample> gaps;
   /// Dynamic steps: the whole-model energies after the increment.
   std::optional<Energies> energies;
+  /// *OUTPUT, HISTORY due after the increment: the step's column names (one object for the
+  /// whole step) and their values (docs/results.md, "History output"); null when not due.
+  std::shared_ptr<const std::vector<std::string>> history_columns;
+  std::vector<double> history;
 };
 
 struct StepSummary {

@@ -464,6 +464,7 @@ void Analysis::Impl::accept_increment(StepRun& r, const NewtonResult& res, Incre
   write_frame(r.index, prob, ctrl.increment(), ctrl.finished(), dt);
   info.monitor = monitor_value(*r.step, ctrl.increment(), ctrl.finished());
   if (prob.integrator() && prob.integrator()->second_order()) info.energies = st.energies();
+  history_sample(r.index, prob, ctrl.increment(), ctrl.finished(), info);
   if (want_gap_samples && disc.has_gaps()) gap_samples(prob, info);
   {
     ScopedTimer timer(&stats, TimeCategory::Output); // the JSON checkpoint is output time

@@ -117,6 +117,12 @@ struct Analysis::Impl {
   std::optional<Frame> frame_due(const Step& step, const StepProblem& prob, int increment,
                                  bool last, double dt, bool repeat, bool& field_elements) const;
   void frame_nodes(StepProblem& prob, Frame& fr);
+  /// *OUTPUT, HISTORY after a converged increment (analysis_history.cpp): the due requests'
+  /// values into info (their columns named at the step's first sample).
+  void history_sample(int step_index, StepProblem& prob, int increment, bool last,
+                      IncrementInfo& info);
+  std::shared_ptr<const std::vector<std::string>> history_columns; ///< of history_step
+  int history_step = -1;
   void frame_elements(const Step& step, StepProblem& prob, bool field_elements, Frame& fr);
   /// The *MONITOR value after a converged increment, when due.
   std::optional<double> monitor_value(const Step& step, int increment, bool last) const;

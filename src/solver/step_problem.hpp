@@ -149,6 +149,9 @@ class StepProblem final : public NonlinearProblem {
                                  const std::vector<bool>& massive);
   double consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
                                   const std::vector<bool>& massive);
+  /// The forces C v of the damping operators (assembled over the equations) at the committed
+  /// velocities into R(t) and the damping forces' start (restart_dynamics).
+  void add_damping_forces(const CsrMatrix& damping);
   /// HHT's history term: history_weight() R(t) into f_int (after the assembly).
   void add_rate_history();
   /// R(t + dt) = f_int - f_ext - history term - inertia_weight() M a at a converged state.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace gapfem {
 
@@ -87,15 +88,26 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   const bool moving = std::any_of(_s.v_start.begin(), _s.v_start.end(),
                                   [](double v) { return v != 0.0; });
   if (!accelerations && !project_velocities && !moving) return out;
-  // M alone (the weights of K and C zero) with the active exact constraint rows
   const OperatorWeights keep = _weights;
+  // the damping operators C (dashpots, Rayleigh, point-mass ALPHA): R(t) has their forces C v,
+  // which an evaluation without rates leaves out
+  std::optional<CsrMatrix> damping;
+  if (moving) {
+    _weights = {0.0, 1.0, 0.0, 1.0};
+    evaluate(true);
+    damping.emplace(_K);
+  }
+  // M alone (the weights of K and C zero) with the active exact constraint rows
   _weights = {0.0, 0.0, 1.0, 1.0};
   evaluate(true);
   _weights = keep;
   const EquationMap& eqm = _loads.equations();
   const LocalIndex n = eqm.n_eq();
   out.kinetic_energy = kinetic_energy(_K, eqm, _s.v_start);
-  if (!accelerations && !project_velocities) return out;
+  if (!accelerations && !project_velocities) {
+    if (damping) add_damping_forces(*damping);
+    return out;
+  }
   std::vector<bool> massive(static_cast<std::size_t>(n));
   for (LocalIndex i = 0; i < n; ++i) {
     massive[i] = _K.diagonal(i) > 0.0;
@@ -106,8 +118,23 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   for (LocalIndex i = 0; i < n; ++i)
     if (!massive[i]) _K.add(i, i, -1.0); // M again (energies)
   if (project_velocities) out.energy_lost = project_velocities_onto(*factor, C, massive);
+  if (damping) add_damping_forces(*damping); // with the velocities as they now are
   if (accelerations) out.amax = consistent_accelerations(*factor, C, massive);
   return out;
+}
+
+void StepProblem::add_damping_forces(const CsrMatrix& damping) {
+  const EquationMap& eqm = _loads.equations();
+  const LocalIndex n = eqm.n_eq();
+  std::vector<double> v(static_cast<std::size_t>(n)), Cv(v.size());
+  for (LocalIndex i = 0; i < n; ++i) v[i] = _s.v_start[eqm.eq_slot[i]];
+  damping.multiply(v, Cv);
+  if (_s.f_damp_start.size() != _s.u.size()) _s.f_damp_start.assign(_s.u.size(), 0.0);
+  for (LocalIndex i = 0; i < n; ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    _s.r_start[s] += Cv[i];
+    _s.f_damp_start[s] = Cv[i]; // ALLVD's trapezoidal rule starts from them
+  }
 }
 
 double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,

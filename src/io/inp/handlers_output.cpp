@@ -210,13 +210,15 @@ void handle_output(BuildState& s, const Keyword& kw) {
   const bool history = kw.has("HISTORY");
   if (field == history) throw InputError(kw.loc, "", "give either FIELD or HISTORY on *OUTPUT");
   const int variable = enum_param(kw, "VARIABLE", {"PRESELECT", "ALL"}, -1);
-  if (history) {
+  s.current_history = -1;
+  if (history) { // values over time (docs/results.md, "History output")
     s.parent = Parent::HistoryOutput;
-    if (!s.history_warned)
-      s.warn(kw.loc, "history output is not written by gapfem; the *OUTPUT, HISTORY request and "
-                     "its *NODE OUTPUT / *ELEMENT OUTPUT lines were ignored (use *NODE PRINT or "
-                     "*EL PRINT for tables over time)");
-    s.history_warned = true;
+    HistoryOutputRequest req;
+    req.loc = kw.loc;
+    req.frequency = frequency_param(kw);
+    req.energies = variable >= 0; // Abaqus preselects the whole-model energies
+    s.step.history_outputs.push_back(std::move(req));
+    s.current_history = static_cast<int>(s.step.history_outputs.size()) - 1;
     return;
   }
   s.parent = Parent::FieldOutput;
@@ -270,9 +272,33 @@ void add_field_vars(const std::vector<V>& vars, const std::vector<std::int32_t>*
   }
 }
 
+namespace {
+
+/// A history request's *NODE OUTPUT / *ELEMENT OUTPUT line: its variables on its set's members.
+/// Without a set (the whole model, which Abaqus refuses for history output) it is a warning.
+template <typename V>
+void add_history_vars(BuildState& s, const Keyword& kw, const std::vector<V>& vars,
+                      const std::vector<std::int32_t>* set, const char* param,
+                      std::vector<std::pair<V, std::vector<std::int32_t>>>& into) {
+  if (!set) {
+    s.warn(kw.loc, fmt::format("history output needs {}= (the values over time of a few nodes or "
+                               "elements); this {} line was ignored",
+                               param, kw.name));
+    return;
+  }
+  for (V v : vars) into.emplace_back(v, *set);
+}
+
+} // namespace
+
 void handle_node_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<true>(s, kw, failed);
+  if (!failed && s.parent == Parent::HistoryOutput && s.current_history >= 0) {
+    add_history_vars(s, kw, read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList), set, "NSET",
+                     s.step.history_outputs[s.current_history].node_vars);
+    return;
+  }
   if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) {
     kw.mark_read(); // a failed set or request (reported), or history output (a warning)
     return;
@@ -285,6 +311,11 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
 void handle_element_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<false>(s, kw, failed);
+  if (!failed && s.parent == Parent::HistoryOutput && s.current_history >= 0) {
+    add_history_vars(s, kw, read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList), set,
+                     "ELSET", s.step.history_outputs[s.current_history].elem_vars);
+    return;
+  }
   if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) {
     kw.mark_read(); // a failed set or request (reported), or history output (a warning)
     return;
@@ -397,10 +428,25 @@ void handle_print_control(BuildState& s, const Keyword& kw) {
 }
 
 void handle_output_suboption(BuildState& s, const Keyword& kw) {
-  // history requests were ignored with the *OUTPUT, HISTORY remark; in a field request these
-  // (energy, contact-pair) variables do not exist in gapfem
+  // *ENERGY OUTPUT in a history request: the whole-model energies (by element set or per
+  // element, Abaqus's ELSET= and data lines, gapfem has not: the whole model's, with a warning);
+  // in a field request these (energy, contact-pair) variables do not exist in gapfem
   kw.mark_read();
-  if (s.parent != Parent::FieldOutput) return;
+  if (s.parent == Parent::HistoryOutput && s.current_history >= 0 && kw.key == "ENERGYOUTPUT") {
+    s.step.history_outputs[s.current_history].energies = true;
+    if (kw.has("ELSET") || kw.has("VARIABLE"))
+      s.warn(kw.loc, "gapfem writes the whole model's energies (ALLKE, ALLIE, ALLVD, ALLFD, "
+                     "ALLSD, ALLKL, ALLWK, ETOTAL) as history output; energies per element set "
+                     "or per element are not written");
+    return;
+  }
+  if (s.parent != Parent::FieldOutput) {
+    if (s.parent == Parent::HistoryOutput)
+      s.warn(kw.loc, fmt::format("{} is not written as history output by gapfem (contact "
+                                 "pairs: gap elements report through *ELEMENT OUTPUT, S and E)",
+                                 kw.name));
+    return;
+  }
   handle_print_control(s, kw);
 }
 

@@ -115,6 +115,7 @@ struct BuildState {
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;
+  int current_history = -1; ///< the *OUTPUT, HISTORY request its sub-options add to
   /// the *USER ELEMENT being read (its *MATRIX follow), and whether it is a part's definition
   /// read again for a later instance (its *MATRIX were read with the first)
   int current_user_element = -1;
@@ -145,7 +146,6 @@ struct BuildState {
   bool model_boundary_value_warned = false;  ///< the non-zero model-data *BOUNDARY remark
   bool model_done = false;                   ///< finish_model_data() has run
   bool in_step = false;
-  bool history_warned = false; ///< the *OUTPUT, HISTORY warning was given (once per deck)
   std::unordered_set<std::string> noted_keywords; ///< print controls already remarked
   /// The keyword just read was a *HEADING without a title line (a title written with a * reads
   /// as an unknown keyword: its message says so)

@@ -171,5 +171,63 @@ TEST(VerificationDynamicEnergy, EnergiesAreWrittenToTheResultsFiles) {
   EXPECT_TRUE(step.at("checks").at("energy_balance").at("conserving").get<bool>());
 }
 
+TEST(VerificationDynamicEnergy, HistoryOutputIsATimeSeriesOfTheRequestedValues) {
+  // *OUTPUT, HISTORY: U and V of node 2 and the bar's axial force (SF) every increment, the
+  // energies; the values are the frames' (node output) at the same increments
+  const std::string history = "*OUTPUT, HISTORY, VARIABLE=PRESELECT\n*NODE OUTPUT, NSET=TIP\nU, V\n"
+                              "*ELEMENT OUTPUT, ELSET=BAR\nSF";
+  const JobResult r = run_deck(sdof_deck(", DIRECT, ALPHA=0.", kT / 10.0, kT,
+                                         "*NSET, NSET=TIP\n2", kF, history),
+                               true);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const auto j = nlohmann::json::parse(test::slurp(test::test_dir() / "job.results.json"));
+  const auto& values = j.at("steps").at(0).at("history").at("values");
+  const auto& columns = values.at("columns");
+  ASSERT_EQ(columns.size(), 3u + 3u + 3u + 1u);
+  EXPECT_EQ(columns.at(3), "U1 at node 2");
+  EXPECT_EQ(columns.at(6), "V1 at node 2");
+  EXPECT_EQ(columns.at(9), "SF1 at element 1");
+  const auto& rows = values.at("rows");
+  ASSERT_EQ(rows.size(), 10u);
+  std::size_t k = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    const auto& row = rows.at(k++);
+    const double u = test::U(r, f, 2)[0];
+    EXPECT_EQ(row.at(0).get<double>(), f.increment);
+    EXPECT_DOUBLE_EQ(row.at(3).get<double>(), u);
+    EXPECT_DOUBLE_EQ(row.at(6).get<double>(),
+                     f.nodes.V[static_cast<std::size_t>(JobResult::node(*r.model, 2))][0]);
+    EXPECT_NEAR(row.at(9).get<double>(), kK * u, 1e-9); // the axial force k u
+  }
+  const std::string report = test::slurp(test::test_dir() / "job.report.html");
+  EXPECT_NE(report.find("History output"), std::string::npos);
+  EXPECT_NE(report.find("Energies"), std::string::npos);
+}
+
+TEST(VerificationDynamicEnergy, ADashpotsDissipationIsAllvd) {
+  // free vibration from v0 = 1 with a DASHPOT1 c = 1 at the mass (zeta = c / (2 sqrt(k m)) =
+  // 0.032): the trapezoidal rule balances exactly, ALLKE + ALLIE + ALLVD = 1/2 m v0^2 at every
+  // increment (R(0) holds the dashpot's force c v0: INITIAL=YES starts from a0 = -c v0 / m, and
+  // ALLVD's trapezoidal rule from c v0), ALLVD grows and after 2 periods holds most of it
+  // (the amplitude decays as exp(-zeta w t): 1 - exp(-2 zeta w 2T) = 1 - exp(-8 pi zeta) = 0.55)
+  const std::string dashpot = "*ELEMENT, TYPE=DASHPOT1, ELSET=D\n20, 2\n*DASHPOT, ELSET=D\n1\n1.\n"
+                              "*INITIAL CONDITIONS, TYPE=VELOCITY\n2, 1, 1.";
+  const JobResult r =
+      run_deck(sdof_deck(", DIRECT, ALPHA=0., INITIAL=YES", kT / 100.0, 2.0 * kT, dashpot, 0.0));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const double e0 = 0.5 * kM;
+  double vd = 0.0;
+  for (const IncrementInfo& i : r.increments) {
+    if (!i.converged) continue;
+    const Energies& e = *i.energies;
+    EXPECT_NEAR(e.allke + e.allie + e.allvd, e0, 1e-12 * e0) << "t = " << i.step_time;
+    EXPECT_GE(e.allvd, vd - 1e-15); // dissipation never decreases
+    vd = e.allvd;
+  }
+  const double zeta = 1.0 / (2.0 * std::sqrt(kK * kM));
+  EXPECT_NEAR(vd / e0, 1.0 - std::exp(-8.0 * std::numbers::pi * zeta), 0.05);
+}
+
 } // namespace
 } // namespace gapfem
