@@ -22,6 +22,12 @@ Cases (generators in this directory):
   slab-1M             a flat slab, 1.09M equations and 40,401 gaps (exact contact)
   pipe-rack-<size>    B31 pipe lines on GAPCYL guides and GAPUNI rest supports, thermal expansion
   stack-<size>        DGAP thermal stack (steady heat transfer)
+  dyn-<size>[-ccx]    *DYNAMIC (HHT, alpha -0.05, 200 fixed increments) of the agree block (penalty
+                      gaps, block 1e7 times stiffer than the gaps) under a pressure rising over
+                      1e-4 s, ringing on its foundation (gen_dynamic_block.py); the agreement is the
+                      top centre's U3 history against ccx's at the same times
+  dyn-linear-50k      the same mesh with a fixed base and no NLGEOM: a linear dynamic step (one
+                      factorisation expected for the whole step)
 
 Usage:
   bench/run_suite.py [--gapfem build/release/gapfem] [--sizes small,medium,large,huge]
@@ -72,6 +78,12 @@ CASES = [
     ("slab-40k", "medium", "gen_block.py", "--nx 50 --nz 4 --length 10 --height 0.4", False),
     ("block-200k-ccx", "large", "gen_block.py", "--nx 40 --nz 39 --penalty 1e7", True),
     ("pipe-rack-250k", "large", "gen_pipe_rack.py", "--lines 200 --spans 20 --elems 10", False),
+    # implicit dynamics (issue 46): >= 50k equations, >= 200 increments, against ccx
+    ("dyn-1k-ccx", "small", "gen_dynamic_block.py",
+     "--nx 6 --nz 6 --penalty 1e7 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
+    ("dyn-50k-ccx", "medium", "gen_dynamic_block.py",
+     "--nx 25 --nz 24 --penalty 1e7 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
+    ("dyn-linear-50k", "medium", "gen_dynamic_block.py", "--nx 25 --nz 24 --no-gaps", False),
     ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
 ]
 
@@ -173,6 +185,51 @@ def ccx_displacements(frd):
     return last
 
 
+def ccx_history(dat, set_name, comp=2):
+    """{time: {node: u_comp}} from every 'displacements (vx,vy,vz) for set SET' block of a ccx .dat
+    (a dynamic step prints one per increment; a run stopped early keeps what it flushed)."""
+    out, block = {}, None
+    try:
+        lines = open(dat, errors="replace").read().splitlines()
+    except OSError:
+        return out
+    head = re.compile(r"displacements \(vx,vy,vz\) for set " + re.escape(set_name) +
+                      r" and time\s+(\S+)")
+    for line in lines:
+        m = head.search(line)
+        if m:
+            block = out.setdefault(float(m.group(1)), {})
+            continue
+        f = line.split()
+        if block is not None and len(f) == 4 and f[0].isdigit():
+            block[int(f[0])] = float(f[1 + comp])
+        elif block is not None and f and block:
+            block = None
+    return out
+
+
+def history_agreement(js, ccx_hist):
+    """(times matched, max |u - u_ccx| / max |u_ccx|) of the printed nodes' history at the times
+    both codes reached."""
+    ours = {}
+    for st in js.get("steps", [])[-1:]:
+        for fr in st.get("frames", []):
+            ours[round(fr["step_time"], 9)] = fr.get("nodes", {})
+    n, diff, scale = 0, 0.0, 0.0
+    for t, nodes in ccx_hist.items():
+        mine = ours.get(round(t, 9))
+        if mine is None or not nodes:
+            continue
+        n += 1
+        for node, u in nodes.items():
+            g = mine.get(str(node), {}).get("U")
+            if g is None:
+                continue
+            scale = max(scale, abs(u))
+            diff = max(diff, abs(g[2] - u))
+    return n, (diff / scale if scale > 0 else diff)
+
+
 def projected_top_area(nodes, disp):
     """Area of the deformed top face (the nodes at the largest z, a structured grid) projected on
     the x-y plane: a follower pressure P on it pushes down with P times this area."""
@@ -271,10 +328,14 @@ def main():
             os.makedirs(cd, exist_ok=True)
             # ccx's copy also writes its displacements (.frd), for the deformed loaded area
             text = open(deck).read()
+            dynamic = "*DYNAMIC" in text
             with open(os.path.join(cd, "job.inp"), "w") as f:
-                f.write(text.replace("*END STEP", "*NODE FILE\nU\n*END STEP"))
+                # (not in dynamic decks: a field every increment; their agreement is a history)
+                f.write(text if dynamic else text.replace("*END STEP", "*NODE FILE\nU\n*END STEP"))
             env_rc, cwall, cmem, _ = timed([a.ccx, "-i", "job"], cd, a.ccx_budget)
             row.update(ccx_wall=cwall, ccx_mem=cmem, ccx_rc=env_rc)
+            if dynamic and js is not None:
+                row["hist"] = history_agreement(js, ccx_history(os.path.join(cd, "job.dat"), "MON"))
             if env_rc is None:
                 done, t = ccx_progress(os.path.join(cd, "job.sta"))
                 row["ccx_cut"] = f"stopped after {cwall:.0f} s: {done} increments, step time {t:g} of 1"
@@ -325,6 +386,8 @@ def main():
         if "ccx_cut" in r:
             ratio = f"> {r['ccx_wall'] / r['wall']:.1f}x"
             agree = "ccx " + r["ccx_cut"]
+            if r.get("hist"):
+                agree += f"; MON U3 history over {r['hist'][0]} times: rel. diff {r['hist'][1]:.1e}"
         elif "ccx_wall" in r:
             ratio = f"{r['ccx_wall'] / r['wall']:.1f}x"
             ok = []
@@ -338,6 +401,8 @@ def main():
                 pg = r["rsum"] / r["area"]
                 ok.append(f"RF / loaded area rel. diff {abs(pg - pc) / abs(pc):.1e} "
                           f"(areas {abs(r['area'] - r['ccx_area']) / r['ccx_area']:.1e} apart)")
+            if r.get("hist"):
+                ok.append(f"MON U3 history over {r['hist'][0]} times: rel. diff {r['hist'][1]:.1e}")
             agree = ", ".join(ok)
         elif twin:
             # an exact deck against ccx's time on its penalty twin (ccx has no exact contact): what
