@@ -198,5 +198,60 @@ TEST(VerificationBaseMotion, RigidMassFollowsTheSmoothStepsIntegralsExactly) {
   EXPECT_EQ(n, 24);
 }
 
+// TYPE=VELOCITY in a static step (Abaqus: applied at once, a STEP variation, without an
+// amplitude): the support moves by u = v t and carries the bar along without force.
+TEST(VerificationBaseMotion, VelocityInAStaticStepMovesBySpeedTimesTime) {
+  std::string deck = base_deck("", "*BOUNDARY, TYPE=VELOCITY\n1, 1, 1, 0.3", "", 0.5, 2.0);
+  deck.replace(deck.find("*DYNAMIC, DIRECT"), 16, "*STATIC, DIRECT");
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  int n = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    ++n;
+    EXPECT_NEAR(test::U(r, f, 1)[0], 0.3 * f.step_time, 1e-14);
+    EXPECT_NEAR(test::U(r, f, 2)[0], 0.3 * f.step_time, 1e-12);
+    EXPECT_NEAR(test::RF(r, f, 1)[0], 0.0, 1e-9);
+  }
+  EXPECT_EQ(n, 4);
+}
+
+// Propagation: step 1 drives v = V0 sin(W t) over T1; step 2 carries the condition over
+// unchanged and holds the velocity reached, v1 = V0 sin(W T1) (u grows by v1 per unit time);
+// step 3 sets the velocity to 0 without an amplitude: with the step's RAMP default the velocity
+// goes linearly from v1 to 0 (u gains v1 (t - t^2 / (2 T3))), with STEP it is 0 at once.
+TEST(VerificationBaseMotion, APropagatedVelocityHoldsItsEndValueAndARampStartsFromIt) {
+  const double T1 = 0.3, T2 = 0.2, T3 = 0.2, dt = 0.01, V0 = kA / kWg;
+  std::string deck =
+      base_deck(kVel, "*BOUNDARY, TYPE=VELOCITY, AMPLITUDE=VEL\n1, 1, 1, 1.", "", dt, T1);
+  deck += fmt::format("*STEP, INC=1000\n*DYNAMIC, DIRECT\n{}, {}\n*END STEP\n"
+                      "*STEP, INC=1000\n*DYNAMIC, DIRECT\n{}, {}\n*BOUNDARY, TYPE=VELOCITY\n"
+                      "1, 1, 1, 0.\n*END STEP\n",
+                      dt, T2, dt, T3);
+  const JobResult r = run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const bool ramp = r.model->steps.at(2).ramp_default;
+  const double v1 = V0 * std::sin(kWg * T1);
+  const double u1 = V0 / kWg * (1.0 - std::cos(kWg * T1)), u2 = u1 + v1 * T2;
+  const LocalIndex n1 = r.model->mesh.find_node(1);
+  int checked = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0 || f.step == 1) continue;
+    const double t = f.step_time;
+    double u, v;
+    if (f.step == 2) {
+      u = u1 + v1 * t;
+      v = v1;
+    } else {
+      u = ramp ? u2 + v1 * (t - t * t / (2.0 * T3)) : u2;
+      v = ramp ? v1 * (1.0 - t / T3) : 0.0;
+    }
+    EXPECT_NEAR(test::U(r, f, 1)[0], u, 1e-12) << f.step << " " << t;
+    EXPECT_NEAR(f.nodes.V.at(n1)[0], v, 1e-12) << f.step << " " << t;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 40);
+}
+
 } // namespace
 } // namespace gapfem
