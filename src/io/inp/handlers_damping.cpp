@@ -43,6 +43,13 @@ void set_once(const Keyword& kw, const std::string& material, std::string_view p
 } // namespace
 
 void handle_damping(BuildState& s, const Keyword& kw) {
+  // Abaqus also reads *DAMPING after *BEAM GENERAL SECTION and *SHELL GENERAL SECTION (sections
+  // without a material); gapfem does not damp sections yet
+  if (s.parent == Parent::BeamSection || s.parent == Parent::ShellSection)
+    throw InputError(kw.loc, "",
+                     "Rayleigh damping of a section (*DAMPING after a beam or shell section) is "
+                     "not supported; give *DAMPING inside the *MATERIAL the section names (a "
+                     "*BEAM GENERAL SECTION, which has no material, cannot be damped yet)");
   if (s.current_material < 0) return; // the *MATERIAL line was in error (reported)
   Material& m = s.model.materials[s.current_material];
   const auto alpha = rayleigh_factor(kw, "ALPHA", "mass-proportional (ALPHA)");

@@ -49,7 +49,7 @@ constexpr std::array<KeywordSpec, 121> kTable = {{
   {"*EXPANSION", handle_expansion, W::Model, "TYPE|ZERO|DEPENDENCIES", kMaterial},
   {"*CONDUCTIVITY", handle_conductivity, W::Model, "TYPE|DEPENDENCIES", kMaterial},
   {"*SPECIFIC HEAT", handle_specific_heat, W::Model, "DEPENDENCIES", kMaterial},
-  {"*DAMPING", handle_damping, W::Model, "ALPHA|BETA|STRUCTURAL|COMPOSITE", kMaterial},
+  {"*DAMPING", handle_damping, W::Model, "ALPHA|BETA|STRUCTURAL|COMPOSITE", kMaterial | kSection},
   {"*SOLID SECTION", handle_solid_section, W::Model, "ELSET|MATERIAL|ORIENTATION|CONTROLS"},
   {"*SECTION CONTROLS", handle_section_controls, W::Model,
    "NAME|HOURGLASS|DISTORTION CONTROL|LENGTH RATIO|KINEMATIC SPLIT|SECOND ORDER ACCURACY|"
@@ -176,7 +176,8 @@ bool accepts(const KeywordSpec& spec, const std::string& param_key) {
 }
 
 std::string parent_names(unsigned parents) {
-  if (parents == kMaterial) return "*MATERIAL (it defines a property of the material above it)";
+  if (parents == kMaterial || parents == (kMaterial | kSection)) // the latter: *DAMPING
+    return "*MATERIAL (it defines a property of the material above it)";
   if (parents == kGap) return "*GAP (it defines a property of the gap elements above it)";
   if (parents == kOutput) return "*OUTPUT inside a step";
   if (parents == kCoupling) return "*COUPLING (it defines the coupling above it)";
