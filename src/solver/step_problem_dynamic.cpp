@@ -108,6 +108,7 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
     if (damping) add_damping_forces(*damping);
     return out;
   }
+  if (n == 0) return out; // every DOF prescribed: nothing moves freely
   std::vector<bool> massive(static_cast<std::size_t>(n));
   for (LocalIndex i = 0; i < n; ++i) {
     massive[i] = _K.diagonal(i) > 0.0;
