@@ -15,7 +15,7 @@ using output::append_e12;
 namespace {
 
 /// Dynamic steps: the whole-model energies at the step end and the balance over the step
-/// (docs/theory/dynamics.md §8).
+/// (docs/theory/dynamics.md, "Energies").
 void write_energies(fmt::memory_buffer& buf, const StepChecks& c) {
   auto out = std::back_inserter(buf);
   const Energies& e = c.energies;

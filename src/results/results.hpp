@@ -70,7 +70,7 @@ struct ElementResult {
   ElementRecovery data;
 };
 
-/// Whole-model energies since the analysis start, Abaqus's names (docs/theory/dynamics.md §8):
+/// Whole-model energies since the analysis start, Abaqus's names (docs/theory/dynamics.md, "Energies"):
 /// kinetic ALLKE = 1/2 v.M v; internal ALLIE (the work of the element, contact and constraint
 /// forces, friction's dissipation taken out); viscous ALLVD (the damping operators: Rayleigh,
 /// dashpots, point-mass ALPHA); stabilization ALLSD; frictional ALLFD (the gaps'); external work

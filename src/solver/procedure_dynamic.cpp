@@ -159,7 +159,7 @@ double DynamicProcedure::friction_dissipation(StepRun& r) const {
   return d;
 }
 
-/// The step's energy balance (docs/theory/dynamics.md §8): ETOTAL's change over the step against
+/// The step's energy balance (docs/theory/dynamics.md, "Energies"): ETOTAL's change over the step against
 /// the largest energy of the step; the trapezoidal rule conserves, HHT with alpha < 0 and
 /// backward Euler dissipate.
 void DynamicProcedure::finish(StepRun& r) {
