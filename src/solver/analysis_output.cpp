@@ -360,11 +360,16 @@ void Analysis::Impl::equilibrium_checks(StepProblem& prob, StepChecks& c) {
     const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
     if (d < 3 && fstab[k] != 0.0) fb.to_ground(d, fstab[k]);
   }
-  // dynamic steps: the inertia forces (and HHT's history term) balance the rest
+  // dynamic steps: the inertia forces (and HHT's history term) balance the rest; at prescribed
+  // slots the reactions are the physical forces (StepProblem::reactions), so M a alone there
   const auto fdyn = prob.inertial_forces();
+  const auto inertia = prob.inertia_forces();
+  const auto presc = prob.prescribed();
   for (std::size_t k = 0; k < fdyn.size(); ++k) {
     const int d = static_cast<int>(dofs.slot_dof(static_cast<LocalIndex>(k)));
-    if (d < 3 && fdyn[k] != 0.0) fb.to_ground(d, fdyn[k]);
+    const bool fixed = k < presc.size() && presc[k] && inertia.size() == fdyn.size();
+    const double f = fixed ? inertia[k] : fdyn[k];
+    if (d < 3 && f != 0.0) fb.to_ground(d, f);
   }
   grounded_forces(prob, fb.ground, fb.scale);
   fb.finish(c);

@@ -280,8 +280,12 @@ std::array<double, kNumFields> StepProblem::increment_max() const {
 std::vector<double> StepProblem::reactions() const {
   std::vector<double> r(_s.f_int.size(), 0.0);
   const auto presc = _loads.prescribed();
+  // dynamic steps: the physical forces M a + I + C v - P at t + dt, not HHT's weighted
+  // M a / (1 + alpha) and history term -alpha / (1 + alpha) R(t) of the residual
+  const bool dynamic = _f_dyn.size() == r.size() && _inertia.size() == r.size();
   for (std::size_t s = 0; s < r.size(); ++s)
-    if (presc[s]) r[s] = _s.f_int[s] - _s.f_ext[s];
+    if (presc[s])
+      r[s] = _s.f_int[s] - _s.f_ext[s] - (dynamic ? _f_dyn[s] - _inertia[s] : 0.0);
   return r;
 }
 

@@ -109,6 +109,10 @@ class StepProblem final : public NonlinearProblem {
   /// per slot at the last evaluation, which the element and external forces balance (empty
   /// outside dynamic steps).
   std::span<const double> inertial_forces() const { return _f_dyn; }
+  /// Dynamic steps: the inertia forces M a alone per slot at the last evaluation (empty outside).
+  std::span<const double> inertia_forces() const {
+    return _f_dyn.empty() ? std::span<const double>{} : std::span<const double>(_inertia);
+  }
   /// The stabilization forces per slot at the last evaluation (empty when off).
   std::span<const double> stabilization_forces() const { return _f_stab; }
 
@@ -129,8 +133,11 @@ class StepProblem final : public NonlinearProblem {
 
   FieldView fields() const;
   const EquationMap& equations() const { return _loads.equations(); }
+  /// Per slot: 1 where the step prescribes the value (a boundary condition).
+  std::span<const std::uint8_t> prescribed() const { return _loads.prescribed(); }
   const StepContext& context() const { return _ctx; }
-  /// f_int - f_ext at prescribed slots (0 elsewhere), at the last evaluation.
+  /// The reactions at prescribed slots (0 elsewhere), at the last evaluation: f_int - f_ext, in
+  /// dynamic steps the physical M a + I + C v - P (HHT's weights taken out).
   std::vector<double> reactions() const;
   /// Concentrated loads per slot at the end of the current increment.
   std::vector<double> concentrated_loads() const;

@@ -109,15 +109,22 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
     return out;
   }
   if (n == 0) return out; // every DOF prescribed: nothing moves freely
+  // a massless DOF (a stop on a spring, a node of springs and gaps only) gets a token mass,
+  // 1e-8 of the largest: its right side is zero (a = 0 unless a row ties it to a mass) and an
+  // impact's projection moves it almost for free, as a massless point moves with what it touches
+  // (a mass hitting a massless spring-supported stop loses no kinetic energy)
   std::vector<bool> massive(static_cast<std::size_t>(n));
+  double largest = 0.0;
+  for (LocalIndex i = 0; i < n; ++i) largest = std::max(largest, _K.diagonal(i));
+  const double token = largest > 0.0 ? 1e-8 * largest : 1.0;
   for (LocalIndex i = 0; i < n; ++i) {
     massive[i] = _K.diagonal(i) > 0.0;
-    if (!massive[i]) _K.add(i, i, 1.0); // a massless DOF: unit diagonal, zero right side: a = 0
+    if (!massive[i]) _K.add(i, i, token);
   }
   const ConstraintBlock C = exact_rows(_C);
   const auto factor = solver.factorize(_K, C, true, _stats);
   for (LocalIndex i = 0; i < n; ++i)
-    if (!massive[i]) _K.add(i, i, -1.0); // M again (energies)
+    if (!massive[i]) _K.add(i, i, -token); // M again (energies)
   if (project_velocities) out.energy_lost = project_velocities_onto(*factor, C, massive);
   if (damping) add_damping_forces(*damping); // with the velocities as they now are
   if (accelerations) out.amax = consistent_accelerations(*factor, C, massive);

@@ -207,14 +207,15 @@ TEST(RegressionExamples, SeismicPipeRigidShakeSupportsCarryMassTimesAcceleration
   EXPECT_GE(checked, 3);
 }
 
-// The same through the reactions at the driven DOFs: disabled, gapfem reports them scaled by
-// 1/(1 + alpha) in HHT steps (measured 1.7071 m a0 and 1.7071 W with MODERATE DISSIPATION, where
-// the gap forces above are right); enable when the reactions of prescribed motion are fixed.
-TEST(RegressionExamples, DISABLED_SeismicPipeRigidShakeReactionsSumToMassTimesAcceleration) {
+// The same through the reactions at the driven DOFs (the ground nodes are massless: the reactions
+// are the gap forces; they were reported scaled by 1/(1 + alpha) in HHT steps, 1.7071 m a0 with
+// MODERATE DISSIPATION, until StepProblem::reactions took HHT's weights out); the step end's
+// leftover vibration as above.
+TEST(RegressionExamples, SeismicPipeRigidShakeReactionsSumToMassTimesAcceleration) {
   const JobResult r = run_example05("rigid_shake.inp");
   ASSERT_EQ(r.exit_code, 0) << r.error;
   const double W = pipe_weight(), m = W / kG, a0 = 0.1 * kG;
-  EXPECT_NEAR(r.steps[1].checks.reaction_sum[0], m * a0, 1e-4 * m * a0);
+  EXPECT_NEAR(r.steps[1].checks.reaction_sum[0], m * a0, 5e-3 * m * a0);
   EXPECT_NEAR(r.steps[1].checks.reaction_sum[2], W, 1e-6 * W);
 }
 
