@@ -30,6 +30,8 @@ def main():
     ap.add_argument("--nx", type=int, default=10)
     ap.add_argument("--nz", type=int, default=10)
     ap.add_argument("--penalty", type=float, default=None, help="GAPUNI penalty (ccx fields 6-7)")
+    ap.add_argument("--tension", type=float, default=None,
+                    help="ccx field 7: tension of an open penalty gap (ccx default 1e-3)")
     ap.add_argument("--no-gaps", action="store_true", help="fixed base, linear step (no NLGEOM)")
     ap.add_argument("--pressure", type=float, default=10.0)
     ap.add_argument("--E", type=float, default=2.0e5)
@@ -47,6 +49,8 @@ def main():
         cmd.append("--no-gaps")
     if a.penalty is not None:
         cmd += ["--penalty", repr(a.penalty)]
+    if a.tension is not None:
+        cmd += ["--tension", repr(a.tension)]
     p = subprocess.run(cmd, capture_output=True, text=True, check=True)
     deck = p.stdout
     # the density goes with the elastic constants

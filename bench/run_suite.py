@@ -23,7 +23,9 @@ Cases (generators in this directory):
   pipe-rack-<size>    B31 pipe lines on GAPCYL guides and GAPUNI rest supports, thermal expansion
   stack-<size>        DGAP thermal stack (steady heat transfer)
   dyn-<size>[-ccx]    *DYNAMIC (HHT, alpha -0.05, 200 fixed increments) of the agree block (penalty
-                      gaps, block 1e7 times stiffer than the gaps) under a pressure rising over
+                      gaps with f_inf = 1e-9 in field 7: with ccx's default 1e-3 the two codes'
+                      open gaps differ, 0.55 % in the history at 11k; block 1e7 times stiffer than
+                      the gaps) under a pressure rising over
                       1e-4 s, ringing on its foundation (gen_dynamic_block.py); the agreement is the
                       top centre's U3 history against ccx's at the same times
   dyn-linear-50k      the same mesh with a fixed base and no NLGEOM: a linear dynamic step (one
@@ -80,9 +82,9 @@ CASES = [
     ("pipe-rack-250k", "large", "gen_pipe_rack.py", "--lines 200 --spans 20 --elems 10", False),
     # implicit dynamics (issue 46): >= 50k equations, >= 200 increments, against ccx
     ("dyn-1k-ccx", "small", "gen_dynamic_block.py",
-     "--nx 6 --nz 6 --penalty 1e7 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
+     "--nx 6 --nz 6 --penalty 1e7 --tension 1e-9 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
     ("dyn-50k-ccx", "medium", "gen_dynamic_block.py",
-     "--nx 25 --nz 24 --penalty 1e7 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
+     "--nx 25 --nz 24 --penalty 1e7 --tension 1e-9 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
     ("dyn-linear-50k", "medium", "gen_dynamic_block.py", "--nx 25 --nz 24 --no-gaps", False),
     ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
 ]
