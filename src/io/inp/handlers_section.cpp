@@ -219,6 +219,12 @@ void check_temperature_param(const Keyword& kw) {
                      "gapfem takes beam temperatures as the value at the section origin and its "
                      "gradients dT/dx2, dT/dx1 (TEMPERATURE=GRADIENTS, the default); remove the "
                      "parameter");
+  // ROTARY INERTIA=EXACT is Abaqus's default and gapfem's (docs/theory/dynamics.md, "Mass of
+  // each element type"); the isotropic approximation is not offered
+  if (enum_param(kw, "ROTARY INERTIA", {"EXACT", "ISOTROPIC"}, 0) == 1)
+    throw InputError(kw.loc, "ROTARY INERTIA=ISOTROPIC",
+                     "gapfem forms the beam's exact rotary inertia from the section "
+                     "(ROTARY INERTIA=EXACT, Abaqus's default); remove the parameter");
 }
 
 /// Line 3 of *BEAM GENERAL SECTION: E, G, alpha.

@@ -54,8 +54,8 @@ constexpr std::array<KeywordSpec, 121> kTable = {{
   {"*SECTION CONTROLS", handle_section_controls, W::Model,
    "NAME|HOURGLASS|DISTORTION CONTROL|LENGTH RATIO|KINEMATIC SPLIT|SECOND ORDER ACCURACY|"
    "ELEMENT DELETION|MAX DEGRADATION|VISCOSITY"},
-  {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION|TEMPERATURE", 0, P::BeamSection},
-  {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE", 0, P::BeamSection},
+  {"*BEAM SECTION", handle_beam_section, W::Model, "ELSET|MATERIAL|SECTION|TEMPERATURE|ROTARY INERTIA", 0, P::BeamSection},
+  {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE|ROTARY INERTIA", 0, P::BeamSection},
   {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kSection},
   {"*SECTION POINTS", handle_section_points, W::Model, "", kBeam},
   {"*SHELL SECTION", handle_shell_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|SECTION INTEGRATION|TEMPERATURE", 0, P::ShellSection},

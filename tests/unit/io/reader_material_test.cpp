@@ -189,6 +189,13 @@ TEST(ReaderMaterial, BeamSections) {
   EXPECT_EQ(r.beam_sections[0].dims, (std::vector<double>{0.2, 0.3}));
   EXPECT_FALSE(r.beam_sections[0].n1_given);
   EXPECT_EQ(r.beam_sections[0].n1, (Vec3{0.0, 0.0, -1.0})); // Abaqus default
+  // ROTARY INERTIA=EXACT is Abaqus's default and gapfem's; ISOTROPIC is not offered
+  EXPECT_NO_THROW(
+      read(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT, ROTARY INERTIA=EXACT\n"
+                  "0.2, 0.3\n"));
+  EXPECT_CONTAINS(error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT, "
+                                    "ROTARY INERTIA=ISOTROPIC\n0.2, 0.3\n"),
+                  "ROTARY INERTIA=ISOTROPIC: gapfem forms the beam's exact rotary inertia");
   const Model c = read(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=CIRC\n0.1\n");
   EXPECT_EQ(c.beam_sections[0].shape, BeamSection::Shape::Circ);
 
