@@ -39,6 +39,7 @@ struct OperatorWeights {
   double c = 0.0;       ///< damping
   double m = 0.0;       ///< mass
   double inertia = 1.0; ///< the factor of the inertia forces M a in the residual (HHT)
+  bool operator==(const OperatorWeights&) const = default;
 };
 
 /// What an assembly under rates may also return per slot, each unweighted and only where not

@@ -135,7 +135,12 @@ bool NewtonIteration::requested_cutback() {
 }
 
 bool NewtonIteration::start() {
-  if (!evaluate(true) || requested_cutback()) return false;
+  // the tangent, unless the increment's operators are the last increment's (a dynamic step at an
+  // unchanged size) and the solver may keep its factor: the residual alone, as later iterations
+  const bool tangent = tangent_wanted() || !_p.operators_as_before();
+  if (!evaluate(tangent)) return false;
+  if (!_ev.tangent && _ev.stiffness_changed && !add_tangent()) return false;
+  if (requested_cutback()) return false;
   // The flux scale of the increment is the largest average flux seen in any of its evaluations
   // without contact status changes: a free thermal expansion has large thermal forces at the
   // start and none at convergence. An evaluation that changes status is transitional and may

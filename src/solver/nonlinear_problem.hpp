@@ -60,6 +60,11 @@ class NonlinearProblem {
   /// Augmented Lagrange: at a converged state, update multiplier estimates that do not yet meet
   /// their tolerance. Returns how many changed (0: the state is final).
   virtual int augment() { return 0; }
+  /// The increment's operators (the integrator's weights of K, C and M) are those of the
+  /// increment before, in a step whose rates carry history (a dynamic step at an unchanged
+  /// increment size): Newton may then start from the residual alone and the kept factor, as it
+  /// continues (a linear increment: one back-substitution). False: start with the tangent.
+  virtual bool operators_as_before() const { return false; }
   /// Line search: the fraction (0, 1] of the correction (du over the free equations, dl over the
   /// active rows) to apply.
   virtual double step_limit(std::span<const double> du, std::span<const double> dl) { return 1.0; }

@@ -50,7 +50,12 @@ void StepProblem::begin_increment(double t0, double dt, int increment,
                                   std::span<const double> guess) {
   _ctx.increment = increment;
   _ctx.dt = dt;
+  const OperatorWeights before = _weights;
   begin_rates(dt);
+  // the same effective operators as the increment before (a dynamic step at an unchanged size):
+  // Newton may keep the factor from the start (NonlinearProblem::operators_as_before)
+  _operators_as_before = dt > 0.0 && _integrator && _integrator->second_order() &&
+                         !_s.r_start.empty() && before == _weights;
   _ctx.step_time = t0 + dt;
   _ctx.total_time = _s.total_time + t0 + dt;
   std::copy(_s.u_start.begin(), _s.u_start.end(), _s.u.begin());

@@ -126,6 +126,7 @@ class StepProblem final : public NonlinearProblem {
   std::array<double, kNumFields> increment_max() const override;
   double constraint_tolerance() const override { return _constraint_tol; }
   int augment() override;
+  bool operators_as_before() const override { return _operators_as_before; }
   double step_limit(std::span<const double> du, std::span<const double> dl) override;
   /// Representative stiffness of the non-gap elements at every gap element's DOFs (mean diagonal
   /// of their displacement DOFs), stored for the kernels' automatic penalty stiffnesses.
@@ -192,6 +193,7 @@ class StepProblem final : public NonlinearProblem {
   std::vector<double> _inertia; ///< M a per slot at the last evaluation (HHT's history)
   std::vector<double> _damping_forces; ///< C v of the damping operators (dynamic steps)
   std::vector<double> _momentum;       ///< M v per slot at the last evaluation (dynamic steps)
+  bool _operators_as_before = false;   ///< operators_as_before() of the current increment
   std::vector<double> _f_dyn;   ///< inertial_forces()
   RunStatistics* _stats = nullptr;
 };
