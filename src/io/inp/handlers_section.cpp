@@ -349,7 +349,7 @@ void handle_spring(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
                      "data lines are missing: line 1 gives the DOF(s) (blank for SPRINGA), the "
                      "following lines the stiffness");
-  // line 1: DOFs (checked against the element types later); lines 2…: stiffness[, temperature]
+  // line 1: DOFs (checked against the element types later); lines 2…: the stiffness table
   const std::span<const DataLine> rows(kw.data.data() + 1, kw.data.size() - 1);
   bool any_row = false;
   for (const auto& d : rows) any_row = any_row || !d.empty();
@@ -357,7 +357,23 @@ void handle_spring(BuildState& s, const Keyword& kw) {
     throw InputError(s.loc(kw, kw.data[0]), fmt::format("ELSET={}", sec.elset),
                      "the stiffness is missing; give it on the second data line (the first line "
                      "holds the DOFs, blank for SPRINGA)");
-  sec.stiffness = read_property_table(s, kw, rows, {"stiffness"}, nullptr);
+  // Abaqus's (and CalculiX's) layout: stiffness, frequency (steady-state dynamics only), then
+  // the temperature [Keywords Reference, *SPRING]; the table is read as stiffness, temperature
+  std::vector<DataLine> table;
+  for (const DataLine& d : rows) {
+    if (d.empty()) continue;
+    const FieldReader r = s.reader(kw, d);
+    r.at_most(3, "stiffness, frequency, temperature");
+    if (!r.blank(1))
+      r.fail("field 2",
+             "this is the frequency, which only steady-state dynamics uses: leave it blank; a "
+             "temperature goes in field 3 (the layout is stiffness, frequency, temperature)");
+    DataLine t = d;
+    t.fields.resize(1);
+    if (d.fields.size() > 2) t.fields.push_back(d.fields[2]);
+    table.push_back(std::move(t));
+  }
+  sec.stiffness = read_property_table(s, kw, table, {"stiffness"}, nullptr);
   s.model.spring_sections.push_back(std::move(sec));
   kw.data[0].read = true; // (read by check_spring once the element types are known)
   s.spring_dof_line.push_back(kw.data[0]);

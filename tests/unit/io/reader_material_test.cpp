@@ -190,9 +190,9 @@ TEST(ReaderMaterial, BeamSections) {
   EXPECT_FALSE(r.beam_sections[0].n1_given);
   EXPECT_EQ(r.beam_sections[0].n1, (Vec3{0.0, 0.0, -1.0})); // Abaqus default
   // ROTARY INERTIA=EXACT is Abaqus's default and gapfem's; ISOTROPIC is not offered
-  EXPECT_NO_THROW(
-      read(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT, ROTARY INERTIA=EXACT\n"
-                  "0.2, 0.3\n"));
+  EXPECT_NO_THROW(read(mesh +
+                       "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT, ROTARY INERTIA=EXACT\n"
+                       "0.2, 0.3\n"));
   EXPECT_CONTAINS(error_text(mesh + "*BEAM SECTION, ELSET=B, MATERIAL=M, SECTION=RECT, "
                                     "ROTARY INERTIA=ISOTROPIC\n0.2, 0.3\n"),
                   "ROTARY INERTIA=ISOTROPIC: gapfem forms the beam's exact rotary inertia");
@@ -229,14 +229,15 @@ TEST(ReaderMaterial, Springs) {
       "*NODE\n1\n2,1\n*ELEMENT, TYPE=SPRING1, ELSET=S1\n1, 1\n"
       "*ELEMENT, TYPE=SPRING2, ELSET=S2\n2, 1, 2\n*ELEMENT, TYPE=SPRINGA, ELSET=SA\n3, 1, 2\n";
   const Model m =
-      read(mesh + "*SPRING, ELSET=S1\n2\n100.\n*SPRING, ELSET=S2\n1, 3\n50., 0.\n60., 100.\n"
+      read(mesh + "*SPRING, ELSET=S1\n2\n100.\n*SPRING, ELSET=S2\n1, 3\n50., , 0.\n60., , 100.\n"
                   "*SPRING, ELSET=SA\n\n1000.\n");
   ASSERT_EQ(m.spring_sections.size(), 3u);
   EXPECT_EQ(m.spring_sections[0].dof1, 2);
   EXPECT_EQ(m.spring_sections[0].stiffness.value(0.0), 100.0);
   EXPECT_EQ(m.spring_sections[1].dof1, 1);
   EXPECT_EQ(m.spring_sections[1].dof2, 3);
-  EXPECT_EQ(m.spring_sections[1].stiffness.n_rows(), 2);
+  EXPECT_EQ(m.spring_sections[1].stiffness.n_rows(), 2); // Abaqus's k, frequency, temperature
+  EXPECT_EQ(m.spring_sections[1].stiffness.value(50.0), 55.0);
   EXPECT_EQ(m.spring_sections[2].dof1, 0);
   EXPECT_EQ(m.spring_sections[2].stiffness.value(0.0), 1000.0);
   for (ElemId e = 0; e < 3; ++e) EXPECT_EQ(m.element_property[e].kind, PropertyRef::Kind::Spring);
@@ -253,6 +254,9 @@ TEST(ReaderMaterial, Springs) {
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n2\n1.\n*SPRING, ELSET=S2\n1,1\n5.\n"
                                     "*SPRING, ELSET=SA\n1000.\n5.\n"),
                   "for SPRINGA elements the first data line must be blank");
+  // field 2 is the frequency (steady-state dynamics): a value there is not a temperature
+  EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n2\n100., 20.\n" + ok),
+                  "deck.inp:12: *SPRING: field 2: this is the frequency");
 }
 
 TEST(ReaderMaterial, Amplitudes) {
