@@ -239,8 +239,8 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
                 rates[1].empty() ? std::span<double>{} : std::span<double>(tr[1]),
                 rates[2].empty() ? std::span<double>{} : std::span<double>(tr[2])};
       }
-      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights,
-                     mine, partial[t]);
+      assemble_chunk(*block, b, e, t, fields, ctx, f, K, multi ? t : 0, C != nullptr, weights, mine,
+                     partial[t]);
     });
     if (multi) {
       for (int t = 0; t < _threads; ++t)

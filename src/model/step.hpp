@@ -139,7 +139,7 @@ struct Step {
   std::vector<ElPrintRequest> el_prints;
   std::vector<FieldOutputRequest> field_outputs;
   std::vector<HistoryOutputRequest> history_outputs; ///< *OUTPUT, HISTORY
-  std::vector<FileOutputRequest> file_outputs; ///< *NODE FILE / *EL FILE (job.frd)
+  std::vector<FileOutputRequest> file_outputs;       ///< *NODE FILE / *EL FILE (job.frd)
   /// *MONITOR in effect in this step (given in it, in an earlier step or in the model data)
   std::optional<DofMonitor> monitor;
   /// *RESTART, WRITE in effect in this step (given in it, in an earlier step or the model data)

@@ -251,9 +251,8 @@ void JsonWriter::increment(const IncrementInfo& info) {
   }
   if (info.energies) {
     const Energies& e = *info.energies;
-    _energy_history.push_back({static_cast<double>(info.increment), info.step_time,
-                               info.total_time, e.allke, e.allie, e.allvd, e.allfd, e.allkl,
-                               e.allwk, e.etotal()});
+    _energy_history.push_back({static_cast<double>(info.increment), info.step_time, info.total_time,
+                               e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal()});
   }
   ++_seen.increments;
   _last = info;

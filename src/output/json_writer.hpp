@@ -8,8 +8,8 @@
 /// or a full disk leaves the last one). end() publishes the final document and removes the part.
 #include "common/timer.hpp"
 #include "output/output_file.hpp"
-#include "results/results.hpp"
 #include "output/shadow_document.hpp"
+#include "results/results.hpp"
 
 #include <array>
 #include <filesystem>

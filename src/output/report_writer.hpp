@@ -8,9 +8,9 @@
 /// Written at the end of the run, also of one that stops early.
 #include "results/results.hpp"
 
+#include <array>
 #include <filesystem>
 #include <string>
-#include <array>
 #include <vector>
 
 namespace gapfem {

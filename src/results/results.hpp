@@ -70,14 +70,14 @@ struct ElementResult {
   ElementRecovery data;
 };
 
-/// Whole-model energies since the analysis start, Abaqus's names (docs/theory/dynamics.md, "Energies"):
-/// kinetic ALLKE = 1/2 v.M v; internal ALLIE (the work of the element, contact and constraint
-/// forces, friction's dissipation taken out); viscous ALLVD (the damping operators: Rayleigh,
-/// dashpots, point-mass ALPHA); stabilization ALLSD; frictional ALLFD (the gaps'); external work
-/// ALLWK (loads and the reactions of prescribed motion); kinetic energy lost at impacts ALLKL.
+/// Whole-model energies since the analysis start, Abaqus's names (docs/theory/dynamics.md,
+/// "Energies"): kinetic ALLKE = 1/2 v.M v; internal ALLIE (the work of the element, contact and
+/// constraint forces, friction's dissipation taken out); viscous ALLVD (the damping operators:
+/// Rayleigh, dashpots, point-mass ALPHA); stabilization ALLSD; frictional ALLFD (the gaps');
+/// external work ALLWK (loads and the reactions of prescribed motion); kinetic energy lost at
+/// impacts ALLKL.
 struct Energies {
-  double allke = 0.0, allie = 0.0, allvd = 0.0, allsd = 0.0, allfd = 0.0, allwk = 0.0,
-         allkl = 0.0;
+  double allke = 0.0, allie = 0.0, allvd = 0.0, allsd = 0.0, allfd = 0.0, allwk = 0.0, allkl = 0.0;
   /// ETOTAL = ALLKE + ALLIE + ALLVD + ALLSD + ALLFD + ALLKL - ALLWK: constant (zero from a
   /// state at rest) when energy is conserved; HHT's numerical dissipation lowers it.
   double etotal() const { return allke + allie + allvd + allsd + allfd + allkl - allwk; }

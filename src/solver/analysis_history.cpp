@@ -14,26 +14,41 @@ namespace {
 /// The three components of a vector node variable (nullptr: a scalar or absent in this step).
 const std::vector<Vec3>* vector_of(const NodeResults& nr, NodeVar v) {
   switch (v) {
-  case NodeVar::U: return &nr.U;
-  case NodeVar::UR: return &nr.UR;
-  case NodeVar::RF: return &nr.RF;
-  case NodeVar::RM: return &nr.RM;
-  case NodeVar::CF: return &nr.CF;
-  case NodeVar::CM: return &nr.CM;
-  case NodeVar::V: return &nr.V;
-  case NodeVar::VR: return &nr.VR;
-  case NodeVar::A: return &nr.A;
-  case NodeVar::AR: return &nr.AR;
-  default: return nullptr;
+  case NodeVar::U:
+    return &nr.U;
+  case NodeVar::UR:
+    return &nr.UR;
+  case NodeVar::RF:
+    return &nr.RF;
+  case NodeVar::RM:
+    return &nr.RM;
+  case NodeVar::CF:
+    return &nr.CF;
+  case NodeVar::CM:
+    return &nr.CM;
+  case NodeVar::V:
+    return &nr.V;
+  case NodeVar::VR:
+    return &nr.VR;
+  case NodeVar::A:
+    return &nr.A;
+  case NodeVar::AR:
+    return &nr.AR;
+  default:
+    return nullptr;
   }
 }
 
 const std::vector<double>* scalar_of(const NodeResults& nr, NodeVar v) {
   switch (v) {
-  case NodeVar::NT: return &nr.NT;
-  case NodeVar::RFL: return &nr.RFL;
-  case NodeVar::CFL: return &nr.CFL;
-  default: return nullptr;
+  case NodeVar::NT:
+    return &nr.NT;
+  case NodeVar::RFL:
+    return &nr.RFL;
+  case NodeVar::CFL:
+    return &nr.CFL;
+  default:
+    return nullptr;
   }
 }
 

@@ -159,8 +159,8 @@ double DynamicProcedure::friction_dissipation(StepRun& r) const {
   return d;
 }
 
-/// The step's energy balance (docs/theory/dynamics.md, "Energies"): ETOTAL's change over the step against
-/// the largest energy of the step; the trapezoidal rule conserves, HHT with alpha < 0 and
+/// The step's energy balance (docs/theory/dynamics.md, "Energies"): ETOTAL's change over the step
+/// against the largest energy of the step; the trapezoidal rule conserves, HHT with alpha < 0 and
 /// backward Euler dissipate.
 void DynamicProcedure::finish(StepRun& r) {
   StepChecks& c = r.sum.checks;

@@ -289,8 +289,7 @@ std::vector<double> StepProblem::reactions() const {
   // M a / (1 + alpha) and history term -alpha / (1 + alpha) R(t) of the residual
   const bool dynamic = _f_dyn.size() == r.size() && _inertia.size() == r.size();
   for (std::size_t s = 0; s < r.size(); ++s)
-    if (presc[s])
-      r[s] = _s.f_int[s] - _s.f_ext[s] - (dynamic ? _f_dyn[s] - _inertia[s] : 0.0);
+    if (presc[s]) r[s] = _s.f_int[s] - _s.f_ext[s] - (dynamic ? _f_dyn[s] - _inertia[s] : 0.0);
   return r;
 }
 

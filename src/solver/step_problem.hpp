@@ -52,7 +52,7 @@ struct SolutionState {
 
 /// What restarting the dynamics at a state found (StepProblem::restart_dynamics).
 struct DynamicRestart {
-  double amax = 0.0;        ///< the largest acceleration
+  double amax = 0.0;           ///< the largest acceleration
   double energy_lost = 0.0;    ///< kinetic energy removed by the velocity projection
   double kinetic_energy = 0.0; ///< 1/2 v.M v before it (0 when M was not assembled)
 };
@@ -190,11 +190,11 @@ class StepProblem final : public NonlinearProblem {
   /// The energies of a committed increment into the solution state (step_problem_energy.cpp).
   void account_energies();
 
-  std::vector<double> _inertia; ///< M a per slot at the last evaluation (HHT's history)
+  std::vector<double> _inertia;        ///< M a per slot at the last evaluation (HHT's history)
   std::vector<double> _damping_forces; ///< C v of the damping operators (dynamic steps)
   std::vector<double> _momentum;       ///< M v per slot at the last evaluation (dynamic steps)
   bool _operators_as_before = false;   ///< operators_as_before() of the current increment
-  std::vector<double> _f_dyn;   ///< inertial_forces()
+  std::vector<double> _f_dyn;          ///< inertial_forces()
   RunStatistics* _stats = nullptr;
 };
 

@@ -85,8 +85,8 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   _s.r_start.resize(_s.u.size());
   for (std::size_t s = 0; s < _s.u.size(); ++s) _s.r_start[s] = _s.f_int[s] - _s.f_ext[s];
   _s.r_prev.clear(); // a fresh start: no earlier increment to lag behind
-  const bool moving = std::any_of(_s.v_start.begin(), _s.v_start.end(),
-                                  [](double v) { return v != 0.0; });
+  const bool moving =
+      std::any_of(_s.v_start.begin(), _s.v_start.end(), [](double v) { return v != 0.0; });
   if (!accelerations && !project_velocities && !moving) return out;
   const OperatorWeights keep = _weights;
   // the damping operators C (dashpots, Rayleigh, point-mass ALPHA): R(t) has their forces C v,

@@ -1,7 +1,8 @@
-// The energies of the step problem (results.hpp, Energies; docs/theory/dynamics.md, "Energies"): each
-// force's work by the trapezoidal rule over the increment, W += 1/2 (f_n + f_n+1) . du, which the
-// trapezoidal rule of time integration makes exact (M a's work then equals the change of 1/2 v.M v,
-// so ETOTAL stays constant to the Newton tolerance); the kinetic energy 1/2 v.M v at each commit.
+// The energies of the step problem (results.hpp, Energies; docs/theory/dynamics.md, "Energies"):
+// each force's work by the trapezoidal rule over the increment, W += 1/2 (f_n + f_n+1) . du, which
+// the trapezoidal rule of time integration makes exact (M a's work then equals the change of 1/2
+// v.M v, so ETOTAL stays constant to the Newton tolerance); the kinetic energy 1/2 v.M v at each
+// commit.
 #include "solver/step_problem.hpp"
 
 namespace gapfem {

@@ -312,8 +312,8 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<false>(s, kw, failed);
   if (!failed && s.parent == Parent::HistoryOutput && s.current_history >= 0) {
-    add_history_vars(s, kw, read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList), set,
-                     "ELSET", s.step.history_outputs[s.current_history].elem_vars);
+    add_history_vars(s, kw, read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList), set, "ELSET",
+                     s.step.history_outputs[s.current_history].elem_vars);
     return;
   }
   if (failed || s.parent != Parent::FieldOutput || s.current_field < 0) {

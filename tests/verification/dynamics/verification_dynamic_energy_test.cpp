@@ -133,7 +133,8 @@ TEST(VerificationDynamicEnergy, AnImpactsLostKineticEnergyIsReported) {
   // a GAPUNI from node 2 to the fixed node 3 closes at u = c = 0.02 = F/k under F = 10: the mass
   // hits the stop at its largest speed, 1/2 m v^2 = F c - 1/2 k c^2 = 0.2 - 0.1 = 0.1 (INITIAL=YES:
   // the model has a gap, whose default MODERATE DISSIPATION starts from zero accelerations)
-  const std::string gap = "*ELEMENT, TYPE=GAPUNI, ELSET=G\n10, 2, 3\n*GAP, ELSET=G\n0.02, 1., 0., 0.";
+  const std::string gap =
+      "*ELEMENT, TYPE=GAPUNI, ELSET=G\n10, 2, 3\n*GAP, ELSET=G\n0.02, 1., 0., 0.";
   const JobResult r =
       run_deck(sdof_deck(", DIRECT, ALPHA=0., INITIAL=YES", kT / 200.0, kT / 2.0, gap, 10.0));
   ASSERT_EQ(r.exit_code, 0) << r.error;
@@ -166,8 +167,7 @@ TEST(VerificationDynamicEnergy, EnergiesAreWrittenToTheResultsFiles) {
   EXPECT_EQ(rows.size(), 10u);
   EXPECT_EQ(step.at("history").at("energies").at("columns").at(3), "ALLKE");
   const auto& frame = step.at("frames").back();
-  EXPECT_DOUBLE_EQ(frame.at("energies").at("ALLKE").get<double>(),
-                   rows.back().at(3).get<double>());
+  EXPECT_DOUBLE_EQ(frame.at("energies").at("ALLKE").get<double>(), rows.back().at(3).get<double>());
   EXPECT_TRUE(step.at("checks").at("energy_balance").at("conserving").get<bool>());
 }
 
@@ -176,9 +176,8 @@ TEST(VerificationDynamicEnergy, HistoryOutputIsATimeSeriesOfTheRequestedValues) 
   // energies; the values are the frames' (node output) at the same increments
   const std::string history = "*OUTPUT, HISTORY, VARIABLE=PRESELECT\n*NODE OUTPUT, NSET=TIP\nU, V\n"
                               "*ELEMENT OUTPUT, ELSET=BAR\nSF";
-  const JobResult r = run_deck(sdof_deck(", DIRECT, ALPHA=0.", kT / 10.0, kT,
-                                         "*NSET, NSET=TIP\n2", kF, history),
-                               true);
+  const JobResult r = run_deck(
+      sdof_deck(", DIRECT, ALPHA=0.", kT / 10.0, kT, "*NSET, NSET=TIP\n2", kF, history), true);
   ASSERT_EQ(r.exit_code, 0) << r.error;
   const auto j = nlohmann::json::parse(test::slurp(test::test_dir() / "job.results.json"));
   const auto& values = j.at("steps").at(0).at("history").at("values");
@@ -289,9 +288,9 @@ U
 
 TEST(VerificationDynamicEnergy, ABaseDrivenMassAloneIsWorkIntoKineticEnergy) {
   // every DOF prescribed (no equations): a point mass m = 2 driven by an acceleration ramped to
-  // a = 3 t (*BOUNDARY, TYPE=ACCELERATION, *DYNAMIC's default ramp over the step of 1): v = 1.5 t^2,
-  // ALLKE = 1/2 m v^2 = 2.25 at t = 1, done by the reaction m a: ALLWK = the integral of
-  // m a dx = 9 t^4 / 4 = 2.25. The driven DOF's motion is the exact integral of the prescribed
+  // a = 3 t (*BOUNDARY, TYPE=ACCELERATION, *DYNAMIC's default ramp over the step of 1): v = 1.5
+  // t^2, ALLKE = 1/2 m v^2 = 2.25 at t = 1, done by the reaction m a: ALLWK = the integral of m a
+  // dx = 9 t^4 / 4 = 2.25. The driven DOF's motion is the exact integral of the prescribed
   // acceleration, but the kernels see the integrator's rates there (docs/theory/dynamics.md, Base
   // motion: they differ by O(dt)): M v and the reaction M a are that close (dt = 0.01: measured
   // 3e-5 and 5e-3 of 2.25)
