@@ -290,7 +290,18 @@ void handle_dynamic(BuildState& s, const Keyword& kw) {
   reject_param(kw, "EXPLICIT", "gapfem is an implicit code; use *DYNAMIC without EXPLICIT");
   reject_param(kw, "SUBSPACE", "use the implicit integration of *DYNAMIC (SUBSPACE omitted)");
   reject_param(kw, "ADIABATIC", "gapfem's materials are elastic: there is no plastic heating");
-  reject_param(kw, "IMPACT", "gap contact in dynamic steps needs no IMPACT parameter");
+  if (kw.has("IMPACT")) {
+    // No Keywords Reference we could read (v6.5, 6.11, 2016-2024) lists IMPACT; old decks used it
+    // to ask for the impact conditions that gapfem always applies to hard gaps
+    // (docs/theory/dynamics.md, section 5)
+    if (!yes_no_param(kw, "IMPACT", true))
+      throw InputError(kw.loc, param_text(kw, "IMPACT"),
+                       "IMPACT=NO would let a hard gap close without its impact conditions "
+                       "(velocities compatible at the impact), which gives energy to the model: "
+                       "remove IMPACT=NO, or use a SOFTENED or PENALTY gap for an elastic impact");
+    s.warn(kw.loc, "*DYNAMIC, IMPACT: a hard gap that closes is always a fully plastic impact in "
+                   "gapfem (as in Abaqus/Standard); the parameter changes nothing");
+  }
   DynamicSettings& d = s.step.dynamic;
   d.loc = kw.loc;
   using A = DynamicSettings::Application;

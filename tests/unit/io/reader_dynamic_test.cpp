@@ -98,6 +98,15 @@ TEST(ReaderDynamic, InitialVelocities) {
   EXPECT_CONTAINS(error_text(dof), "degree of freedom");
 }
 
+// IMPACT is in no Keywords Reference we could read; old decks asked with it for the impact
+// conditions gapfem always applies to hard gaps: accepted with one warning, IMPACT=NO refused.
+TEST(ReaderDynamic, ImpactAsksForWhatHardGapsAlwaysDo) {
+  const Model m = read(with_gap("*DYNAMIC, IMPACT"));
+  EXPECT_EQ(test::count_warnings(m, "always a fully plastic impact"), 1);
+  EXPECT_EQ(test::count_warnings(read(with_gap("*DYNAMIC, IMPACT=YES")), "fully plastic"), 1);
+  EXPECT_EQ(test::count_warnings(read(with_gap("*DYNAMIC")), "fully plastic"), 0);
+}
+
 TEST(ReaderDynamic, OneClearMessageForEachWrongCombination) {
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, ALPHA=0.1")), "ALPHA must lie between -0.5 and 0");
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, APPLICATION=QUASI-STATIC, ALPHA=-0.1")),
@@ -108,7 +117,7 @@ TEST(ReaderDynamic, OneClearMessageForEachWrongCombination) {
                   "the half-increment residual tolerance must be a positive force");
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, BETA=0.")), "make the integration unstable");
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, EXPLICIT")), "EXPLICIT");
-  EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, IMPACT")), "IMPACT");
+  EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, IMPACT=NO")), "IMPACT=NO would let a hard gap");
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC, APPLICATION=FAST")), "APPLICATION");
   EXPECT_CONTAINS(error_text(dynamic("*DYNAMIC", "2., 1.")),
                   "the initial increment 2 is larger than the time period 1");
