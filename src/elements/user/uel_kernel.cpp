@@ -1,5 +1,6 @@
 #include "elements/user/uel_kernel.hpp"
 
+#include "common/log.hpp"
 #include "elements/user/user_code.hpp"
 #include "model/model.hpp"
 
@@ -124,15 +125,17 @@ void call_plugin(const UserCode& code, const UserElementType& type,
   if (!tangent.empty()) std::copy(uc.amatrx.begin(), uc.amatrx.end(), tangent.begin());
 }
 
-/// LFLAGS of a call: LFLAGS(3) = `what` (1 residual and Jacobian, 2 stiffness only, 4 mass only).
-/// In a dynamic step gapfem applies the inertia and the time integrator itself (M from the
-/// LFLAGS(3) = 4 call): the residual and stiffness calls are those of a static step, LFLAGS(1) = 1,
-/// so that a UEL written for Abaqus/Standard, which adds its own inertia and HHT operator when
+/// LFLAGS of a call: LFLAGS(3) = `what` (1 residual and Jacobian, 2 stiffness only, 3 damping
+/// only, 4 mass only). In a dynamic step gapfem applies the inertia, the damping and the time
+/// integrator itself (M and C from the LFLAGS(3) = 4 and 3 calls, which say LFLAGS(1) = 11 or 12):
+/// the residual and stiffness calls are those of a static step, LFLAGS(1) = 1, so that a UEL
+/// written for Abaqus/Standard, which adds its own inertia, damping and HHT operator when
 /// LFLAGS(1) = 11 or 12 and LFLAGS(3) = 1, returns only its internal forces here
-/// (docs/theory/dynamics.md, "Mass of each element type").
-std::array<int, 7> uel_flags(const StepContext& ctx, int what) {
+/// (docs/theory/dynamics.md, "Mass of each element type"). `operators`: the stiffness asked for
+/// beside the damping (to compare them) is asked as the damping is, with LFLAGS(1) = 11 or 12.
+std::array<int, 7> uel_flags(const StepContext& ctx, int what, bool operators = false) {
   int procedure = procedure_code(ctx);
-  if (ctx.procedure == Procedure::Dynamic && what != 4) procedure = 1;
+  if (ctx.procedure == Procedure::Dynamic && what != 4 && what != 3 && !operators) procedure = 1;
   return {procedure, ctx.nlgeom ? 1 : 0, what, 0, 0, 0, 1};
 }
 
@@ -161,9 +164,12 @@ void call_uel(const UserCode& code, const UserElementType& type, const std::vect
           (in.temperature_start.empty() ? in.temperature[a] : in.temperature_start[a]);
     }
   std::vector<double> u(in.u.begin(), in.u.end());
-  // V and A: the trial rates in steps that have them (dynamic steps), zero otherwise
-  std::vector<double> v = in.v.empty() ? uc.zeros : std::vector<double>(in.v.begin(), in.v.end());
-  std::vector<double> a = in.a.empty() ? uc.zeros : std::vector<double>(in.a.begin(), in.a.end());
+  // V and A: the trial rates in dynamic steps (where the assembler gathers them), zero otherwise
+  const bool rates = ctx.procedure == Procedure::Dynamic;
+  std::vector<double> v =
+      in.v.empty() || !rates ? uc.zeros : std::vector<double>(in.v.begin(), in.v.end());
+  std::vector<double> a =
+      in.a.empty() || !rates ? uc.zeros : std::vector<double>(in.a.begin(), in.a.end());
   {
     const std::lock_guard lock(code.mutex());
     code.uel()(uc.rhs.data(), uc.amatrx.data(), uc.svars, uc.energy, &uc.ndofel, &nrhs, &uc.nsvars,
@@ -261,34 +267,74 @@ void symmetrize(std::span<double> A, std::size_t n) {
     }
 }
 
+const char* operator_name(int what) {
+  return what == 2 ? "stiffness" : what == 3 ? "damping" : "mass";
+}
+
 } // namespace
 
-void UelKernel::mass(const ElementInput& in, std::span<double> M) const {
-  // a call of its own (LFLAGS(3) = 4) on copies of the trial SVARS and ENERGY: asking for the
-  // mass never changes the element's history
+void UelKernel::operator_matrix(const ElementInput& in, int what, std::span<double> A) const {
+  // a call of its own on copies of the trial SVARS and ENERGY: asking for an operator never
+  // changes the element's history
   std::vector<double> state(in.state.begin(), in.state.end());
   ElementInput copy = in;
   copy.state = state;
   UserCall uc = prepare_call(copy, _dofs, _type);
   std::vector<double> rhs(uc.n, 0.0);
-  call_uel(*_code, _type, _props, _jprops, copy, uc, uel_flags(*in.ctx, 4), rhs, M);
-  const int k = first_non_finite(M);
-  if (k >= 0)
+  call_uel(*_code, _type, _props, _jprops, copy, uc, uel_flags(*in.ctx, what, true), rhs, A);
+  const int k = first_non_finite(A);
+  if (k >= 0) {
+    const int n = _dofs.n_dofs();
     throw AnalysisError(fmt::format(
-        "element {} ({}): the user subroutine UEL ({}) returned AMATRX({}) = {} when asked for "
-        "the mass matrix (LFLAGS(3) = 4); a user element must return finite numbers",
-        in.label, _type.name, _code->source(), k + 1, M[static_cast<std::size_t>(k)]));
+        "element {} ({}): the user subroutine UEL ({}) returned AMATRX({},{}) = {} when asked "
+        "for the {} matrix (LFLAGS(3) = {}) in step {}, increment {}; a user element must return "
+        "finite numbers",
+        in.label, _type.name, _code->source(), k / n + 1, k % n + 1, A[static_cast<std::size_t>(k)],
+        operator_name(what), what, in.ctx->step_number, in.ctx->increment));
+  }
+}
+
+double UelKernel::damping(const ElementInput& in, double known, std::span<double> C) const {
+  const double step = in.ctx->step_number;
+  if (known == step) return step; // found undamped at its first evaluation in this step
+  operator_matrix(in, 3, C);
+  const bool zero = std::all_of(C.begin(), C.end(), [](double c) { return c == 0.0; });
+  if (zero) return step;
+  if (known != -step) {
+    // first look in this step: a UEL that does not read LFLAGS(3) = 3 returns what it returns for
+    // the stiffness (bit for bit); it is undamped, not damped by C = K
+    std::vector<double> K(C.size(), 0.0);
+    operator_matrix(in, 2, K);
+    if (std::equal(C.begin(), C.end(), K.begin())) {
+      if (!_warned_stiffness_as_damping.exchange(true))
+        log::warning("user element type {} (element {}): the UEL ({}) returns the same matrix for "
+                     "LFLAGS(3) = 3 (the damping matrix) as for LFLAGS(3) = 2 (the stiffness): it "
+                     "does not read LFLAGS(3) = 3, so gapfem takes its elements as undamped; give "
+                     "it an LFLAGS(3) = 3 branch returning the damping matrix (zeros if none)",
+                     _type.name, in.label, _code->source());
+      std::fill(C.begin(), C.end(), 0.0);
+      return step;
+    }
+  }
+  if (!_type.unsymmetric) symmetrize(C, static_cast<std::size_t>(_dofs.n_dofs()));
+  return -step;
 }
 
 void UelKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
+  // what is known of the damping in this step, kept across the evaluations of an attempt
+  const std::size_t slot = damping_slot();
+  const double known = in.state[slot];
   const double pnewdt =
       call(in, out.residual, out.want_tangent ? out.tangent : std::span<double>{});
+  in.state[slot] = known;
   const auto n = static_cast<std::size_t>(_dofs.n_dofs());
   if (out.want_tangent && !_type.unsymmetric) symmetrize(out.tangent, n);
   if (out.want_mass) {
-    mass(in, out.mass);
+    operator_matrix(in, 4, out.mass);
     if (!_type.unsymmetric) symmetrize(out.mass, n);
   }
+  if (out.want_damping && _mass && in.ctx->procedure == Procedure::Dynamic)
+    in.state[slot] = damping(in, known, out.damping);
   out.unsymmetric = _type.unsymmetric;
   if (pnewdt < kNoRequest) out.dt_ratio = pnewdt;
   // the internal force, for output at the converged state (NFORC) without another call
