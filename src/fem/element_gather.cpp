@@ -15,13 +15,18 @@ void ElementGather::gather_rates(std::span<const LocalIndex> slots, const FieldV
     for (std::size_t k = 0; k < n; ++k) _v0[k] = f.v_start[slots[k]];
   if (!f.a_start.empty())
     for (std::size_t k = 0; k < n; ++k) _a0[k] = f.a_start[slots[k]];
+  const auto given = [&](std::size_t k) {
+    return !f.rate_given.empty() && f.rate_given[slots[k]] != 0;
+  };
   _v.resize(n);
-  for (std::size_t k = 0; k < n; ++k) _v[k] = c.velocity(_u[k] - _u0[k], _v0[k], _a0[k]);
+  for (std::size_t k = 0; k < n; ++k)
+    _v[k] = given(k) ? f.v_given[slots[k]] : c.velocity(_u[k] - _u0[k], _v0[k], _a0[k]);
   _in.v = _v;
   _in.v_start = _v0;
   if (!c.second_order) return;
   _a.resize(n);
-  for (std::size_t k = 0; k < n; ++k) _a[k] = c.acceleration(_u[k] - _u0[k], _v0[k], _a0[k]);
+  for (std::size_t k = 0; k < n; ++k)
+    _a[k] = given(k) ? f.a_given[slots[k]] : c.acceleration(_u[k] - _u0[k], _v0[k], _a0[k]);
   _in.a = _a;
   _in.a_start = _a0;
 }

@@ -5,6 +5,7 @@
 /// thread; no allocation after the first element of the largest type.
 #include "fem/discretization.hpp"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,11 @@ struct FieldView {
   /// Committed velocity and acceleration per slot: given only in steps whose time integrator
   /// needs them (its trial rates depend on them); empty otherwise (read as zero)
   std::span<const double> v_start, a_start;
+  /// Slots whose trial rates are prescribed (base motion: *BOUNDARY, TYPE=VELOCITY|ACCELERATION),
+  /// 1 per slot, or empty: there elements see v_given and a_given (per slot) instead of the
+  /// integrator's map of the displacement increment (docs/theory/dynamics.md, "Base motion")
+  std::span<const std::uint8_t> rate_given;
+  std::span<const double> v_given, a_given;
 };
 
 class ElementGather {

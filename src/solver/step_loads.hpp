@@ -63,6 +63,9 @@ class StepLoads {
   /// prescribed acceleration's velocity integrated from v0 at t0 (v0 may alias v).
   void prescribed_rates(double t0, double t1, std::span<const double> v0, std::span<double> v,
                         std::span<double> a) const;
+  /// 1 at the slots of those conditions in `mask` (per slot).
+  void mark_motion(std::span<std::uint8_t> mask) const;
+  bool has_motion() const { return !_motion.empty(); }
   /// Boundary conditions of this step in local systems (*TRANSFORM nodes): (node, DOF 1-6).
   std::span<const std::pair<NodeId, int>> local_bcs() const { return _local_keys; }
   /// Their values at `step_time` as the right-hand sides of their constraint rows.

@@ -116,6 +116,10 @@ void StepLoads::apply_prescribed_motion(double t0, double t1, std::span<const do
   }
 }
 
+void StepLoads::mark_motion(std::span<std::uint8_t> mask) const {
+  for (const Motion& mo : _motion) mask[static_cast<std::size_t>(mo.slot)] = 1;
+}
+
 void StepLoads::prescribed_rates(double t0, double t1, std::span<const double> v0,
                                  std::span<double> v, std::span<double> a) const {
   if (v.empty() || a.empty()) return;

@@ -66,6 +66,13 @@ void StepProblem::begin_increment(double t0, double dt, int increment,
   _trial_saved = false;
   _loads.apply_prescribed(_ctx.step_time, _s.u);
   _loads.apply_prescribed_motion(t0, _ctx.step_time, _s.u_start, _s.v_start, _s.u);
+  if (!_s.v.empty() && _loads.has_motion()) { // the elements see the prescribed trial rates
+    if (_rate_given.size() != _s.u.size()) {
+      _rate_given.assign(_s.u.size(), 0);
+      _loads.mark_motion(_rate_given);
+    }
+    _loads.prescribed_rates(t0, _ctx.step_time, _s.v_start, _s.v, _s.a);
+  }
   _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
   if (_loads.has_temperature_gradients()) {
@@ -104,6 +111,11 @@ FieldView StepProblem::fields() const {
   f.u_start = _s.u_start;
   f.v_start = _s.v_start;
   f.a_start = _s.a_start;
+  if (!_rate_given.empty() && !_s.v.empty()) {
+    f.rate_given = _rate_given;
+    f.v_given = _s.v;
+    f.a_given = _s.a;
+  }
   if (_loads.has_temperature_field()) {
     f.temperature = _s.T;
     f.temperature_start = _s.T_start;

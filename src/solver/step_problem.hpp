@@ -157,9 +157,11 @@ class StepProblem final : public NonlinearProblem {
                                  const std::vector<bool>& massive);
   double consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
                                   const std::vector<bool>& massive);
-  /// The forces C v of the damping operators (assembled over the equations) at the committed
-  /// velocities into R(t) and the damping forces' start (restart_dynamics).
-  void add_damping_forces(const CsrMatrix& damping);
+  /// The damping forces at the committed velocities (every element's, driven DOFs' prescribed
+  /// velocities included) into R(t) and the damping forces' start, and the driven DOFs' inertia
+  /// coupling (_driven_inertia) for the accelerations' solve (restart_dynamics). False when
+  /// nothing moves.
+  bool add_rate_forces();
   /// HHT's history term: history_weight() R(t) into f_int (after the assembly).
   void add_rate_history();
   /// R(t + dt) = f_int - f_ext - history term - inertia_weight() M a at a converged state.
@@ -184,6 +186,12 @@ class StepProblem final : public NonlinearProblem {
   bool _trial_saved = false;
   double _constraint_tol;
   bool _unsymmetric_loads = false;
+  /// 1 at the slots of base motion (StepLoads::mark_motion), empty without: their trial rates
+  /// are the prescribed ones (in _s.v, _s.a during an increment), which the elements see
+  std::vector<std::uint8_t> _rate_given;
+  /// M a_p per slot of the driven DOFs' accelerations at a dynamic restart (add_rate_forces;
+  /// empty when none): a consistent mass's coupling of free DOFs to the base motion
+  std::vector<double> _driven_inertia;
   std::shared_ptr<const std::vector<double>> _stab_mass;
   double _stab_c = 0.0;
   std::vector<double> _f_stab;

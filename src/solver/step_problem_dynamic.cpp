@@ -87,16 +87,11 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   _s.r_prev.clear(); // a fresh start: no earlier increment to lag behind
   const bool moving =
       std::any_of(_s.v_start.begin(), _s.v_start.end(), [](double v) { return v != 0.0; });
-  if (!accelerations && !project_velocities && !moving) return out;
-  const OperatorWeights keep = _weights;
-  // the damping operators C (dashpots, Rayleigh, point-mass ALPHA): R(t) has their forces C v,
-  // which an evaluation without rates leaves out
-  std::optional<CsrMatrix> damping;
-  if (moving) {
-    _weights = {0.0, 1.0, 0.0, 1.0};
-    evaluate(true);
-    damping.emplace(_K);
+  if (!accelerations && !project_velocities && !moving) {
+    _driven_inertia.clear();
+    return out;
   }
+  const OperatorWeights keep = _weights;
   // M alone (the weights of K and C zero) with the active exact constraint rows
   _weights = {0.0, 0.0, 1.0, 1.0};
   evaluate(true);
@@ -105,7 +100,7 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   const LocalIndex n = eqm.n_eq();
   out.kinetic_energy = kinetic_energy(_K, eqm, _s.v_start);
   if (!accelerations && !project_velocities) {
-    if (damping) add_damping_forces(*damping);
+    add_rate_forces();
     return out;
   }
   if (n == 0) return out; // every DOF prescribed: nothing moves freely
@@ -126,23 +121,45 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   for (LocalIndex i = 0; i < n; ++i)
     if (!massive[i]) _K.add(i, i, -token); // M again (energies)
   if (project_velocities) out.energy_lost = project_velocities_onto(*factor, C, massive);
-  if (damping) add_damping_forces(*damping); // with the velocities as they now are
+  add_rate_forces(); // with the velocities as they now are
   if (accelerations) out.amax = consistent_accelerations(*factor, C, massive);
   return out;
 }
 
-void StepProblem::add_damping_forces(const CsrMatrix& damping) {
-  const EquationMap& eqm = _loads.equations();
-  const LocalIndex n = eqm.n_eq();
-  std::vector<double> v(static_cast<std::size_t>(n)), Cv(v.size());
-  for (LocalIndex i = 0; i < n; ++i) v[i] = _s.v_start[eqm.eq_slot[i]];
-  damping.multiply(v, Cv);
-  if (_s.f_damp_start.size() != _s.u.size()) _s.f_damp_start.assign(_s.u.size(), 0.0);
-  for (LocalIndex i = 0; i < n; ++i) {
-    const LocalIndex s = eqm.eq_slot[i];
-    _s.r_start[s] += Cv[i];
-    _s.f_damp_start[s] = Cv[i]; // ALLVD's trapezoidal rule starts from them
-  }
+bool StepProblem::add_rate_forces() {
+  // one residual assembly whose rate maps are v = v_start and a = a_start, the accelerations
+  // kept at driven DOFs only: every element sees the committed velocities (at a driven DOF the
+  // prescribed one), so R(t) gets the damping forces of operators and of kernels damping in their
+  // residual (nonlinear dashpots, contact damping), and the free DOFs' couplings to driven ones,
+  // C v and a consistent mass's M a_p (_driven_inertia), which the accelerations' solve needs
+  const std::size_t n = _s.u.size();
+  std::vector<double> a(n, 0.0);
+  bool driven = false;
+  for (std::size_t s = 0; s < _rate_given.size() && s < _s.a_start.size(); ++s)
+    if (_rate_given[s] && _s.a_start[s] != 0.0) {
+      a[s] = _s.a_start[s];
+      driven = true;
+    }
+  const bool moving =
+      std::any_of(_s.v_start.begin(), _s.v_start.end(), [](double v) { return v != 0.0; });
+  _driven_inertia.clear();
+  if (!moving && !driven) return false;
+  std::vector<double> f(n), Cv(n, 0.0), Ma(n, 0.0);
+  const StepContext keep = _ctx;
+  _ctx.rates = RateCoefficients{};
+  _ctx.rates.first_order = _ctx.rates.second_order = true;
+  _ctx.rates.v_v = 1.0;
+  _ctx.rates.a_a = 1.0;
+  FieldView fv = fields();
+  fv.rate_given = {};
+  fv.a_start = a;
+  _asm.assemble(fv, _ctx, f, nullptr, nullptr, OperatorWeights{1.0, 1.0, driven ? 1.0 : 0.0, 1.0},
+                RateForces{Ma, Cv, {}});
+  _ctx = keep;
+  _s.f_damp_start = Cv; // ALLVD's trapezoidal rule starts from the operators' forces
+  for (std::size_t s = 0; s < n; ++s) _s.r_start[s] += f[s] - Ma[s] - _s.f_int[s];
+  if (driven) _driven_inertia = std::move(Ma);
+  return true;
 }
 
 double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
@@ -177,7 +194,14 @@ double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const Co
   const EquationMap& eqm = _loads.equations();
   const LocalIndex n = eqm.n_eq();
   std::vector<double> b(static_cast<std::size_t>(n)), a(b.size()), Ma(b.size());
-  for (LocalIndex i = 0; i < n; ++i) b[i] = massive[i] ? -_s.r_start[eqm.eq_slot[i]] : 0.0;
+  // a consistent mass coupling a free DOF to a driven one: M_ff a_f = -R_f - M_fp a_p
+  const auto coupling = [&](LocalIndex s) {
+    return _driven_inertia.empty() ? 0.0 : _driven_inertia[s];
+  };
+  for (LocalIndex i = 0; i < n; ++i) {
+    const LocalIndex s = eqm.eq_slot[i];
+    b[i] = massive[i] ? -_s.r_start[s] - coupling(s) : 0.0;
+  }
   std::vector<double> g(static_cast<std::size_t>(C.n_rows()), 0.0), l(g.size());
   factor.solve(b, g, a, l);
   for (LocalIndex i = 0; i < n; ++i)
@@ -187,7 +211,7 @@ double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const Co
   for (LocalIndex i = 0; i < n; ++i) {
     const LocalIndex s = eqm.eq_slot[i];
     _s.a_start[s] = a[i];
-    if (massive[i]) _s.r_start[s] = -Ma[i];
+    if (massive[i]) _s.r_start[s] = -Ma[i] - coupling(s);
     amax = std::max(amax, std::abs(a[i]));
   }
   return amax;
