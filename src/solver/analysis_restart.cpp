@@ -223,9 +223,11 @@ void Analysis::Impl::restore_step(StepRun& r) {
   r.converged_f_ext = st.f_ext;
 }
 
+// A restart point is one on every process of an mpirun job, though rank 0 alone writes the file:
+// the factor is dropped there on every rank (write_restart), as the ranks factor together.
 bool Analysis::Impl::restart_due(const StepRun& r, double t_prev) const {
   const RestartWrite& w = r.step->restart;
-  if (!w.on() || !restart_out.active()) return false;
+  if (!w.on()) return false;
   if (r.ctrl->finished()) return true;
   if (w.frequency > 0) return r.ctrl->increment() % w.frequency == 0;
   // NUMBER INTERVAL=n: the first increment at or past each of the n marks of the step period
@@ -235,6 +237,16 @@ bool Analysis::Impl::restart_due(const StepRun& r, double t_prev) const {
 }
 
 void Analysis::Impl::write_restart(StepRun& r) {
+  // With a deterministic reuse policy the run after a restart point starts with a fresh factor,
+  // as a restarted run does, so the two repeat each other to the last digit. With Auto the reuse
+  // decisions depend on measured times anyway: the factor is kept (a record costs no extra
+  // factorisation), and a restarted run may take another, equally converged Newton path. Every
+  // rank of an mpirun job drops it, also those that write no file: the ranks build MUMPS's factor
+  // and the iterative method's preconditioner together, and rank 0 alone dropping its part left
+  // it waiting for the others in the next factorisation (tests/verification/restart/
+  // dynamic_restart_test.cpp).
+  if (options.factor_reuse != FactorReuse::Auto) solver->forget_factor();
+  if (!restart_out.active()) return;
   ScopedTimer timer(&stats, TimeCategory::Output);
   ArchiveWriter a;
   a.pod(kPayloadVersion);
@@ -303,11 +315,6 @@ void Analysis::Impl::write_restart(StepRun& r) {
   info.total_time = st.total_time + r.ctrl->step_time();
   info.step_end = r.ctrl->finished();
   restart_out.write(info, a.data(), r.step->restart.overlay);
-  // With a deterministic reuse policy the run after a restart point starts with a fresh factor,
-  // as a restarted run does, so the two repeat each other to the last digit. With Auto the reuse
-  // decisions depend on measured times anyway: the factor is kept (a record costs no extra
-  // factorisation), and a restarted run may take another, equally converged Newton path.
-  if (options.factor_reuse != FactorReuse::Auto) solver->forget_factor();
   log::debug("  restart data written: step {} increment {} ({})", info.step, info.increment,
              restart_out.path().string());
 }
