@@ -1,6 +1,6 @@
 // A dashpot on a moving support (*BOUNDARY, TYPE=VELOCITY; docs/theory/dynamics.md, "Base
 // motion"): the elements see the support's prescribed velocity, not the integrator's map of its
-// displacement increment.
+// displacement increment; and a consistent mass coupled to an accelerated base (last test).
 //
 // Node 1 the support, driven along x with v_g(t) = V0 + V sin(W t) (a PERIODIC amplitude); node 2
 // a point mass m joined to it by a DASHPOT2 c on DOF 1. The mass obeys
@@ -94,6 +94,71 @@ TEST(VerificationBaseMotionDamper, TrapezoidalRuleSeesThePrescribedVelocity) {
 
 TEST(VerificationBaseMotionDamper, HhtSeesThePrescribedVelocity) {
   expect_hht_recursion(-0.05);
+}
+
+// A consistent mass couples free DOFs to driven ones. One C3D8 unit cube, density rho, nearly no
+// stiffness (E = 1e-12), its four nodes at z = 0 driven along x with a constant acceleration A
+// from t = 0 (TYPE=ACCELERATION, a constant amplitude), the four at z = 1 free. Its consistent
+// mass M_ab = rho V (1/3)^(3-d) (1/6)^d, d the number of coordinates in which nodes a and b
+// differ (per direction, int N_a N_b = h/3 alike, h/6 apart). A top node's row sums to rho V / 12
+// over the top nodes and rho V / 24 over the bottom ones, so with no force M_ff a_f + M_fp A = 0
+// gives every top node a_f = -A / 2 at every time, t = 0 included (INITIAL=YES), and v_f = -A t / 2
+// (HHT integrates a constant acceleration exactly): the velocities start right only if the
+// initial accelerations have the coupling M_fp a_p (without it, a(0) = 0 and v_f lags by
+// (1 - gamma) dt A / 2 for ever).
+TEST(VerificationBaseMotionDamper, ConsistentMassCouplingToAnAcceleratedBase) {
+  constexpr double kA = 3.0;
+  const JobResult r = test::run_deck(fmt::format(R"(*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 1., 1., 0.
+4, 0., 1., 0.
+5, 0., 0., 1.
+6, 1., 0., 1.
+7, 1., 1., 1.
+8, 0., 1., 1.
+*NSET, NSET=BASE
+1, 2, 3, 4
+*NSET, NSET=TOP
+5, 6, 7, 8
+*ELEMENT, TYPE=C3D8, ELSET=CUBE
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*MATERIAL, NAME=SOFT
+*ELASTIC
+1e-12, 0.
+*DENSITY
+2.
+*SOLID SECTION, ELSET=CUBE, MATERIAL=SOFT
+*BOUNDARY
+BASE, 2, 3
+TOP, 2, 3
+*AMPLITUDE, NAME=CONST
+0., 1., 10., 1.
+*STEP, INC=1000
+*DYNAMIC, DIRECT, APPLICATION=TRANSIENT FIDELITY, INITIAL=YES
+0.01, 0.2
+*BOUNDARY, TYPE=ACCELERATION, AMPLITUDE=CONST
+BASE, 1, 1, {}
+*NODE PRINT, FREQUENCY=1
+V, A
+*END STEP
+)",
+                                                 kA));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  int checked = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    for (Label n = 5; n <= 8; ++n) {
+      const LocalIndex i = r.model->mesh.find_node(n);
+      EXPECT_NEAR(f.nodes.A.at(i)[0], -0.5 * kA, 1e-9 * kA) << "node " << n << " t " << f.step_time;
+      // HHT integrates a constant acceleration exactly from a consistent a(0)
+      EXPECT_NEAR(f.nodes.V.at(i)[0], -0.5 * kA * f.step_time, 1e-9 * kA)
+          << "node " << n << " t " << f.step_time;
+    }
+    EXPECT_NEAR(f.nodes.A.at(r.model->mesh.find_node(1))[0], kA, 1e-12);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 20);
 }
 
 } // namespace
