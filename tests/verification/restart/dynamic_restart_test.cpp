@@ -128,7 +128,10 @@ BLOCK, 3, -0.2
 )";
   const std::string output = kOutput;
   // Residual tolerance 1e-10 and correction tolerance 1e-8 instead of Abaqus's 5e-3 and 1e-2
-  // (*CONTROLS, PARAMETERS=FIELD, in effect in both steps): with the default ones the first
+  // (*CONTROLS, PARAMETERS=FIELD, in effect in both steps: Abaqus Analysis User's Guide,
+  // "Commonly used control parameters", the values "remain in effect for the remainder of the
+  // analysis", https://abaqus.uclouvain.be/English/SIMACAEANLRefMap/simaanl-c-convergecontrol.htm;
+  // the restart deck's step 2 has them from the old job's step 1): with the default ones the first
   // increment of step 2 (a sudden push, sliding gaps at the stick/slip threshold) turns a
   // round-off difference in the start state into a converged state 3e-8 of max |U| away (another
   // stick/slip choice in an iteration, another equally converged point), as MUMPS on two ranks,
