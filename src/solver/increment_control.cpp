@@ -67,6 +67,7 @@ void IncrementController::accept(int iterations, double suggested_ratio) {
   else
     _dt = base;
   if (suggested_ratio > 0) _dt = std::min(_dt, base * suggested_ratio);
+  if (_rules.ceiling > 0.0 && _dt > base) _dt = std::min(_dt, std::max(base, _rules.ceiling));
   _dt = std::clamp(_dt, _min, _max);
 }
 

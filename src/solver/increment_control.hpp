@@ -21,6 +21,9 @@ struct IncrementRules {
   int hard_iterations = 10;     ///< I_L
   int max_attempts = 5;         ///< I_A
   double deltmx_cutback = 0.85; ///< D_A (transient heat transfer, thermal_step.hpp)
+  /// > 0: growth never takes the increment above this size (a dynamic step without HAFTOL grows
+  /// back after a cut-back only up to its initial increment)
+  double ceiling = 0.0;
 };
 /// The rules of a step's *CONTROLS, PARAMETERS=TIME INCREMENTATION.
 IncrementRules increment_rules(const SolutionControls& c);

@@ -26,10 +26,11 @@ class DynamicProcedure final : public StepProcedure {
     return std::make_unique<HilberHughesTaylor>(d.alpha, d.beta, d.gamma);
   }
 
-  /// Without HAFTOL (and without DIRECT) nothing measures the accuracy: the increments keep the
-  /// initial size (Newton's cut-backs allowed) rather than grow unchecked.
+  /// Without HAFTOL (and without DIRECT) nothing measures the accuracy: the increments never
+  /// exceed the initial size (Newton's cut-backs allowed, and growth back to it after them as in
+  /// a static step) rather than grow unchecked.
   void adjust_rules(const Step& step, IncrementRules& rules) const override {
-    if (!step.inc.direct && !step.dynamic.haftol) rules.growth = 1.0;
+    if (!step.inc.direct && !step.dynamic.haftol) rules.ceiling = step.inc.initial;
   }
   IncrementAccuracy check_accuracy(StepRun& r, const IncrementInfo& info, double dt) override;
 
@@ -80,8 +81,8 @@ class DynamicProcedure final : public StepProcedure {
       log::progress("  automatic increments: half-increment residual tolerance HAFTOL {:.4g}",
                     *d.haftol);
     else if (!step.inc.direct)
-      log::progress("  increments kept at {:.4g} (no HAFTOL to measure accuracy; give HAFTOL for "
-                    "automatic increments or DIRECT to say fixed)",
+      log::progress("  increments at most {:.4g}, smaller only to converge (no HAFTOL to measure "
+                    "accuracy; give HAFTOL for automatic increments or DIRECT to say fixed)",
                     step.inc.initial > 0 ? step.inc.initial : r.loads->period());
   }
 

@@ -248,6 +248,27 @@ TEST(IncrementControl, LastIncrementEndsExactlyAtThePeriod) {
   EXPECT_GE(n, 4);
 }
 
+// A dynamic step without HAFTOL (docs/theory/dynamics.md §4): the increments never exceed the
+// initial size, but grow back to it after a cut-back by the static rules.
+TEST(IncrementControl, CeilingLetsACutBackGrowBackToTheInitialSizeOnly) {
+  Incrementation inc;
+  inc.initial = 0.01;
+  inc.period = 1.0;
+  IncrementRules rules;
+  rules.ceiling = 0.01;
+  IncrementController c(inc, 1000, rules);
+  c.accept(2);
+  c.accept(2);
+  EXPECT_DOUBLE_EQ(c.next(), 0.01) << "never above the initial size";
+  EXPECT_TRUE(c.reject());
+  EXPECT_DOUBLE_EQ(c.next(), 0.0025);
+  c.accept(2);
+  c.accept(2); // two easy increments: 1.5 x
+  EXPECT_DOUBLE_EQ(c.next(), 0.00375);
+  for (int k = 0; k < 6; ++k) c.accept(2);
+  EXPECT_DOUBLE_EQ(c.next(), 0.01) << "back at the initial size, not beyond";
+}
+
 TEST(IncrementControl, DirectAllowsNoCutback) {
   Incrementation inc;
   inc.initial = 0.25;
