@@ -1,4 +1,4 @@
-// *DYNAMIC with a hard gap stop (docs/theory/dynamics.md §6, impacts): the bar of the SDOF tests
+// *DYNAMIC with a hard gap stop (docs/theory/dynamics.md §5, impacts): the bar of the SDOF tests
 // (k = 500, m = 0.5 at node 2) with a GAPUNI from node 2 to a fixed node, clearance 0.005 along
 // +x. The model has contact, so Abaqus's default APPLICATION is MODERATE DISSIPATION.
 // - A constant force F = 5 (static F/k = 0.01) drives the mass onto the stop at 0.005
