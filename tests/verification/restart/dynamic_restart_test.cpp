@@ -181,11 +181,19 @@ int run(const fs::path& dir, const Backend& b, const std::string& extra,
         const std::string& deck = "job.inp") {
   const fs::path out = dir / "terminal.log";
   const std::string launcher = b.ranks > 0 ? fmt::format("mpirun -np {} ", b.ranks) : "";
+  // in the sanitized build mpirun's ranks do not count leaks (as tests/cli/mpi_test.cpp): Open
+  // MPI keeps a few bytes in components it unloads, which LeakSanitizer cannot name to suppress
+  std::string asan;
+  if (b.ranks > 0) {
+    asan = "detect_leaks=0";
+    if (const char* e = std::getenv("ASAN_OPTIONS")) asan = std::string(e) + ":detect_leaks=0";
+    asan = "ASAN_OPTIONS='" + asan + "' ";
+  }
   const std::string cmd = fmt::format(
       "cd '{}' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-      "OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1 {} timeout 120 {}'{}' "
+      "OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1 {}{} timeout 120 {}'{}' "
       "{} {} {} > '{}' 2>&1",
-      dir.string(), env, launcher, GAPFEM_EXE, b.args(), extra, deck, out.string());
+      dir.string(), asan, env, launcher, GAPFEM_EXE, b.args(), extra, deck, out.string());
   const int rc = std::system(cmd.c_str());
   if (log) *log = slurp(out);
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
