@@ -110,6 +110,21 @@ def timed(cmd, cwd, budget=None):
     return rc, wall, (int(rss.group(1)) / 1024 if rss else float("nan")), out + err
 
 
+def step_period(text):
+    """The time period of the deck's first *STATIC or *DYNAMIC step (its data line's second
+    number; 1 when not given)."""
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        head = line.strip().upper()
+        if (head.startswith("*STATIC") or head.startswith("*DYNAMIC")) and i + 1 < len(lines):
+            fields = [x.strip() for x in lines[i + 1].split(",")]
+            try:
+                return float(fields[1]) if len(fields) > 1 and fields[1] else 1.0
+            except ValueError:
+                return 1.0
+    return 1.0
+
+
 def ccx_progress(sta):
     """(converged increments, step time reached) from a ccx .sta file."""
     done, t = 0, 0.0
@@ -340,7 +355,8 @@ def main():
                 row["hist"] = history_agreement(js, ccx_history(os.path.join(cd, "job.dat"), "MON"))
             if env_rc is None:
                 done, t = ccx_progress(os.path.join(cd, "job.sta"))
-                row["ccx_cut"] = f"stopped after {cwall:.0f} s: {done} increments, step time {t:g} of 1"
+                row["ccx_cut"] = (f"stopped after {cwall:.0f} s: {done} increments, step time "
+                                  f"{t:g} of {step_period(text):g}")
                 print(f"   ccx:    {row['ccx_cut']}", file=sys.stderr, flush=True)
                 rows.append(row)
                 continue
