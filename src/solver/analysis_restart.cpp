@@ -11,7 +11,9 @@
 namespace gapfem {
 namespace {
 
-constexpr std::uint32_t kPayloadVersion = 5; // 3: the procedure's state last; 4: rates; 5: energies
+constexpr std::uint32_t kPayloadVersion =
+    6; // 3: the procedure's state last; 4: rates; 5: energies;
+// 6: a UEL element keeps one more history value (the step in which its damping was found zero)
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
