@@ -39,6 +39,20 @@ struct SolidSection {
   SourceLocation loc;
 };
 
+/// One data line of *BEAM ADDED INERTIA (Keywords Reference): a mass per unit length at (x1, x2)
+/// of the section's local axes with its rotary inertia per length about that centre of mass, given
+/// in axes turned by `angle` (degrees) from local 1 toward local 2; I12 is the inertia tensor's
+/// entry, -integral x1 x2 dm (Theory Guide, "Mass and inertia for Timoshenko beams").
+struct BeamAddedInertia {
+  double mass = 0.0;
+  double x1 = 0.0, x2 = 0.0;
+  double angle = 0.0;
+  double I11 = 0.0, I22 = 0.0, I12 = 0.0;
+  double alpha = 0.0;     ///< ALPHA of its keyword: C = alpha M_added (direct integration)
+  double composite = 0.0; ///< COMPOSITE: for mode-based procedures only (not used by gapfem)
+  SourceLocation loc;
+};
+
 /// *BEAM SECTION and *BEAM GENERAL SECTION (B21, B22, B31, B32, PIPE31, PIPE32).
 struct BeamSection {
   /// library shapes (docs/theory/structural.md §3.1); General: SECTION=GENERAL of *BEAM GENERAL
@@ -63,7 +77,9 @@ struct BeamSection {
   /// reported (replacing the section's own points)
   std::vector<std::array<double, 2>> output_points;
   double slenderness = -1.0; ///< slenderness compensation factor given there (-1: default)
-  bool invalid = false;      ///< its keyword had an error (reported): nothing more is checked
+  /// *BEAM ADDED INERTIA after the section: each data line, summed into the element's mass
+  std::vector<BeamAddedInertia> added_inertia;
+  bool invalid = false; ///< its keyword had an error (reported): nothing more is checked
   SourceLocation loc;
 };
 

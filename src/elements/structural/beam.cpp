@@ -224,12 +224,16 @@ class BeamKernel final : public ElementKernel {
     }
     write_rotations(in, nl);
     if (out.want_mass) add_mass(in, out.mass);
+    if (out.want_damping && has_damping())
+      add_beam_mass<NN, Planar>(in.X, _b.n1a, _b.added_damping, out.damping);
   }
 
   /// With *DENSITY: the section's mass and exact rotary inertia about the node, lumped at the
-  /// nodes of two-node elements, consistent for three (beam_mass.hpp). A pipe's is its wall's.
-  bool has_mass() const override { return !_b.material.density.empty(); }
-  bool has_damping() const override { return false; }
+  /// nodes of two-node elements, consistent for three (beam_mass.hpp); a pipe's is its wall's.
+  /// *BEAM ADDED INERTIA adds its own (contents, insulation, equipment), and with ALPHA the
+  /// damping C = alpha M of that added inertia.
+  bool has_mass() const override { return !_b.material.density.empty() || !_b.added.empty(); }
+  bool has_damping() const override { return !_b.added_damping.empty(); }
 
   bool supports_load(DistLoadKind kind, int face) const override {
     return beam_supports_load(kind, face, Planar, _b.pipe);
@@ -403,8 +407,10 @@ class BeamKernel final : public ElementKernel {
   }
 
   void add_mass(const ElementInput& in, std::span<double> M) const {
-    const double rho = table_value(_b.material.density, average(in.temperature));
-    add_beam_mass<NN, Planar>(in.X, _b.n1a, _b.section, rho, M);
+    SectionInertia si = _b.added;
+    if (!_b.material.density.empty())
+      si += section_inertia(_b.section, table_value(_b.material.density, average(in.temperature)));
+    add_beam_mass<NN, Planar>(in.X, _b.n1a, si, M);
   }
 
   /// PI/PE, closed-end condition: the axial force F of pipe_axial_force acting through the

@@ -1,6 +1,8 @@
 #include "elements/structural/beam_element.hpp"
 
+#include "elements/rayleigh_damping.hpp"
 #include "elements/structural/beam_loads.hpp"
+#include "elements/structural/beam_mass.hpp"
 #include "elements/structural/structural_common.hpp"
 #include "elements/structural/structural_factory.hpp"
 #include "model/model.hpp"
@@ -49,6 +51,29 @@ void check_general_density(const KernelContext& ctx, const BeamSection& sec) {
                                      sec.elset));
 }
 
+/// *BEAM ADDED INERTIA of the section: its data lines summed (beam_mass.hpp), and their damping
+/// sum alpha_k M_k. A material *DAMPING ALPHA (RayleighDampingKernel, around this kernel) damps
+/// the element's whole mass block, the added inertia with it, whereas Abaqus damps the added
+/// inertia with the ALPHA of its own keyword only: the kernel's damping block takes
+/// alpha_R M_added back out (docs/theory/dynamics.md, "Added inertia").
+void add_inertia(const KernelContext& ctx, const BeamSection& sec, bool planar, BeamData& d) {
+  for (const BeamAddedInertia& a : sec.added_inertia) {
+    if (planar && a.angle != 0.0)
+      throw InputError(a.loc, fmt::format("ELSET={}", sec.elset),
+                       fmt::format("{} is a planar beam: the orientation angle of the rotary "
+                                   "inertia (field 4, {}) is for beams in space only; leave it "
+                                   "blank",
+                                   element_info(ctx.type).name, a.angle));
+    const SectionInertia si = added_section_inertia(a);
+    d.added += si;
+    d.added_damping += si.scaled(a.alpha);
+  }
+  const Material* mat = property_material(ctx);
+  if (!d.added.empty() && mat != nullptr && mat->damping && mat->damping->viscous() &&
+      mat->damping->alpha != 0.0)
+    d.added_damping += d.added.scaled(-mat->damping->alpha);
+}
+
 } // namespace
 
 BeamData beam_data(const KernelContext& ctx) {
@@ -78,12 +103,15 @@ BeamData beam_data(const KernelContext& ctx) {
   } else {
     d.n1a = sec.n1;
   }
+  add_inertia(ctx, sec, planar, d);
+  // GRAV acts on the added mass too: an added mass alone is enough for it
+  const bool weighs = d.added.m > 0.0;
   if (sec.general) {
     d.material = general_material(sec);
-    check_general_density(ctx, sec);
+    if (!weighs) check_general_density(ctx, sec);
   } else {
     d.material = section_material(model, sec.material, sec.loc, entity);
-    check_density_for_gravity(ctx, d.material);
+    if (!weighs) check_density_for_gravity(ctx, d.material);
   }
   // the path: the built-in elastic law and GENERAL (resultant) sections keep the pre-integrated
   // section; any other law is called at the section's fibres (beam_fibres.hpp)
@@ -144,8 +172,12 @@ Vec3 dead_intensity(const BeamLoadInput& li, int p) {
     if (load.face == 0) return scale(li.magnitude, load.direction);
     return scale(li.magnitude, li.g.pts[p].L0[load.face]);
   }
-  const double w = line_load_intensity(li.b.material, li.b.section.A, load, li.magnitude,
-                                       average(li.in.temperature), li.in.label);
+  // GRAV weighs the added mass (*BEAM ADDED INERTIA) too, on the beam's axis
+  const bool added_weight = load.kind == DistLoadKind::Gravity && li.b.added.m > 0.0;
+  double w = added_weight ? li.b.added.m * li.magnitude : 0.0;
+  if (!added_weight || !li.b.material.density.empty())
+    w += line_load_intensity(li.b.material, li.b.section.A, load, li.magnitude,
+                             average(li.in.temperature), li.in.label);
   return scale(w, load.direction);
 }
 

@@ -19,6 +19,27 @@
 
 namespace gapfem::beam {
 
+/// Inertia per unit length about the node (the section's origin) in the section axes (t, n1, n2):
+/// the mass m, its first moments S1 = integral x1 dm, S2 = integral x2 dm and its second moments
+/// J11 = integral x2^2 dm, J22 = integral x1^2 dm, J12 = integral x1 x2 dm (a section of density
+/// rho: rho A, rho Q1, rho Q2, rho I11, rho I22, rho I12). Sums of them are sums of masses.
+struct SectionInertia {
+  double m = 0.0, S1 = 0.0, S2 = 0.0, J11 = 0.0, J22 = 0.0, J12 = 0.0;
+  SectionInertia& operator+=(const SectionInertia& o) {
+    m += o.m;
+    S1 += o.S1;
+    S2 += o.S2;
+    J11 += o.J11;
+    J22 += o.J22;
+    J12 += o.J12;
+    return *this;
+  }
+  SectionInertia scaled(double c) const {
+    return {c * m, c * S1, c * S2, c * J11, c * J22, c * J12};
+  }
+  bool empty() const { return m == 0.0 && J11 == 0.0 && J22 == 0.0 && J12 == 0.0; }
+};
+
 /// Everything a beam block's kernel evaluates with.
 struct BeamData {
   ElementType type = ElementType::B31;
@@ -31,6 +52,9 @@ struct BeamData {
   /// pre-integrated elastic section (the built-in elastic law, and every GENERAL section)
   std::shared_ptr<const SolidLaw> law;
   BeamFibres fibres; ///< the section integration points (with `law` only)
+  /// *BEAM ADDED INERTIA: its data lines summed (beam_mass.hpp, added_section_inertia), and the
+  /// sum of each line times its keyword's ALPHA (the damping C = sum alpha_k M_k)
+  SectionInertia added, added_damping;
 };
 
 /// The block's data from its section; InputError for wrong combinations.

@@ -11,10 +11,12 @@
 /// w the angular velocity). The 6 x 6 block per length is [[rho A 1, -[S x]], [[S x], J]].
 /// Two-node elements lump it at the nodes (integral N_a ds each), three-node elements keep it
 /// consistent (integral N_a N_b ds, three Gauss points: exact for straight elements). A pipe's
-/// mass is its wall's: Abaqus has no contents option on *BEAM SECTION (*BEAM ADDED INERTIA adds
-/// mass per length, not supported by gapfem).
+/// mass is its wall's: Abaqus has no contents option on *BEAM SECTION; contents, insulation and
+/// attached equipment come with *BEAM ADDED INERTIA (added_section_inertia), whose mass per length,
+/// first and second moments add to the section's (Theory Guide: "the combined beam mass").
 #include "elements/structural/beam_element.hpp"
 #include "elements/structural/rotation.hpp"
+#include "model/section.hpp"
 
 #include <array>
 #include <cmath>
@@ -22,18 +24,44 @@
 
 namespace gapfem::beam {
 
-/// The mass per unit length of a section about its origin, in global axes for the section triad
-/// L0 = (t, n1, n2): a 6 x 6 row-major block on (u1 u2 u3 ur1 ur2 ur3).
-inline std::array<double, 36> section_mass_per_length(const BeamSectionProperties& s, double rho,
+/// The section's own inertia per length: density rho over its area.
+inline SectionInertia section_inertia(const BeamSectionProperties& s, double rho) {
+  return {rho * s.A, rho * s.Q1, rho * s.Q2, rho * s.I11, rho * s.I22, rho * s.I12};
+}
+
+/// One data line of *BEAM ADDED INERTIA as an inertia about the node: the mass m at d = (x1, x2)
+/// with its rotary inertia about that centre of mass given in axes turned by the angle a from
+/// local 1 toward local 2, as the tensor [[I11, I12], [I12, I22]] (I12 = -integral xi1 xi2 dm,
+/// the Theory Guide's sign). Turned into the section axes, T = R [[I11, I12], [I12, I22]] R^T
+/// with R's columns (cos a, sin a) and (-sin a, cos a); moved to the node by the parallel-axis
+/// theorem: J11 = T11 + m x2^2, J22 = T22 + m x1^2, J12 = -T12 + m x1 x2 (J12 the product
+/// integral x1 x2 dm, the opposite sign of the tensor's entry). The inertia about the beam's axis
+/// is then J11 + J22 = I11 + I22 + m |d|^2 (the Theory Guide's I33 = I11 + I22).
+inline SectionInertia added_section_inertia(const BeamAddedInertia& a) {
+  const double pi = std::acos(-1.0);
+  const double c = std::cos(a.angle * pi / 180.0), s = std::sin(a.angle * pi / 180.0);
+  const double T11 = c * c * a.I11 - 2.0 * c * s * a.I12 + s * s * a.I22;
+  const double T22 = s * s * a.I11 + 2.0 * c * s * a.I12 + c * c * a.I22;
+  const double T12 = c * s * (a.I11 - a.I22) + (c * c - s * s) * a.I12;
+  return {a.mass,
+          a.mass * a.x1,
+          a.mass * a.x2,
+          T11 + a.mass * a.x2 * a.x2,
+          T22 + a.mass * a.x1 * a.x1,
+          -T12 + a.mass * a.x1 * a.x2};
+}
+
+/// The mass per unit length of an inertia about the section's origin, in global axes for the
+/// section triad L0 = (t, n1, n2): a 6 x 6 row-major block on (u1 u2 u3 ur1 ur2 ur3).
+inline std::array<double, 36> section_mass_per_length(const SectionInertia& si,
                                                       const std::array<Vec3, 3>& L0) {
   std::array<double, 36> m{};
-  const double Jl[3][3] = {{rho * (s.I11 + s.I22), 0.0, 0.0},
-                           {0.0, rho * s.I11, -rho * s.I12},
-                           {0.0, -rho * s.I12, rho * s.I22}};
+  const double Jl[3][3] = {
+      {si.J11 + si.J22, 0.0, 0.0}, {0.0, si.J11, -si.J12}, {0.0, -si.J12, si.J22}};
   Vec3 S{};
-  for (int i = 0; i < 3; ++i) S[i] = rho * (s.Q1 * L0[1][i] + s.Q2 * L0[2][i]);
+  for (int i = 0; i < 3; ++i) S[i] = si.S1 * L0[1][i] + si.S2 * L0[2][i];
   for (int i = 0; i < 3; ++i) {
-    m[6 * i + i] = rho * s.A;
+    m[6 * i + i] = si.m;
     for (int j = 0; j < 3; ++j) {
       double J = 0.0;
       for (int k = 0; k < 3; ++k)
@@ -52,13 +80,19 @@ inline std::array<double, 36> section_mass_per_length(const BeamSectionPropertie
   return m;
 }
 
+/// The section of density rho alone (as before *BEAM ADDED INERTIA).
+inline std::array<double, 36> section_mass_per_length(const BeamSectionProperties& s, double rho,
+                                                      const std::array<Vec3, 3>& L0) {
+  return section_mass_per_length(section_inertia(s, rho), L0);
+}
+
 /// Adds the element mass to M (kN x kN row-major, kN = NN x dofs per node; planar beams: DOFs
 /// u1 u2 ur3 of the three-dimensional block). Reference geometry: the mass does not change with
 /// the deformation (the rotary inertia is not turned with the section under NLGEOM, as for the
 /// point inertias: docs/conventions.md).
 template <int NN, bool Planar>
-void add_beam_mass(std::span<const Vec3> X, const Vec3& n1a, const BeamSectionProperties& s,
-                   double rho, std::span<double> M) {
+void add_beam_mass(std::span<const Vec3> X, const Vec3& n1a, const SectionInertia& si,
+                   std::span<double> M) {
   constexpr int kDpn = Planar ? 3 : 6;
   constexpr int kN = NN * kDpn;
   constexpr std::array<int, 3> kPlane{0, 1, 5}; // u1, u2, ur3 in the 6-DOF block
@@ -76,7 +110,7 @@ void add_beam_mass(std::span<const Vec3> X, const Vec3& n1a, const BeamSectionPr
     const double n2n = std::hypot(n2[0], n2[1], n2[2]);
     for (double& c : n2) c /= n2n;
     const std::array<Vec3, 3> L0{t, rotation::cross3(n2, t), n2};
-    const std::array<double, 36> m = section_mass_per_length(s, rho, L0);
+    const std::array<double, 36> m = section_mass_per_length(si, L0);
     const double w = ws[q] * jac;
     for (int a = 0; a < NN; ++a)
       for (int b = 0; b < NN; ++b) {

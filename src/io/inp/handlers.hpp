@@ -73,6 +73,7 @@ void handle_beam_section(BuildState& s, const Keyword& kw);
 void handle_shell_section(BuildState& s, const Keyword& kw);
 void handle_shell_general_section(BuildState& s, const Keyword& kw);
 void handle_section_points(BuildState& s, const Keyword& kw);
+void handle_beam_added_inertia(BuildState& s, const Keyword& kw);
 void handle_nodal_thickness(BuildState& s, const Keyword& kw);
 void handle_beam_transverse_shear(BuildState& s, const Keyword& kw);
 void handle_beam_general_section(BuildState& s, const Keyword& kw);

@@ -410,7 +410,8 @@ std::array<double, 6> read_inertia_line(BuildState& s, const Keyword& kw, const 
 /// ALPHA= (mass-proportional damping, C = alpha M, in direct-integration dynamics) and
 /// COMPOSITE= (a fraction of critical damping for mode-based procedures; Abaqus ignores it in
 /// direct integration, and gapfem has no mode-based procedure): both at least 0.
-void read_point_damping(BuildState& s, const Keyword& kw, MassSection& sec) {
+void read_point_damping(BuildState& s, const Keyword& kw, const std::string& elset, double& alpha,
+                        double& composite) {
   for (const char* name : {"ALPHA", "COMPOSITE"}) {
     const std::optional<double> v = real_param(kw, name);
     if (v && !(*v >= 0.0))
@@ -419,13 +420,41 @@ void read_point_damping(BuildState& s, const Keyword& kw, MassSection& sec) {
                                    name[0] == 'A' ? "mass-proportional damping factor (C = "
                                                     "ALPHA M)"
                                                   : "fraction of critical damping"));
-    (name[0] == 'A' ? sec.alpha : sec.composite) = v.value_or(0.0);
+    (name[0] == 'A' ? alpha : composite) = v.value_or(0.0);
   }
-  if (sec.composite > 0.0)
+  if (composite > 0.0)
     s.warn(kw.loc, fmt::format("{}, ELSET={}: COMPOSITE is used by mode-based dynamics only, "
                                "which gapfem does not have; it has no effect here (Abaqus "
                                "ignores it in direct-integration dynamics too)",
-                               kw.name, sec.elset));
+                               kw.name, elset));
+}
+
+/// One data line of *BEAM ADDED INERTIA (Keywords Reference): mass per length, x1, x2, the
+/// angle of the inertia axes (degrees), I11, I22, I12 about the centre of mass; a physical
+/// inertia (mass, I11, I22 at least 0, I11 I22 >= I12^2).
+BeamAddedInertia read_added_inertia_line(const FieldReader& r) {
+  r.at_most(7, "mass per length, x1, x2, angle, I11, I22, I12");
+  BeamAddedInertia a;
+  a.mass = r.real(0, "mass per unit length");
+  a.x1 = r.real_or(1, 0.0, "x1");
+  a.x2 = r.real_or(2, 0.0, "x2");
+  a.angle = r.real_or(3, 0.0, "orientation angle");
+  a.I11 = r.real_or(4, 0.0, "I11");
+  a.I22 = r.real_or(5, 0.0, "I22");
+  a.I12 = r.real_or(6, 0.0, "I12");
+  if (!(a.mass >= 0.0))
+    r.fail("field 1 (mass per unit length)",
+           fmt::format("the added mass per unit length must not be negative, not {}", a.mass));
+  if (!(a.I11 >= 0.0) || !(a.I22 >= 0.0))
+    r.fail("fields 5-6 (I11, I22)", fmt::format("rotary inertias must not be negative, not {}, "
+                                                "{}",
+                                                a.I11, a.I22));
+  if (a.I12 * a.I12 > a.I11 * a.I22 * (1.0 + 1e-12))
+    r.fail("field 7 (I12)",
+           fmt::format("|I12| = {} exceeds sqrt(I11 I22) = {}: not the inertia of a mass; give "
+                       "the product of inertia about the centre of mass",
+                       std::abs(a.I12), std::sqrt(a.I11 * a.I22)));
+  return a;
 }
 
 } // namespace
@@ -435,7 +464,7 @@ void handle_mass(BuildState& s, const Keyword& kw) {
   MassSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
-  read_point_damping(s, kw, sec);
+  read_point_damping(s, kw, sec.elset, sec.alpha, sec.composite);
   static constexpr std::array<std::string_view, 2> kNames{"the mass", "mass"};
   sec.mass = read_inertia_line(s, kw, sec.elset, 1, 1, kNames)[0];
   s.model.mass_sections.push_back(std::move(sec));
@@ -448,12 +477,32 @@ void handle_rotary_inertia(BuildState& s, const Keyword& kw) {
   MassSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
-  read_point_damping(s, kw, sec);
+  read_point_damping(s, kw, sec.elset, sec.alpha, sec.composite);
   sec.rotary = true;
   static constexpr std::array<std::string_view, 7> kNames{
       "I11, I22, I33, I12, I13, I23", "I11", "I22", "I33", "I12", "I13", "I23"};
   sec.inertia = read_inertia_line(s, kw, sec.elset, 6, 3, kNames);
   s.model.mass_sections.push_back(std::move(sec));
+}
+
+void handle_beam_added_inertia(BuildState& s, const Keyword& kw) {
+  if (s.model.beam_sections.empty() || !s.beam_section_ok) return; // its section was reported
+  BeamSection& sec = s.model.beam_sections.back();
+  double alpha = 0.0, composite = 0.0;
+  read_point_damping(s, kw, sec.elset, alpha, composite);
+  bool any_line = false; // a line that failed is reported by itself
+  for_each_line(s, kw, [&](const DataLine& line) {
+    any_line = true;
+    BeamAddedInertia a = read_added_inertia_line(s.reader(kw, line));
+    a.alpha = alpha;
+    a.composite = composite;
+    a.loc = s.loc(kw, line);
+    sec.added_inertia.push_back(a);
+  });
+  if (!any_line)
+    throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
+                     "give the added mass per unit length (and optionally x1, x2, the angle, I11, "
+                     "I22, I12) on a data line");
 }
 
 } // namespace gapfem::inp

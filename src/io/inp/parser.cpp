@@ -27,7 +27,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 121> kTable = {{
+constexpr std::array<KeywordSpec, 122> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -58,6 +58,7 @@ constexpr std::array<KeywordSpec, 121> kTable = {{
   {"*BEAM GENERAL SECTION", handle_beam_general_section, W::Model, "ELSET|SECTION|DENSITY|DEPENDENCIES|TEMPERATURE|ROTARY INERTIA", 0, P::BeamSection},
   {"*TRANSVERSE SHEAR STIFFNESS", handle_transverse_shear, W::Model, "", kSection},
   {"*SECTION POINTS", handle_section_points, W::Model, "", kBeam},
+  {"*BEAM ADDED INERTIA", handle_beam_added_inertia, W::Model, "ALPHA|COMPOSITE", kBeam},
   {"*SHELL SECTION", handle_shell_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|SECTION INTEGRATION|TEMPERATURE", 0, P::ShellSection},
   {"*SHELL GENERAL SECTION", handle_shell_general_section, W::Model, "ELSET|MATERIAL|OFFSET|NODAL THICKNESS|ORIENTATION|COMPOSITE|POISSON|DENSITY|ZERO|USER|DEPENDENCIES|UNSYMM", 0, P::ShellSection},
   {"*NODAL THICKNESS", handle_nodal_thickness, W::Model, ""},
