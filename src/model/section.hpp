@@ -108,9 +108,15 @@ struct SpringSection {
   int dof2 = 0;            ///< Abaqus DOF number at node 2 (SPRING2)
   PropertyTable stiffness; ///< k (dashpot: c); key temperature
   bool dashpot = false;    ///< *DASHPOT: a force per relative velocity, not per displacement
-  bool nonlinear = false;  ///< *DASHPOT, NONLINEAR: F(v) from `force` at `velocity`
-  /// NONLINEAR: the force at each relative velocity (strictly ascending); constant outside
-  std::vector<double> force, velocity;
+  bool nonlinear = false;  ///< NONLINEAR: F from `force` at `relative`
+  /// NONLINEAR: the force at each relative velocity (*DASHPOT) or relative displacement
+  /// (*SPRING), strictly ascending; constant outside
+  std::vector<double> force, relative;
+  /// ORIENTATION= (SPRING1/2, DASHPOT1/2): its name, and once resolved (model_validate.cpp) the
+  /// local axes 1, 2, 3 as unit vectors in global coordinates. The data line's DOFs are then
+  /// local: DOF i (i + 3) acts along (about) axes[(i - 1) % 3] at each node.
+  std::string orientation;
+  std::optional<std::array<Vec3, 3>> axes;
   SourceLocation loc;
 };
 

@@ -11,24 +11,19 @@ using namespace structural;
 DashpotKernel::DashpotKernel(ElementType type, const SpringSection& section, ModelSpace space)
     : _type(type), _c(section.stiffness), _nonlinear(section.nonlinear) {
   if (_nonlinear) {
-    _table.x = section.velocity;
+    _table.x = section.relative;
     _table.y = section.force;
     _table.extrapolation = Curve::Extrapolation::Constant;
   }
   switch (type) {
   case ElementType::DASHPOT1:
-    FE_CHECK(dof_from_abaqus(section.dof1, _dofs0[0]), "DASHPOT1 DOF not checked");
-    _n0 = 1;
-    break;
   case ElementType::DASHPOT2:
-    FE_CHECK(dof_from_abaqus(section.dof1, _dofs0[0]) && dof_from_abaqus(section.dof2, _dofs1[0]),
-             "DASHPOT2 DOFs not checked");
-    _n0 = _n1 = 1;
+    _act = fixed_action(type, section, space);
     break;
   case ElementType::DASHPOTA:
     _ndim = space == ModelSpace::ThreeD ? 3 : 2;
-    _n0 = _n1 = _ndim;
-    for (int i = 0; i < _ndim; ++i) _dofs0[i] = _dofs1[i] = static_cast<DofType>(i);
+    _act.n0 = _act.n1 = _ndim;
+    for (int i = 0; i < _ndim; ++i) _act.dofs0[i] = _act.dofs1[i] = static_cast<DofType>(i);
     break;
   default:
     FE_CHECK(false, "DashpotKernel built for a non-dashpot element type");
@@ -36,8 +31,8 @@ DashpotKernel::DashpotKernel(ElementType type, const SpringSection& section, Mod
 }
 
 std::span<const DofType> DashpotKernel::node_dofs(int local_node) const {
-  return local_node == 0 ? std::span<const DofType>(_dofs0.data(), _n0)
-                         : std::span<const DofType>(_dofs1.data(), _n1);
+  return local_node == 0 ? std::span<const DofType>(_act.dofs0.data(), _act.n0)
+                         : std::span<const DofType>(_act.dofs1.data(), _act.n1);
 }
 
 std::string DashpotKernel::validate(const ElementInput& in) const {
@@ -68,13 +63,9 @@ DashpotKernel::Line DashpotKernel::line(const ElementInput& in) const {
   Line ln;
   switch (_type) {
   case ElementType::DASHPOT1:
-    ln.nd = 1;
-    ln.B[0] = 1.0;
-    return ln;
   case ElementType::DASHPOT2:
-    ln.nd = 2;
-    ln.B[0] = 1.0;
-    ln.B[1] = -1.0;
+    ln.nd = _act.n_dofs();
+    ln.B = _act.B;
     return ln;
   default: {
     const AxialKinematics kin = axial_kinematics(_ndim, in.X, in.u, nlgeom_line(in));
@@ -160,7 +151,7 @@ void DashpotKernel::recover(const ElementInput& in, ElementRecovery& out) const 
   if (_type == ElementType::DASHPOTA)
     du = axial_kinematics(_ndim, in.X, in.u, nlgeom_line(in)).delta;
   else
-    du = _type == ElementType::DASHPOT1 ? in.u[0] : in.u[0] - in.u[1];
+    for (int k = 0; k < _act.n_dofs(); ++k) du += _act.B[k] * in.u[k];
   const std::span<const double> s =
       in.state.empty() ? in.state_start : std::span<const double>(in.state);
   add_block(out, ElemVar::S, kS11, 1).values[0] = s.empty() ? 0.0 : s[0];

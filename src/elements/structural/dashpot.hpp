@@ -6,6 +6,8 @@
 ///   DASHPOT2  node 1 DOF i, node 2 DOF j:   w = v_i(1) - v_j(2)
 ///   DASHPOTA  along the line of the nodes:  w = n . (v(2) - v(1)), n the initial line without
 ///             NLGEOM, the current one with it (as SPRINGA)
+/// With *DASHPOT, ORIENTATION= (DASHPOT1/2 only) i and j are local DOFs, as for SPRING1/2
+/// (spring.hpp, FixedAction): w = n_i . v(1) - n_j . v(2), fixed directions.
 /// The force is F = c(T) w (*DASHPOT) or F(w) from the *DASHPOT, NONLINEAR table (piecewise linear,
 /// constant outside the table); on the nodes r = F B with B = [1], [1, -1] or [-n, n], so that
 /// for DASHPOT1/2 the force resists u_i(1) - u_j(2) growing like the SPRING's.
@@ -22,6 +24,7 @@
 /// Output: S11 = F (its history slot, the force of the last evaluation with a velocity), E11 = the
 /// relative displacement (as SPRING).
 #include "elements/element_kernel.hpp"
+#include "elements/structural/spring.hpp"
 #include "model/section.hpp"
 #include "model/table.hpp"
 
@@ -69,8 +72,7 @@ class DashpotKernel final : public ElementKernel {
   bool _nonlinear = false;
   Curve _table; ///< NONLINEAR: F(w)
   int _ndim = 3;
-  std::array<DofType, 3> _dofs0{}, _dofs1{};
-  int _n0 = 0, _n1 = 0;
+  FixedAction _act; ///< DASHPOT1/2; DASHPOTA: its translations in dofs0/dofs1
 };
 
 } // namespace gapfem

@@ -5,28 +5,56 @@
 #include "elements/structural/structural_common.hpp"
 #include "model/model.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 
 namespace gapfem {
 
 using namespace structural;
 
+FixedAction fixed_action(ElementType type, const SpringSection& section, ModelSpace space) {
+  FixedAction act;
+  const bool two = type == ElementType::SPRING2 || type == ElementType::DASHPOT2;
+  const int dof[2] = {section.dof1, section.dof2};
+  for (int node = 0; node < (two ? 2 : 1); ++node) {
+    auto& dofs = node == 0 ? act.dofs0 : act.dofs1;
+    int& n = node == 0 ? act.n0 : act.n1;
+    const double sign = node == 0 ? 1.0 : -1.0;
+    if (!section.axes) { // one global DOF
+      FE_CHECK(dof_from_abaqus(dof[node], dofs[0]), "spring/dashpot DOF not checked");
+      n = 1;
+      act.B[node] = sign;
+      continue;
+    }
+    // local DOF i: along (about) the orientation's axis (i - 1) % 3, on all three translations
+    // (rotations) of the node, the two in-plane translations in planar models
+    const int first = dof[node] <= 3 ? 0 : 3;
+    const Vec3& axis = (*section.axes)[(dof[node] - 1) % 3];
+    n = space == ModelSpace::ThreeD ? 3 : 2;
+    for (int k = 0; k < n; ++k) {
+      dofs[k] = static_cast<DofType>(first + k);
+      act.B[node * act.n0 + k] = sign * axis[k];
+    }
+  }
+  return act;
+}
+
 SpringKernel::SpringKernel(ElementType type, const SpringSection& section, ModelSpace space)
-    : _type(type), _stiffness(section.stiffness) {
+    : _type(type), _stiffness(section.stiffness), _nonlinear(section.nonlinear) {
+  if (_nonlinear) {
+    _table.x = section.relative;
+    _table.y = section.force;
+    _table.extrapolation = Curve::Extrapolation::Constant;
+  }
   switch (type) {
   case ElementType::SPRING1:
-    FE_CHECK(dof_from_abaqus(section.dof1, _dofs0[0]), "SPRING1 DOF not checked");
-    _n0 = 1;
-    break;
   case ElementType::SPRING2:
-    FE_CHECK(dof_from_abaqus(section.dof1, _dofs0[0]) && dof_from_abaqus(section.dof2, _dofs1[0]),
-             "SPRING2 DOFs not checked");
-    _n0 = _n1 = 1;
+    _act = fixed_action(type, section, space);
     break;
   case ElementType::SPRINGA:
     _ndim = space == ModelSpace::ThreeD ? 3 : 2;
-    _n0 = _n1 = _ndim;
-    for (int i = 0; i < _ndim; ++i) _dofs0[i] = _dofs1[i] = static_cast<DofType>(i);
+    _act.n0 = _act.n1 = _ndim;
+    for (int i = 0; i < _ndim; ++i) _act.dofs0[i] = _act.dofs1[i] = static_cast<DofType>(i);
     break;
   default:
     FE_CHECK(false, "SpringKernel built for a non-spring element type");
@@ -34,8 +62,8 @@ SpringKernel::SpringKernel(ElementType type, const SpringSection& section, Model
 }
 
 std::span<const DofType> SpringKernel::node_dofs(int local_node) const {
-  return local_node == 0 ? std::span<const DofType>(_dofs0.data(), _n0)
-                         : std::span<const DofType>(_dofs1.data(), _n1);
+  return local_node == 0 ? std::span<const DofType>(_act.dofs0.data(), _act.n0)
+                         : std::span<const DofType>(_act.dofs1.data(), _act.n1);
 }
 
 std::string SpringKernel::validate(const ElementInput& in) const {
@@ -48,48 +76,42 @@ std::string SpringKernel::validate(const ElementInput& in) const {
   return {};
 }
 
-double SpringKernel::stiffness(const ElementInput& in) const {
-  return table_value(_stiffness, average(in.temperature));
+void SpringKernel::force(const ElementInput& in, double du, double& F, double& dF) const {
+  if (_nonlinear) {
+    F = _table.value(du);
+    dF = _table.slope(du);
+    return;
+  }
+  dF = table_value(_stiffness, average(in.temperature));
+  F = dF * du;
 }
 
 double SpringKernel::relative_displacement(const ElementInput& in) const {
-  switch (_type) {
-  case ElementType::SPRING1:
-    return in.u[0];
-  case ElementType::SPRING2:
-    return in.u[0] - in.u[1];
-  default: {
+  if (_type == ElementType::SPRINGA) {
     const bool nlgeom = in.ctx != nullptr && in.ctx->nlgeom;
     return axial_kinematics(_ndim, in.X, in.u, nlgeom).delta;
   }
-  }
+  double du = 0.0;
+  for (int k = 0; k < _act.n_dofs(); ++k) du += _act.B[k] * in.u[k];
+  return du;
 }
 
 void SpringKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
-  const double k = stiffness(in);
-  switch (_type) {
-  case ElementType::SPRING1:
-    out.residual[0] += k * in.u[0];
-    if (out.want_tangent) out.tangent[0] += k;
-    return;
-  case ElementType::SPRING2: {
-    const double F = k * (in.u[0] - in.u[1]);
-    out.residual[0] += F;
-    out.residual[1] -= F;
-    if (out.want_tangent) {
-      out.tangent[0] += k;
-      out.tangent[1] -= k;
-      out.tangent[2] -= k;
-      out.tangent[3] += k;
-    }
-    return;
-  }
-  default: {
+  double F = 0.0, dF = 0.0;
+  if (_type == ElementType::SPRINGA) {
     const bool nlgeom = in.ctx != nullptr && in.ctx->nlgeom;
     const AxialKinematics kin = axial_kinematics(_ndim, in.X, in.u, nlgeom);
-    axial_assemble(kin, nlgeom, k * kin.delta, k, out);
+    force(in, kin.delta, F, dF);
+    axial_assemble(kin, nlgeom, F, dF, out);
+    return;
   }
-  }
+  // r = F B, K = F'(du) B B^T (B = [1] or [1, -1] on global DOFs: k u_i, k (u_i - u_j))
+  const int n = _act.n_dofs();
+  force(in, relative_displacement(in), F, dF);
+  for (int i = 0; i < n; ++i) out.residual[i] += F * _act.B[i];
+  if (!out.want_tangent) return;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out.tangent[i * n + j] += dF * _act.B[i] * _act.B[j];
 }
 
 bool SpringKernel::supports_output(ElemVar var) const {
@@ -98,13 +120,38 @@ bool SpringKernel::supports_output(ElemVar var) const {
 
 void SpringKernel::recover(const ElementInput& in, ElementRecovery& out) const {
   const double du = relative_displacement(in);
-  add_block(out, ElemVar::S, kS11, 1).values[0] = stiffness(in) * du;
+  double F = 0.0, dF = 0.0;
+  force(in, du, F, dF);
+  add_block(out, ElemVar::S, kS11, 1).values[0] = F;
   add_block(out, ElemVar::E, kE11, 1).values[0] = du;
 }
 
 namespace {
 bool is_dashpot(ElementType t) {
   return t == ElementType::DASHPOT1 || t == ElementType::DASHPOT2 || t == ElementType::DASHPOTA;
+}
+
+/// ORIENTATION= on a SPRING1/2 or DASHPOT1/2: resolved by the reader (an error there stops the
+/// run before kernels are made); in a planar model the local direction must lie in its plane.
+void check_orientation(const Model& model, const SpringSection& sec, ElementType type,
+                       const std::string& entity) {
+  const bool axial = type == ElementType::SPRINGA || type == ElementType::DASHPOTA;
+  if (axial || !sec.axes)
+    throw InputError(sec.loc, entity,
+                     fmt::format("ORIENTATION={} cannot be used here: it applies to SPRING1/2 and "
+                                 "DASHPOT1/2 elements and must name a rectangular *ORIENTATION",
+                                 sec.orientation));
+  if (model.space == ModelSpace::ThreeD) return;
+  const bool two = type == ElementType::SPRING2 || type == ElementType::DASHPOT2;
+  for (int dof : {sec.dof1, two ? sec.dof2 : sec.dof1}) {
+    const Vec3& n = (*sec.axes)[(dof - 1) % 3];
+    if (std::abs(n[2]) > 1e-12)
+      throw InputError(sec.loc, entity,
+                       fmt::format("local direction {} of ORIENTATION={} leaves the plane of this "
+                                   "{} model (its z component is {}); give an orientation whose "
+                                   "local {} axis lies in the x-y plane",
+                                   dof, sec.orientation, model_space_name(model.space), n[2], dof));
+  }
 }
 } // namespace
 
@@ -150,6 +197,7 @@ std::unique_ptr<ElementKernel> make_spring_kernel(const KernelContext& ctx) {
   const bool two = ctx.type == ElementType::SPRING2 || ctx.type == ElementType::DASHPOT2;
   if (one || two) check_dof(sec.dof1, one ? "the" : "the first node's");
   if (two) check_dof(sec.dof2, "the second node's");
+  if (!sec.orientation.empty()) check_orientation(model, sec, ctx.type, entity);
   if (dashpot) return std::make_unique<DashpotKernel>(ctx.type, sec, model.space);
   return std::make_unique<SpringKernel>(ctx.type, sec, model.space);
 }

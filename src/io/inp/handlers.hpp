@@ -80,6 +80,10 @@ void handle_beam_general_section(BuildState& s, const Keyword& kw);
 void handle_transverse_shear(BuildState& s, const Keyword& kw);
 void handle_spring(BuildState& s, const Keyword& kw);
 void handle_dashpot(BuildState& s, const Keyword& kw);
+void handle_orientation(BuildState& s, const Keyword& kw); ///< orientation.cpp
+/// *SPRING, NONLINEAR (handle_spring): the DOF line and the (force, relative displacement)
+/// table into `sec`, added to the model (handlers_dashpot.cpp, beside the dashpot's table).
+void read_nonlinear_spring(BuildState& s, const Keyword& kw, SpringSection sec);
 void handle_mass(BuildState& s, const Keyword& kw);
 void handle_rotary_inertia(BuildState& s, const Keyword& kw);
 ///@}

@@ -44,6 +44,7 @@ bool part_keyword(const std::string& key) {
                                          "KINEMATIC",
                                          "DISTRIBUTING",
                                          "TRANSFORM",
+                                         "ORIENTATION",
                                          "USERELEMENT",
                                          "MATRIX",
                                          "UELPROPERTY"};

@@ -6,7 +6,8 @@
 // a negative coefficient is refused (the dashpot would feed energy in); the frequency column is
 // for steady-state dynamics, which gapfem does not have (a value there is refused, a blank
 // accepted); NONLINEAR takes one table (force, relative velocity) in strictly ascending velocity,
-// without temperature dependence.
+// without temperature dependence; ORIENTATION= (DASHPOT1/2 only) makes the DOFs local
+// (orientation.cpp). *SPRING, NONLINEAR reads its (force, relative displacement) table here too.
 #include "io/inp/handlers.hpp"
 
 #include <algorithm>
@@ -52,37 +53,54 @@ PropertyTable read_coefficients(BuildState& s, const Keyword& kw, std::span<cons
   return table;
 }
 
-/// NONLINEAR: rows `force, relative velocity`, the velocity strictly ascending, at least two.
+/// NONLINEAR: rows `force, relative velocity` (dashpot) or `force, relative displacement`
+/// (spring), the second strictly ascending, at least two.
 void read_table(BuildState& s, const Keyword& kw, std::span<const DataLine> rows,
                 const std::string& entity, SpringSection& sec) {
+  const char* x = sec.dashpot ? "relative velocity" : "relative displacement";
+  const char* what = sec.dashpot ? "dashpot" : "spring";
   SourceLocation last = kw.loc;
   for (const DataLine& line : rows) {
     if (line.empty()) continue;
     const FieldReader r = s.reader(kw, line);
-    r.at_most(3, "force, relative velocity, temperature");
+    r.at_most(3, fmt::format("force, {}, temperature", x));
     const double F = r.real(0, "force");
-    const double w = r.real(1, "relative velocity");
+    const double w = r.real(1, x);
     if (!r.blank(2))
-      r.fail(entity, "temperature-dependent nonlinear dashpots are not in gapfem; give one table "
-                     "of force and relative velocity without field 3");
-    if (!sec.velocity.empty() && !(w > sec.velocity.back()))
-      r.fail(entity, fmt::format("the relative velocities must increase from line to line; {} "
-                                 "follows {}",
-                                 w, sec.velocity.back()));
+      r.fail(entity, fmt::format("temperature-dependent nonlinear {}s are not in gapfem; give one "
+                                 "table of force and {} without field 3",
+                                 what, x));
+    if (!sec.relative.empty() && !(w > sec.relative.back()))
+      r.fail(entity,
+             fmt::format("the relative {} must increase from line to line; {} follows {}",
+                         sec.dashpot ? "velocities" : "displacements", w, sec.relative.back()));
     sec.force.push_back(F);
-    sec.velocity.push_back(w);
+    sec.relative.push_back(w);
     last = r.loc();
   }
-  if (sec.velocity.size() < 2)
+  if (sec.relative.size() < 2)
     throw InputError(last, entity,
-                     "a nonlinear dashpot needs at least two (force, relative velocity) lines; "
-                     "give the force over the range of velocities it will see");
+                     fmt::format("a nonlinear {} needs at least two (force, {}) lines; give the "
+                                 "force over the range of {} it will see",
+                                 what, x, sec.dashpot ? "velocities" : "displacements"));
 }
 
 } // namespace
 
+void read_nonlinear_spring(BuildState& s, const Keyword& kw, SpringSection sec) {
+  const std::string entity = fmt::format("ELSET={}", sec.elset);
+  if (kw.data.empty())
+    throw InputError(kw.loc, entity,
+                     "data lines are missing: line 1 gives the DOF(s) (blank for SPRINGA), the "
+                     "following lines force and relative displacement");
+  const std::span<const DataLine> rows(kw.data.data() + 1, kw.data.size() - 1);
+  read_table(s, kw, rows, entity, sec);
+  s.model.spring_sections.push_back(std::move(sec));
+  kw.data[0].read = true; // (read by check_spring once the element types are known)
+  s.spring_dof_line.push_back(kw.data[0]);
+}
+
 void handle_dashpot(BuildState& s, const Keyword& kw) {
-  reject_param(kw, "ORIENTATION", "dashpots act in the global DOF directions, as springs do");
   reject_param(kw, "RTOL", "RTOL is an Abaqus/Explicit parameter; remove it");
   if (const auto dep = dependencies_param(kw); dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
@@ -93,6 +111,8 @@ void handle_dashpot(BuildState& s, const Keyword& kw) {
   sec.nonlinear = kw.has("NONLINEAR");
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
+  if (kw.has("ORIENTATION")) // (resolved with the element types: orientation.cpp)
+    sec.orientation = s.set_name(name_param(kw, "ORIENTATION", true));
   const std::string entity = fmt::format("ELSET={}", sec.elset);
   if (kw.data.empty())
     throw InputError(kw.loc, entity,

@@ -340,11 +340,13 @@ void handle_beam_transverse_shear(BuildState& s, const Keyword& kw) {
 }
 
 void handle_spring(BuildState& s, const Keyword& kw) {
-  reject_param(kw, "NONLINEAR", "give a linear stiffness (optionally temperature dependent)");
-  reject_param(kw, "ORIENTATION", "springs act in the global DOF directions");
   SpringSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;
+  sec.nonlinear = kw.has("NONLINEAR");
+  if (kw.has("ORIENTATION")) // (resolved with the element types: orientation.cpp)
+    sec.orientation = s.set_name(name_param(kw, "ORIENTATION", true));
+  if (sec.nonlinear) return read_nonlinear_spring(s, kw, std::move(sec));
   if (kw.data.empty())
     throw InputError(kw.loc, fmt::format("ELSET={}", sec.elset),
                      "data lines are missing: line 1 gives the DOF(s) (blank for SPRINGA), the "

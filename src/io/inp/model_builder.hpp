@@ -7,6 +7,7 @@
 #include "io/inp/diagnostics.hpp"
 #include "io/inp/fields.hpp"
 #include "io/inp/keyword.hpp"
+#include "io/inp/orientation.hpp"
 #include "io/inp/reader.hpp"
 #include "model/model.hpp"
 
@@ -112,6 +113,8 @@ struct BuildState {
   /// Per spring section: its first data line (DOFs; blank for SPRINGA), read once the element types
   /// of the ELSET are known.
   std::vector<DataLine> spring_dof_line;
+  /// *ORIENTATION by upper-case name (orientation.hpp), resolved where one is referred to
+  std::map<std::string, OrientationDef> orientations;
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;

@@ -144,6 +144,7 @@ void check_spring(BuildState& s, int index) {
                           element_info(s.model.mesh.elem_types[e]).name, keyword));
       return;
     }
+  resolve_spring_orientation(s, sec, type);
   const bool axial = type == ElementType::SPRINGA || type == ElementType::DASHPOTA;
   const bool one = type == ElementType::SPRING1 || type == ElementType::DASHPOT1;
   const DataLine& line = s.spring_dof_line[index];

@@ -27,7 +27,7 @@ using W = Where;
 using P = Parent;
 
 // clang-format off
-constexpr std::array<KeywordSpec, 122> kTable = {{
+constexpr std::array<KeywordSpec, 123> kTable = {{
   // model data: mesh
   {"*HEADING", handle_heading, W::Model, ""},
   {"*PREPRINT", handle_print_control, W::Model, "*"},
@@ -89,6 +89,7 @@ constexpr std::array<KeywordSpec, 122> kTable = {{
   // linear constraints
   {"*EQUATION", handle_equation, W::Model, "INPUT"},
   {"*TRANSFORM", handle_transform, W::Model, "NSET|TYPE"},
+  {"*ORIENTATION", handle_orientation, W::Model, "NAME|SYSTEM|DEFINITION"},
   {"*MPC", handle_mpc, W::Model, "MODE|USER"},
   {"*TIE", handle_tie, W::Model, "NAME|POSITION TOLERANCE|ADJUST|TYPE|NO ROTATION|NO THICKNESS|CYCLIC SYMMETRY"},
   {"*KINEMATIC COUPLING", handle_kinematic_coupling, W::Model, "REF NODE"},
@@ -195,11 +196,11 @@ std::string parent_names(unsigned parents) {
 /// Unknown keywords that change nothing gapfem computes, so --ignore-unknown may skip them:
 /// output controls, and named definitions only used through parameters gapfem rejects anyway.
 bool skippable_keyword(const std::string& key) {
-  static const char* const kSkippable[] = {
-      "ORIENTATION",       "INTEGRATEDOUTPUT", "INTEGRATEDOUTPUTSECTION",
-      "NODERESPONSE",      "ELEMENTRESPONSE",  "RADIATIONPRINT",
-      "RADIATIONFILE",     "MODALPRINT",       "MODALFILE",
-      "SUBSTRUCTUREPRINT", "EQUATIONPRINT"};
+  static const char* const kSkippable[] = {"INTEGRATEDOUTPUT",  "INTEGRATEDOUTPUTSECTION",
+                                           "NODERESPONSE",      "ELEMENTRESPONSE",
+                                           "RADIATIONPRINT",    "RADIATIONFILE",
+                                           "MODALPRINT",        "MODALFILE",
+                                           "SUBSTRUCTUREPRINT", "EQUATIONPRINT"};
   for (const char* k : kSkippable)
     if (key == k) return true;
   return false;

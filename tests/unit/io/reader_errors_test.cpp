@@ -111,7 +111,7 @@ TEST(ReaderErrors, DifferentMistakesAreAllListed) {
 TEST(ReaderErrors, IgnoreUnknownTurnsOnlyUnknownsIntoWarnings) {
   // an unused definition and an output request's unknown parameter are skipped with a warning
   const std::string deck = std::string(test::kTrussModel) +
-                           "*ORIENTATION, NAME=OR1\n1., 0., 0., 0., 1., 0.\n"
+                           "*INTEGRATED OUTPUT SECTION, NAME=IOS1, SURFACE=S1\n"
                            "*NODE\n3\n*STEP\n*STATIC\n*NODE PRINT, FOO=1\nU\n*END STEP\n";
   const Model m = test::read(deck, ReadOptions{true});
   EXPECT_EQ(m.warnings.size(), 2u);

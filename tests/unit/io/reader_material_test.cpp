@@ -243,8 +243,11 @@ TEST(ReaderMaterial, Springs) {
   for (ElemId e = 0; e < 3; ++e) EXPECT_EQ(m.element_property[e].kind, PropertyRef::Kind::Spring);
 
   const std::string ok = "*SPRING, ELSET=S2\n1, 3\n50.\n*SPRING, ELSET=SA\n\n1000.\n";
-  EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1, NONLINEAR\n2\n1.\n" + ok),
-                  "deck.inp:10: *SPRING: NONLINEAR");
+  // NONLINEAR (force, relative displacement) tables: at least two lines, ascending
+  EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1, NONLINEAR\n2\n1., 0.1\n" + ok),
+                  "deck.inp:12: *SPRING: ELSET=S1: a nonlinear spring needs at least two");
+  EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1, NONLINEAR\n2\n1., 0.1\n0., 0.\n" + ok),
+                  "the relative displacements must increase");
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n7\n1.\n" + ok),
                   "deck.inp:11: *SPRING: field 1 (DOF at node 1): springs act on DOFs 1-6, not 7");
   EXPECT_CONTAINS(error_text(mesh + "*SPRING, ELSET=S1\n2\n" + ok), "the stiffness is missing");

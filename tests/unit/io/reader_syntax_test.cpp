@@ -391,14 +391,16 @@ TEST(ReaderSyntax, UnknownSetNameIsError) {
 
 TEST(ReaderSyntax, UnknownKeywordIsErrorOrWarning) {
   const std::string deck =
-      std::string(kTrussModel) + "*ORIENTATION, NAME=OR1\n1., 0., 0., 0., 1., 0.\n";
+      std::string(kTrussModel) + "*INTEGRATED OUTPUT SECTION, NAME=IOS1, SURFACE=S1\n";
   const std::string e = error_text(deck);
-  EXPECT_CONTAINS(e, "deck.inp:11: *ORIENTATION: the keyword *ORIENTATION is not supported");
+  EXPECT_CONTAINS(
+      e, "deck.inp:11: *INTEGRATED OUTPUT SECTION: the keyword *INTEGRATED OUTPUT SECTION is not "
+         "supported");
   EXPECT_CONTAINS(e, "--ignore-unknown");
   const Model m = read(deck, ReadOptions{true});
   ASSERT_EQ(m.warnings.size(), 1u);
   EXPECT_CONTAINS(m.warnings[0], "deck.inp:11");
-  EXPECT_CONTAINS(m.warnings[0], "*ORIENTATION");
+  EXPECT_CONTAINS(m.warnings[0], "*INTEGRATED OUTPUT SECTION");
   // print controls are read with a note, with or without the option
   const Model p = read(std::string(kTrussModel) + "*FILE FORMAT, ASCII\n*ENERGY PRINT\n");
   EXPECT_EQ(p.warnings.size(), 2u);

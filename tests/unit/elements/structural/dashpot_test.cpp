@@ -23,7 +23,7 @@ PropertyRef add_dashpot(TestModel& tm, int dof1, int dof2, double c,
   s.nonlinear = !table.empty();
   for (auto [F, w] : table) {
     s.force.push_back(F);
-    s.velocity.push_back(w);
+    s.relative.push_back(w);
   }
   s.loc = {"test.inp", 7, "*DASHPOT"};
   tm.model.spring_sections.push_back(s);
