@@ -11,12 +11,17 @@
 //   axes, [[(a + b) / 2, (a - b) / 2], [(a - b) / 2, (a + b) / 2]] (the tensor e1 e1^T a +
 //   e2 e2^T b with e1 = (n1 + n2) / sqrt 2);
 // - several data lines add up; a planar beam couples u1 and ur3 through x2 only;
+// - M with an offset, turned added inertia is symmetric and positive semi-definite (least
+//   eigenvalue >= -1e-13 of the largest: round-off), and the residual and tangent are not
+//   touched (the harness's central-difference check of the tangent at a deformed state);
 // - ALPHA gives the damping block ALPHA times the added part of M; with a material *DAMPING
 //   ALPHA_R as well, C = ALPHA_R M(section) + ALPHA M(added) (Abaqus damps the added inertia
 //   with its own keyword's ALPHA only).
 #include "io/inp/reader.hpp"
+#include "unit/elements/kernel_harness.hpp"
 #include "unit/elements/kernel_probe.hpp"
 
+#include <Eigen/Dense>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <string>
@@ -185,6 +190,29 @@ TEST(BeamAddedInertia, PlanarBeamCouplesAxialAndRotationThroughX2) {
   EXPECT_NEAR(d[2 * 6 + 0], -kL / 2 * m * 0.25, tol);
   EXPECT_NEAR(d[1 * 6 + 2], 0.0, tol);
   EXPECT_NEAR(d[2 * 6 + 2], kL / 2 * m * 0.0625, tol);
+}
+
+TEST(BeamAddedInertia, MassStaysSymmetricPositiveAndTheTangentUntouched) {
+  const std::string added = "*BEAM ADDED INERTIA, ALPHA=2.\n4e-8, 0.1, 0.25, 30., 3e-10, 1e-10, "
+                            "-5e-11\n2e-8, -0.3, 0.05\n";
+  for (const auto& [type, nodes] :
+       {std::pair{"B31", 2}, std::pair{"B32", 3}, std::pair{"B21", 2}, std::pair{"B22", 3}}) {
+    SCOPED_TRACE(type);
+    const std::string a =
+        type[1] == '2' ? "*BEAM ADDED INERTIA\n4e-8, 0.1, 0.25, , 3e-10\n" : added;
+    const Blocks b = blocks_of(deck(type, a, "", nodes));
+    const auto n = static_cast<Eigen::Index>(b.n);
+    const Eigen::MatrixXd M = Eigen::Map<const Eigen::MatrixXd>(b.M.data(), n, n);
+    const double scale = M.cwiseAbs().maxCoeff();
+    EXPECT_LE((M - M.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues();
+    EXPECT_GE(ev.minCoeff(), -1e-13 * ev.maxCoeff());
+    auto model =
+        std::make_shared<const Model>(read_deck_string(deck(type, a, "", nodes), "fd.inp"));
+    KernelProbe p = KernelProbe::of(model);
+    for (std::size_t i = 0; i < p.u.size(); ++i) p.u[i] = 1e-3 * std::cos(0.7 * double(i));
+    test::expect_fd_tangent(p);
+  }
 }
 
 TEST(BeamAddedInertia, AlphaDampsTheAddedInertiaOnly) {
