@@ -156,19 +156,51 @@ class ShellKernel final : public ElementKernel {
       SurfacePoint p;
       if (!surface_point(in.X, D, t, q[0], q[1], q[2], p)) continue;
       const double w = p.dA * rho * p.thickness;
-      const double eta = w * p.thickness * p.thickness / 12.0; // rho t^3 / 12 dA
+      double eta = w * p.thickness * p.thickness / 12.0; // rho t^3 / 12 dA
+      // OFFSET: the mid-surface (the centre of mass) at zm = -offset t along the director from
+      // the reference surface: rho t zm^2 more rotary inertia about it, and the first moment
+      // rho t zm couples the translations and rotations (docs/theory/dynamics.md §8)
+      const double zm = -_d.offset * p.thickness;
+      const Vec3 n = unit_or(p.D, p.n);
+      const double S = w * zm;
+      if (zm != 0.0) eta += w * zm * zm;
       for (int a = 0; a < NN; ++a)
         for (int b = a; b < NN; ++b) { // symmetric to the last bit
           const double Nab = p.sh.N[a] * p.sh.N[b];
           if (!kLumped) {
             add_node_block(M, a, b, w * Nab, eta * Nab, b != a);
+            if (zm != 0.0) add_coupling(M, a, b, S * Nab, n, b != a);
             continue;
           }
           // first order: lumped, each node's row sum on its diagonal
           add_node_block(M, a, a, w * Nab, eta * Nab, false);
           if (b != a) add_node_block(M, b, b, w * Nab, eta * Nab, false);
+          if (zm == 0.0) continue;
+          add_coupling(M, a, a, S * Nab, n, false);
+          if (b != a) add_coupling(M, b, b, S * Nab, n, false);
         }
     }
+  }
+
+  static Vec3 unit_or(const Vec3& d, const Vec3& fallback) {
+    const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return l > 0.0 ? Vec3{d[0] / l, d[1] / l, d[2] / l} : fallback;
+  }
+  /// The translation-rotation coupling of a first moment s along the unit director n between
+  /// nodes a and b: the kinetic energy s u'.(w x n) = w^T [n]x u' s, so M(rot a, u b) += s [n]x
+  /// and M(u b, rot a) += s [n]x^T (and the (b, a) pair when `mirror`).
+  static void add_coupling(std::span<double> M, int a, int b, double s, const Vec3& n,
+                           bool mirror) {
+    const double N[3][3] = {{0.0, -n[2], n[1]}, {n[2], 0.0, -n[0]}, {-n[1], n[0], 0.0}};
+    auto put = [&](int p, int q) { // rotations of p against translations of q
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          M[(6 * p + 3 + i) * kN + 6 * q + j] += s * N[i][j];
+          M[(6 * q + j) * kN + 6 * p + 3 + i] += s * N[i][j];
+        }
+    };
+    put(a, b);
+    if (mirror) put(b, a);
   }
 
   static constexpr bool kLumped = NN < 8; ///< S3, S3R, S4, S4R: lumped; S8R: consistent
