@@ -195,12 +195,17 @@ void Assembler::assemble_chunk(ElementBlock& block, std::size_t b, std::size_t e
     if (rows)
       for (int c = 0; c < out.n_constraints; ++c) {
         const auto off = static_cast<std::size_t>(c) * nd;
-        _thread_constraints[t].add_row(
-            block.element_eqs(i), out.constraint_coeff.subspan(off, nd), out.constraint_value[c],
+        const auto coeff = out.constraint_coeff.subspan(off, nd);
+        const bool added = _thread_constraints[t].add_row(
+            block.element_eqs(i), coeff, out.constraint_value[c],
             block.mult_offset + static_cast<std::int64_t>(i) * block.n_mult +
                 out.constraint_slot[c],
             out.has_columns ? out.constraint_column.subspan(off, nd) : std::span<const double>{},
             out.constraint_compliance[c]);
+        if (added && !fields.v_start.empty()) // a dynamic step: the rows' prescribed rates
+          _thread_constraints[t].add_given(
+              block.element_eqs(i), block.element_slots(i), coeff,
+              {fields.v_start, fields.a_start, fields.u, fields.u_start});
       }
   }
 }
@@ -269,13 +274,19 @@ AssemblyResult Assembler::assemble(const FieldView& fields, const StepContext& c
           C->g.push_back(tc.g[r]);
           C->compliance.push_back(tc.compliance[r]);
           C->multiplier.push_back(tc.multiplier[r]);
+          if (!tc.given_v.empty()) {
+            C->given_v.push_back(tc.given_v[r]);
+            C->given_a.push_back(tc.given_a[r]);
+            C->travel.push_back(tc.travel[r]);
+          }
         }
       }
     if (gap_block) total.gap_seconds += block_watch.seconds();
   }
   // Linear constraints: constraint forces and their rows, after the elements' rows.
   _disc.constraints().assemble(fields.u, f_int, C, _disc.constraint_multiplier_offset(), dofs,
-                               total.flux_sum, total.flux_count);
+                               total.flux_sum, total.flux_count,
+                               {fields.v_start, fields.a_start, fields.u, fields.u_start});
   // stiffness matrices of the model as a whole (*MATRIX ASSEMBLE)
   _disc.matrix_terms().assemble(fields.u, f_int, K, dofs, total.flux_sum, total.flux_count);
   if (K) K->close();

@@ -179,7 +179,8 @@ void ConstraintSet::set_equations(const Model& model, const EquationMap& eqmap,
 void ConstraintSet::assemble(std::span<const double> u, std::span<double> f_int, ConstraintBlock* C,
                              std::int64_t first_multiplier, const DofMap& dofs,
                              std::array<double, kNumFields>& flux_sum,
-                             std::array<long, kNumFields>& flux_count) const {
+                             std::array<long, kNumFields>& flux_count,
+                             const ConstraintBlock::GivenFields& given) const {
   for (int r = 0; r < n_rows(); ++r) {
     if (!_active[r]) continue;
     const auto slots = row_slots(r);
@@ -195,7 +196,8 @@ void ConstraintSet::assemble(std::span<const double> u, std::span<double> f_int,
       flux_sum[fld] += std::abs(f);
       ++flux_count[fld];
     }
-    if (C) C->add_row(row_eqs(r), coeffs, g, first_multiplier + r);
+    if (C && C->add_row(row_eqs(r), coeffs, g, first_multiplier + r) && !given.v.empty())
+      C->add_given(row_eqs(r), slots, coeffs, given); // dynamic: prescribed rates
   }
 }
 

@@ -60,8 +60,8 @@ class ConstraintSet {
   /// receive the constraint forces per field.
   void assemble(std::span<const double> u, std::span<double> f_int, ConstraintBlock* C,
                 std::int64_t first_multiplier, const DofMap& dofs,
-                std::array<double, kNumFields>& flux_sum,
-                std::array<long, kNumFields>& flux_count) const;
+                std::array<double, kNumFields>& flux_sum, std::array<long, kNumFields>& flux_count,
+                const ConstraintBlock::GivenFields& given = {}) const;
 
   std::vector<double> mult_committed, mult_trial; ///< per row
 

@@ -182,17 +182,38 @@ void Discretization::restore_trial(std::span<const double> saved) {
   FE_CHECK(it == saved.end(), "saved trial state does not match the model");
 }
 
-double& Discretization::multiplier_trial(std::int64_t index) {
+double& Discretization::multiplier(std::int64_t index, bool trial) {
   if (index >= _n_mult) {
     FE_CHECK(index - _n_mult < _constraints.n_rows(), "multiplier index out of range");
-    return _constraints.mult_trial[static_cast<std::size_t>(index - _n_mult)];
+    auto& m = trial ? _constraints.mult_trial : _constraints.mult_committed;
+    return m[static_cast<std::size_t>(index - _n_mult)];
   }
   auto it = std::upper_bound(_mult_blocks.begin(), _mult_blocks.end(), index,
                              [](std::int64_t v, const auto& p) { return v < p.second; });
   FE_CHECK(it != _mult_blocks.begin(), "multiplier index out of range");
   --it;
   auto& b = _blocks[it->first];
-  return b.mult_trial[static_cast<std::size_t>(index - it->second)];
+  return (trial ? b.mult_trial : b.mult_committed)[static_cast<std::size_t>(index - it->second)];
+}
+
+bool Discretization::is_contact_normal(std::int64_t index) const {
+  if (index >= _n_mult) return false;
+  auto it = std::upper_bound(_mult_blocks.begin(), _mult_blocks.end(), index,
+                             [](std::int64_t v, const auto& p) { return v < p.second; });
+  if (it == _mult_blocks.begin()) return false;
+  --it;
+  const ElementBlock& b = _blocks[it->first];
+  // a gap's multipliers: the normal force first, then its friction rows (gap_assemble.cpp)
+  return element_info(b.type).family == ElementFamily::Gap && b.n_mult > 0 &&
+         (index - it->second) % b.n_mult == 0;
+}
+
+double& Discretization::multiplier_trial(std::int64_t index) {
+  return multiplier(index, true);
+}
+
+double& Discretization::multiplier_committed(std::int64_t index) {
+  return multiplier(index, false);
 }
 
 } // namespace gapfem

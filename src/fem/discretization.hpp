@@ -76,8 +76,14 @@ class Discretization {
   void restore_trial(std::span<const double> saved);
   /// Multiplier value by global index (trial).
   double& multiplier_trial(std::int64_t index);
+  /// Multiplier value by global index (committed: an impact's new contact forces).
+  double& multiplier_committed(std::int64_t index);
+  /// Whether the multiplier is a gap's normal force (a unilateral row: compressive >= 0), not a
+  /// friction row's or a linear constraint's (either sign).
+  bool is_contact_normal(std::int64_t index) const;
 
  private:
+  double& multiplier(std::int64_t index, bool trial);
   const Model& _model;
   DofMap _dofs;
   ConstraintSet _constraints;

@@ -7,6 +7,7 @@
 #include "solver/procedures.hpp"
 
 #include <algorithm>
+#include <iterator>
 
 namespace gapfem {
 
@@ -134,11 +135,13 @@ class DynamicProcedure final : public StepProcedure {
 void DynamicProcedure::accepted(StepRun& r, double dt) {
   if (_a.disc.has_gaps()) _a.st.allfd = friction_dissipation(r);
   std::vector<std::int64_t> now = exact_rows_of(r.prob->constraints());
-  const bool impact = !std::includes(_active.begin(), _active.end(), now.begin(), now.end());
+  std::vector<std::int64_t> closed; // the exact rows that became active: an impact
+  std::set_difference(now.begin(), now.end(), _active.begin(), _active.end(),
+                      std::back_inserter(closed));
   _active = std::move(now);
-  if (impact) {
+  if (!closed.empty()) {
     const double t = r.ctrl->step_time() + dt;
-    const double lost = r.prob->impact(*_a.solver, t);
+    const double lost = r.prob->impact(*_a.solver, t, closed);
     _lost += lost;
     log::debug("  impact at step time {:.6g}: kinetic energy {:.4g} removed", t, lost);
   }

@@ -55,6 +55,9 @@ struct DynamicRestart {
   double amax = 0.0;           ///< the largest acceleration
   double energy_lost = 0.0;    ///< kinetic energy removed by the velocity projection
   double kinetic_energy = 0.0; ///< 1/2 v.M v before it (0 when M was not assembled)
+  /// the work of the prescribed DOFs' impulses at the impact (a stop on a moving support gives
+  /// what it hits its velocity): ALLWK's share; the kinetic energy changes by it less energy_lost
+  double support_work = 0.0;
 };
 
 class StepProblem final : public NonlinearProblem {
@@ -87,11 +90,14 @@ class StepProblem final : public NonlinearProblem {
   /// Returns the largest |a| found (0 without).
   double start_dynamic_step(ConstrainedSolver& solver, bool initial_accelerations);
   /// A fully plastic impact at the committed state (step time t), after an increment in which
-  /// exact constraint rows (hard gaps) became active: the velocities are projected with the
-  /// mass onto C v = 0 (the contacting points take a common normal velocity), the accelerations
-  /// made consistent (M a + R = 0, C a = 0) and HHT's history R(t) reset to -M a. Returns the
-  /// kinetic energy the impact removed. The increment's forces (frame, checks) are kept.
-  double impact(ConstrainedSolver& solver, double t);
+  /// exact constraint rows (hard gaps; their multiplier ids `new_rows`, sorted) became active:
+  /// the velocities are projected with the mass onto C v + given_v = 0 (the contacting points
+  /// take a common normal velocity, a moving support's included), the accelerations made
+  /// consistent (M a + R = 0, C a + given_a = 0, R with the damping forces of the velocities
+  /// before the impact) with the rows' forces that hold it, and HHT's history R(t) reset to
+  /// -M a. Returns the kinetic energy the impact removed (ALLKL: the projection's loss and the
+  /// closing rows' work over the increment). The increment's forces (frame, checks) are kept.
+  double impact(ConstrainedSolver& solver, double t, std::span<const std::int64_t> new_rows);
   /// The half-increment residual of the converged increment [t0, t0 + dt] (Abaqus Theory Guide,
   /// "Implicit dynamic analysis"): the largest component over the free equations of
   ///   M a + (1 + alpha) R - alpha/2 (R(t0) + R(t0 - dt_prev))
@@ -154,14 +160,30 @@ class StepProblem final : public NonlinearProblem {
   DynamicRestart restart_dynamics(ConstrainedSolver& solver, double t, bool accelerations,
                                   bool project_velocities);
   double project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
-                                 const std::vector<bool>& massive);
+                                 const std::vector<bool>& massive, double& support_work);
+  /// M a + R - released = 0, C a + given_a = 0 (l: the rows' forces added to R's); a and R(t)
+  /// := -M a at the DOFs with mass. Returns the largest |a|.
   double consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
-                                  const std::vector<bool>& massive);
+                                  const std::vector<bool>& massive, std::vector<double>& l,
+                                  std::span<const double> released = {});
+  /// After an impact: consistent accelerations with unilateral contacts (a gap that would pull
+  /// separates), the rows' forces that hold them becoming the committed multipliers.
+  double impact_accelerations(ConstrainedSolver& solver, ConstrainedFactor& factor,
+                              const ConstraintBlock& C, const std::vector<bool>& massive,
+                              double token);
+  /// The exact rows of C that keep says.
+  static ConstraintBlock select_rows(const ConstraintBlock& C, const std::vector<bool>& keep);
   /// The damping forces at the committed velocities (every element's, driven DOFs' prescribed
   /// velocities included) into R(t) and the damping forces' start, and the driven DOFs' inertia
   /// coupling (_driven_inertia) for the accelerations' solve (restart_dynamics). False when
   /// nothing moves.
   bool add_rate_forces();
+  /// After an impact: the energies' start forces at the state it left, so the next increment's
+  /// trapezoids start from the forces the accelerations were solved with: the elements' (the
+  /// rows' new multipliers), the damping forces of the velocities before the projection
+  /// (v_before, as R(t) of the accelerations' solve), the constraint forces and reactions that
+  /// balance M a + I + C v - P
+  void reset_energy_start_forces(std::span<const double> v_before);
   /// HHT's history term: history_weight() R(t) into f_int (after the assembly).
   void add_rate_history();
   /// R(t + dt) = f_int - f_ext - history term - inertia_weight() M a at a converged state.
@@ -185,6 +207,9 @@ class StepProblem final : public NonlinearProblem {
   std::vector<double> _trial_before;
   bool _trial_saved = false;
   double _constraint_tol;
+  /// ETOTAL before the last increment's works were added (account_energies): an impact moves
+  /// that increment's imbalance into ALLKL (impact)
+  double _etotal_before = 0.0;
   bool _unsymmetric_loads = false;
   /// 1 at the slots of base motion (StepLoads::mark_motion), empty without: their trial rates
   /// are the prescribed ones (in _s.v, _s.a during an increment), which the elements see

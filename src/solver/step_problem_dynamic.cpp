@@ -32,13 +32,13 @@ void StepProblem::commit_rate_history() {
 
 namespace {
 
-/// The exact rows of a constraint block (compliant rows are forces of the displacements: they
-/// hold no acceleration).
-ConstraintBlock exact_rows(const ConstraintBlock& C) {
+/// The rows of a constraint block that `keep` says (all when empty) and that are exact (compliant
+/// rows are forces of the displacements: they hold no acceleration).
+ConstraintBlock exact_rows(const ConstraintBlock& C, const std::vector<bool>& keep = {}) {
   ConstraintBlock out;
   const bool columns = C.has_columns();
   for (int r = 0; r < C.n_rows(); ++r) {
-    if (C.compliance[r] != 0.0) continue;
+    if (C.compliance[r] != 0.0 || (!keep.empty() && !keep[static_cast<std::size_t>(r)])) continue;
     const auto b = C.row_ptr[r], e = C.row_ptr[r + 1];
     out.col.insert(out.col.end(), C.col.begin() + b, C.col.begin() + e);
     out.val.insert(out.val.end(), C.val.begin() + b, C.val.begin() + e);
@@ -47,6 +47,9 @@ ConstraintBlock exact_rows(const ConstraintBlock& C) {
     out.g.push_back(0.0);
     out.compliance.push_back(0.0);
     out.multiplier.push_back(C.multiplier[r]);
+    out.given_v.push_back(C.given_v.empty() ? 0.0 : C.given_v[r]);
+    out.given_a.push_back(C.given_a.empty() ? 0.0 : C.given_a[r]);
+    out.travel.push_back(C.travel.empty() ? 0.0 : C.travel[r]);
   }
   return out;
 }
@@ -63,6 +66,10 @@ double kinetic_energy(const CsrMatrix& M, const EquationMap& eqm, std::span<cons
 }
 
 } // namespace
+
+ConstraintBlock StepProblem::select_rows(const ConstraintBlock& C, const std::vector<bool>& keep) {
+  return exact_rows(C, keep);
+}
 
 double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_accelerations) {
   _s.r_start.clear();
@@ -120,9 +127,16 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   const auto factor = solver.factorize(_K, C, true, _stats);
   for (LocalIndex i = 0; i < n; ++i)
     if (!massive[i]) _K.add(i, i, -token); // M again (energies)
-  if (project_velocities) out.energy_lost = project_velocities_onto(*factor, C, massive);
-  add_rate_forces(); // with the velocities as they now are
-  if (accelerations) out.amax = consistent_accelerations(*factor, C, massive);
+  // the forces of the instant: an impact's damping forces are those of the velocities before
+  // it (the velocity field it projects is discontinuous: a stiffness-proportional damping of its
+  // jumps, kept in R(t), kicked the next increments through HHT's a_n terms, unstable)
+  add_rate_forces();
+  if (project_velocities)
+    out.energy_lost = project_velocities_onto(*factor, C, massive, out.support_work);
+  std::vector<double> l;
+  if (accelerations)
+    out.amax = project_velocities ? impact_accelerations(solver, *factor, C, massive, token)
+                                  : consistent_accelerations(*factor, C, massive, l);
   return out;
 }
 
@@ -163,9 +177,11 @@ bool StepProblem::add_rate_forces() {
 }
 
 double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
-                                            const std::vector<bool>& massive) {
+                                            const std::vector<bool>& massive,
+                                            double& support_work) {
   // [M C^T; C 0] [dv; mu] = [0; -C v]: the least change of kinetic energy that makes the
-  // velocities compatible with the rows (a fully plastic impact)
+  // velocities compatible with the rows (a fully plastic impact); C v includes the rows'
+  // prescribed DOFs (given_v: a stop on a moving support takes the support's velocity)
   const EquationMap& eqm = _loads.equations();
   const LocalIndex n = eqm.n_eq();
   std::vector<double> v(static_cast<std::size_t>(n)), b(v.size(), 0.0), dv(v.size());
@@ -174,9 +190,13 @@ double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const Con
   for (int r = 0; r < C.n_rows(); ++r) {
     double cv = 0.0;
     for (auto k = C.row_ptr[r]; k < C.row_ptr[r + 1]; ++k) cv += C.val[k] * v[C.col[k]];
-    g[r] = cv; // the solver drives C dv + g to 0
+    g[r] = cv + C.given_v[r]; // the solver drives C dv + g to 0
   }
   factor.solve(b, g, dv, mu);
+  // M dv = -C_f^T mu: the rows' impulse on the prescribed DOFs is -C_p^T mu, which their
+  // supports balance with +C_p^T mu, working on v_p: mu . given_v (the loss stays 1/2 dv.M dv)
+  support_work = 0.0;
+  for (int r = 0; r < C.n_rows(); ++r) support_work += mu[r] * C.given_v[r];
   std::vector<double> Mdv(v.size());
   _K.multiply(dv, Mdv);
   double lost = 0.0;
@@ -188,9 +208,11 @@ double StepProblem::project_velocities_onto(ConstrainedFactor& factor, const Con
 }
 
 double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const ConstraintBlock& C,
-                                             const std::vector<bool>& massive) {
-  // M a + R = 0 on the DOFs with mass, C a = 0; then R there is -M a (the constraint forces
-  // that hold C a = 0 included); a massless DOF keeps its R and a = 0
+                                             const std::vector<bool>& massive,
+                                             std::vector<double>& l,
+                                             std::span<const double> released) {
+  // M a + R = 0 on the DOFs with mass, C a + given_a = 0; then R there is -M a (the constraint
+  // forces that hold C a = 0 included); a massless DOF keeps its R and a = 0
   const EquationMap& eqm = _loads.equations();
   const LocalIndex n = eqm.n_eq();
   std::vector<double> b(static_cast<std::size_t>(n)), a(b.size()), Ma(b.size());
@@ -200,9 +222,12 @@ double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const Co
   };
   for (LocalIndex i = 0; i < n; ++i) {
     const LocalIndex s = eqm.eq_slot[i];
-    b[i] = massive[i] ? -_s.r_start[s] - coupling(s) : 0.0;
+    b[i] = massive[i] ? -_s.r_start[s] - coupling(s) + (released.empty() ? 0.0 : released[i]) : 0.0;
   }
-  std::vector<double> g(static_cast<std::size_t>(C.n_rows()), 0.0), l(g.size());
+  // C a + given_a = 0: accelerations compatible with the rows' prescribed DOFs too
+  std::vector<double> g(C.given_a.begin(), C.given_a.end());
+  g.resize(static_cast<std::size_t>(C.n_rows()), 0.0);
+  l.assign(g.size(), 0.0);
   factor.solve(b, g, a, l);
   for (LocalIndex i = 0; i < n; ++i)
     if (!massive[i]) a[i] = 0.0;
@@ -217,16 +242,84 @@ double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const Co
   return amax;
 }
 
-double StepProblem::impact(ConstrainedSolver& solver, double t) {
+double StepProblem::impact_accelerations(ConstrainedSolver& solver, ConstrainedFactor& factor,
+                                         const ConstraintBlock& C, const std::vector<bool>& massive,
+                                         double token) {
+  // The accelerations after an impact with the contacts unilateral: a gap whose force would pull
+  // (normal multiplier < 0) separates at the impact's instant ("the points that acquire the same
+  // velocity sometimes separate just after the impact", Theory Guide, "Intermittent
+  // contact/impact"): its force, in R as the increment left it, is taken out and its row
+  // dropped, and the rest solved again (a few passes: each drops at least one row). Holding
+  // such a row kept a pull in a(t) that the next increment's trapezoid spent as it opened.
+  const EquationMap& eqm = _loads.equations();
+  const LocalIndex n = eqm.n_eq();
+  const std::vector<double> r_start = _s.r_start;
+  ConstraintBlock rows = C;
+  std::unique_ptr<ConstrainedFactor> own;
+  ConstrainedFactor* f = &factor;
+  std::vector<double> released(static_cast<std::size_t>(n), 0.0), l;
+  for (int pass = 0;; ++pass) {
+    _s.r_start = r_start;
+    const double amax = consistent_accelerations(*f, rows, massive, l, released);
+    std::vector<bool> keep(static_cast<std::size_t>(rows.n_rows()), true);
+    bool dropped = false;
+    for (int r = 0; r < rows.n_rows() && pass < 8; ++r) {
+      const std::int64_t m = rows.multiplier[r];
+      if (!_disc.is_contact_normal(m) || _disc.multiplier_committed(m) + l[r] >= 0.0) continue;
+      for (auto k = rows.row_ptr[r]; k < rows.row_ptr[r + 1]; ++k)
+        released[rows.col[k]] += _disc.multiplier_committed(m) * rows.val[k];
+      _disc.multiplier_committed(m) = _disc.multiplier_trial(m) = 0.0;
+      keep[r] = false;
+      dropped = true;
+    }
+    if (dropped)
+      log::debug("  impact: {} contact(s) separate at once",
+                 std::count(keep.begin(), keep.end(), false));
+    if (!dropped) { // the rows' forces that hold the contacts from now on: R + C^T l
+      for (int r = 0; r < rows.n_rows(); ++r) {
+        _disc.multiplier_committed(rows.multiplier[r]) += l[r];
+        _disc.multiplier_trial(rows.multiplier[r]) += l[r];
+      }
+      return amax;
+    }
+    rows = select_rows(rows, keep);
+    for (LocalIndex i = 0; i < n; ++i)
+      if (!massive[i]) _K.add(i, i, token);
+    own = solver.factorize(_K, rows, true, _stats);
+    for (LocalIndex i = 0; i < n; ++i)
+      if (!massive[i]) _K.add(i, i, -token);
+    f = own.get();
+  }
+}
+
+double StepProblem::impact(ConstrainedSolver& solver, double t,
+                           std::span<const std::int64_t> new_rows) {
+  // the work of the rows that closed in the increment over their travel (the gap's force rising
+  // from 0 to the one that stopped the approach): kinetic energy the increment's own solution
+  // gave up at the impact, which the trapezoid put into the gap's internal energy
+  double absorbed = 0.0;
+  for (int r = 0; r < _C.n_rows(); ++r)
+    if (_C.compliance[r] == 0.0 && r < static_cast<int>(_C.travel.size()) &&
+        std::binary_search(new_rows.begin(), new_rows.end(), _C.multiplier[r]))
+      absorbed += 0.5 * _disc.multiplier_committed(_C.multiplier[r]) * _C.travel[r];
+  // the increment's own imbalance: 0 to rounding for the trapezoidal rule; HHT's weights make
+  // the trapezoid of an impulsive force inexact (a few percent of the impact's loss, either
+  // sign): it is the impact's too
+  const double gained = _s.energies().etotal() - _etotal_before;
   // keep the converged increment's forces for its frame and the step's checks
   const std::vector<double> f_int = _s.f_int, f_ext = _s.f_ext, f_dyn = _f_dyn;
+  const std::vector<double> v_before = _s.v_start;
   const DynamicRestart r = restart_dynamics(solver, t, true, true);
   _s.f_int = f_int;
   _s.f_ext = f_ext;
   _f_dyn = f_dyn;
-  _s.allke = std::max(0.0, _s.allke - r.energy_lost); // ALLKL: what the impact took
-  _s.allkl += r.energy_lost;
-  return r.energy_lost;
+  reset_energy_start_forces(v_before);
+  // ALLKL: what the impact took; a moving support's impulse works on what it hits (ALLWK)
+  _s.allke = std::max(0.0, _s.allke + r.support_work - r.energy_lost);
+  _s.allie -= absorbed;
+  _s.allkl += r.energy_lost + absorbed - gained;
+  _s.allwk += r.support_work;
+  return r.energy_lost + absorbed - gained;
 }
 
 double StepProblem::half_increment_residual(double t0, double dt) {

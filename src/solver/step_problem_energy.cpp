@@ -8,6 +8,7 @@
 namespace gapfem {
 
 void StepProblem::account_energies() {
+  _etotal_before = _s.energies().etotal();
   const std::size_t n = _s.u.size();
   for (auto* f : {&_s.f_elem_start, &_s.f_damp_start, &_s.f_ext_start, &_s.f_other_start})
     if (f->size() != n) f->assign(n, 0.0);
@@ -45,6 +46,31 @@ void StepProblem::account_energies() {
     _s.f_other_start[k] = other;
   }
   _s.allke = ke;
+}
+
+void StepProblem::reset_energy_start_forces(std::span<const double> v_before) {
+  const std::size_t n = _s.u.size();
+  if (_s.f_other_start.size() != n || _s.f_damp_start.size() != n) return; // no increment yet
+  std::vector<double> f(n), Ma(n, 0.0), Cv(n, 0.0);
+  const StepContext keep = _ctx;
+  _ctx.rates = RateCoefficients{};
+  _ctx.rates.first_order = _ctx.rates.second_order = true;
+  _ctx.rates.v_v = 1.0;
+  _ctx.rates.a_a = 1.0;
+  FieldView fv = fields();
+  fv.rate_given = {};
+  fv.v_start = v_before; // the damping forces the accelerations were solved with
+  _asm.assemble(fv, _ctx, f, nullptr, nullptr, OperatorWeights{1.0, 1.0, 1.0, 1.0},
+                RateForces{Ma, Cv, {}});
+  _ctx = keep;
+  const auto prescribed = _loads.prescribed();
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool fixed = k < prescribed.size() && prescribed[k];
+    const double fx = _s.f_ext[k];
+    _s.f_elem_start[k] = f[k] - Ma[k] - Cv[k];
+    _s.f_damp_start[k] = Cv[k];
+    _s.f_other_start[k] = fixed ? f[k] - fx : fx - f[k];
+  }
 }
 
 } // namespace gapfem
