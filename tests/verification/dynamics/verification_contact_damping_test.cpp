@@ -66,7 +66,7 @@ double omega_d() {
   return omega() * std::sqrt(1.0 - zeta() * zeta());
 }
 
-std::string impact_deck(double dt, double period) {
+std::string impact_deck(double dt, double period, double d = 0.0, const std::string& damping = "") {
   return fmt::format(R"(*HEADING
 a point mass striking a damped penalty stop
 *NODE
@@ -79,7 +79,7 @@ a point mass striking a damped penalty stop
 *ELEMENT, TYPE=GAPUNI, ELSET=G
 10, 1, 2
 *GAP, ELSET=G
-0., 1., 0., 0., {}
+{}, 1., 0., 0., {}
 *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR
 {}
 *CONTACT DAMPING
@@ -98,7 +98,8 @@ U, V
 S
 *END STEP
 )",
-                     kM, kA, kKp, kCd, kV0, dt, period);
+                     kM, d, kA, kKp, damping.empty() ? fmt::format("{}", kCd) : damping, kV0, dt,
+                     period);
 }
 
 struct State {
@@ -252,6 +253,61 @@ TEST_F(VerificationContactDamping, EnergyBalancesAndTheDampingWorkIsTheEnergyLos
              "{})\n",
              lost, e0, damping, remainder,
              1.0 - std::exp(-2.0 * std::numbers::pi * zeta() / std::sqrt(1.0 - zeta() * zeta())));
+}
+
+// The clearance c0 and the fraction f (data line: c_d, c0, f): the coefficient is A c_d for
+// h <= f c0, falls linearly to 0 at h = c0 and is 0 beyond (gap_elements.md §7, Abaqus's Contact
+// damping figure), whether the gap is open or closed. The mass now starts open, h = d = 0.01, with
+// c0 = 0.02 and f = 0.5: fully damped while it approaches (m v' = -c v, the contact law idle),
+// then in contact, then back out through the ramp 0.01 < h < 0.02 and free beyond. Each increment
+// of the scheme (header) solves, by bisection (the residual rises with u_{n+1}: 4m/dt^2 dominates
+// the ramp's slope), m a_{n+1} + c(h_{n+1}) (u_{n+1} - u_n)/dt + k max(u_{n+1} - d, 0) = 0,
+// h = d - u; ETOTAL stays constant (1e-9). The solver matches the recursion to 1e-9 of v0/w until
+// the mass enters the ramp; there the coefficient depends on h_{n+1} (a nonlinear increment) and
+// Newton stops within its residual tolerance (0.005 of the force scale, about 0.075 here, i.e.
+// a displacement bound 0.075 / (4 m/dt^2) = 4e-8 per increment): measured 1.9e-10 on entering the
+// ramp, carried on by the free flight to 7e-10 at the end; allowed 1e-7 of v0/w = 3.2e-9.
+TEST(VerificationContactDampingClearance, DampingActsOpenWithinC0AndRampsOffFromFC0ToC0) {
+  constexpr double d = 0.01, c0 = 0.02, f = 0.5, dt = 0.001;
+  constexpr int count = 200;
+  const JobResult r =
+      run_deck(impact_deck(dt, count * dt, d, fmt::format("{}, {}, {}", kCd, c0, f)));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const auto coef = [&](double h) {
+    return h <= f * c0 ? kC : h < c0 ? kC * (c0 - h) / (c0 - f * c0) : 0.0;
+  };
+  double u = 0.0, v = kV0, a = 0.0;
+  int n = 0, damped_open = 0, ramp = 0, free = 0, contact = 0;
+  for (const Frame& fr : r.frames) {
+    if (fr.increment <= 0) continue;
+    const auto acc = [&](double x) { return 4.0 / (dt * dt) * (x - u - dt * v) - a; };
+    const auto residual = [&](double x) {
+      return kM * acc(x) + coef(d - x) * (x - u) / dt + kK * std::max(x - d, 0.0);
+    };
+    double lo = u - 1.0, hi = u + 1.0;
+    for (int i = 0; i < 200; ++i) (residual(0.5 * (lo + hi)) > 0.0 ? hi : lo) = 0.5 * (lo + hi);
+    const double x = 0.5 * (lo + hi), ax = acc(x);
+    v += 0.5 * dt * (a + ax);
+    a = ax;
+    u = x;
+    const double h = d - u;
+    (h <= 0.0 ? contact : h <= f * c0 ? damped_open : h < c0 ? ramp : free) += 1;
+    ++n;
+    const double tol = (ramp + free > 0 ? 1e-7 : 1e-9) * kV0 / omega();
+    ASSERT_NEAR(test::U(r, fr, 1)[0], u, tol) << "increment " << n << " h " << h;
+    const GapRecord& g = test::gap(r, fr, 10);
+    EXPECT_NEAR(g.clearance, h, tol);
+    ASSERT_TRUE(fr.energies.has_value());
+    EXPECT_NEAR(fr.energies->etotal(), 0.5 * kM * kV0 * kV0, 1e-9 * 0.5 * kM * kV0 * kV0);
+  }
+  EXPECT_EQ(n, count);
+  // every regime was visited: open and fully damped, closed, in the ramp, free
+  EXPECT_GT(damped_open, 5);
+  EXPECT_GT(contact, 50);
+  EXPECT_GT(ramp, 3);
+  EXPECT_GT(free, 5);
+  fmt::print("increments open-damped {}, contact {}, ramp {}, free {}; final velocity {}\n",
+             damped_open, contact, ramp, free, v);
 }
 
 } // namespace
