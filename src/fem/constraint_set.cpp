@@ -196,8 +196,13 @@ void ConstraintSet::assemble(std::span<const double> u, std::span<double> f_int,
       flux_sum[fld] += std::abs(f);
       ++flux_count[fld];
     }
-    if (C && C->add_row(row_eqs(r), coeffs, g, first_multiplier + r) && !given.v.empty())
+    if (C && C->add_row(row_eqs(r), coeffs, g, first_multiplier + r) && !given.v.empty()) {
       C->add_given(row_eqs(r), slots, coeffs, given); // dynamic: prescribed rates
+      if (!_rate.empty()) { // the right-hand side's own rates: C v - rate_v = 0
+        C->given_v.back() -= _rate[2 * static_cast<std::size_t>(r)];
+        C->given_a.back() -= _rate[2 * static_cast<std::size_t>(r) + 1];
+      }
+    }
   }
 }
 

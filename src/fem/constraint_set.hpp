@@ -49,6 +49,14 @@ class ConstraintSet {
   int bc_row(NodeId node, int dof) const;
   /// Right-hand side of row r (a boundary condition's value in its local system).
   void set_value(int r, double v) { _value[r] = v; }
+  /// The rates of row r's right-hand side (a boundary condition in a local system given as a
+  /// velocity or acceleration): in dynamic steps the row holds C v = rate_v, C a = rate_a.
+  void clear_rates() { _rate.clear(); }
+  void set_rates(int r, double rate_v, double rate_a) {
+    if (_rate.size() != 2 * _value.size()) _rate.assign(2 * _value.size(), 0.0);
+    _rate[2 * static_cast<std::size_t>(r)] = rate_v;
+    _rate[2 * static_cast<std::size_t>(r) + 1] = rate_a;
+  }
   bool active(int r) const { return _active[r] != 0; }
   /// Equations of row r in the current step (-1: prescribed), for the sparsity pattern.
   std::span<const LocalIndex> row_eqs(int r) const {
@@ -70,6 +78,7 @@ class ConstraintSet {
   std::vector<LocalIndex> _slot, _eq;
   std::vector<double> _coeff;
   std::vector<double> _value;
+  std::vector<double> _rate; ///< 2 per row (set_rates), empty when none is set
   std::vector<int> _source;
   std::vector<std::uint8_t> _active;
   std::map<std::pair<NodeId, int>, int> _bc_row;

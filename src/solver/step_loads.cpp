@@ -58,13 +58,23 @@ void StepLoads::set_boundary_conditions(const Discretization& disc, std::span<co
     const int d = abaqus_number(bc.dof);
     if (d <= 6)
       if (const auto Q = _model.node_axes(bc.node)) {
-        if (bc.type != BoundaryType::Displacement)
-          throw InputError(bc.loc, fmt::format("node {}", _model.node_label(bc.node)),
-                           "a prescribed velocity or acceleration at a node with a *TRANSFORM "
-                           "system is not supported; prescribe it in global directions or give "
-                           "the integrated displacement");
-        if (!add_local_bc(bc, d, local_value(dofs, u_now, bc.node, d, *Q), disc.constraints()))
-          ignored.note(_model, bc);
+        const int base = d <= 3 ? 0 : 3, i = d - 1 - base;
+        std::array<LocalIndex, 3> slots{};
+        std::array<double, 3> axis{};
+        for (int j = 0; j < 3; ++j) {
+          slots[j] = dofs.slot(bc.node, static_cast<DofType>(base + j));
+          axis[j] = (*Q)[3 * i + j];
+        }
+        const bool added =
+            bc.type == BoundaryType::Displacement
+                ? add_local_bc(bc, d, local_value(dofs, u_now, bc.node, d, *Q), disc.constraints())
+                : add_local_motion(bc, d, slots, axis, disc.constraints());
+        for (LocalBc& l : _local)
+          if (l.node == bc.node && l.dof == d) {
+            l.slots = slots;
+            l.axis = axis;
+          }
+        if (!added) ignored.note(_model, bc);
         continue;
       }
     const LocalIndex s = dofs.slot(bc.node, bc.dof);
@@ -109,6 +119,7 @@ bool StepLoads::add_local_bc(const BoundaryEntry& bc, int d, double now,
                              const ConstraintSet& rows) {
   const int row = rows.bc_row(bc.node, d);
   if (row < 0) return false;
+  std::erase_if(_local, [&](const LocalBc& l) { return l.row == row && l.moving; });
   Scalar sc;
   sc.start = now;
   sc.end = bc.fixed ? sc.start : bc.value;
@@ -121,8 +132,15 @@ bool StepLoads::add_local_bc(const BoundaryEntry& bc, int d, double now,
       replaced = true;
     }
   if (!replaced) {
-    _local.push_back({bc.node, d, row, sc});
-    _local_keys.emplace_back(bc.node, d);
+    LocalBc l;
+    l.node = bc.node;
+    l.dof = d;
+    l.row = row;
+    l.value = sc;
+    _local.push_back(l);
+    if (std::find(_local_keys.begin(), _local_keys.end(), std::make_pair(bc.node, d)) ==
+        _local_keys.end())
+      _local_keys.emplace_back(bc.node, d);
   }
   return true;
 }
@@ -284,8 +302,39 @@ void StepLoads::add_nodal_loads(double step_time, std::span<double> f_ext) const
   for (const NodalEntry& e : _nodal) f_ext[e.slot] += e.factor * value(e.value, step_time);
 }
 
-void StepLoads::apply_local_bcs(double step_time, ConstraintSet& rows) const {
-  for (const LocalBc& l : _local) rows.set_value(l.row, value(l.value, step_time));
+void StepLoads::apply_local_bcs(double t0, double t1, std::span<const double> u0,
+                                std::span<const double> v0, std::span<const double> a0,
+                                ConstraintSet& rows) const {
+  rows.clear_rates();
+  for (const LocalBc& l : _local) {
+    // the committed displacement, velocity and acceleration along the local axis
+    const auto along = [&](std::span<const double> x) {
+      double c = 0.0;
+      if (!x.empty())
+        for (int j = 0; j < 3; ++j)
+          if (l.slots[j] >= 0) c += l.axis[j] * x[l.slots[j]];
+      return c;
+    };
+    if (!l.moving) { // a displacement: its row moves as the node did (the integrator's rates)
+      rows.set_value(l.row, value(l.value, t1));
+      if (!v0.empty()) rows.set_rates(l.row, along(v0), along(a0));
+      continue;
+    }
+    // from the committed state, as apply_prescribed_motion
+    const Motion& mo = l.motion;
+    const double un = along(u0), vn = along(v0);
+    if (mo.acceleration) {
+      rows.set_value(l.row, un + vn * (t1 - t0) + motion(mo, t0, t1, 3));
+      rows.set_rates(l.row, vn + motion(mo, t0, t1, 2), motion(mo, t0, t1, 0));
+    } else {
+      rows.set_value(l.row, un + motion(mo, t0, t1, 2));
+      rows.set_rates(l.row, motion(mo, t0, t1, 0), motion(mo, t0, t1, 1));
+    }
+  }
+}
+
+bool StepLoads::has_local_motion() const {
+  return std::any_of(_local.begin(), _local.end(), [](const LocalBc& l) { return l.moving; });
 }
 
 void StepLoads::distributed_loads(double step_time, std::vector<ActiveLoad>& out) const {

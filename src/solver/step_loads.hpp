@@ -63,13 +63,26 @@ class StepLoads {
   /// prescribed acceleration's velocity integrated from v0 at t0 (v0 may alias v).
   void prescribed_rates(double t0, double t1, std::span<const double> v0, std::span<double> v,
                         std::span<double> a) const;
+  /// The same for the conditions in local systems (*TRANSFORM nodes): the component along each
+  /// one's local axis of v and a at its node's slots becomes the prescribed one (a committed state
+  /// follows the prescribed motion exactly, as at a global DOF).
+  void prescribed_local_rates(double t0, double t1, std::span<const double> v0, std::span<double> v,
+                              std::span<double> a) const;
   /// 1 at the slots of those conditions in `mask` (per slot).
   void mark_motion(std::span<std::uint8_t> mask) const;
   bool has_motion() const { return !_motion.empty(); }
   /// Boundary conditions of this step in local systems (*TRANSFORM nodes): (node, DOF 1-6).
   std::span<const std::pair<NodeId, int>> local_bcs() const { return _local_keys; }
-  /// Their values at `step_time` as the right-hand sides of their constraint rows.
-  void apply_local_bcs(double step_time, ConstraintSet& rows) const;
+  /// Their values at step time t1 as the right-hand sides of their constraint rows; a velocity or
+  /// acceleration integrated exactly over [t0, t1] from the committed state (u0, v0, a0 per slot,
+  /// v0 and a0 empty without rates) as apply_prescribed_motion does. In dynamic steps also the
+  /// rates of the right-hand sides: the prescribed ones, or a displacement's the node's committed
+  /// velocity and acceleration along the axis (an impact leaves them as they are).
+  void apply_local_bcs(double t0, double t1, std::span<const double> u0, std::span<const double> v0,
+                       std::span<const double> a0, ConstraintSet& rows) const;
+  /// Whether a velocity or acceleration is prescribed in a local system (its row's right-hand
+  /// side moves with its own rates: the step's start makes the velocities compatible with it).
+  bool has_local_motion() const;
   /// Add the concentrated loads (and released-reaction loads) at `step_time` to f_ext (per slot).
   void add_nodal_loads(double step_time, std::span<double> f_ext) const;
   /// The distributed loads active at `step_time`.
@@ -127,6 +140,12 @@ class StepLoads {
   /// A condition on local DOF d (1-6) of a transformed node, whose value is `now` at the step
   /// start; false when the node's constraint rows lack it (no element has the DOF).
   bool add_local_bc(const BoundaryEntry& bc, int d, double now, const ConstraintSet& rows);
+  /// A velocity or acceleration on local DOF d of a transformed node (its global slots and the
+  /// local axis' components); false as add_local_bc.
+  bool add_local_motion(const BoundaryEntry& bc, int d, const std::array<LocalIndex, 3>& slots,
+                        const std::array<double, 3>& axis, const ConstraintSet& rows);
+  /// A TYPE=ACCELERATION condition outside a *DYNAMIC step: the error.
+  void check_motion(const BoundaryEntry& bc) const;
   /// _nodal, _nodal_keys: this step's CLOAD/CFLUX and the previous step's removed ones.
   void set_concentrated_loads(const DofMap& dofs, const LoadHistory& history);
   /// _nodal: reactions of released boundary conditions, ramped to zero.
@@ -157,10 +176,14 @@ class StepLoads {
   };
   std::vector<NodalEntry> _nodal;
   struct LocalBc {
-    NodeId node;
-    int dof; ///< 1-6
-    int row; ///< its ConstraintSet row
+    NodeId node{};
+    int dof = 0;  ///< 1-6
+    int row = -1; ///< its ConstraintSet row
     Scalar value;
+    bool moving = false; ///< a velocity or acceleration: `motion`
+    Motion motion{};
+    std::array<LocalIndex, 3> slots{-1, -1, -1}; ///< the node's global slots of the DOF's kind
+    std::array<double, 3> axis{};                ///< the local axis in them
   };
   std::vector<LocalBc> _local;
   std::vector<std::pair<NodeId, int>> _local_keys;

@@ -1,9 +1,11 @@
 // Prescribed velocities and accelerations (*BOUNDARY, TYPE=VELOCITY|ACCELERATION): the motion
 // q(t) of each driven DOF and its exact integrals over an increment. Theory and the Abaqus rules
 // followed (default variation, propagation, static steps): docs/theory/dynamics.md, "Base motion".
+#include "fem/constraint_set.hpp"
 #include "model/model.hpp"
 #include "solver/step_loads.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 
 namespace gapfem {
@@ -61,6 +63,38 @@ double StepLoads::end_rate(int k, const BoundaryEntry& bc) const {
 }
 
 void StepLoads::add_motion(const BoundaryEntry& bc, LocalIndex s) {
+  check_motion(bc);
+  std::erase_if(_bc, [&](const auto& e) { return e.first == s; });
+  std::erase_if(_motion, [&](const Motion& m) { return m.slot == s; });
+  Motion mo = make_motion(_step_index, bc, _step_start);
+  mo.slot = s;
+  _motion.push_back(mo);
+  _prescribed[s] = 1;
+}
+
+bool StepLoads::add_local_motion(const BoundaryEntry& bc, int d,
+                                 const std::array<LocalIndex, 3>& slots,
+                                 const std::array<double, 3>& axis, const ConstraintSet& rows) {
+  check_motion(bc);
+  const int row = rows.bc_row(bc.node, d);
+  if (row < 0) return false;
+  std::erase_if(_local, [&](const LocalBc& l) { return l.row == row; });
+  LocalBc l;
+  l.node = bc.node;
+  l.dof = d;
+  l.row = row;
+  l.moving = true;
+  l.motion = make_motion(_step_index, bc, _step_start);
+  l.slots = slots;
+  l.axis = axis;
+  _local.push_back(l);
+  if (std::find(_local_keys.begin(), _local_keys.end(), std::make_pair(bc.node, d)) ==
+      _local_keys.end())
+    _local_keys.emplace_back(bc.node, d);
+  return true;
+}
+
+void StepLoads::check_motion(const BoundaryEntry& bc) const {
   if (bc.type == BoundaryType::Acceleration && _step.procedure != Procedure::Dynamic)
     throw InputError(
         bc.loc, fmt::format("node {}", _model.node_label(bc.node)),
@@ -69,12 +103,6 @@ void StepLoads::add_motion(const BoundaryEntry& bc, LocalIndex s) {
                     "the condition with OP=NEW",
                     bc.propagated ? ", carried over from an earlier step" : "", _step.number,
                     procedure_name(_step.procedure)));
-  std::erase_if(_bc, [&](const auto& e) { return e.first == s; });
-  std::erase_if(_motion, [&](const Motion& m) { return m.slot == s; });
-  Motion mo = make_motion(_step_index, bc, _step_start);
-  mo.slot = s;
-  _motion.push_back(mo);
-  _prescribed[s] = 1;
 }
 
 double StepLoads::motion(const Motion& mo, double t0, double t1, int which) const {
@@ -132,6 +160,30 @@ void StepLoads::prescribed_rates(double t0, double t1, std::span<const double> v
       v[s] = motion(mo, t0, t1, 0);
       a[s] = motion(mo, t0, t1, 1);
     }
+  }
+}
+
+void StepLoads::prescribed_local_rates(double t0, double t1, std::span<const double> v0,
+                                       std::span<double> v, std::span<double> a) const {
+  if (v.empty() || a.empty()) return;
+  for (const LocalBc& l : _local) {
+    if (!l.moving) continue;
+    const auto along = [&](std::span<const double> x) {
+      double c = 0.0;
+      for (int j = 0; j < 3; ++j)
+        if (l.slots[j] >= 0) c += l.axis[j] * x[l.slots[j]];
+      return c;
+    };
+    const Motion& mo = l.motion;
+    const double vq = mo.acceleration ? (v0.empty() ? 0.0 : along(v0)) + motion(mo, t0, t1, 2)
+                                      : motion(mo, t0, t1, 0);
+    const double aq = motion(mo, t0, t1, mo.acceleration ? 0 : 1);
+    const double dv = vq - along(v), da = aq - along(a);
+    for (int j = 0; j < 3; ++j)
+      if (l.slots[j] >= 0) {
+        v[l.slots[j]] += l.axis[j] * dv;
+        a[l.slots[j]] += l.axis[j] * da;
+      }
   }
 }
 

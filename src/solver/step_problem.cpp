@@ -73,7 +73,8 @@ void StepProblem::begin_increment(double t0, double dt, int increment,
     }
     _loads.prescribed_rates(t0, _ctx.step_time, _s.v_start, _s.v, _s.a);
   }
-  _loads.apply_local_bcs(_ctx.step_time, _disc.constraints());
+  _loads.apply_local_bcs(t0, _ctx.step_time, _s.u_start, _s.v_start, _s.a_start,
+                         _disc.constraints());
   if (_loads.has_temperature_field()) _loads.temperatures(_ctx.step_time, _s.T);
   if (_loads.has_temperature_gradients()) {
     _s.G.resize(2 * _s.T.size());
@@ -94,6 +95,7 @@ void StepProblem::commit() {
   // the trial rates of the converged increment (they become the committed below)
   if (!_s.v_start.empty()) _integrator->rates(_s.u, _s.u_start, _s.v_start, _s.a_start, _s.v, _s.a);
   _loads.prescribed_rates(_ctx.step_time - _ctx.dt, _ctx.step_time, _s.v_start, _s.v, _s.a);
+  _loads.prescribed_local_rates(_ctx.step_time - _ctx.dt, _ctx.step_time, _s.v_start, _s.v, _s.a);
   account_energies();
   if (!_s.r_start.empty() && _ctx.rates.defined()) commit_rate_history();
   if (!_s.v_start.empty()) {

@@ -158,7 +158,7 @@ class StepProblem final : public NonlinearProblem {
   /// R(t) at the committed state and, on request, the accelerations of M a + R = 0 and the
   /// velocities projected onto the active exact rows (start_dynamic_step, impact).
   DynamicRestart restart_dynamics(ConstrainedSolver& solver, double t, bool accelerations,
-                                  bool project_velocities);
+                                  bool project_velocities, bool impact);
   double project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
                                  const std::vector<bool>& massive, double& support_work);
   /// M a + R - released = 0, C a + given_a = 0 (l: the rows' forces added to R's); a and R(t)
@@ -184,6 +184,10 @@ class StepProblem final : public NonlinearProblem {
   /// (v_before, as R(t) of the accelerations' solve), the constraint forces and reactions that
   /// balance M a + I + C v - P
   void reset_energy_start_forces(std::span<const double> v_before);
+  /// The forces of the rows of boundary conditions in local systems per slot (C^T lambda, as in
+  /// f_int; empty when the step has none) and the slots they hold (`held`, 1 there): their
+  /// reactions, ALLWK's.
+  std::vector<double> local_bc_forces(std::vector<std::uint8_t>& held) const;
   /// HHT's history term: history_weight() R(t) into f_int (after the assembly).
   void add_rate_history();
   /// R(t + dt) = f_int - f_ext - history term - inertia_weight() M a at a converged state.

@@ -77,14 +77,18 @@ double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_a
   if (_s.a_start.size() != _s.u.size()) _s.a_start.assign(_s.u.size(), 0.0);
   if (_s.v_start.size() != _s.u.size()) _s.v_start.assign(_s.u.size(), 0.0);
   _loads.prescribed_rates(0.0, 0.0, _s.v_start, _s.v_start, _s.a_start); // base motion at t = 0
-  const DynamicRestart r = restart_dynamics(solver, 0.0, initial_accelerations, false);
+  _loads.prescribed_local_rates(0.0, 0.0, _s.v_start, _s.v_start, _s.a_start);
+  // a velocity prescribed in a local system (a *TRANSFORM node's row) starts compatible with it
+  const DynamicRestart r =
+      restart_dynamics(solver, 0.0, initial_accelerations, _loads.has_local_motion(), false);
   _s.f_ext_start = _s.f_ext; // the step's loads at its start (ALLWK)
   _s.allke = r.kinetic_energy;
   return r.amax;
 }
 
 DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t,
-                                             bool accelerations, bool project_velocities) {
+                                             bool accelerations, bool project_velocities,
+                                             bool impact) {
   DynamicRestart out;
   // R(t): the residual at the committed state and the step's loads at t, no rates (dt = 0)
   begin_increment(t, 0.0);
@@ -131,12 +135,14 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   // it (the velocity field it projects is discontinuous: a stiffness-proportional damping of its
   // jumps, kept in R(t), kicked the next increments through HHT's a_n terms, unstable)
   add_rate_forces();
-  if (project_velocities)
+  if (project_velocities) {
     out.energy_lost = project_velocities_onto(*factor, C, massive, out.support_work);
+    out.kinetic_energy = kinetic_energy(_K, eqm, _s.v_start);
+  }
   std::vector<double> l;
   if (accelerations)
-    out.amax = project_velocities ? impact_accelerations(solver, *factor, C, massive, token)
-                                  : consistent_accelerations(*factor, C, massive, l);
+    out.amax = impact ? impact_accelerations(solver, *factor, C, massive, token)
+                      : consistent_accelerations(*factor, C, massive, l);
   return out;
 }
 
@@ -309,7 +315,7 @@ double StepProblem::impact(ConstrainedSolver& solver, double t,
   // keep the converged increment's forces for its frame and the step's checks
   const std::vector<double> f_int = _s.f_int, f_ext = _s.f_ext, f_dyn = _f_dyn;
   const std::vector<double> v_before = _s.v_start;
-  const DynamicRestart r = restart_dynamics(solver, t, true, true);
+  const DynamicRestart r = restart_dynamics(solver, t, true, true, true);
   _s.f_int = f_int;
   _s.f_ext = f_ext;
   _f_dyn = f_dyn;

@@ -3,6 +3,7 @@
 // the trapezoidal rule of time integration makes exact (M a's work then equals the change of 1/2
 // v.M v, so ETOTAL stays constant to the Newton tolerance); the kinetic energy 1/2 v.M v at each
 // commit.
+#include "fem/constraint_set.hpp"
 #include "solver/step_problem.hpp"
 
 namespace gapfem {
@@ -19,6 +20,8 @@ void StepProblem::account_energies() {
   const double wi = dynamic ? _integrator->inertia_weight() : 1.0;
   const auto prescribed = _loads.prescribed();
   const bool rates = _s.v.size() == n;
+  std::vector<std::uint8_t> held;
+  const std::vector<double> f_bc = local_bc_forces(held);
   double ke = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     const double du = _s.u[k] - _s.u_start[k];
@@ -32,7 +35,11 @@ void StepProblem::account_energies() {
       if (rates) ke += 0.5 * _s.v[k] * _momentum[k];
     }
     const double fx = _s.f_ext[k];
-    const bool fixed = k < prescribed.size() && prescribed[k];
+    // a slot a boundary condition in a local system holds is a prescribed one for the books: its
+    // row's force is the reaction (ALLWK), not an element's
+    const bool local = !held.empty() && held[k];
+    if (local) fe -= f_bc[k];
+    const bool fixed = local || (k < prescribed.size() && prescribed[k]);
     // a prescribed slot's reaction (the physical forces there), a free slot's constraint forces
     const double other = fixed ? fi + fe + fd - fx : fx - _s.f_int[k];
     _s.allie += 0.5 * (_s.f_elem_start[k] + fe) * du;
@@ -46,6 +53,27 @@ void StepProblem::account_energies() {
     _s.f_other_start[k] = other;
   }
   _s.allke = ke;
+}
+
+std::vector<double> StepProblem::local_bc_forces(std::vector<std::uint8_t>& held) const {
+  const ConstraintSet& rows = _disc.constraints();
+  std::vector<double> f;
+  held.clear();
+  for (const auto& [node, dof] : _loads.local_bcs()) {
+    const int r = rows.bc_row(node, dof);
+    if (r < 0 || !rows.active(r)) continue;
+    if (f.empty()) {
+      f.assign(_s.u.size(), 0.0);
+      held.assign(_s.u.size(), 0);
+    }
+    const auto slots = rows.row_slots(r);
+    const auto coeffs = rows.row_coeffs(r);
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+      f[slots[k]] += coeffs[k] * rows.mult_trial[static_cast<std::size_t>(r)];
+      held[slots[k]] = 1;
+    }
+  }
+  return f;
 }
 
 void StepProblem::reset_energy_start_forces(std::span<const double> v_before) {
@@ -64,12 +92,15 @@ void StepProblem::reset_energy_start_forces(std::span<const double> v_before) {
                 RateForces{Ma, Cv, {}});
   _ctx = keep;
   const auto prescribed = _loads.prescribed();
+  std::vector<std::uint8_t> held;
+  const std::vector<double> f_bc = local_bc_forces(held);
   for (std::size_t k = 0; k < n; ++k) {
     const bool fixed = k < prescribed.size() && prescribed[k];
     const double fx = _s.f_ext[k];
-    _s.f_elem_start[k] = f[k] - Ma[k] - Cv[k];
+    const bool local = !held.empty() && held[k];
+    _s.f_elem_start[k] = f[k] - Ma[k] - Cv[k] - (local ? f_bc[k] : 0.0);
     _s.f_damp_start[k] = Cv[k];
-    _s.f_other_start[k] = fixed ? f[k] - fx : fx - f[k];
+    _s.f_other_start[k] = fixed || local ? f[k] - (local ? f_bc[k] : 0.0) - fx : fx - f[k];
   }
 }
 
