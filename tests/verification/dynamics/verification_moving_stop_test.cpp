@@ -198,5 +198,69 @@ TEST(VerificationMovingStop, ShakenTableLandingsTrapezoidalRule) {
   expect_landings_on_the_table("ALPHA=0.", 1e-6);
 }
 
+// 3. A mass thrown at a fixed stop against a constant pull F away from it (v0 = 1, F/m = 2 m/s^2,
+//    trapezoidal rule): the plastic impact stops it on the stop, and the pull then takes it away
+//    at once. The accelerations after the impact treat the contact as unilateral: the gap whose
+//    force would pull is dropped (docs/theory/dynamics.md §5), so the state the next increment
+//    starts from is u = d, v = 0, a = -F/m, and the free flight that follows is exact for the
+//    trapezoidal rule under a constant force: u(t) = d - (F/m) (t - t_n)^2 / 2 from the impact
+//    increment's end t_n, to 1e-12. Held bilaterally, the contact kept a = 0 at t_n and the first
+//    increment lagged by (F/m) dt^2 / 4.
+TEST(VerificationMovingStop, APulledMassLeavesTheStopAtOnce) {
+  constexpr double kF = 4.0, kDt = 0.003;
+  const JobResult r = test::run_deck(fmt::format(R"(*HEADING
+A mass thrown at a stop against a pull
+*NODE
+2, 0., 0., 0.
+3, 0.5, 0., 0.
+*ELEMENT, TYPE=MASS, ELSET=PM
+5, 2
+*MASS, ELSET=PM
+{}
+*ELEMENT, TYPE=GAPUNI, ELSET=G
+10, 2, 3
+*GAP, ELSET=G
+{}, 1., 0., 0., 1.
+*AMPLITUDE, NAME=CONST
+0., 1., 10., 1.
+*BOUNDARY
+2, 2, 3
+3, 1, 3
+*INITIAL CONDITIONS, TYPE=VELOCITY
+2, 1, 1.
+*STEP, INC=1000
+*DYNAMIC, DIRECT, ALPHA=0.
+{}, 0.06
+*CLOAD, AMPLITUDE=CONST
+2, 1, {}
+*NODE PRINT, FREQUENCY=1
+U, V, A
+*END STEP
+)",
+                                                 kM, kD, kDt, -kF));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const LocalIndex mass = r.model->mesh.find_node(2);
+  double t_n = -1.0;
+  int after = 0;
+  for (const Frame& f : r.frames) {
+    if (f.increment == 0) continue;
+    const double u = f.nodes.U.at(mass)[0];
+    if (t_n < 0.0) {
+      if (u < kD - 1e-12) continue;
+      t_n = f.step_time; // the impact increment's end: on the stop, at rest, pulled away
+      EXPECT_NEAR(u, kD, 1e-12);
+      EXPECT_NEAR(f.nodes.V.at(mass)[0], 0.0, 1e-12);
+      EXPECT_NEAR(f.nodes.A.at(mass)[0], -kF / kM, 1e-12);
+      continue;
+    }
+    const double tau = f.step_time - t_n;
+    EXPECT_NEAR(u, kD - 0.5 * kF / kM * tau * tau, 1e-12) << f.step_time;
+    EXPECT_NEAR(f.nodes.V.at(mass)[0], -kF / kM * tau, 1e-10) << f.step_time;
+    ++after;
+  }
+  EXPECT_GT(t_n, 0.0);
+  EXPECT_GE(after, 10);
+}
+
 } // namespace
 } // namespace gapfem
