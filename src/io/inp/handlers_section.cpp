@@ -473,9 +473,9 @@ void handle_mass(BuildState& s, const Keyword& kw) {
 }
 
 void handle_rotary_inertia(BuildState& s, const Keyword& kw) {
-  reject_param(kw, "ORIENTATION",
-               "give the inertia tensor in global axes (the orientation of a rotary inertia is "
-               "not in gapfem yet)");
+  if (kw.has("ORIENTATION")) // turned to global axes by resolve_rotary_orientations
+    s.rotary_orientations.emplace_back(s.model.mass_sections.size(),
+                                       s.set_name(name_param(kw, "ORIENTATION", true)));
   MassSection sec;
   sec.elset = set_param(s, kw, "ELSET", true);
   sec.loc = kw.loc;

@@ -115,6 +115,9 @@ struct BuildState {
   std::vector<DataLine> spring_dof_line;
   /// *ORIENTATION by upper-case name (orientation.hpp), resolved where one is referred to
   std::map<std::string, OrientationDef> orientations;
+  /// *ROTARY INERTIA, ORIENTATION=: the mass section's index and the orientation's name (its
+  /// tensor is turned to global axes once every *ORIENTATION is read)
+  std::vector<std::pair<std::size_t, std::string>> rotary_orientations;
 
   Parent parent = Parent::None;
   int current_material = -1, current_gap = -1, current_field = -1, current_change = -1;

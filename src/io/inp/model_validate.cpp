@@ -565,6 +565,7 @@ void finish_model_data(BuildState& s) {
 
     check_materials(s);
     check_space(s);
+    resolve_rotary_orientations(s);
     build_deferred_constraints(s);
     for (const auto& gap : m.gap_sections) check_gap(s, gap);
 

@@ -191,4 +191,41 @@ void resolve_spring_orientation(BuildState& s, SpringSection& sec, ElementType t
                         why));
 }
 
+void resolve_rotary_orientations(BuildState& s) {
+  for (const auto& [index, name] : s.rotary_orientations) {
+    MassSection& sec = s.model.mass_sections[index];
+    const std::string entity = fmt::format("ORIENTATION={}", name);
+    const auto it = s.orientations.find(name);
+    if (it == s.orientations.end()) {
+      s.error(sec.loc, entity,
+              fmt::format("no *ORIENTATION, NAME={} is defined; define it (a rectangular system: "
+                          "point a on the local 1-axis, b in the local 1-2 plane) or correct the "
+                          "name",
+                          name));
+      continue;
+    }
+    std::string why;
+    const auto axes = it->second.definition == OrientationDef::Definition::OffsetToNodes
+                          ? std::nullopt
+                          : spring_axes(s, it->second, why);
+    if (it->second.definition == OrientationDef::Definition::OffsetToNodes)
+      why = "DEFINITION=OFFSET TO NODES is not taken for a rotary inertia (a one-node element); "
+            "give the points' coordinates or global node numbers";
+    if (!axes) {
+      s.error(it->second.loc, fmt::format("NAME={}", name),
+              fmt::format("this orientation is used by *ROTARY INERTIA, ELSET={} at {}: {}",
+                          sec.elset, sec.loc.str(), why));
+      continue;
+    }
+    const auto& I = sec.inertia; // I11, I22, I33, I12, I13, I23
+    const double L[3][3] = {{I[0], I[3], I[4]}, {I[3], I[1], I[5]}, {I[4], I[5], I[2]}};
+    double G[3][3] = {};
+    for (int a = 0; a < 3; ++a) // G_ab = sum_ij e_i[a] L_ij e_j[b]
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) G[a][b] += (*axes)[i][a] * L[i][j] * (*axes)[j][b];
+    sec.inertia = {G[0][0], G[1][1], G[2][2], G[0][1], G[0][2], G[1][2]};
+  }
+}
+
 } // namespace gapfem::inp

@@ -2,9 +2,10 @@
 /// @file orientation.hpp
 /// *ORIENTATION as read (Abaqus Keywords Reference, *ORIENTATION,
 /// https://abaqus-docs.mit.edu/2017/English/SIMACAEKEYRefMap/simakey-r-orientation.htm): kept by
-/// name while the deck is read and turned into axes where something refers to it. Today only
-/// *SPRING and *DASHPOT, ORIENTATION= use it (SPRING1/2, DASHPOT1/2: the DOFs of the data line are
-/// then local); the other keywords that take ORIENTATION= still refuse the parameter. An
+/// name while the deck is read and turned into axes where something refers to it. Today *SPRING
+/// and *DASHPOT, ORIENTATION= use it (SPRING1/2, DASHPOT1/2: the DOFs of the data line are then
+/// local) and *ROTARY INERTIA (its tensor in the local axes); the other keywords that take
+/// ORIENTATION= still refuse the parameter. An
 /// orientation nothing refers to changes nothing and is only read.
 #include "common/error.hpp"
 #include "common/types.hpp"
@@ -48,5 +49,10 @@ std::optional<std::array<Vec3, 3>> rectangular_axes(const Vec3& a, const Vec3& b
 /// Keywords Reference gives ORIENTATION for those only), that it is defined and rectangular, and
 /// sets `sec.axes`; reports what is wrong through `s` (one error) and leaves `axes` empty then.
 void resolve_spring_orientation(BuildState& s, SpringSection& sec, ElementType type);
+
+/// *ROTARY INERTIA, ORIENTATION=: the tensors given in the orientation's axes turned to global
+/// ones, I_global = R I R^T (R's columns the local axes); one error per orientation that is missing
+/// or not rectangular.
+void resolve_rotary_orientations(BuildState& s);
 
 } // namespace gapfem::inp

@@ -4,6 +4,7 @@
 #include "unit/io/reader_test_util.hpp"
 
 #include <cmath>
+#include <fmt/format.h>
 #include <numbers>
 
 namespace gapfem {
@@ -77,6 +78,49 @@ TEST(ReaderOrientation, SpringsReferringToWhatTheyCannotUseAreErrors) {
   EXPECT_CONTAINS(error_text(deck("*ORIENTATION, NAME=OR\n1., 0., 0., 0., 1., 0.\n"
                                   "*ORIENTATION, NAME=OR\n1., 0., 0., 0., 1., 0.\n")),
                   "the orientation OR is already defined");
+}
+
+/// *ROTARY INERTIA, ORIENTATION=: the data line is the tensor in the local axes; the model holds
+/// it in global ones, I = R I_local R^T (R's columns the local axes; gapfem's ROTARYI takes the
+/// six values as the symmetric matrix's entries).
+/// Local 1 = global y, local 2 = -global x, local 3 = z; I_local = [[1, .5, 0], [.5, 2, 0],
+/// [0, 0, 3]]: I_xx = e2x^2 * 2 = 2, I_yy = e1y^2 * 1 = 1, I_xy = e2x L21 e1y = -0.5, I_zz = 3.
+/// A 30-degree orientation about z keeps the trace and the z row (closed form below).
+std::string rotary_deck(const std::string& orientation) {
+  return "*NODE\n1, 0., 0., 0.\n" + orientation +
+         "*ELEMENT, TYPE=ROTARYI, ELSET=R\n10, 1\n*ROTARY INERTIA, ELSET=R, ORIENTATION=OR\n"
+         "1., 2., 3., 0.5, 0., 0.\n";
+}
+
+TEST(ReaderOrientation, RotaryInertiaIsTurnedToGlobalAxes) {
+  {
+    const Model m = read(rotary_deck("*ORIENTATION, NAME=OR\n0., 1., 0., -1., 0., 0.\n"));
+    ASSERT_EQ(m.mass_sections.size(), 1u);
+    const auto& I = m.mass_sections[0].inertia;
+    const std::array<double, 6> want{2.0, 1.0, 3.0, -0.5, 0.0, 0.0};
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(I[k], want[k], 1e-15) << k;
+  }
+  const double c = std::cos(std::numbers::pi / 6), s = std::sin(std::numbers::pi / 6);
+  const Model m = read(
+      rotary_deck(fmt::format("*ORIENTATION, NAME=OR\n{}, {}, 0., {}, {}, 0.\n", c, s, -s, c)));
+  const auto& I = m.mass_sections[0].inertia;
+  // e1 = (c, s, 0), e2 = (-s, c, 0): I_xx = c^2 + 2 s^2 - 2 c s (0.5), I_yy = s^2 + 2 c^2 + c s,
+  // I_xy = c s - 2 s c + 0.5 (c^2 - s^2)
+  EXPECT_NEAR(I[0], c * c + 2 * s * s - c * s, 1e-14);
+  EXPECT_NEAR(I[1], s * s + 2 * c * c + c * s, 1e-14);
+  EXPECT_NEAR(I[2], 3.0, 1e-15);
+  EXPECT_NEAR(I[3], c * s - 2 * s * c + 0.5 * (c * c - s * s), 1e-14);
+  EXPECT_NEAR(I[4], 0.0, 1e-15);
+  EXPECT_NEAR(I[5], 0.0, 1e-15);
+}
+
+TEST(ReaderOrientation, RotaryInertiaErrors) {
+  EXPECT_NE(error_text(rotary_deck("")).find("no *ORIENTATION, NAME=OR is defined"),
+            std::string::npos);
+  EXPECT_NE(error_text(rotary_deck("*ORIENTATION, NAME=OR, DEFINITION=OFFSET TO NODES\n1, 1\n"))
+                .find("not taken for a rotary inertia"),
+            std::string::npos)
+      << error_text(rotary_deck("*ORIENTATION, NAME=OR, DEFINITION=OFFSET TO NODES\n1, 1\n"));
 }
 
 } // namespace
