@@ -178,6 +178,10 @@ class StepProblem final : public NonlinearProblem {
   /// coupling (_driven_inertia) for the accelerations' solve (restart_dynamics). False when
   /// nothing moves.
   bool add_rate_forces();
+  /// One residual assembly whose rate maps are v = fv.v_start, a = fv.a_start (every element sees
+  /// those rates, none the prescribed trial ones): f, and the operators' M a and C v per slot.
+  void assemble_at_rates(FieldView fv, const OperatorWeights& w, std::vector<double>& f,
+                         std::vector<double>& Ma, std::vector<double>& Cv);
   /// After an impact: the energies' start forces at the state it left, so the next increment's
   /// trapezoids start from the forces the accelerations were solved with: the elements' (the
   /// rows' new multipliers), the damping forces of the velocities before the projection

@@ -146,6 +146,18 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
   return out;
 }
 
+void StepProblem::assemble_at_rates(FieldView fv, const OperatorWeights& w, std::vector<double>& f,
+                                    std::vector<double>& Ma, std::vector<double>& Cv) {
+  const StepContext keep = _ctx;
+  _ctx.rates = RateCoefficients{};
+  _ctx.rates.first_order = _ctx.rates.second_order = true;
+  _ctx.rates.v_v = 1.0;
+  _ctx.rates.a_a = 1.0;
+  fv.rate_given = {};
+  _asm.assemble(fv, _ctx, f, nullptr, nullptr, w, RateForces{Ma, Cv, {}});
+  _ctx = keep;
+}
+
 bool StepProblem::add_rate_forces() {
   // one residual assembly whose rate maps are v = v_start and a = a_start, the accelerations
   // kept at driven DOFs only: every element sees the committed velocities (at a driven DOF the
@@ -165,17 +177,9 @@ bool StepProblem::add_rate_forces() {
   _driven_inertia.clear();
   if (!moving && !driven) return false;
   std::vector<double> f(n), Cv(n, 0.0), Ma(n, 0.0);
-  const StepContext keep = _ctx;
-  _ctx.rates = RateCoefficients{};
-  _ctx.rates.first_order = _ctx.rates.second_order = true;
-  _ctx.rates.v_v = 1.0;
-  _ctx.rates.a_a = 1.0;
   FieldView fv = fields();
-  fv.rate_given = {};
   fv.a_start = a;
-  _asm.assemble(fv, _ctx, f, nullptr, nullptr, OperatorWeights{1.0, 1.0, driven ? 1.0 : 0.0, 1.0},
-                RateForces{Ma, Cv, {}});
-  _ctx = keep;
+  assemble_at_rates(fv, OperatorWeights{1.0, 1.0, driven ? 1.0 : 0.0, 1.0}, f, Ma, Cv);
   _s.f_damp_start = Cv; // ALLVD's trapezoidal rule starts from the operators' forces
   for (std::size_t s = 0; s < n; ++s) _s.r_start[s] += f[s] - Ma[s] - _s.f_int[s];
   if (driven) _driven_inertia = std::move(Ma);

@@ -80,17 +80,9 @@ void StepProblem::reset_energy_start_forces(std::span<const double> v_before) {
   const std::size_t n = _s.u.size();
   if (_s.f_other_start.size() != n || _s.f_damp_start.size() != n) return; // no increment yet
   std::vector<double> f(n), Ma(n, 0.0), Cv(n, 0.0);
-  const StepContext keep = _ctx;
-  _ctx.rates = RateCoefficients{};
-  _ctx.rates.first_order = _ctx.rates.second_order = true;
-  _ctx.rates.v_v = 1.0;
-  _ctx.rates.a_a = 1.0;
   FieldView fv = fields();
-  fv.rate_given = {};
   fv.v_start = v_before; // the damping forces the accelerations were solved with
-  _asm.assemble(fv, _ctx, f, nullptr, nullptr, OperatorWeights{1.0, 1.0, 1.0, 1.0},
-                RateForces{Ma, Cv, {}});
-  _ctx = keep;
+  assemble_at_rates(fv, OperatorWeights{1.0, 1.0, 1.0, 1.0}, f, Ma, Cv);
   const auto prescribed = _loads.prescribed();
   std::vector<std::uint8_t> held;
   const std::vector<double> f_bc = local_bc_forces(held);
