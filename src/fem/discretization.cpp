@@ -197,15 +197,19 @@ double& Discretization::multiplier(std::int64_t index, bool trial) {
 }
 
 bool Discretization::is_contact_normal(std::int64_t index) const {
-  if (index >= _n_mult) return false;
+  return index >= 0 && contact_normal_of(index) == index;
+}
+
+std::int64_t Discretization::contact_normal_of(std::int64_t index) const {
+  if (index >= _n_mult) return -1;
   auto it = std::upper_bound(_mult_blocks.begin(), _mult_blocks.end(), index,
                              [](std::int64_t v, const auto& p) { return v < p.second; });
-  if (it == _mult_blocks.begin()) return false;
+  if (it == _mult_blocks.begin()) return -1;
   --it;
   const ElementBlock& b = _blocks[it->first];
   // a gap's multipliers: the normal force first, then its friction rows (gap_assemble.cpp)
-  return element_info(b.type).family == ElementFamily::Gap && b.n_mult > 0 &&
-         (index - it->second) % b.n_mult == 0;
+  if (element_info(b.type).family != ElementFamily::Gap || b.n_mult <= 0) return -1;
+  return it->second + (index - it->second) / b.n_mult * b.n_mult;
 }
 
 double& Discretization::multiplier_trial(std::int64_t index) {

@@ -81,6 +81,9 @@ class Discretization {
   /// Whether the multiplier is a gap's normal force (a unilateral row: compressive >= 0), not a
   /// friction row's or a linear constraint's (either sign).
   bool is_contact_normal(std::int64_t index) const;
+  /// The normal multiplier of the gap whose multiplier `index` is (its normal force or one of its
+  /// friction rows); -1 when it is no gap's.
+  std::int64_t contact_normal_of(std::int64_t index) const;
 
  private:
   double& multiplier(std::int64_t index, bool trial);

@@ -21,7 +21,7 @@ void TerminalWriter::increment(const IncrementInfo& info) {
   log::progress("  step {} inc {:>4} att {}  step time {:<11.5g} dt {:<11.4g} "
                 "{:>3} iterations{}",
                 info.step, info.increment, info.attempts, info.step_time, info.dt, info.iterations,
-                info.deltmx_exceeded ? fmt::format("  {} exceeded: repeated", info.accuracy_check)
+                info.deltmx_exceeded ? fmt::format("  {}: repeated", info.accuracy_check)
                 : info.converged     ? std::string()
                                      : std::string("  not converged: cut back"));
 }

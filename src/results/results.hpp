@@ -189,11 +189,12 @@ struct IncrementInfo {
   int step = 0, increment = 0, attempts = 0, iterations = 0, severe_discontinuities = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
   bool converged = true;
-  /// Newton converged, but the procedure's accuracy check failed (the temperature change exceeded
-  /// DELTMX, the half-increment residual HAFTOL): the increment is repeated smaller (converged is
-  /// then false)
+  /// Newton converged, but the procedure repeats the increment (converged is then false): its
+  /// accuracy check failed (the temperature change exceeded DELTMX, the half-increment residual
+  /// HAFTOL: repeated smaller), or a *DYNAMIC increment released hard contacts (repeated with
+  /// the release at its start)
   bool deltmx_exceeded = false;
-  const char* accuracy_check = "DELTMX"; ///< which check (when deltmx_exceeded)
+  const char* accuracy_check = "DELTMX exceeded"; ///< why it is repeated (deltmx_exceeded)
   /// *MONITOR: the monitored DOF's value after a converged increment (none when not due or the
   /// node does not carry the DOF)
   std::optional<double> monitor;

@@ -12,8 +12,9 @@ namespace gapfem {
 namespace {
 
 constexpr std::uint32_t kPayloadVersion =
-    6; // 3: the procedure's state last; 4: rates; 5: energies;
-// 6: a UEL element keeps one more history value (the step in which its damping was found zero)
+    7; // 3: the procedure's state last; 4: rates; 5: energies;
+// 6: a UEL element keeps one more history value (the step in which its damping was found zero);
+// 7: the velocities of the damping forces after an impact (SolutionState::v_damp)
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -163,7 +164,7 @@ void Analysis::Impl::begin_resume() {
     if (!f->empty() && f->size() != ns)
       throw RestartDataError("the restart record's forces do not fit the model");
   }
-  for (auto* r : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) { // dynamic steps
+  for (auto* r : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev, &st.v_damp}) { // dynamic steps
     in.vec(*r);
     if (!r->empty() && r->size() != ns)
       throw RestartDataError("the restart record's velocities do not fit the model");
@@ -273,7 +274,7 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.vec(st.f_elem_start);
   for (const double e : {st.allke, st.allvd, st.allwk, st.allkl, st.allcw, st.allfd}) a.pod(e);
   for (const auto* f : {&st.f_damp_start, &st.f_ext_start, &st.f_other_start}) a.vec(*f);
-  for (const auto* v : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev}) a.vec(*v);
+  for (const auto* v : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev, &st.v_damp}) a.vec(*v);
   for (const ElementBlock& b : disc.blocks()) {
     a.vec(b.state_committed);
     a.vec(b.mult_committed);

@@ -31,7 +31,7 @@ struct IncrementAccuracy {
   bool redo = false;
   /// The largest ratio of the next to this increment the procedure allows (0: no bound).
   double growth = 0.0;
-  const char* check = "DELTMX"; ///< the check's name in the reports of a repeated increment
+  const char* check = "DELTMX exceeded"; ///< why the increment is repeated (its reports)
 };
 
 class StepProcedure {

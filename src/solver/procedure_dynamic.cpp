@@ -47,6 +47,7 @@ class DynamicProcedure final : public StepProcedure {
     }
   }
   void accepted(StepRun& r, double dt) override;
+  void rejected(StepRun&) override { _released.clear(); }
   void finish(StepRun& r) override;
   void save(ArchiveWriter& a, const StepRun&) const override {
     a.vec(_active);
@@ -114,11 +115,13 @@ class DynamicProcedure final : public StepProcedure {
   double _amax = 0.0;
   double _etotal_start = 0.0; ///< ETOTAL at the step start
   double _scale = 0.0;        ///< the largest energy of the step so far
+  std::vector<std::int64_t> released_rows(StepRun& r) const;
   /// ALLFD: the gaps' accumulated frictional dissipation at the committed state.
   double friction_dissipation(StepRun& r) const;
   double _lost = 0.0; ///< kinetic energy removed by impacts in the step
   int _easy = 0;      ///< consecutive increments with a half-increment residual below 0.75 HAFTOL
-  std::vector<std::int64_t> _active; ///< the exact constraint rows active at the last commit
+  std::vector<std::int64_t> _active;   ///< the exact constraint rows active at the last commit
+  std::vector<std::int64_t> _released; ///< rows released at the start of this increment
 
   /// The multiplier ids of the exact rows of a constraint block, sorted.
   static std::vector<std::int64_t> exact_rows_of(const ConstraintBlock& C) {
@@ -144,7 +147,12 @@ void DynamicProcedure::accepted(StepRun& r, double dt) {
     const double lost = r.prob->impact(*_a.solver, t, closed);
     _lost += lost;
     log::debug("  impact at step time {:.6g}: kinetic energy {:.4g} removed", t, lost);
+  } else if (!_released.empty()) {
+    const double gained = r.prob->book_release();
+    log::debug("  release: the increment's imbalance {:.4g} booked with the contacts (ALLKL)",
+               gained);
   }
+  _released.clear();
   _scale = std::max(_scale, _a.st.energies().scale());
 }
 
@@ -184,17 +192,54 @@ void DynamicProcedure::finish(StepRun& r) {
         r.step->number, c.energy_change, c.energy_change / c.energy_scale, c.energy_scale));
 }
 
+/// The exact rows of gaps that the converged increment opened while they held a force at its
+/// start (the gaps' normal and friction rows, sorted): HHT's trapezoid let that force work over
+/// the opening; the release is put at the increment's start and the increment solved again
+/// (StepProblem::release_contacts, docs/theory/dynamics.md "Impact").
+std::vector<std::int64_t> DynamicProcedure::released_rows(StepRun& r) const {
+  const std::vector<std::int64_t> now = exact_rows_of(r.prob->constraints());
+  std::vector<std::int64_t> opened; // the normals that held a compressive force
+  for (const std::int64_t m : _active)
+    if (_a.disc.is_contact_normal(m) && _a.disc.multiplier_committed(m) > 0.0 &&
+        !std::binary_search(now.begin(), now.end(), m))
+      opened.push_back(m);
+  std::vector<std::int64_t> rows;
+  if (opened.empty()) return rows;
+  for (const std::int64_t m : _active)
+    if (std::binary_search(opened.begin(), opened.end(), _a.disc.contact_normal_of(m)))
+      rows.push_back(m);
+  return rows;
+}
+
 /// HAFTOL: the half-increment residual against the tolerance. Above it the increment is redone
 /// with 0.85 HAFTOL / residual of its size; after three increments in a row below 0.75 HAFTOL the
 /// next may grow by 0.8 HAFTOL / residual, at most 1.25 (docs/theory/dynamics.md).
 IncrementAccuracy DynamicProcedure::check_accuracy(StepRun& r, const IncrementInfo& info,
                                                    double dt) {
+  if (r.step->dynamic.hht && !_active.empty()) { // before HAFTOL: the increment is solved again
+    const std::vector<std::int64_t> rows = released_rows(r);
+    if (!rows.empty()) {
+      // the rows released before in this increment stay released (without their forces, the
+      // accelerations' solve gave them back a force, and they opened again: a cycle)
+      std::vector<std::int64_t> all;
+      std::set_union(_released.begin(), _released.end(), rows.begin(), rows.end(),
+                     std::back_inserter(all));
+      _released = std::move(all);
+      r.prob->release_contacts(*_a.solver, info.step_time - dt, _released);
+      log::debug("  increment {}: {} hard contact row(s) released at its start; solved again",
+                 info.increment, rows.size());
+      IncrementAccuracy out;
+      out.redo = true;
+      out.check = "hard contact released at the increment start";
+      return out;
+    }
+  }
   const auto& haftol = r.step->dynamic.haftol;
   if (!haftol) return {};
   const double res = r.prob->half_increment_residual(info.step_time - dt, dt);
   IncrementAccuracy out;
   out.growth = 1.0;
-  out.check = "HAFTOL";
+  out.check = "HAFTOL exceeded";
   if (res < 0.0) return out; // backward Euler: no half-step rule
   const double ratio = res > 0.0 ? *haftol / res : 1e30;
   if (ratio < 1.0) {

@@ -104,6 +104,7 @@ void StepProblem::commit() {
   }
   _s.u_start = _s.u;
   _s.T_start = _s.T;
+  _s.v_damp.clear();
   _disc.commit();
 }
 

@@ -48,6 +48,9 @@ struct SolutionState {
   /// state (time_integrator.hpp); empty outside dynamic steps.
   std::vector<double> r_start;
   std::vector<double> r_prev; ///< R one committed increment earlier (the half-step residual)
+  /// After an impact: the velocities before its projection, whose damping forces R(t) and the
+  /// energies' start forces hold (StepProblem::impact); empty when those are v_start's.
+  std::vector<double> v_damp;
 };
 
 /// What restarting the dynamics at a state found (StepProblem::restart_dynamics).
@@ -98,6 +101,19 @@ class StepProblem final : public NonlinearProblem {
   /// -M a. Returns the kinetic energy the impact removed (ALLKL: the projection's loss and the
   /// closing rows' work over the increment). The increment's forces (frame, checks) are kept.
   double impact(ConstrainedSolver& solver, double t, std::span<const std::int64_t> new_rows);
+  /// A release of hard contacts put at the increment's start t (step time), before the increment
+  /// is solved again: an increment opened gaps that held a force at its start, and HHT's
+  /// trapezoid let that force fall linearly to 0 over the opening, working on it (energy the
+  /// real contact, whose force is 0 when it separates, never gives). The rows `rows` (multiplier
+  /// ids, sorted: the gaps' normal and friction rows) lose their forces at the committed state
+  /// and the accelerations are solved again without them (the other contacts unilateral, as after
+  /// an impact), HHT's history R(t) and the energies' start forces with them.
+  void release_contacts(ConstrainedSolver& solver, double t, std::span<const std::int64_t> rows);
+  /// After the committed increment that followed a release (and had no impact): HHT's imbalance
+  /// over it (ETOTAL's change; the trapezoidal rule's is 0 to rounding), which the jump of the
+  /// released force at its start makes, is booked with the contact events in ALLKL, as an
+  /// impact's is (docs/theory/dynamics.md, §5). Returns it.
+  double book_release();
   /// The half-increment residual of the converged increment [t0, t0 + dt] (Abaqus Theory Guide,
   /// "Implicit dynamic analysis"): the largest component over the free equations of
   ///   M a + (1 + alpha) R - alpha/2 (R(t0) + R(t0 - dt_prev))
@@ -157,8 +173,11 @@ class StepProblem final : public NonlinearProblem {
   void begin_rates(double dt);
   /// R(t) at the committed state and, on request, the accelerations of M a + R = 0 and the
   /// velocities projected onto the active exact rows (start_dynamic_step, impact).
+  /// `impact`: the contacts unilateral in the accelerations' solve (impact_accelerations);
+  /// `released`: rows (multiplier ids, sorted) left out of it, their forces already zero.
   DynamicRestart restart_dynamics(ConstrainedSolver& solver, double t, bool accelerations,
-                                  bool project_velocities, bool impact);
+                                  bool project_velocities, bool impact,
+                                  std::span<const std::int64_t> released = {});
   double project_velocities_onto(ConstrainedFactor& factor, const ConstraintBlock& C,
                                  const std::vector<bool>& massive, double& support_work);
   /// M a + R - released = 0, C a + given_a = 0 (l: the rows' forces added to R's); a and R(t)
@@ -167,7 +186,8 @@ class StepProblem final : public NonlinearProblem {
                                   const std::vector<bool>& massive, std::vector<double>& l,
                                   std::span<const double> released = {});
   /// After an impact: consistent accelerations with unilateral contacts (a gap that would pull
-  /// separates), the rows' forces that hold them becoming the committed multipliers.
+  /// separates with its friction rows), the rows' forces that hold them becoming the committed
+  /// multipliers.
   double impact_accelerations(ConstrainedSolver& solver, ConstrainedFactor& factor,
                               const ConstraintBlock& C, const std::vector<bool>& massive,
                               double token);
@@ -178,6 +198,10 @@ class StepProblem final : public NonlinearProblem {
   /// coupling (_driven_inertia) for the accelerations' solve (restart_dynamics). False when
   /// nothing moves.
   bool add_rate_forces();
+  /// The velocities whose damping forces the committed state holds (SolutionState::v_damp).
+  std::span<const double> damped_velocities() const {
+    return _s.v_damp.empty() ? std::span<const double>(_s.v_start) : _s.v_damp;
+  }
   /// One residual assembly whose rate maps are v = fv.v_start, a = fv.a_start (every element sees
   /// those rates, none the prescribed trial ones): f, and the operators' M a and C v per slot.
   void assemble_at_rates(FieldView fv, const OperatorWeights& w, std::vector<double>& f,

@@ -88,7 +88,7 @@ double StepProblem::start_dynamic_step(ConstrainedSolver& solver, bool initial_a
 
 DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t,
                                              bool accelerations, bool project_velocities,
-                                             bool impact) {
+                                             bool impact, std::span<const std::int64_t> released) {
   DynamicRestart out;
   // R(t): the residual at the committed state and the step's loads at t, no rates (dt = 0)
   begin_increment(t, 0.0);
@@ -127,7 +127,11 @@ DynamicRestart StepProblem::restart_dynamics(ConstrainedSolver& solver, double t
     massive[i] = _K.diagonal(i) > 0.0;
     if (!massive[i]) _K.add(i, i, token);
   }
-  const ConstraintBlock C = exact_rows(_C);
+  std::vector<bool> rows; // every exact row but the released ones (still closed at the state)
+  if (!released.empty())
+    for (int r = 0; r < _C.n_rows(); ++r)
+      rows.push_back(!std::binary_search(released.begin(), released.end(), _C.multiplier[r]));
+  const ConstraintBlock C = exact_rows(_C, rows);
   const auto factor = solver.factorize(_K, C, true, _stats);
   for (LocalIndex i = 0; i < n; ++i)
     if (!massive[i]) _K.add(i, i, -token); // M again (energies)
@@ -178,6 +182,7 @@ bool StepProblem::add_rate_forces() {
   if (!moving && !driven) return false;
   std::vector<double> f(n), Cv(n, 0.0), Ma(n, 0.0);
   FieldView fv = fields();
+  fv.v_start = damped_velocities();
   fv.a_start = a;
   assemble_at_rates(fv, OperatorWeights{1.0, 1.0, driven ? 1.0 : 0.0, 1.0}, f, Ma, Cv);
   _s.f_damp_start = Cv; // ALLVD's trapezoidal rule starts from the operators' forces
@@ -246,7 +251,10 @@ double StepProblem::consistent_accelerations(ConstrainedFactor& factor, const Co
   for (LocalIndex i = 0; i < n; ++i) {
     const LocalIndex s = eqm.eq_slot[i];
     _s.a_start[s] = a[i];
-    if (massive[i]) _s.r_start[s] = -Ma[i] - coupling(s);
+    if (massive[i])
+      _s.r_start[s] = -Ma[i] - coupling(s);
+    else if (!released.empty()) // a massless DOF's R without the released rows' forces
+      _s.r_start[s] -= released[i];
     amax = std::max(amax, std::abs(a[i]));
   }
   return amax;
@@ -271,26 +279,30 @@ double StepProblem::impact_accelerations(ConstrainedSolver& solver, ConstrainedF
   for (int pass = 0;; ++pass) {
     _s.r_start = r_start;
     const double amax = consistent_accelerations(*f, rows, massive, l, released);
-    std::vector<bool> keep(static_cast<std::size_t>(rows.n_rows()), true);
-    bool dropped = false;
+    std::vector<std::int64_t> separate; // the normal rows of gaps whose force would pull
     for (int r = 0; r < rows.n_rows() && pass < 8; ++r) {
       const std::int64_t m = rows.multiplier[r];
-      if (!_disc.is_contact_normal(m) || _disc.multiplier_committed(m) + l[r] >= 0.0) continue;
-      for (auto k = rows.row_ptr[r]; k < rows.row_ptr[r + 1]; ++k)
-        released[rows.col[k]] += _disc.multiplier_committed(m) * rows.val[k];
-      _disc.multiplier_committed(m) = _disc.multiplier_trial(m) = 0.0;
-      keep[r] = false;
-      dropped = true;
+      if (_disc.is_contact_normal(m) && _disc.multiplier_committed(m) + l[r] < 0.0)
+        separate.push_back(m);
     }
-    if (dropped)
-      log::debug("  impact: {} contact(s) separate at once",
-                 std::count(keep.begin(), keep.end(), false));
-    if (!dropped) { // the rows' forces that hold the contacts from now on: R + C^T l
+    if (separate.empty()) { // the rows' forces that hold the contacts from now on: R + C^T l
       for (int r = 0; r < rows.n_rows(); ++r) {
         _disc.multiplier_committed(rows.multiplier[r]) += l[r];
         _disc.multiplier_trial(rows.multiplier[r]) += l[r];
       }
       return amax;
+    }
+    log::debug("  impact: {} contact(s) separate at once", separate.size());
+    std::sort(separate.begin(), separate.end());
+    std::vector<bool> keep(static_cast<std::size_t>(rows.n_rows()), true);
+    for (int r = 0; r < rows.n_rows(); ++r) { // a separating gap's friction rows go with it
+      const std::int64_t m = rows.multiplier[r];
+      if (!std::binary_search(separate.begin(), separate.end(), _disc.contact_normal_of(m)))
+        continue;
+      for (auto k = rows.row_ptr[r]; k < rows.row_ptr[r + 1]; ++k)
+        released[rows.col[k]] += _disc.multiplier_committed(m) * rows.val[k];
+      _disc.multiplier_committed(m) = _disc.multiplier_trial(m) = 0.0;
+      keep[r] = false;
     }
     rows = select_rows(rows, keep);
     for (LocalIndex i = 0; i < n; ++i)
@@ -300,6 +312,14 @@ double StepProblem::impact_accelerations(ConstrainedSolver& solver, ConstrainedF
       if (!massive[i]) _K.add(i, i, -token);
     f = own.get();
   }
+}
+
+void StepProblem::release_contacts(ConstrainedSolver& solver, double t,
+                                   std::span<const std::int64_t> rows) {
+  // the forces fall to 0 at t: R(t) is evaluated without them, and no trapezoid works on them
+  for (const std::int64_t m : rows) _disc.multiplier_committed(m) = 0.0;
+  restart_dynamics(solver, t, true, false, true, rows);
+  reset_energy_start_forces(damped_velocities());
 }
 
 double StepProblem::impact(ConstrainedSolver& solver, double t,
@@ -324,12 +344,19 @@ double StepProblem::impact(ConstrainedSolver& solver, double t,
   _s.f_ext = f_ext;
   _f_dyn = f_dyn;
   reset_energy_start_forces(v_before);
+  _s.v_damp = v_before; // a release at the next increment's start keeps these damping forces
   // ALLKL: what the impact took; a moving support's impulse works on what it hits (ALLWK)
   _s.allke = std::max(0.0, _s.allke + r.support_work - r.energy_lost);
   _s.allie -= absorbed;
   _s.allkl += r.energy_lost + absorbed - gained;
   _s.allwk += r.support_work;
   return r.energy_lost + absorbed - gained;
+}
+
+double StepProblem::book_release() {
+  const double gained = _s.energies().etotal() - _etotal_before;
+  _s.allkl -= gained;
+  return gained;
 }
 
 double StepProblem::half_increment_residual(double t0, double dt) {

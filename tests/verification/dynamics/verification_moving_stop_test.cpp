@@ -24,9 +24,11 @@
 //    into the table (1e-9 of the stroke), lands with the table's velocity at every landing
 //    (1e-9), ALLKL grows at each landing, and ETOTAL stays constant: to 1e-6 of the largest
 //    energy with the trapezoidal rule (the books are exact to the Newton tolerance: measured
-//    7e-8), to 1e-4 with HHT (the impacts' imbalance is theirs, but a lift-off, where the contact
-//    force falls to zero inside an increment, is not exact under HHT's weights either: measured
-//    2.5e-6 with TRANSIENT FIDELITY, 8.3e-6 with MODERATE DISSIPATION, both gains). Before, the
+//    6.9e-8); with HHT it never grows (1e-8) and falls by less than 1e-4 (measured -1.5e-5 with
+//    TRANSIENT FIDELITY, -2.3e-5 with MODERATE DISSIPATION). A lift-off is released at its
+//    increment's start (verification_release_test.cpp) and its increment's HHT imbalance is the
+//    contacts' (ALLKL), as an impact's; when the contact's force fell to zero inside the increment
+//    instead, HHT gained 2.5e-6 (TF) and 8.3e-6 (MD). Before, the
 //    projection stopped the mass dead instead of giving it the table's velocity, ALLIE went to -5.7
 //    and ETOTAL lost 31 %.
 #include "test_util.hpp"
@@ -154,7 +156,8 @@ U, V
                      kMass, kOmega, integrator, kTableA, -kMass * kG);
 }
 
-void expect_landings_on_the_table(const char* integrator, double etotal_tol) {
+/// ETOTAL at the end within [-loss_tol, gain_tol] of the largest energy.
+void expect_landings_on_the_table(const char* integrator, double gain_tol, double loss_tol) {
   const JobResult r = test::run_deck(shaken_table_deck(integrator));
   ASSERT_EQ(r.exit_code, 0) << r.error;
   for (const std::string& w : r.run.warnings)
@@ -183,19 +186,20 @@ void expect_landings_on_the_table(const char* integrator, double etotal_tol) {
   ASSERT_GT(scale, 0.0);
   ASSERT_FALSE(r.frames.empty());
   ASSERT_TRUE(r.frames.back().energies.has_value());
-  EXPECT_NEAR(r.frames.back().energies->etotal(), 0.0, etotal_tol * scale);
+  EXPECT_LE(r.frames.back().energies->etotal(), gain_tol * scale);
+  EXPECT_GE(r.frames.back().energies->etotal(), -loss_tol * scale);
 }
 
 TEST(VerificationMovingStop, ShakenTableLandingsTransientFidelity) {
-  expect_landings_on_the_table("APPLICATION=TRANSIENT FIDELITY", 1e-4);
+  expect_landings_on_the_table("APPLICATION=TRANSIENT FIDELITY", 1e-8, 1e-4);
 }
 
 TEST(VerificationMovingStop, ShakenTableLandingsModerateDissipation) {
-  expect_landings_on_the_table("APPLICATION=MODERATE DISSIPATION", 1e-4);
+  expect_landings_on_the_table("APPLICATION=MODERATE DISSIPATION", 1e-8, 1e-4);
 }
 
 TEST(VerificationMovingStop, ShakenTableLandingsTrapezoidalRule) {
-  expect_landings_on_the_table("ALPHA=0.", 1e-6);
+  expect_landings_on_the_table("ALPHA=0.", 1e-6, 1e-6);
 }
 
 // 3. A mass thrown at a fixed stop against a constant pull F away from it (v0 = 1, F/m = 2 m/s^2,
