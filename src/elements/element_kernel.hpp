@@ -180,7 +180,8 @@ struct GapRecord {
   std::array<double, 2> shear{};          ///< S12, S13 (force/area)
   std::array<double, 2> friction_force{}; ///< friction forces in t1, t2
   double damping_force = 0.0;
-  double dissipation = 0.0; ///< accumulated frictional dissipation
+  double dissipation = 0.0;  ///< accumulated frictional dissipation
+  double damping_work = 0.0; ///< accumulated work of the contact damping forces
   bool thermal = false;
   double heat_flux = 0.0; ///< HFL1: per area, positive from node 1 to node 2
   double heat_flow = 0.0; ///< heat_flux * area

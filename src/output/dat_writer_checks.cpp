@@ -20,15 +20,16 @@ void write_energies(fmt::memory_buffer& buf, const StepChecks& c) {
   auto out = std::back_inserter(buf);
   const Energies& e = c.energies;
   fmt::format_to(out, " ENERGIES (SINCE THE ANALYSIS START)\n");
-  const std::pair<const char*, double> rows[] = {
-      {"ALLKE (KINETIC ENERGY)            ", e.allke},
-      {"ALLIE (INTERNAL ENERGY)           ", e.allie},
-      {"ALLVD (VISCOUS DISSIPATION)       ", e.allvd},
-      {"ALLFD (FRICTIONAL DISSIPATION)    ", e.allfd},
-      {"ALLSD (STABILIZATION DISSIPATION) ", e.allsd},
-      {"ALLKL (KINETIC ENERGY LOST, IMPACT)", e.allkl},
-      {"ALLWK (EXTERNAL WORK)             ", e.allwk},
-      {"ETOTAL (ENERGY BALANCE)           ", e.etotal()}};
+  const std::pair<const char*, double> rows[] = {{"ALLKE (KINETIC ENERGY)            ", e.allke},
+                                                 {"ALLIE (INTERNAL ENERGY)           ", e.allie},
+                                                 {"ALLVD (VISCOUS DISSIPATION)       ", e.allvd},
+                                                 {"ALLFD (FRICTIONAL DISSIPATION)    ", e.allfd},
+                                                 {"ALLSD (STABILIZATION DISSIPATION) ", e.allsd},
+                                                 {"ALLKL (KINETIC ENERGY LOST, IMPACT)", e.allkl},
+                                                 {"ALLWK (EXTERNAL WORK)             ", e.allwk},
+                                                 {"ETOTAL (ENERGY BALANCE)           ", e.etotal()},
+                                                 {"ALLSE (STRAIN ENERGY, OF ALLIE)   ", e.allse},
+                                                 {"ALLAE (ARTIFICIAL ENERGY, OF ALLIE)", e.allae}};
   for (const auto& [name, v] : rows) {
     fmt::format_to(out, "   {:<36}", name);
     append_e12(buf, v);

@@ -65,8 +65,8 @@ void append_table(fmt::memory_buffer& b, const std::vector<std::string>& columns
 void JsonWriter::append_history(fmt::memory_buffer& b) const {
   if (_energy_history.empty() && _history_rows.empty()) return;
   static const std::vector<std::string> kEnergyColumns = {
-      "increment", "step_time", "total_time", "ALLKE", "ALLIE",
-      "ALLVD",     "ALLFD",     "ALLKL",      "ALLWK", "ETOTAL"};
+      "increment", "step_time", "total_time", "ALLKE",  "ALLIE", "ALLVD",
+      "ALLFD",     "ALLKL",     "ALLWK",      "ETOTAL", "ALLSE", "ALLAE"};
   b.append(std::string_view(",\"history\":{"));
   if (!_energy_history.empty()) {
     b.append(std::string_view("\"energies\":"));
@@ -252,7 +252,8 @@ void JsonWriter::increment(const IncrementInfo& info) {
   if (info.energies) {
     const Energies& e = *info.energies;
     _energy_history.push_back({static_cast<double>(info.increment), info.step_time, info.total_time,
-                               e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal()});
+                               e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal(),
+                               e.allse, e.allae});
   }
   ++_seen.increments;
   _last = info;

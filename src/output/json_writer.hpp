@@ -75,8 +75,9 @@ class JsonWriter : public ResultWriter {
   /// hands that increment over again as its final frame, which is then marked "repeated".
   int _last_increment = -1;
   /// The open dynamic step's energies per converged increment: increment, step time, total time,
-  /// ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL (the step's "history": docs/results.md)
-  std::vector<std::array<double, 10>> _energy_history;
+  /// ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL, ALLSE, ALLAE (the step's "history":
+  /// docs/results.md)
+  std::vector<std::array<double, 12>> _energy_history;
   /// The open step's *OUTPUT, HISTORY values: column names and one row per sample (increment,
   /// step time, total time, then the values)
   std::vector<std::string> _history_columns;

@@ -279,7 +279,8 @@ std::string spaced(std::string_view text) {
 void append_energies(fmt::memory_buffer& out, const Energies& e) {
   const std::pair<std::string_view, double> terms[] = {
       {"ALLKE", e.allke}, {"ALLIE", e.allie}, {"ALLVD", e.allvd}, {"ALLFD", e.allfd},
-      {"ALLSD", e.allsd}, {"ALLKL", e.allkl}, {"ALLWK", e.allwk}, {"ETOTAL", e.etotal()}};
+      {"ALLSD", e.allsd}, {"ALLKL", e.allkl}, {"ALLWK", e.allwk}, {"ETOTAL", e.etotal()},
+      {"ALLSE", e.allse}, {"ALLAE", e.allae}};
   out.append(std::string_view(",\"energies\":{"));
   bool first = true;
   for (const auto& [name, v] : terms) {

@@ -57,7 +57,7 @@ if (DATA.gaps.length) {
     options: {scales: {x: linear('total time'), y: Object.assign(linear('gaps'), {min: 0})}}});
 }
 if (DATA.energies.length) {
-  const names = ['ALLKE', 'ALLIE', 'ALLVD', 'ALLFD', 'ALLKL', 'ALLWK', 'ETOTAL'];
+  const names = ['ALLKE', 'ALLSE', 'ALLIE', 'ALLVD', 'ALLFD', 'ALLKL', 'ALLWK', 'ETOTAL'];
   chart('energies', {type: 'line', data: {datasets: names.map((n, i) => ({
       label: n, borderColor: palette[i % palette.length], backgroundColor: palette[i % palette.length],
       pointRadius: 1, data: DATA.energies.map(e => ({x: e[0], y: e[i + 1]}))}))},
@@ -183,7 +183,8 @@ void write_report_page(fmt::memory_buffer& out, const ReportContent& c) {
   if (c.has_energies) {
     fmt::format_to(o, "<h2>Energies</h2>\n<p class=\"note\">Whole-model energies after each "
                       "increment of the dynamic steps (ETOTAL = ALLKE + ALLIE + ALLVD + ALLFD + "
-                      "ALLKL - ALLWK; docs/theory/dynamics.md).</p>\n");
+                      "ALLKL - ALLWK; ALLSE, the recoverable strain energy, is part of ALLIE; "
+                      "docs/theory/dynamics.md).</p>\n");
     canvas(out, "energies");
   }
   if (c.has_history) {

@@ -130,8 +130,8 @@ void ReportWriter::increment(const IncrementInfo& info) {
                        info.residual_history});
   if (info.converged && info.energies) {
     const Energies& e = *info.energies;
-    _energies.push_back(
-        {info.total_time, e.allke, e.allie, e.allvd, e.allfd, e.allkl, e.allwk, e.etotal()});
+    _energies.push_back({info.total_time, e.allke, e.allse, e.allie, e.allvd, e.allfd, e.allkl,
+                         e.allwk, e.etotal()});
   }
   if (info.converged && info.history_columns) {
     // the columns of the first step with history output; a later step with others is not drawn

@@ -59,8 +59,9 @@ class ReportWriter : public ResultWriter {
   std::vector<ElemId> _named; ///< resolved at begin()
   std::vector<Attempt> _attempts;
   std::vector<std::pair<double, int>> _contact_set; ///< (total time, closed gaps)
-  /// dynamic steps: (total time, ALLKE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL) per increment
-  std::vector<std::array<double, 8>> _energies;
+  /// dynamic steps: (total time, ALLKE, ALLSE, ALLIE, ALLVD, ALLFD, ALLKL, ALLWK, ETOTAL) per
+  /// increment
+  std::vector<std::array<double, 9>> _energies;
   /// *OUTPUT, HISTORY: the columns (of the first step that has any) and (total time, values…)
   std::vector<std::string> _history_columns;
   std::vector<std::vector<double>> _history;

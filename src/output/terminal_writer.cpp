@@ -72,10 +72,11 @@ void TerminalWriter::end_step(const Model& model, int step_index, const StepSumm
                   ? fmt::format(" (ALLAE/(ALLSE+ALLAE) {:.3g})", c.allae / (c.allse + c.allae))
                   : std::string());
   if (c.dynamic)
-    log::info("  energies: ALLKE {:.4g}, ALLIE {:.4g}, ALLVD {:.4g}, ALLFD {:.4g}, ALLKL {:.4g}, "
-              "ALLWK {:.4g}; ETOTAL changed by {:.3g} in the step ({:.2e} of the largest energy{})",
-              c.energies.allke, c.energies.allie, c.energies.allvd, c.energies.allfd,
-              c.energies.allkl, c.energies.allwk, c.energy_change,
+    log::info("  energies: ALLKE {:.4g}, ALLIE {:.4g} (ALLSE {:.4g}), ALLVD {:.4g}, ALLFD {:.4g}, "
+              "ALLKL {:.4g}, ALLWK {:.4g}; ETOTAL changed by {:.3g} in the step ({:.2e} of the "
+              "largest energy{})",
+              c.energies.allke, c.energies.allie, c.energies.allse, c.energies.allvd,
+              c.energies.allfd, c.energies.allkl, c.energies.allwk, c.energy_change,
               c.energy_scale > 0 ? c.energy_change / c.energy_scale : 0.0,
               c.conserving ? "; trapezoidal rule: conserving" : "; HHT dissipates");
   if (c.stabilized)

@@ -75,9 +75,12 @@ struct ElementResult {
 /// constraint forces, friction's dissipation taken out); viscous ALLVD (the damping operators:
 /// Rayleigh, dashpots, point-mass ALPHA); stabilization ALLSD; frictional ALLFD (the gaps');
 /// external work ALLWK (loads and the reactions of prescribed motion); kinetic energy lost at
-/// impacts ALLKL.
+/// impacts ALLKL. Parts of ALLIE (not in ETOTAL again): ALLSE, the recoverable strain energy
+/// (ALLIE less ALLAE and the gaps' contact damping work), and ALLAE, the hourglass controls'
+/// artificial strain energy.
 struct Energies {
   double allke = 0.0, allie = 0.0, allvd = 0.0, allsd = 0.0, allfd = 0.0, allwk = 0.0, allkl = 0.0;
+  double allse = 0.0, allae = 0.0;
   /// ETOTAL = ALLKE + ALLIE + ALLVD + ALLSD + ALLFD + ALLKL - ALLWK: constant (zero from a
   /// state at rest) when energy is conserved; HHT's numerical dissipation lowers it.
   double etotal() const { return allke + allie + allvd + allsd + allfd + allkl - allwk; }

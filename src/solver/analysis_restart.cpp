@@ -14,7 +14,8 @@ namespace {
 constexpr std::uint32_t kPayloadVersion =
     7; // 3: the procedure's state last; 4: rates; 5: energies;
 // 6: a UEL element keeps one more history value (the step in which its damping was found zero);
-// 7: the velocities of the damping forces after an impact (SolutionState::v_damp)
+// 7: the velocities of the damping forces after an impact (SolutionState::v_damp), ALLAE and the
+// gaps' contact damping work (ALLSE), a gap's damping work in its history
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -158,7 +159,9 @@ void Analysis::Impl::begin_resume() {
   in.pod(st.allie);
   in.pod(st.allsd);
   in.vec(st.f_elem_start);
-  for (double* e : {&st.allke, &st.allvd, &st.allwk, &st.allkl, &st.allcw, &st.allfd}) in.pod(*e);
+  for (double* e : {&st.allke, &st.allvd, &st.allwk, &st.allkl, &st.allcw, &st.allfd, &st.allae,
+                    &st.contact_damping})
+    in.pod(*e);
   for (auto* f : {&st.f_damp_start, &st.f_ext_start, &st.f_other_start}) {
     in.vec(*f);
     if (!f->empty() && f->size() != ns)
@@ -272,7 +275,9 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.pod(st.allie);
   a.pod(st.allsd);
   a.vec(st.f_elem_start);
-  for (const double e : {st.allke, st.allvd, st.allwk, st.allkl, st.allcw, st.allfd}) a.pod(e);
+  for (const double e :
+       {st.allke, st.allvd, st.allwk, st.allkl, st.allcw, st.allfd, st.allae, st.contact_damping})
+    a.pod(e);
   for (const auto* f : {&st.f_damp_start, &st.f_ext_start, &st.f_other_start}) a.vec(*f);
   for (const auto* v : {&st.v_start, &st.a_start, &st.r_start, &st.r_prev, &st.v_damp}) a.vec(*v);
   for (const ElementBlock& b : disc.blocks()) {

@@ -42,6 +42,7 @@ class DynamicProcedure final : public StepProcedure {
     }
     _active = exact_rows_of(r.prob->constraints());
     if (!resuming) {
+      recover_energies(r); // ALLSE's parts from the state the step starts at
       _etotal_start = _a.st.energies().etotal();
       _scale = _a.st.energies().scale();
     }
@@ -116,8 +117,9 @@ class DynamicProcedure final : public StepProcedure {
   double _etotal_start = 0.0; ///< ETOTAL at the step start
   double _scale = 0.0;        ///< the largest energy of the step so far
   std::vector<std::int64_t> released_rows(StepRun& r) const;
-  /// ALLFD: the gaps' accumulated frictional dissipation at the committed state.
-  double friction_dissipation(StepRun& r) const;
+  /// At the committed state: ALLFD (the gaps' accumulated frictional dissipation), their contact
+  /// damping work and ALLAE (the hourglass-controlled elements'), which ALLSE leaves out.
+  void recover_energies(StepRun& r) const;
   double _lost = 0.0; ///< kinetic energy removed by impacts in the step
   int _easy = 0;      ///< consecutive increments with a half-increment residual below 0.75 HAFTOL
   std::vector<std::int64_t> _active;   ///< the exact constraint rows active at the last commit
@@ -136,7 +138,7 @@ class DynamicProcedure final : public StepProcedure {
 /// An increment in which exact rows (hard gaps) became active is an impact: velocities and
 /// accelerations are made compatible with them (StepProblem::impact; docs/theory/dynamics.md).
 void DynamicProcedure::accepted(StepRun& r, double dt) {
-  if (_a.disc.has_gaps()) _a.st.allfd = friction_dissipation(r);
+  recover_energies(r);
   std::vector<std::int64_t> now = exact_rows_of(r.prob->constraints());
   std::vector<std::int64_t> closed; // the exact rows that became active: an impact
   std::set_difference(now.begin(), now.end(), _active.begin(), _active.end(),
@@ -156,19 +158,26 @@ void DynamicProcedure::accepted(StepRun& r, double dt) {
   _scale = std::max(_scale, _a.st.energies().scale());
 }
 
-double DynamicProcedure::friction_dissipation(StepRun& r) const {
+void DynamicProcedure::recover_energies(StepRun& r) const {
+  SolutionState& st = _a.st;
   const FieldView fields = r.prob->fields();
   ElementRecovery rec;
-  double d = 0.0;
+  double friction = 0.0, damping = 0.0, artificial = 0.0;
   for (const ElementBlock& b : _a.disc.blocks()) {
     const ElementTypeInfo& info = element_info(b.type);
-    if (info.family != ElementFamily::Gap || !info.displacement) continue;
+    const bool gap = info.family == ElementFamily::Gap && info.displacement;
+    if (!gap && !b.kernel->has_artificial_energy()) continue;
     for (std::size_t i = 0; i < b.size(); ++i) {
       _a.assembler.recover(b.elements[i], fields, r.prob->context(), rec);
-      if (rec.gap) d += rec.gap->dissipation;
+      artificial += rec.artificial_energy.value_or(0.0);
+      if (!rec.gap) continue;
+      friction += rec.gap->dissipation;
+      damping += rec.gap->damping_work;
     }
   }
-  return d;
+  st.allfd = friction;
+  st.contact_damping = damping;
+  st.allae = artificial;
 }
 
 /// The step's energy balance (docs/theory/dynamics.md, "Energies"): ETOTAL's change over the step

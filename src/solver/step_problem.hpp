@@ -40,9 +40,15 @@ struct SolutionState {
   /// slots; the reactions, physical forces M a + I + C v - P, at prescribed ones).
   double allke = 0.0, allvd = 0.0, allwk = 0.0, allkl = 0.0, allcw = 0.0, allfd = 0.0;
   std::vector<double> f_damp_start, f_ext_start, f_other_start;
-  /// The reported energies (ALLIE = the element and constraint work less ALLFD).
+  /// ALLIE's parts that are not recoverable strain energy, at the last commit (dynamic steps,
+  /// DynamicProcedure::accepted): the hourglass forces' energy ALLAE and the gaps' accumulated
+  /// contact damping work.
+  double allae = 0.0, contact_damping = 0.0;
+  /// The reported energies (ALLIE = the element and constraint work less ALLFD; ALLSE = ALLIE
+  /// less ALLAE and the contact damping work).
   Energies energies() const {
-    return {allke, allie + allcw - allfd, allvd, allsd, allfd, allwk, allkl};
+    const double ie = allie + allcw - allfd;
+    return {allke, ie, allvd, allsd, allfd, allwk, allkl, ie - allae - contact_damping, allae};
   }
   /// HHT (dynamic steps): the non-inertial residual R = I - P + L per slot at the committed
   /// state (time_integrator.hpp); empty outside dynamic steps.

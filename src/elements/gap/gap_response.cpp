@@ -333,6 +333,7 @@ void MechanicalGapKernel::damping(const ElementInput& in, Response& R, Local& L)
     coef *= area;
     dcoef *= area;
     const double hdot = (R.geom.h - G0.h) / L.dt;
+    L.closure = G0.h - R.geom.h;
     L.Fd = -coef * hdot;                   // compressive when closing
     L.dFd_du = coef / L.dt + dcoef * hdot; // dFd/du = factor * dg (dh/du = -dg)
     const double ct = dmp.tangent_fraction * coef;
@@ -392,6 +393,11 @@ void MechanicalGapKernel::store(const ElementInput& in, std::span<double> st, El
   st[GapStateLayout::damping] = L.Fd;
   st[GapStateLayout::damping + 1] = L.td[0];
   st[GapStateLayout::damping + 2] = L.td[1];
+  // the damping forces' work over the increment, by the trapezoidal rule as the energies book it
+  st[GapStateLayout::damping_work] =
+      s0[GapStateLayout::damping_work] + 0.5 * (s0[GapStateLayout::damping] + L.Fd) * L.closure +
+      0.5 * (s0[GapStateLayout::damping + 1] + L.td[0]) * L.dslip[0] +
+      0.5 * (s0[GapStateLayout::damping + 2] + L.td[1]) * L.dslip[1];
   for (int j = 0; j < L.n_slip_rows; ++j)
     out.add_constraint(1 + j, 0.0, {L.slip_row[j].data(), static_cast<std::size_t>(L.nd)},
                        L.slip_row_compliance[j]);

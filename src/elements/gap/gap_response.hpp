@@ -63,6 +63,7 @@ struct MechanicalGapKernel::Local {
   double dD_dN = 0.0;                              ///< d(dissipation)/d(normal force)
   // contact damping
   double Fd = 0.0, dFd_du = 0.0, dtd = 0.0, dcoef_dh_t = 0.0;
+  double closure = 0.0; ///< the increment's closure h_start - h (the damping force's work)
   Eigen::Vector2d td = Eigen::Vector2d::Zero();
   // frictional heating
   double w1 = 0.0, w2 = 0.0, eta_dt = 0.0;

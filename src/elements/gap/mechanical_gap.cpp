@@ -309,6 +309,7 @@ void MechanicalGapKernel::recover(const ElementInput& in, ElementRecovery& out) 
     rec.shear[a] = rec.friction_force[a] / _section.area;
   }
   rec.dissipation = in.state[GapStateLayout::dissipation];
+  rec.damping_work = in.state[GapStateLayout::damping_work];
   for (int k = 0; k < 3; ++k) {
     rec.direction[k] = R.geom.c[k];
     rec.t1[k] = R.t1[k];

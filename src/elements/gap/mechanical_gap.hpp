@@ -30,7 +30,8 @@ struct GapStateLayout {
   /// augmented Lagrange: the previous augmentation of this increment (multiplier estimate,
   /// overclosure, 1 when valid) for the secant update
   static constexpr int aug_previous = 15;
-  static constexpr int size = 18;
+  static constexpr int damping_work = 18; ///< accumulated work of the damping forces (ALLSE)
+  static constexpr int size = 19;
 };
 
 class MechanicalGapKernel final : public ElementKernel {

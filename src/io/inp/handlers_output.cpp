@@ -435,9 +435,9 @@ void handle_output_suboption(BuildState& s, const Keyword& kw) {
   if (s.parent == Parent::HistoryOutput && s.current_history >= 0 && kw.key == "ENERGYOUTPUT") {
     s.step.history_outputs[s.current_history].energies = true;
     if (kw.has("ELSET") || kw.has("VARIABLE"))
-      s.warn(kw.loc, "gapfem writes the whole model's energies (ALLKE, ALLIE, ALLVD, ALLFD, "
-                     "ALLSD, ALLKL, ALLWK, ETOTAL) as history output; energies per element set "
-                     "or per element are not written");
+      s.warn(kw.loc, "gapfem writes the whole model's energies (ALLKE, ALLIE, ALLSE, ALLAE, "
+                     "ALLVD, ALLFD, ALLSD, ALLKL, ALLWK, ETOTAL) as history output; energies per "
+                     "element set or per element are not written");
     return;
   }
   if (s.parent != Parent::FieldOutput) {
