@@ -37,6 +37,7 @@ class DynamicProcedure final : public StepProcedure {
 
   void set_up(StepRun& r, bool resuming) override {
     if (!resuming) { // a resumed step has the record's rates and history
+      warn_if_massless(r);
       if (r.index == 0) initial_velocities(r.loads->prescribed());
       _amax = r.prob->start_dynamic_step(*_a.solver, r.step->dynamic.initial_accelerations);
     }
@@ -90,6 +91,21 @@ class DynamicProcedure final : public StepProcedure {
   }
 
  private:
+  /// A model without any mass has no inertia: the step is a sequence of static solutions in time
+  /// (only damping makes it time dependent). Abaqus/Standard solves it too; a user who forgot
+  /// *DENSITY is told (DOFs without mass in a model with mass are normal: docs/theory/dynamics.md
+  /// §3).
+  void warn_if_massless(const StepRun& r) {
+    for (const ElementBlock& b : _a.disc.blocks())
+      if (b.kernel->has_mass()) return;
+    _a.solver_warnings.push_back(fmt::format(
+        "step {} (*DYNAMIC): no element of the model has mass (no *DENSITY in the materials of its "
+        "elements, no MASS, ROTARY INERTIA or mass matrix), so the step has no inertia and each "
+        "increment is a static solution at its time; give the materials *DENSITY for a dynamic "
+        "response",
+        r.step->number));
+  }
+
   /// *INITIAL CONDITIONS, TYPE=VELOCITY / ROTATING VELOCITY into the committed velocities (the
   /// analysis's first step): a transformed node's components are in its own system.
   void initial_velocities(std::span<const std::uint8_t> prescribed) {
