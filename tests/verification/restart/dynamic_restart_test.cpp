@@ -189,13 +189,20 @@ int run(const fs::path& dir, const Backend& b, const std::string& extra,
     if (const char* e = std::getenv("ASAN_OPTIONS")) asan = std::string(e) + ":detect_leaks=0";
     asan = "ASAN_OPTIONS='" + asan + "' ";
   }
+  // the shell's own messages (a failed cd, a launcher it cannot start) go beside the directory,
+  // so that a failure that never reached gapfem still says why (the terminal log is then empty)
+  const fs::path shell = dir.parent_path() / (dir.filename().string() + ".shell.log");
   const std::string cmd = fmt::format(
-      "cd '{}' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+      "( cd '{}' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
       "OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1 {}{} timeout 120 {}'{}' "
-      "{} {} {} > '{}' 2>&1",
-      dir.string(), asan, env, launcher, GAPFEM_EXE, b.args(), extra, deck, out.string());
+      "{} {} {} > '{}' 2>&1 ) 2> '{}'",
+      dir.string(), asan, env, launcher, GAPFEM_EXE, b.args(), extra, deck, out.string(),
+      shell.string());
   const int rc = std::system(cmd.c_str());
-  if (log) *log = slurp(out);
+  if (log) {
+    *log = slurp(out);
+    if (log->empty()) *log = "(no terminal output; the shell said: " + slurp(shell) + ")";
+  }
   return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
