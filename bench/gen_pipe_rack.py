@@ -26,6 +26,11 @@ nodes), so they grow along x (alpha * dT * spans * span at the free end), and a 
 --lateral N/m in +y (nodal *CLOAD) pushes them into the guides, where they close and the lines bow
 sideways between the guides.
 
+With --frequency N a third step follows: `*STEP, PERTURBATION` / `*FREQUENCY` / N, the natural
+frequencies about the hot state (docs/theory/frequency.md: closed hard gaps hold as constraint rows,
+open ones are free). CalculiX cannot run these decks (no GAPCYL, no ENCASTRE, SECTION=PIPE only on
+B32R), so they are gapfem's.
+
 Every pipe node is held by the beam itself back to the anchor, so the model has no rigid-body
 mode whatever the gap status (the ground nodes are fixed in 1-3). NLGEOM with B31 is an input
 error in gapfem, hence --nlgeom defaults to no (yes writes NLGEOM on the steps, to test that error).
@@ -59,6 +64,8 @@ def main():
                     help="NLGEOM on the steps (B31 with NLGEOM is an input error in gapfem)")
     ap.add_argument("--inc", type=float, default=0.25, help="initial increment of step 2 (fraction)")
     ap.add_argument("--print-gaps", action="store_true", help="*EL PRINT of the gap elements")
+    ap.add_argument("--frequency", type=int, default=None,
+                    help="a third step: this many natural frequencies about the hot state")
     ap.add_argument("-o", "--output", default="-")
     a = ap.parse_args()
     if a.lines < 1 or a.spans < 1 or a.elems < 1 or a.levels < 1:
@@ -170,6 +177,8 @@ def main():
         if guides:
             w("*EL PRINT, ELSET=GUIDES\nS, E\n")
     w("*END STEP\n")
+    if a.frequency is not None:
+        w(f"*STEP, NAME=MODES, PERTURBATION\n*FREQUENCY\n{a.frequency}\n*END STEP\n")
     if out is not sys.stdout:
         out.close()
     eqs = 6 * n_pipe - 6 * a.lines

@@ -30,6 +30,26 @@ Cases (generators in this directory):
                       top centre's U3 history against ccx's at the same times
   dyn-linear-50k      the same mesh with a fixed base and no NLGEOM: a linear dynamic step (one
                       factorisation expected for the whole step)
+  freq-<size>-ccx     *FREQUENCY (20 modes) about a preload (gen_frequency_block.py): the penalty
+                      block (k = 1e7) with a density, pressed onto its GAPUNI supports by a general
+                      *STATIC step (NLGEOM; a central patch closes), then `*STEP, PERTURBATION` /
+                      `*FREQUENCY` / 20 (ccx takes the static state as the base state only with
+                      PERTURBATION); the agreement is the largest relative difference of the 20
+                      frequencies (gapfem's job.results.json `modes` against ccx's EIGENVALUE
+                      OUTPUT in job.dat) and the closed-gap counts of the preload. gapfem's C3D8 is
+                      the B-bar element, ccx's is fully integrated: on the 6x6x6 mesh that alone
+                      puts the frequencies ~2.5 % apart (and closes 31 gaps against 29), falling as
+                      h^2 with refinement
+  freq-c3d20-<size>-ccx  the same deck with C3D20 bricks (gen_frequency_block.py --element C3D20),
+                      which both codes integrate alike: the frequencies must agree to ccx's printed
+                      digits (~1e-7 at 1k)
+  freq-nogap-<size>-ccx  the C3D8 block with a fixed base (no gaps; NLGEOM on the preload, since
+                      without it ccx still adds the preload's initial stress in a PERTURBATION step
+                      and gapfem, as Abaqus, does not): the eigen-solver without ccx's slow penalty
+                      preload (ccx takes hours on the gapped 50k preload, see block-50k-ccx)
+  freq-pipe-rack-<size>  the pipe rack (weight, then heat and lateral load into the guides) and 20
+                      natural frequencies about the hot state (gapfem only: ccx has no GAPCYL and
+                      takes SECTION=PIPE only on B32R)
 
 Usage:
   bench/run_suite.py [--gapfem build/release/gapfem] [--sizes small,medium,large,huge]
@@ -86,6 +106,27 @@ CASES = [
     ("dyn-50k-ccx", "medium", "gen_dynamic_block.py",
      "--nx 25 --nz 24 --penalty 1e7 --tension 1e-9 --E 2e12 --dmax 1e-7 --dt 2e-5 --rise 1e-4", True),
     ("dyn-linear-50k", "medium", "gen_dynamic_block.py", "--nx 25 --nz 24 --no-gaps", False),
+    # natural frequencies about a preload (issue 47): 20 modes by shift-invert Lanczos, against ccx
+    ("freq-1k-ccx", "small", "gen_frequency_block.py", "--nx 6 --nz 6 --penalty 1e7", True),
+    ("freq-c3d20-1k-ccx", "small", "gen_frequency_block.py",
+     "--element C3D20 --nx 4 --nz 4 --penalty 1e7", True),
+    ("freq-nogap-1k-ccx", "small", "gen_frequency_block.py",
+     "--nx 6 --nz 6 --no-gaps --nlgeom yes", True),
+    ("freq-pipe-rack-small", "small", "gen_pipe_rack.py", "--lines 4 --spans 5 --frequency 20",
+     False),
+    ("freq-50k-ccx", "medium", "gen_frequency_block.py", "--nx 25 --nz 24 --penalty 1e7", True),
+    ("freq-c3d20-50k-ccx", "medium", "gen_frequency_block.py",
+     "--element C3D20 --nx 15 --nz 15 --penalty 1e7", True),
+    ("freq-nogap-50k-ccx", "medium", "gen_frequency_block.py",
+     "--nx 25 --nz 24 --no-gaps --nlgeom yes", True),
+    ("freq-pipe-rack-50k", "medium", "gen_pipe_rack.py",
+     "--lines 40 --spans 20 --elems 10 --frequency 20", False),
+    # 40 x 40 x 40: 203,401 equations, 1,681 gaps (ccx only with --ccx-max-eq 250000)
+    ("freq-200k-ccx", "large", "gen_frequency_block.py", "--nx 40 --nz 40 --penalty 1e7", True),
+    ("freq-c3d20-200k-ccx", "large", "gen_frequency_block.py",
+     "--element C3D20 --nx 25 --nz 25 --penalty 1e7", True),
+    ("freq-nogap-200k-ccx", "large", "gen_frequency_block.py",
+     "--nx 40 --nz 40 --no-gaps --nlgeom yes", True),
     ("slab-1M", "huge", "gen_block.py", "--nx 200 --nz 8 --length 10 --height 0.4", False),
 ]
 
@@ -150,9 +191,44 @@ def generate(gen, args, deck):
     return (int(m.group(1)) if m else None), (int(g.group(1)) if g else None)
 
 
+def ccx_eigen(dat):
+    """Frequencies (cycles/time) of the last EIGENVALUE OUTPUT table of a ccx .dat: mode number,
+    eigenvalue, rad/time, cycles/time, imaginary part per row."""
+    try:
+        text = open(dat, errors="replace").read()
+    except OSError:
+        return []
+    at = text.rfind("E I G E N V A L U E   O U T P U T")
+    if at < 0:
+        return []
+    out = []
+    for line in text[at:].splitlines()[1:]:
+        f = line.split()
+        if len(f) == 5 and f[0].isdigit():
+            out.append(float(f[3]))
+        elif out:
+            break
+    return out
+
+
+def freq_agreement(ours, theirs, n=20):
+    """(modes compared, largest |f - f_ccx| / f_ccx over the first n, the mode where it is)."""
+    pairs = list(zip(ours[:n], theirs[:n]))
+    if not pairs:
+        return None
+    rel = [abs(a - b) / abs(b) if b else abs(a - b) for a, b in pairs]
+    k = max(range(len(rel)), key=rel.__getitem__)
+    return len(pairs), rel[k], k + 1
+
+
 def ccx_ground(dat):
-    """Last *NODE PRINT RF block of the GROUND set in a ccx .dat: {node: fz}."""
+    """Last *NODE PRINT RF block of the GROUND set in a ccx .dat: {node: fz}. In a deck with a
+    frequency step only the text before its eigenvalue output counts (ccx prints the GROUND request
+    again for every mode shape)."""
     text = open(dat).read()
+    cut = text.find("E I G E N V A L U E   O U T P U T")
+    if cut >= 0:
+        text = text[:cut]
     blocks = re.split(r"\n\s*forces \(fx,fy,fz\) for set GROUND", text)
     if len(blocks) < 2:
         return {}
@@ -316,20 +392,29 @@ def main():
         rc, wall, mem, log = timed(cmd, d)
         row = {"case": name, "eq": neq, "gaps": ngaps, "rc": rc, "wall": wall, "mem": mem}
         js = None
+        frequency = "*FREQUENCY" in open(deck).read().upper()
         try:
             js = json.load(open(os.path.join(d, "job.results.json")))
             s = js["summary"]
             row.update(inc=s["increments"], it=s["iterations"], fact=s["factorizations"],
                        solves=s["linear_solves"], split=s["seconds"])
-            checks = js["steps"][-1].get("checks") or {}
+            # the preload's checks: a frequency step has no gap status of its own
+            general = [st for st in js["steps"] if "modes" not in st] or js["steps"]
+            checks = general[-1].get("checks") or {}
             gaps = checks.get("gaps") or {}
             row["closed"] = gaps.get("closed")
             eq = checks.get("equilibrium") or {}
             rs = eq.get("reaction_sum")
             row["rsum"] = rs[2] if rs and len(rs) > 2 else None
-        except (OSError, KeyError, ValueError):
+            if frequency:
+                modal = [st for st in js["steps"] if "modes" in st]
+                row["freqs"] = [m["frequency"] for m in modal[-1]["modes"]] if modal else []
+        except (OSError, KeyError, ValueError, IndexError):
             pass
         print(f"   gapfem: exit {rc}, {wall:.2f} s, {mem:.0f} MB", file=sys.stderr, flush=True)
+        if row.get("freqs"):
+            print("   gapfem frequencies: " + ", ".join(f"{f:.6g}" for f in row["freqs"]),
+                  file=sys.stderr, flush=True)
         # the limit ratio's unit: one CHOLMOD factorisation of the model's stiffness, on its own
         p = subprocess.run([os.path.abspath(a.gapfem), "check", "--time-factorization",
                             "job.inp"], cwd=d, capture_output=True, text=True)
@@ -347,8 +432,10 @@ def main():
             text = open(deck).read()
             dynamic = "*DYNAMIC" in text
             with open(os.path.join(cd, "job.inp"), "w") as f:
-                # (not in dynamic decks: a field every increment; their agreement is a history)
-                f.write(text if dynamic else text.replace("*END STEP", "*NODE FILE\nU\n*END STEP"))
+                # (not in dynamic decks: a field every increment; their agreement is a history;
+                # nor in frequency decks: their agreement is the eigenvalue table)
+                f.write(text if dynamic or frequency
+                        else text.replace("*END STEP", "*NODE FILE\nU\n*END STEP"))
             env_rc, cwall, cmem, _ = timed([a.ccx, "-i", "job"], cd, a.ccx_budget)
             row.update(ccx_wall=cwall, ccx_mem=cmem, ccx_rc=env_rc)
             if dynamic and js is not None:
@@ -360,12 +447,18 @@ def main():
                 print(f"   ccx:    {row['ccx_cut']}", file=sys.stderr, flush=True)
                 rows.append(row)
                 continue
+            if frequency:
+                row["ccx_freqs"] = ccx_eigen(os.path.join(cd, "job.dat"))
+                row["freq_agree"] = freq_agreement(row.get("freqs") or [], row["ccx_freqs"])
+                print("   ccx frequencies:    " + ", ".join(f"{f:.6g}" for f in row["ccx_freqs"]),
+                      file=sys.stderr, flush=True)
             ground = ccx_ground(os.path.join(cd, "job.dat"))
             if ground and js is not None:
                 # the same rule for both codes: a ground node whose reaction exceeds 1e-4 of the
                 # largest one sits under a closed gap (open ccx gaps carry up to f_inf = 1e-3)
                 ours = {}
-                last = js["steps"][-1]["frames"][-1]["nodes"]
+                general = [st for st in js["steps"] if "modes" not in st] or js["steps"]
+                last = general[-1]["frames"][-1]["nodes"]
                 for label in ground:
                     rf = last.get(str(label), {}).get("RF")
                     ours[label] = rf[2] if rf else 0.0
@@ -387,15 +480,18 @@ def main():
             print(f"   ccx:    exit {env_rc}, {cwall:.2f} s, {cmem:.0f} MB", file=sys.stderr, flush=True)
         rows.append(row)
 
+    # "other": gapfem's time outside its named timers; in a *FREQUENCY step the Lanczos iteration's
+    # back-substitutions land there (the binary of issue 47 counts neither them in linear_solves
+    # nor their time in "solve")
     def fmt_split(s):
         if not s:
             return ""
         keys = [("assembly", "asm"), ("factorization", "fact"), ("solve", "solve"), ("gap work", "gap"),
-                ("output", "out")]
+                ("output", "out"), ("other", "other")]
         return " / ".join(f"{s.get(k, 0):.2f}" for k, _ in keys)
 
     hdr = ("| case | equations | gaps | gapfem s | peak MB | incr | iter | fact | solves | "
-           "asm / fact / solve / gap / out s | one factorisation s | limit ratio | ccx s | ccx MB | "
+           "asm / fact / solve / gap / out / other s | one factorisation s | limit ratio | ccx s | ccx MB | "
            "ccx / gapfem | agreement |")
     lines = [hdr, "|" + "---|" * 16]
     for r in rows:
@@ -409,6 +505,12 @@ def main():
         elif "ccx_wall" in r:
             ratio = f"{r['ccx_wall'] / r['wall']:.1f}x"
             ok = []
+            if r.get("freq_agree"):
+                n, rel, k = r["freq_agree"]
+                ok.append(f"{n} frequencies: max rel. diff {rel:.1e} (mode {k})")
+            elif "ccx_freqs" in r:
+                ok.append("no frequencies to compare "
+                          f"(gapfem {len(r.get('freqs') or [])}, ccx {len(r['ccx_freqs'])})")
             if r.get("ccx_closed") is not None and r.get("closed") is not None:
                 ok.append(f"closed {r['closed']}/{r['ccx_closed']}")
             if r.get("ccx_rsum") is not None and r.get("rsum") is not None:

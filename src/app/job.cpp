@@ -32,6 +32,9 @@ class MemoryWriter final : public ResultWriter {
     if (_keep || (_keep_step_ends && f.last_in_step)) _r.frames.push_back(f);
   }
   void end_step(const Model&, int, const StepSummary& s) override { _r.steps.push_back(s); }
+  void modes(const Model&, int step_index, const EigenSummary& m) override {
+    _r.modes.emplace_back(step_index, m);
+  }
 
  private:
   JobResult& _r;

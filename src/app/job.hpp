@@ -61,6 +61,8 @@ struct JobResult {
   std::vector<StepSummary> steps;
   std::vector<Frame> frames; ///< every frame written (when keep_frames)
   std::vector<IncrementInfo> increments;
+  /// The modes of each *FREQUENCY step: (0-based step index, its table)
+  std::vector<std::pair<int, EigenSummary>> modes;
   RunSummary run;
 
   /// The last frame of step `step` (1-based), or nullptr.

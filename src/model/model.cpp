@@ -18,8 +18,35 @@ std::string_view procedure_name(Procedure p) {
     return "SUBSTRUCTURE GENERATE";
   case Procedure::Dynamic:
     return "DYNAMIC";
+  case Procedure::Frequency:
+    return "FREQUENCY";
+  case Procedure::ResponseSpectrum:
+    return "RESPONSE SPECTRUM";
   }
   return "?";
+}
+
+double ModalDamping::fraction(int k, double omega) const {
+  if (by_frequency) { // linear between the points, the end values outside (Abaqus)
+    const double f = omega / (2.0 * 3.14159265358979323846);
+    if (ranges.empty()) return 0.0;
+    if (f <= ranges.front().frequency) return ranges.front().zeta;
+    for (std::size_t i = 1; i < ranges.size(); ++i)
+      if (f <= ranges[i].frequency) {
+        const Range& a = ranges[i - 1];
+        const Range& b = ranges[i];
+        return a.zeta + (b.zeta - a.zeta) * (f - a.frequency) / (b.frequency - a.frequency);
+      }
+    return ranges.back().zeta;
+  }
+  for (auto it = ranges.rbegin(); it != ranges.rend(); ++it) { // a later line overrides
+    const Range& r = *it;
+    if (k >= r.first && k <= r.last) {
+      if (kind == Kind::Fraction) return r.zeta;
+      return (omega > 0.0 ? r.alpha / (2.0 * omega) : 0.0) + r.beta * omega / 2.0;
+    }
+  }
+  return 0.0;
 }
 
 SourceLocation Model::element_location(ElemId e) const {

@@ -7,6 +7,7 @@
 #include "model/material.hpp"
 #include "model/mesh.hpp"
 #include "model/section.hpp"
+#include "model/spectrum.hpp"
 #include "model/step.hpp"
 #include "model/user_element.hpp"
 
@@ -86,6 +87,7 @@ struct Model {
   std::vector<MatrixTerm> matrix_terms;
 
   std::vector<Amplitude> amplitudes;
+  std::vector<Spectrum> spectra; ///< *SPECTRUM (response spectrum analyses)
   /// Linear constraints (*EQUATION, *MPC, couplings, *TIE), one row each.
   std::vector<LinearConstraint> constraints;
   /// *TRANSFORM systems and, per node, the index of its system (-1: global); empty if none.

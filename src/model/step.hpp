@@ -20,9 +20,20 @@ enum class Procedure : std::uint8_t {
   HeatTransfer,
   CoupledTempDisp,
   SubstructureGenerate, ///< *SUBSTRUCTURE GENERATE: a linear reduction, no increments
-  Dynamic               ///< *DYNAMIC: implicit direct integration (HHT or backward Euler)
+  Dynamic,              ///< *DYNAMIC: implicit direct integration (HHT or backward Euler)
+  Frequency,            ///< *FREQUENCY: natural frequencies about the base state (perturbation)
+  ResponseSpectrum      ///< *RESPONSE SPECTRUM: peak response from the modes of a *FREQUENCY step
 };
 std::string_view procedure_name(Procedure p);
+/// Is the procedure a linear perturbation (Abaqus): it works about the base state, the end of the
+/// last general step, and leaves that state as it was for the next general step.
+constexpr bool is_perturbation(Procedure p) {
+  return p == Procedure::Frequency;
+}
+/// Does the procedure use the elements' mass (dynamic response, eigenmodes)?
+constexpr bool uses_mass(Procedure p) {
+  return p == Procedure::Dynamic || p == Procedure::Frequency;
+}
 /// Does the procedure solve for temperatures (heat transfer, coupled temperature-displacement)?
 constexpr bool is_thermal(Procedure p) {
   return p == Procedure::HeatTransfer || p == Procedure::CoupledTempDisp;
@@ -90,6 +101,56 @@ struct DynamicSettings {
   SourceLocation loc;
 };
 
+/// *FREQUENCY (natural frequency extraction, docs/theory/frequency.md): what the data line and
+/// the parameters ask for.
+struct FrequencySettings {
+  enum class Solver : std::uint8_t { Lanczos, Subspace, Ams };
+  Solver solver = Solver::Lanczos; ///< EIGENSOLVER= (all run gapfem's shift-invert Lanczos)
+  /// Number of eigenvalues requested; 0 (blank): all in the frequency range
+  int count = 0;
+  std::optional<double> min_frequency, max_frequency; ///< cycles per time
+  std::optional<double> shift;                        ///< the shift point, cycles per time
+  bool mass_normalized = false; ///< NORMALIZATION=MASS (default DISPLACEMENT: largest entry 1)
+  SourceLocation loc;
+};
+
+/// The summation rules of *RESPONSE SPECTRUM, SUM= (solver/modal_combination.hpp).
+enum class ModalSum { Abs, Srss, Cqc, Nrl, Tenp, Dsc, Grp };
+
+/// *MODAL DAMPING in a mode-based step: fractions of critical damping by mode ranges or by
+/// frequency, or Rayleigh factors by mode ranges (docs/theory/frequency.md §6). Modes it does not
+/// name have no damping.
+struct ModalDamping {
+  enum class Kind { Fraction, Rayleigh };
+  Kind kind = Kind::Fraction;
+  bool by_frequency = false; ///< DEFINITION=FREQUENCY RANGE: (frequency, fraction) points
+  struct Range {
+    int first = 1, last = 1;        ///< modes (1-based), by mode numbers
+    double zeta = 0.0;              ///< fraction of critical damping
+    double alpha = 0.0, beta = 0.0; ///< Rayleigh: zeta = alpha / (2 omega) + beta omega / 2
+    double frequency = 0.0;         ///< by frequency: the point's frequency (cycles/time)
+  };
+  std::vector<Range> ranges;
+  SourceLocation loc;
+  /// The damping fraction of mode k (1-based) of circular frequency omega.
+  double fraction(int k, double omega) const;
+};
+
+/// *RESPONSE SPECTRUM: the spectra along their directions and the rules that combine the modes
+/// and the directions.
+struct ResponseSpectrumSettings {
+  bool algebraic = false; ///< COMP=ALGEBRAIC (else SRSS over the directions)
+  ModalSum sum = ModalSum::Abs;
+  struct Direction {
+    int spectrum = -1; ///< index into Model::spectra
+    std::array<double, 3> cosines{};
+    double scale = 1.0;
+    double duration = 0.0; ///< DSC: the event's duration (0: none given)
+  };
+  std::vector<Direction> directions;
+  SourceLocation loc;
+};
+
 /// *CHANGE FRICTION, ELSET= followed by *FRICTION: new friction for some gap elements.
 struct FrictionChange {
   std::vector<ElemId> elements;
@@ -126,7 +187,15 @@ struct Step {
   Incrementation inc;
   SolutionControls controls;
   Stabilization stabilize;
-  DynamicSettings dynamic; ///< *DYNAMIC steps
+  DynamicSettings dynamic;                   ///< *DYNAMIC steps
+  FrequencySettings frequency;               ///< *FREQUENCY steps
+  ResponseSpectrumSettings spectrum;         ///< *RESPONSE SPECTRUM steps
+  std::optional<ModalDamping> modal_damping; ///< *MODAL DAMPING of a mode-based step
+  /// *SELECT EIGENMODES: the modes (1-based) a mode-based step uses; empty: all of them
+  std::vector<int> selected_modes;
+  /// *STEP, PERTURBATION, or a perturbation procedure (*FREQUENCY): the step works about the base
+  /// state and leaves it unchanged; its loads and boundary conditions do not carry on
+  bool perturbation = false;
 
   std::vector<BoundaryEntry> boundary;
   std::vector<NodalLoad> cloads; ///< *CLOAD (DOF 1-6) and *CFLUX (DOF 11)

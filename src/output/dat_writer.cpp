@@ -236,6 +236,12 @@ void DatWriter::begin_step(const Model& model, int step_index) {
   fmt::format_to(out, "\n\n\n{:>19}{}{:>5}     {}\n\n", "", output::spaced("STEP"), step.number,
                  output::spaced(fmt::format("{} ANALYSIS", procedure_name(step.procedure))));
   if (!step.name.empty()) fmt::format_to(out, "\n{:>10}{}\n\n", "", step.name);
+  if (step.perturbation) {
+    write_perturbation_header(step);
+    prepare_step(model, step_index);
+    _out.flush();
+    return;
+  }
   const auto& inc = step.inc;
   const double initial = inc.initial > 0 ? std::min(inc.initial, inc.period) : inc.period;
   if (fixed_increments(step)) {
@@ -299,6 +305,10 @@ void DatWriter::increment(const IncrementInfo&) {
 
 void DatWriter::write_increment_header(const Model& model, int step_index, const Frame& frame,
                                        bool repeated) {
+  if (frame.mode) {
+    write_mode_header(model, frame);
+    return;
+  }
   auto out = std::back_inserter(_out.buffer());
   const std::string heading =
       model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));

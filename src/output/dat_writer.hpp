@@ -22,6 +22,7 @@ class DatWriter : public ResultWriter {
   void begin_step(const Model& model, int step_index) override;
   void increment(const IncrementInfo& info) override;
   void frame(const Model& model, int step_index, const Frame& frame) override;
+  void modes(const Model& model, int step_index, const EigenSummary& modes) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
   std::string_view restart_key() const override { return "dat"; }
@@ -36,6 +37,10 @@ class DatWriter : public ResultWriter {
   static bool fixed_increments(const Step& step);
 
  private:
+  /// Perturbation steps (dat_writer_modes.cpp): the step's header (*FREQUENCY: what it extracts;
+  /// *RESPONSE SPECTRUM: its spectra and rules), each mode's header.
+  void write_perturbation_header(const Step& step);
+  void write_mode_header(const Model& model, const Frame& frame);
   /// The print lists of a step's requests.
   void prepare_step(const Model& model, int step_index);
   void write_increment_header(const Model& model, int step_index, const Frame& frame,

@@ -52,6 +52,18 @@ void write_energies(fmt::memory_buffer& buf, const StepChecks& c) {
 } // namespace
 
 void DatWriter::end_step(const Model& model, int step_index, const StepSummary& summary) {
+  if (step_index >= 0 && step_index < static_cast<int>(model.steps.size()) &&
+      model.steps[step_index].perturbation) { // no increments, the base state unchanged
+    if (model.steps[step_index].procedure == Procedure::Frequency)
+      fmt::format_to(std::back_inserter(_out.buffer()),
+                     "\n\n STEP {} COMPLETED: {} EIGENVALUES EXTRACTED\n", summary.step,
+                     summary.increments);
+    else
+      fmt::format_to(std::back_inserter(_out.buffer()),
+                     "\n\n STEP {} COMPLETED (LINEAR PERTURBATION)\n", summary.step);
+    _out.flush();
+    return;
+  }
   write_checks(model, step_index, summary);
   _out.flush();
 }

@@ -32,6 +32,36 @@ void label_or_null(fmt::memory_buffer& b, const Model& model, Label l) {
 
 } // namespace
 
+void JsonWriter::modes(const Model&, int, const EigenSummary& sum) {
+  fmt::memory_buffer b;
+  b.append(std::string_view(",\"modes\":["));
+  for (const ModeInfo& m : sum.modes) {
+    fmt::format_to(fmt::appender(b), "{}{{\"mode\":{}", m.mode > 1 ? "," : "", m.mode);
+    number_field(b, "eigenvalue", m.eigenvalue);
+    number_field(b, "frequency", m.frequency());
+    number_field(b, "circular_frequency", m.circular());
+    number_field(b, "generalized_mass", m.generalized_mass);
+    b.push_back(',');
+    key(b, "participation");
+    append_json_array(b, m.participation);
+    b.push_back(',');
+    key(b, "effective_mass");
+    append_json_array(b, m.effective_mass);
+    b.push_back('}');
+  }
+  b.push_back(']');
+  b.push_back(',');
+  key(b, "total_effective_mass");
+  append_json_array(b, sum.total_effective_mass);
+  b.push_back(',');
+  key(b, "model_mass");
+  append_json_array(b, sum.model_mass);
+  fmt::format_to(fmt::appender(b), ",\"rigid_body_modes\":{},\"normalization\":\"{}\"",
+                 sum.rigid_body_modes, sum.mass_normalized ? "MASS" : "DISPLACEMENT");
+  number_field(b, "shift", sum.shift);
+  _modes_json = fmt::to_string(b);
+}
+
 void JsonWriter::close_step(const StepSummary* s) {
   append_step_end(_out.buffer(), s, "the step was not finished");
   _step_open = false;
@@ -85,6 +115,7 @@ void JsonWriter::append_history(fmt::memory_buffer& b) const {
 void JsonWriter::append_step_end(fmt::memory_buffer& b, const StepSummary* s,
                                  std::string_view unfinished) const {
   b.push_back(']');
+  b.append(_modes_json);
   append_history(b);
   if (!s) {
     b.append(std::string_view(",\"converged\":false,\"failure\":"));

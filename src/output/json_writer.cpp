@@ -190,6 +190,7 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   _energy_history.clear();
   _history_columns.clear();
   _history_rows.clear();
+  _modes_json.clear();
   _open_step_number = step.number;
   _last_increment = -1;
 }
@@ -198,7 +199,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   const auto& mesh = model.mesh;
   _frame_nodes.clear();
   _frame_elems.clear();
-  if (frame.last_in_step) {
+  if (frame.last_in_step || frame.mode) { // a mode's frame: its whole shape
     _frame_nodes = _all_nodes;
     for (const auto& res : frame.elements)
       if (res.elem >= 0 && res.elem < mesh.n_elements()) _frame_elems.push_back(&res);
@@ -227,7 +228,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
     for (const ElementResult* res : _frame_elems) _elem_mark[res->elem] = 0;
     if (!due) return;
   }
-  if (!frame.last_in_step)
+  if (!frame.last_in_step && !frame.mode)
     std::sort(_frame_nodes.begin(), _frame_nodes.end(),
               [&](NodeId a, NodeId c) { return mesh.node_labels[a] < mesh.node_labels[c]; });
   std::sort(_frame_elems.begin(), _frame_elems.end(),
@@ -251,6 +252,11 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   b.append(repeated ? std::string_view(",\"repeated\":true")
                     : std::string_view(",\"repeated\":false"));
   if (frame.energies) output::append_energies(b, *frame.energies);
+  if (frame.mode) {
+    fmt::format_to(fmt::appender(b), ",\"mode\":{}", frame.mode->mode);
+    output::append_json_field(b, "eigenvalue", frame.mode->eigenvalue);
+    output::append_json_field(b, "frequency", frame.mode->frequency());
+  }
   b.append(std::string_view(",\"nodes\":{"));
   bool first = true;
   for (NodeId n : _frame_nodes) {

@@ -29,6 +29,7 @@ class JsonWriter : public ResultWriter {
   void begin_step(const Model& model, int step_index) override;
   void increment(const IncrementInfo& info) override;
   void frame(const Model& model, int step_index, const Frame& frame) override;
+  void modes(const Model& model, int step_index, const EigenSummary& modes) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
   void end(const Model& model, const RunSummary& summary) override;
   std::string_view restart_key() const override { return "json"; }
@@ -82,6 +83,8 @@ class JsonWriter : public ResultWriter {
   /// step time, total time, then the values)
   std::vector<std::string> _history_columns;
   std::vector<std::vector<double>> _history_rows;
+  /// *FREQUENCY: the step's ",\"modes\":[…]" members, written with the step's end (empty else)
+  std::string _modes_json;
   /// `,"history":{…}` of the open step (nothing when it has none).
   void append_history(fmt::memory_buffer& b) const;
 

@@ -156,6 +156,29 @@ void checks_table(fmt::memory_buffer& out, const std::vector<StepSummary>& steps
   fmt::format_to(o, "</table>\n");
 }
 
+/// A *FREQUENCY step's modes: eigenvalue, frequency, generalized mass and the effective masses
+/// in X, Y, Z as fractions of the free DOFs' mass.
+void modes_table(fmt::memory_buffer& out, int step, const EigenSummary& m) {
+  auto o = fmt::appender(out);
+  fmt::format_to(o,
+                 "<h3>Step {}</h3>\n<table><tr><th>mode</th><th>eigenvalue</th><th>frequency "
+                 "(cycles/time)</th><th>generalized mass</th><th>effective mass X</th><th>"
+                 "Y</th><th>Z</th></tr>\n",
+                 step);
+  const auto share = [&](const ModeInfo& mi, int i) {
+    return m.model_mass[i] > 0.0 ? fmt::format("{:.4g} ({:.1f} %)", mi.effective_mass[i],
+                                               100.0 * mi.effective_mass[i] / m.model_mass[i])
+                                 : fmt::format("{:.4g}", mi.effective_mass[i]);
+  };
+  for (const ModeInfo& mi : m.modes)
+    fmt::format_to(o,
+                   "<tr><td>{}</td><td>{:.6g}</td><td>{:.6g}</td><td>{:.4g}</td><td>{}</td>"
+                   "<td>{}</td><td>{}</td></tr>\n",
+                   mi.mode, mi.eigenvalue, mi.frequency(), mi.generalized_mass, share(mi, 0),
+                   share(mi, 1), share(mi, 2));
+  fmt::format_to(o, "</table>\n");
+}
+
 } // namespace
 
 void write_report_page(fmt::memory_buffer& out, const ReportContent& c) {
@@ -192,6 +215,12 @@ void write_report_page(fmt::memory_buffer& out, const ReportContent& c) {
                       "(up to 16 curves; all of them in job.results.json, each step's "
                       "history.values).</p>\n");
     canvas(out, "history");
+  }
+  if (c.modes && !c.modes->empty()) {
+    fmt::format_to(o, "<h2>Natural frequencies</h2>\n<p class=\"note\">The modes of the "
+                      "*FREQUENCY steps about their base states (effective masses as a share of "
+                      "the free degrees of freedom's mass; docs/theory/frequency.md).</p>\n");
+    for (const auto& [step, m] : *c.modes) modes_table(out, step, m);
   }
   fmt::format_to(o, "<h2>Newton iterations</h2>\n<p class=\"note\">The residual after each "
                     "iteration of every attempt; attempts that did not converge (cut back) in "

@@ -17,6 +17,8 @@ struct ReportContent {
   std::string data_json; ///< gaps, contact_set, energies, attempts, time_split, wall_seconds
   const RunSummary* run = nullptr;
   const std::vector<StepSummary>* steps = nullptr;
+  /// *FREQUENCY steps: (step number, modes), each a table on the page
+  const std::vector<std::pair<int, EigenSummary>>* modes = nullptr;
   bool has_gaps = false;
   bool has_energies = false; ///< dynamic steps: the energies chart
   bool has_history = false;  ///< *OUTPUT, HISTORY: the values' chart

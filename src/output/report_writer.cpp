@@ -190,6 +190,10 @@ void ReportWriter::end_step(const Model& model, int step_index, const StepSummar
   _steps.push_back(summary);
 }
 
+void ReportWriter::modes(const Model& model, int step_index, const EigenSummary& modes) {
+  _modes.emplace_back(model.steps[step_index].number, modes);
+}
+
 std::vector<ElemId> ReportWriter::plotted() const {
   if (!_named.empty()) return _named;
   std::vector<std::size_t> order;
@@ -269,6 +273,7 @@ void ReportWriter::end(const Model& model, const RunSummary& summary) {
   page.data_json = data_json(model, summary);
   page.run = &summary;
   page.steps = &_steps;
+  page.modes = &_modes;
   page.has_gaps = !_gap_ids.empty();
   page.has_energies = !_energies.empty();
   page.has_history = !_history.empty();

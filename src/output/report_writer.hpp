@@ -24,6 +24,7 @@ class ReportWriter : public ResultWriter {
   void begin(const Model& model) override;
   void increment(const IncrementInfo& info) override;
   void end_step(const Model& model, int step_index, const StepSummary& summary) override;
+  void modes(const Model& model, int step_index, const EigenSummary& modes) override;
   void end(const Model& model, const RunSummary& summary) override;
   std::string_view restart_key() const override { return "report"; }
   void save_state(ArchiveWriter& out) override;
@@ -66,6 +67,9 @@ class ReportWriter : public ResultWriter {
   std::vector<std::string> _history_columns;
   std::vector<std::vector<double>> _history;
   std::vector<StepSummary> _steps;
+  /// *FREQUENCY steps' modes (step number, table); not part of the restart state: a resumed
+  /// run's report lists the modes of the steps it ran itself
+  std::vector<std::pair<int, EigenSummary>> _modes;
   std::vector<ElemId> _gap_ids;    ///< gaps in the order of IncrementInfo::gaps
   std::vector<History> _histories; ///< per _gap_ids entry
   std::vector<char> _kept;         ///< per _gap_ids entry: history still recorded

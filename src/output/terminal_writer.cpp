@@ -13,8 +13,12 @@ void TerminalWriter::begin(const Model& model) {
 
 void TerminalWriter::begin_step(const Model& model, int step_index) {
   const Step& step = model.steps[step_index];
-  log::info("Step {}{}{}: {}, time period {:g}", step.number, step.name.empty() ? "" : " ",
-            step.name, procedure_name(step.procedure), step.inc.period);
+  if (step.perturbation) // no time: a perturbation about the base state
+    log::info("Step {}{}{}: {} (linear perturbation)", step.number, step.name.empty() ? "" : " ",
+              step.name, procedure_name(step.procedure));
+  else
+    log::info("Step {}{}{}: {}, time period {:g}", step.number, step.name.empty() ? "" : " ",
+              step.name, procedure_name(step.procedure), step.inc.period);
 }
 
 void TerminalWriter::increment(const IncrementInfo& info) {
@@ -27,6 +31,14 @@ void TerminalWriter::increment(const IncrementInfo& info) {
 }
 
 void TerminalWriter::end_step(const Model& model, int step_index, const StepSummary& s) {
+  if (step_index >= 0 && step_index < static_cast<int>(model.steps.size()) &&
+      model.steps[step_index].perturbation) { // no equilibrium to check: the base state stays
+    if (model.steps[step_index].procedure == Procedure::Frequency)
+      log::info("Step {} completed: {} eigenvalues", s.step, s.increments);
+    else
+      log::info("Step {} completed (linear perturbation)", s.step);
+    return;
+  }
   if (s.converged)
     log::info("Step {} completed: {} increments ({} attempts), {} iterations", s.step, s.increments,
               s.attempts, s.iterations);

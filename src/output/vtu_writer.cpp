@@ -343,7 +343,8 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
                  "format=\"ascii\">{}</DataArray>\n    </FieldData>\n"
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  GAPFEM_VERSION, frame.step, frame.increment, frame.step_time, frame.total_time,
-                 _type_legend, kByteOrder, frame.total_time, nn, ne);
+                 _type_legend, kByteOrder,
+                 frame.mode ? static_cast<double>(frame.mode->mode) : frame.total_time, nn, ne);
   b.append(std::string_view(has_U ? "      <PointData Vectors=\"U\">\n" : "      <PointData>\n"));
   for (const auto& a : point_arrays) declare(b, a, offset);
   b.append(std::string_view("      </PointData>\n      <CellData Scalars=\"element_label\">\n"));
@@ -366,6 +367,12 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   out.write("\n  </AppendedData>\n</VTKFile>\n");
   out.close();
 
+  if (frame.mode) {
+    if (frame.mode->mode == 1) _mode_entries.clear();
+    _mode_entries.push_back(PvdEntry{static_cast<double>(frame.mode->mode), file});
+    write_modes_pvd(frame.step);
+    return;
+  }
   // A step that stops early repeats its last converged increment as the final frame: the file
   // is rewritten, and listed once.
   auto same = std::find_if(_entries.begin(), _entries.end(),
@@ -377,15 +384,23 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   write_pvd();
 }
 
+void VtuWriter::write_modes_pvd(int step) {
+  write_pvd(fmt::format("{}_step{}_modes.pvd", _job, step), _mode_entries);
+}
+
 void VtuWriter::write_pvd() {
+  write_pvd(_job + ".pvd", _entries);
+}
+
+void VtuWriter::write_pvd(const std::string& name, const std::vector<PvdEntry>& entries) {
   output::OutputFile out; // replaced whole: the collection lists complete frame files only
-  out.open(_dir / (_job + ".pvd"), output::OutputFile::Mode::Replace);
+  out.open(_dir / name, output::OutputFile::Mode::Replace);
   auto& b = out.buffer();
   fmt::format_to(fmt::appender(b),
                  "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
                  "byte_order=\"{}\">\n  <Collection>\n",
                  kByteOrder);
-  for (const auto& e : _entries) {
+  for (const auto& e : entries) {
     b.append(std::string_view("    <DataSet timestep=\""));
     output::append_json_number(b, e.time);
     b.append(std::string_view("\" group=\"\" part=\"0\" file=\""));

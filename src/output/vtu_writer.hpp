@@ -4,8 +4,8 @@
 /// appended binary data, UInt64 block headers) per field frame, and the
 /// collection job.pvd listing them by total time.
 #include "output/output_file.hpp"
-#include "results/results.hpp"
 #include "output/vtu_cell_data.hpp"
+#include "results/results.hpp"
 
 #include <filesystem>
 #include <string>
@@ -43,12 +43,17 @@ class VtuWriter : public ResultWriter {
     std::string file;
   };
   void write_pvd();
+  void write_pvd(const std::string& name, const std::vector<PvdEntry>& entries);
+  /// A *FREQUENCY step's modes: job_step<N>_modes.pvd, the mode number as the time (ParaView
+  /// steps through the modes); they stay out of job.pvd, whose times are the analysis's.
+  void write_modes_pvd(int step);
   /// Cells and labels of the model (once).
   void build_topology(const Model& model);
 
   std::filesystem::path _dir;
   std::string _job;
   std::vector<PvdEntry> _entries;
+  std::vector<PvdEntry> _mode_entries; ///< of the *FREQUENCY step being written
 
   // topology, built once in begin()
   std::vector<std::int32_t> _connectivity;

@@ -152,12 +152,41 @@ struct RecoveredSubstructure {
 };
 
 /// The committed state at one output point, with what is due at this point.
+/// One eigenmode of a *FREQUENCY step (docs/theory/frequency.md): the eigenvalue omega^2, the
+/// generalized mass phi^T M phi, and per direction (X, Y, Z translations, rotations about the X,
+/// Y, Z axes through the origin) the participation factor Gamma = phi^T M T / m and the effective
+/// mass Gamma^2 m.
+struct ModeInfo {
+  int mode = 0;
+  double eigenvalue = 0.0;
+  double generalized_mass = 0.0;
+  std::array<double, 6> participation{}, effective_mass{};
+  /// omega in radians per time (0 for a negative eigenvalue)
+  double circular() const { return eigenvalue > 0.0 ? std::sqrt(eigenvalue) : 0.0; }
+  /// cycles per time
+  double frequency() const { return circular() / (2.0 * 3.14159265358979323846); }
+};
+
+/// The modes of a *FREQUENCY step, with the model's mass per direction (what the effective
+/// masses add up to when every mode is extracted) and how they were found.
+struct EigenSummary {
+  std::vector<ModeInfo> modes;
+  std::array<double, 6> total_effective_mass{};
+  std::array<double, 6> model_mass{}; ///< T^T M T of the free DOFs per direction
+  bool rotations = false;             ///< the model has rotational DOFs
+  bool mass_normalized = false;       ///< NORMALIZATION=MASS (else the largest entry is 1)
+  double shift = 0.0;                 ///< the Lanczos shift, omega^2
+  int rigid_body_modes = 0;           ///< eigenvalues near zero
+};
+
 struct Frame {
   int step = 0;
   int increment = 0;
   double step_time = 0.0, total_time = 0.0, dt = 0.0;
   bool last_in_step = false;
   std::optional<Energies> energies; ///< dynamic steps: the whole-model energies at the frame
+  /// *FREQUENCY steps: the mode this frame shows (its U, UR the mode shape; increment = mode)
+  std::optional<ModeInfo> mode;
   NodeResults nodes;
   /// Element output for the elements needed by the due requests (all elements at the last frame).
   std::vector<ElementResult> elements;
@@ -280,6 +309,9 @@ class ResultWriter {
   virtual void begin_step(const Model& model, int step_index) {}
   virtual void increment(const IncrementInfo& info) {}
   virtual void frame(const Model& model, int step_index, const Frame& frame) {}
+  /// A *FREQUENCY step's eigenvalues, participation factors and effective masses, before its
+  /// frames (one per mode).
+  virtual void modes(const Model& model, int step_index, const EigenSummary& modes) {}
   virtual void end_step(const Model& model, int step_index, const StepSummary& summary) {}
   virtual void end(const Model& model, const RunSummary& summary) {}
 

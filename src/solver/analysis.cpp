@@ -196,6 +196,7 @@ ModelCheck Analysis::check(bool time_factorization) {
   c.dofs = m.disc.dofs().n_slots();
   for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
     const Step& step = m.model.steps[i];
+    make_procedure(step.procedure, m)->check(step);
     StepLoads loads(m.model, m.disc, i, m.history, m.st.u_start, m.st.total_time);
     m.solver_warnings.insert(m.solver_warnings.end(), loads.warnings().begin(),
                              loads.warnings().end());

@@ -13,6 +13,7 @@
 #include "solver/diagnostics.hpp"
 #include "solver/extrapolation.hpp"
 #include "solver/increment_control.hpp"
+#include "solver/modal_basis.hpp"
 #include "solver/newton.hpp"
 #include "solver/procedure.hpp"
 #include "solver/restart_file.hpp"
@@ -117,6 +118,9 @@ struct Analysis::Impl {
   std::optional<Frame> frame_due(const Step& step, const StepProblem& prob, int increment,
                                  bool last, double dt, bool repeat, bool& field_elements) const;
   void frame_nodes(StepProblem& prob, Frame& fr);
+  /// A perturbation's node output (a mode shape, a response spectrum's peaks): U and UR from the
+  /// values per DOF slot, the forces and temperatures zero.
+  void perturbation_nodes(std::span<const double> slots, Frame& fr) const;
   /// *OUTPUT, HISTORY after a converged increment (analysis_history.cpp): the due requests'
   /// values into info (their columns named at the step's first sample).
   void history_sample(int step_index, StepProblem& prob, int increment, bool last,
@@ -136,6 +140,10 @@ struct Analysis::Impl {
   void equilibrium_checks(StepProblem& prob, StepChecks& c);
   /// Net forces of elements and matrix terms that may hold the model to ground.
   void grounded_forces(StepProblem& prob, std::array<long double, 3>& ground, long double& scale);
+
+  /// The modes of the last *FREQUENCY step, the basis of the mode-based steps after it (null
+  /// before one; not part of restart records)
+  std::shared_ptr<const ModalBasis> modal_basis;
 
   bool want_gap_samples = false;
   /// *SUBSTRUCTURE PATH: the libraries of the substructures the steps recover (none: nullptr)

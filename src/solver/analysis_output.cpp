@@ -181,6 +181,35 @@ void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool fi
   }
 }
 
+void Analysis::Impl::perturbation_nodes(std::span<const double> slots, Frame& fr) const {
+  const DofMap& dofs = disc.dofs();
+  const NodeId nn = model.mesh.n_nodes();
+  NodeResults& nr = fr.nodes;
+  nr.U.assign(nn, Vec3{});
+  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
+  nr.NT.assign(nn, 0.0);
+  nr.RFL = nr.CFL = nr.NT;
+  nr.temperature_points = std::max(1, dofs.max_temperature_points());
+  nr.NT_more.assign(static_cast<std::size_t>(nr.temperature_points - 1) * nn, 0.0);
+  nr.RFL_more = nr.CFL_more = nr.NT_more;
+  nr.dof_mask.resize(nn);
+  for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);
+  for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
+    const int d = static_cast<int>(dofs.slot_dof(s));
+    const NodeId n = dofs.slot_node(s);
+    if (d < 3) {
+      nr.U[n][d] = slots[s];
+      nr.any_displacement = true;
+    } else if (d < 6) {
+      nr.UR[n][d - 3] = slots[s];
+      nr.any_rotation = true;
+    } else {
+      nr.any_temperature = true;
+    }
+  }
+  to_local_systems(nr);
+}
+
 void Analysis::Impl::write_frame(int index, StepProblem& prob, int increment, bool last, double dt,
                                  bool repeat) {
   const Step& step = model.steps[index];

@@ -16,7 +16,9 @@ std::map<Procedure, ProcedureFactory> builtin_procedures() {
           {Procedure::HeatTransfer, make_heat_transfer_procedure},
           {Procedure::CoupledTempDisp, make_heat_transfer_procedure},
           {Procedure::SubstructureGenerate, make_substructure_generate_procedure},
-          {Procedure::Dynamic, make_dynamic_procedure}};
+          {Procedure::Dynamic, make_dynamic_procedure},
+          {Procedure::Frequency, make_frequency_procedure},
+          {Procedure::ResponseSpectrum, make_response_spectrum_procedure}};
 }
 
 /// The table, the built-in procedures in it before anything else is registered or made.

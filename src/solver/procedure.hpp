@@ -58,6 +58,10 @@ class StepProcedure {
   /// The terminal's word on the set-up, after the step's own line (and a resumed step's).
   virtual void report_set_up(const StepRun& r) const {}
 
+  /// `gapfem check` (and the analysis, before the step): what the procedure requires of the
+  /// model beyond its loads; InputError when it is missing.
+  virtual void check(const Step& step) const {}
+
   /// False: the procedure has no increments; run() does all of its work.
   virtual bool incremental() const { return true; }
   virtual void run(StepRun& r) {}

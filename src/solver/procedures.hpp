@@ -16,5 +16,9 @@ std::unique_ptr<StepProcedure> make_heat_transfer_procedure(Analysis::Impl& a);
 std::unique_ptr<StepProcedure> make_substructure_generate_procedure(Analysis::Impl& a);
 /// *DYNAMIC: implicit direct integration, HHT or backward Euler (procedure_dynamic.cpp).
 std::unique_ptr<StepProcedure> make_dynamic_procedure(Analysis::Impl& a);
+/// *FREQUENCY: eigenmodes about the base state, no increments (procedure_frequency.cpp).
+std::unique_ptr<StepProcedure> make_frequency_procedure(Analysis::Impl& a);
+/// *RESPONSE SPECTRUM: peaks from the last *FREQUENCY step's modes (procedure_response_spectrum.cpp).
+std::unique_ptr<StepProcedure> make_response_spectrum_procedure(Analysis::Impl& a);
 
 } // namespace gapfem

@@ -40,7 +40,10 @@ StepLoads::StepLoads(const Model& model, const Discretization& disc, int step_in
                      double step_start_total_time)
     : _model(model), _step(model.steps[step_index]), _period(_step.inc.period),
       _step_start(step_start_total_time), _step_index(step_index) {
-  const Step* prev = step_index > 0 ? &model.steps[step_index - 1] : nullptr;
+  // the step before: the last general step (a perturbation step's loads do not carry on)
+  const Step* prev = nullptr;
+  for (int k = step_index - 1; k >= 0 && !prev; --k)
+    if (!model.steps[k].perturbation) prev = &model.steps[k];
   set_boundary_conditions(disc, u_now);
   _eqmap = EquationMap::build(_prescribed);
   set_concentrated_loads(disc.dofs(), history);

@@ -128,6 +128,16 @@ class StepProblem final : public NonlinearProblem {
   /// are left as they were. Negative when the integrator has no midpoint rule.
   double half_increment_residual(double t0, double dt);
 
+  /// A linear perturbation about the committed state (step_problem_perturbation.cpp): the
+  /// tangent stiffness there (stress and load stiffness included), the mass, and the constraint
+  /// rows the state holds (closed hard gaps, sticking friction, MPCs, ties; compliant rows of
+  /// penalty gaps), each as the elements give them at the state (docs/theory/frequency.md).
+  struct PerturbationOperators {
+    CsrMatrix K, M;
+    ConstraintBlock C;
+  };
+  PerturbationOperators perturbation_operators();
+
   /// Automatic stabilization: the damping operator c M* (M* a unit-density lumped mass, per slot,
   /// on the free translational slots) with velocities by backward Euler in the step's time,
   /// whatever the step's own integrator: forces c m (u - u_start) / dt; c = 0 switches it off.

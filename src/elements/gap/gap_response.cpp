@@ -70,6 +70,7 @@ void MechanicalGapKernel::setup(const ElementInput& in, std::span<const double> 
   R.g = -(G.h + in.interference);
   L.previous = status_of(st[GapStateLayout::status]);
   L.was_closed = closed(L.previous);
+  L.perturbation = in.ctx && is_perturbation(in.ctx->procedure);
   L.hint = in.stiffness_hint;
   L.dt = in.ctx ? in.ctx->dt : 0.0;
   L.iT1 = _per_node - 1;
@@ -89,6 +90,10 @@ void MechanicalGapKernel::normal(const ElementInput& in, std::span<double> st,
       // both ends prescribed: the geometry alone decides, the force is not determined
       L.is_closed = R.g > 1e-12 * _length_scale || (_no_separation && L.was_closed);
       lambda = 0.0;
+    } else if (L.perturbation) {
+      // the base state's status, frozen: a closed gap holds in tension too (bilateral); a first
+      // step's base state is the initial one, where an overclosed gap is closed
+      L.is_closed = L.was_closed || R.g > 1e-12 * _length_scale;
     } else if (!L.was_closed && R.g > 1e-12 * _length_scale) {
       L.is_closed = true;
     } else if (L.was_closed && lambda < 0.0 && !_no_separation) {
@@ -172,7 +177,7 @@ void MechanicalGapKernel::friction_lagrange(const ElementInput& in, std::span<do
   bool slipping = was_slip;
   const double slip_tol = 1e-12 * _length_scale;
   const double slip_small = 1e-6 * _lc[in.block_index];
-  if (fl.rough()) {
+  if (fl.rough() || L.perturbation) { // a perturbation: closed points stick (Abaqus)
     slipping = false;
   } else if (!enforceable(in, L, L.ds[0]) && !enforceable(in, L, L.ds[1])) {
     // the tangential motion is prescribed: any relative motion is slip
@@ -246,8 +251,12 @@ void MechanicalGapKernel::friction_penalty(const ElementInput& in, std::span<dou
   // stick predictor: the slip direction of the previous iteration, if it slipped
   const Eigen::Vector2d m_prev(st[GapStateLayout::slip_dir], st[GapStateLayout::slip_dir + 1]);
   const bool was_slip = L.previous == ContactStatus::Slip && m_prev.squaredNorm() > 0.0;
-  const FrictionResponse fr = fl.penalty(R.slip, L.dslip, L.plastic_start, FNc, L.dt, L.temperature,
-                                         gamma, was_slip ? &m_prev : nullptr);
+  // a perturbation sticks (Abaqus): the stick branch at the base state's stick point
+  const FrictionResponse fr =
+      L.perturbation ? fl.penalty(L.plastic_start, Eigen::Vector2d::Zero(), L.plastic_start, FNc,
+                                  L.dt, L.temperature, gamma, nullptr)
+                     : fl.penalty(R.slip, L.dslip, L.plastic_start, FNc, L.dt, L.temperature, gamma,
+                                  was_slip ? &m_prev : nullptr);
   R.friction = fr.force;
   L.dtau_ds = fr.dforce_dslip;
   L.dtau_dN = fr.dforce_dnormal;

@@ -40,6 +40,9 @@ struct MechanicalGapKernel::Local {
   Eigen::Vector2d plastic_start = Eigen::Vector2d::Zero(), plastic = Eigen::Vector2d::Zero();
   ContactStatus previous = ContactStatus::Open, status = ContactStatus::Open;
   bool was_closed = false;
+  /// A linear perturbation step (*FREQUENCY): the status is the base state's, frozen (a closed
+  /// gap bilateral, sticking when it has friction; docs/theory/frequency.md)
+  bool perturbation = false;
   double hint = 0.0, dt = 0.0, temperature = 0.0;
   int iT1 = -1, iT2 = -1; ///< GAPUNIT temperature DOFs
   // normal behaviour

@@ -28,6 +28,8 @@ int procedure_code(const StepContext& ctx) {
     return 1;
   case Procedure::Dynamic: // implicit dynamics: automatic (11) or fixed (12) increments
     return ctx.direct ? 12 : 11;
+  case Procedure::Frequency: // the mass call of an eigenfrequency extraction
+    return 41;
   }
   return 1;
 }
@@ -135,7 +137,7 @@ void call_plugin(const UserCode& code, const UserElementType& type,
 /// beside the damping (to compare them) is asked as the damping is, with LFLAGS(1) = 11 or 12.
 std::array<int, 7> uel_flags(const StepContext& ctx, int what, bool operators = false) {
   int procedure = procedure_code(ctx);
-  if (ctx.procedure == Procedure::Dynamic && what != 4 && what != 3 && !operators) procedure = 1;
+  if (uses_mass(ctx.procedure) && what != 4 && what != 3 && !operators) procedure = 1;
   return {procedure, ctx.nlgeom ? 1 : 0, what, 0, 0, 0, 1};
 }
 
@@ -361,7 +363,7 @@ std::unique_ptr<ElementKernel> make_uel_kernel(const Model& model, const UserEle
   bool temperatures = model.has_initial_temperature, dynamic = false;
   for (const Step& s : model.steps) {
     temperatures |= !s.temperatures.empty();
-    dynamic |= s.procedure == Procedure::Dynamic;
+    dynamic |= uses_mass(s.procedure);
   }
   return std::make_unique<UelKernel>(type, properties, model.user_code, temperatures, dynamic);
 }

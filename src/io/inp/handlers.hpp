@@ -110,6 +110,13 @@ void set_procedure(BuildState& s, const Keyword& kw, Procedure p);
 void handle_static(BuildState& s, const Keyword& kw);
 void handle_heat_transfer(BuildState& s, const Keyword& kw);
 void handle_dynamic(BuildState& s, const Keyword& kw);
+/// *FREQUENCY (handlers_frequency.cpp)
+void handle_frequency(BuildState& s, const Keyword& kw);
+/// *SPECTRUM, *RESPONSE SPECTRUM, *MODAL DAMPING, *SELECT EIGENMODES (handlers_modal.cpp)
+void handle_spectrum(BuildState& s, const Keyword& kw);
+void handle_response_spectrum(BuildState& s, const Keyword& kw);
+void handle_modal_damping(BuildState& s, const Keyword& kw);
+void handle_select_eigenmodes(BuildState& s, const Keyword& kw);
 void handle_coupled(BuildState& s, const Keyword& kw);
 void handle_change_friction(BuildState& s, const Keyword& kw);
 /// *CONTROLS (handlers_controls.cpp)

@@ -90,6 +90,46 @@ void read_step_title(BuildState& s, const Keyword& kw) {
   }
 }
 
+/// A perturbation step (*FREQUENCY, *STEP, PERTURBATION): the procedure must be one, and the
+/// loads of an eigenvalue extraction are the base state's (those given in the step: a warning).
+void close_perturbation(BuildState& s) {
+  Step& st = s.step;
+  // a linear perturbation procedure (an eigenfrequency extraction, whose elements are evaluated
+  // about the frozen base state, or a mode-based procedure on its modes)
+  const bool procedure =
+      is_perturbation(st.procedure) || st.procedure == Procedure::ResponseSpectrum;
+  if (procedure)
+    st.perturbation = true;
+  else if (st.perturbation)
+    s.error(st.loc, "PERTURBATION",
+            fmt::format("*{} runs as a general step in gapfem, whose linear perturbation "
+                        "procedures are *FREQUENCY and *RESPONSE SPECTRUM: remove PERTURBATION "
+                        "from *STEP",
+                        procedure_name(st.procedure)));
+  if ((st.modal_damping || !st.selected_modes.empty()) &&
+      st.procedure != Procedure::ResponseSpectrum)
+    s.error(st.modal_damping ? st.modal_damping->loc : st.loc, "",
+            fmt::format("*MODAL DAMPING and *SELECT EIGENMODES belong to a mode-based step "
+                        "(*RESPONSE SPECTRUM); this step is *{}",
+                        procedure_name(st.procedure)));
+  if (!procedure) return;
+  const auto given = [](const auto& list) {
+    return std::any_of(list.begin(), list.end(), [](const auto& e) { return !e.propagated; });
+  };
+  if (given(st.cloads) || given(st.dloads) || given(st.temperatures) || given(st.interference))
+    s.warn(st.loc, fmt::format("loads, temperatures and interference given in a *{} step are "
+                               "ignored (as in Abaqus): the modes are those of the base state, "
+                               "with its loads",
+                               procedure_name(st.procedure)));
+  const Step* base = nullptr; // the last general step (none: the initial state, no loads)
+  for (auto it = s.model.steps.rbegin(); it != s.model.steps.rend() && !base; ++it)
+    if (!it->perturbation) base = &*it;
+  st.cloads = base ? carried(base->cloads) : decltype(st.cloads){};
+  st.dloads = base ? carried(base->dloads) : decltype(st.dloads){};
+  st.temperatures = base ? carried(base->temperatures) : decltype(st.temperatures){};
+  st.interference = base ? carried(base->interference) : decltype(st.interference){};
+}
+
 } // namespace
 
 void set_procedure(BuildState& s, const Keyword& kw, Procedure p) {
@@ -111,7 +151,11 @@ void handle_step(BuildState& s, const Keyword& kw) {
     close_step(s);
   }
   if (!s.model_done) finish_model_data(s);
-  const Step* prev = s.model.steps.empty() ? nullptr : &s.model.steps.back();
+  // the base state: the loads and boundary conditions of the last general step (a perturbation
+  // step's own do not carry on, Abaqus)
+  const Step* prev = nullptr;
+  for (auto it = s.model.steps.rbegin(); it != s.model.steps.rend() && !prev; ++it)
+    if (!it->perturbation) prev = &*it;
   s.step = Step{};
   s.scratch = StepScratch{};
   s.in_step = true;
@@ -130,16 +174,17 @@ void handle_step(BuildState& s, const Keyword& kw) {
   st.boundary = carried(prev ? prev->boundary : s.model_boundary);
   if (!prev) // non-zero model-data values (CalculiX dialect) are reached in the first step
     for (BoundaryEntry& b : st.boundary) b.propagated = b.value == 0.0;
-  st.monitor = prev ? prev->monitor : s.model_monitor; // a *MONITOR stays until replaced
-  st.restart = prev ? prev->restart : s.model_restart; // so does *RESTART, WRITE
+  const Step* last = s.model.steps.empty() ? nullptr : &s.model.steps.back();
+  st.monitor = last ? last->monitor : s.model_monitor; // a *MONITOR stays until replaced
+  st.restart = last ? last->restart : s.model_restart; // so does *RESTART, WRITE
+  if (last) st.controls = last->controls; // *CONTROLS stay in effect until changed or reset
   if (prev) {
-    st.controls = prev->controls; // *CONTROLS stay in effect until changed or reset
     st.cloads = carried(prev->cloads);
     st.dloads = carried(prev->dloads);
     st.temperatures = carried(prev->temperatures);
     st.interference = carried(prev->interference);
   }
-  reject_param(kw, "PERTURBATION", "gapfem runs general (nonlinear) steps only");
+  st.perturbation = kw.has("PERTURBATION");
   // once on, nonlinear geometry stays on in every later step (Abaqus); NLGEOM=NO cannot undo it
   const bool was_on = std::any_of(s.model.steps.begin(), s.model.steps.end(),
                                   [](const Step& p) { return p.nlgeom; });
@@ -173,6 +218,7 @@ void close_step(BuildState& s) {
             "TEMPERATURE-DISPLACEMENT after *STEP");
   // default variation of magnitudes: RAMP, except transient heat transfer / coupled steps (STEP)
   if (!s.scratch.amplitude_given) st.ramp_default = !s.scratch.transient;
+  if (s.scratch.procedure_given) close_perturbation(s);
   for (const auto& change : st.friction_changes)
     if (!change.friction.given)
       s.error(change.loc, "", "*CHANGE FRICTION must be followed by *FRICTION with the new data");

@@ -104,6 +104,11 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE"},
   {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
   {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
+  {"*RESPONSE SPECTRUM", handle_response_spectrum, W::History, "COMP|SUM|RIGID RESPONSE"},
+  {"*MODAL DAMPING", handle_modal_damping, W::History, "MODAL|RAYLEIGH|VISCOUS|STRUCTURAL|DEFINITION"},
+  {"*SELECT EIGENMODES", handle_select_eigenmodes, W::History, "GENERATE|DEFINITION"},
+  {"*SPECTRUM", handle_spectrum, W::Model, "NAME|TYPE|G|INPUT|CREATE"},
+  {"*FREQUENCY", handle_frequency, W::History, "EIGENSOLVER|NORMALIZATION|ACOUSTIC COUPLING|PROPERTY EVALUATION|RESIDUAL MODES|SIM|DAMPING PROJECTION|STORAGE|GLOBAL|CYCMPC|SOLVER|MATRIX STORAGE"},
   {"*DYNAMIC", handle_dynamic, W::History, "ALPHA|BETA|GAMMA|APPLICATION|INITIAL|DIRECT|HAFTOL|NOHAF|TIME INTEGRATOR|IMPACT|SUBSPACE|EXPLICIT|ADIABATIC"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*SUBSTRUCTURE GENERATE", handle_substructure_generate, W::History, "TYPE|OVERWRITE|LIBRARY|MASS MATRIX|STRUCTURAL DAMPING MATRIX|VISCOUS DAMPING MATRIX|GRAVITY LOAD|RECOVERY MATRIX|NSET|ELSET|PROPERTY EVALUATION"},
@@ -217,8 +222,7 @@ bool output_keyword(const std::string& key) {
 
 /// Analysis procedures of Abaqus and CalculiX that gapfem does not run.
 bool procedure_keyword(const std::string& key) {
-  static const char* const kProcedures[] = {"FREQUENCY",
-                                            "MODALDYNAMIC",
+  static const char* const kProcedures[] = {"MODALDYNAMIC",
                                             "STEADYSTATEDYNAMICS",
                                             "BUCKLE",
                                             "VISCO",
@@ -230,7 +234,6 @@ bool procedure_keyword(const std::string& key) {
                                             "COUPLEDTHERMAL-ELECTRIC",
                                             "COUPLEDTHERMAL-ELECTRICAL-STRUCTURAL",
                                             "RANDOMRESPONSE",
-                                            "RESPONSESPECTRUM",
                                             "COMPLEXFREQUENCY",
                                             "MATRIXGENERATE",
                                             "DIRECTCYCLIC",
@@ -580,10 +583,11 @@ void dispatch(BuildState& s, Keyword& kw) {
       s.scratch.procedure_given = true;
       s.error(
           kw.loc, "",
-          fmt::format("the procedure {} is not supported by gapfem, which runs *STATIC, *DYNAMIC, "
-                      "*HEAT TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT steps; replace the "
-                      "step or remove it",
-                      kw.name));
+          fmt::format(
+              "the procedure {} is not supported by gapfem, which runs *STATIC, *DYNAMIC, "
+              "*FREQUENCY, *HEAT TRANSFER and *COUPLED TEMPERATURE-DISPLACEMENT steps; replace the "
+              "step or remove it",
+              kw.name));
       return;
     }
     unknown_keyword(s, kw, after_empty_heading);

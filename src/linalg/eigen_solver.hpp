@@ -1,0 +1,57 @@
+#pragma once
+/// @file eigen_solver.hpp
+/// The generalized symmetric eigenproblem of a constrained system,
+///
+///     K x = lambda M x,   C x = 0   (exact rows; compliant rows add their stiffness C^T C / E),
+///
+/// by shift-invert Lanczos (Spectra) over a ConstrainedFactor of K - sigma M: the operator
+/// x -> (K - sigma M)^-1_C M x, whose eigenvalues nu = 1 / (lambda - sigma) are largest for the
+/// eigenvalues nearest the shift (docs/theory/frequency.md). Small systems are solved densely
+/// through the same operator. Used by *FREQUENCY (solver/procedure_frequency.cpp); the backend
+/// is whatever ConstrainedSolver the run has.
+#include "linalg/constrained_solver.hpp"
+
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gapfem {
+
+struct EigenRequest {
+  int count = 0; ///< eigenvalues wanted; 0: every one in [lower, upper]
+  double lower = -std::numeric_limits<double>::infinity(); ///< eigenvalue range (omega^2)
+  double upper = std::numeric_limits<double>::infinity();
+  /// The shift sigma (omega^2); none: 0, or a small negative one when K is singular
+  std::optional<double> shift;
+  double tolerance = 1e-10; ///< Lanczos's relative tolerance of the Ritz values
+};
+
+struct EigenPairs {
+  std::vector<double> values;  ///< ascending
+  std::vector<double> vectors; ///< n per value, column after column; x^T M x = 1
+  double shift = 0.0;          ///< the shift used
+  /// sum K_ii / sum M_ii over the equations with mass: the size of the eigenvalues (|lambda|
+  /// below about 1e-11 of it is a rigid-body mode)
+  double scale = 1.0;
+  /// Eigenvalues of the model there are at most (free equations with mass less independent
+  /// exact rows, or the dense solve's count); -1 when not known
+  long finite_modes = -1;
+  int factorizations = 0, operations = 0, restarts = 0;
+};
+
+/// What the extraction could not do (no mass, no convergence, too many modes asked for).
+class EigenProblemError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The eigenpairs of (K, M) under C that `req` asks for. K and M share a pattern; C's right sides
+/// are ignored (the problem is homogeneous). Throws EigenProblemError, or SingularSystem when no
+/// shift makes K - sigma M factorisable.
+EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K, const CsrMatrix& M,
+                                  const ConstraintBlock& C, const EigenRequest& req,
+                                  RunStatistics* stats = nullptr);
+
+} // namespace gapfem
