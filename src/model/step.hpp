@@ -25,8 +25,10 @@ enum class Procedure : std::uint8_t {
   ResponseSpectrum      ///< *RESPONSE SPECTRUM: peak response from the modes of a *FREQUENCY step
 };
 std::string_view procedure_name(Procedure p);
-/// Is the procedure a linear perturbation (Abaqus): it works about the base state, the end of the
-/// last general step, and leaves that state as it was for the next general step.
+/// Does the procedure evaluate the elements as a linear perturbation about the base state (the
+/// end of the last general step), their status frozen there: the eigenfrequency extraction. The
+/// steps of every perturbation procedure (also *RESPONSE SPECTRUM, which only combines the modes)
+/// are marked Step::perturbation and leave the base state as it was for the next general step.
 constexpr bool is_perturbation(Procedure p) {
   return p == Procedure::Frequency;
 }
