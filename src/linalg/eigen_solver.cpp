@@ -65,7 +65,9 @@ class ShiftInvert {
   mutable std::vector<double> _g, _l;
 };
 
-/// M x (Spectra's BOpType).
+/// M x (Spectra's BOpType). Spectra's M-inner products multiply the same vector by M again and
+/// again (its norm, then its products with each basis vector): the last product is kept and
+/// handed back while the vector is the same one (a comparison costs far less than the product).
 class MassProduct {
  public:
   using Scalar = double;
@@ -74,11 +76,17 @@ class MassProduct {
   Eigen::Index cols() const { return _M.n(); }
   void perform_op(const double* x, double* y) const {
     const std::size_t n = static_cast<std::size_t>(_M.n());
-    _M.multiply({x, n}, {y, n});
+    if (_x.size() != n || !std::equal(x, x + n, _x.begin())) {
+      _x.assign(x, x + n);
+      _y.resize(n);
+      _M.multiply({x, n}, _y);
+    }
+    std::copy(_y.begin(), _y.end(), y);
   }
 
  private:
   const CsrMatrix& _M;
+  mutable std::vector<double> _x, _y; ///< the last vector and its product
 };
 
 /// sum K_ii / sum M_ii over the equations with mass: the size of the eigenvalues (a shift scale).
