@@ -30,6 +30,8 @@ int procedure_code(const StepContext& ctx) {
     return ctx.direct ? 12 : 11;
   case Procedure::Frequency: // the mass call of an eigenfrequency extraction
     return 41;
+  case Procedure::ResponseSpectrum: // combines modes: no element is called
+    return 1;
   }
   return 1;
 }

@@ -170,8 +170,11 @@ void handle_modal_damping(BuildState& s, const Keyword& kw) {
                 md.kind == ModalDamping::Kind::Rayleigh
                     ? "first mode, last mode, alpha, beta"
                     : "first mode, last mode, damping fraction");
-      g.first = static_cast<int>(r.integer(0, "first mode", 1, 100000));
-      g.last = static_cast<int>(r.integer_or(1, g.first, "last mode", g.first, 100000));
+      // blank mode numbers: every mode (CalculiX writes ",,alpha,beta" and ",,zeta")
+      const bool all = r.blank(0) && r.blank(1);
+      g.first = static_cast<int>(r.integer_or(0, 1, "first mode", 1, 100000));
+      g.last =
+          all ? 100000 : static_cast<int>(r.integer_or(1, g.first, "last mode", g.first, 100000));
       if (md.kind == ModalDamping::Kind::Rayleigh) {
         g.alpha = r.real_or(2, 0.0, "alpha");
         g.beta = r.real_or(3, 0.0, "beta");

@@ -107,7 +107,7 @@ void close_perturbation(BuildState& s) {
                         "from *STEP",
                         procedure_name(st.procedure)));
   if ((st.modal_damping || !st.selected_modes.empty()) &&
-      st.procedure != Procedure::ResponseSpectrum)
+      st.procedure != Procedure::ResponseSpectrum && !s.scratch.unknown_procedure)
     s.error(st.modal_damping ? st.modal_damping->loc : st.loc, "",
             fmt::format("*MODAL DAMPING and *SELECT EIGENMODES belong to a mode-based step "
                         "(*RESPONSE SPECTRUM); this step is *{}",

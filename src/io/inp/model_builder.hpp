@@ -45,8 +45,9 @@ enum class Parent : std::uint8_t {
 /// What a step has seen so far (for defaults and "exactly one" rules).
 struct StepScratch {
   bool procedure_given = false;
-  bool amplitude_given = false; ///< *STEP, AMPLITUDE= was given
-  bool transient = false;       ///< transient heat transfer / coupled procedure
+  bool unknown_procedure = false; ///< the step's procedure is one gapfem does not run (reported)
+  bool amplitude_given = false;   ///< *STEP, AMPLITUDE= was given
+  bool transient = false;         ///< transient heat transfer / coupled procedure
   bool node_print_given = false, el_print_given = false, field_given = false;
   bool node_file_given = false, el_file_given = false; ///< *NODE FILE / *EL FILE in this step
   /// Field-output requests of this step that asked for VARIABLE=PRESELECT or ALL (index, all?).

@@ -581,6 +581,7 @@ void dispatch(BuildState& s, Keyword& kw) {
     if (s.in_step && procedure_keyword(kw.key)) {
       // the step has its procedure, one gapfem does not run: no "step has no procedure" later
       s.scratch.procedure_given = true;
+      s.scratch.unknown_procedure = true; // its step's other checks would be follow-on errors
       s.error(
           kw.loc, "",
           fmt::format(

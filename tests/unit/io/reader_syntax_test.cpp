@@ -479,6 +479,16 @@ TEST(ReaderSyntax, UnsupportedProcedureIsOneError) {
   EXPECT_EQ(e.find("no procedure"), std::string::npos) << e;
 }
 
+TEST(ReaderSyntax, AnUnsupportedProcedureRaisesNoFollowOnErrorOfItsStep) {
+  // *MODAL DAMPING belongs to the mode-based procedure the step names, which gapfem lacks: the
+  // procedure is the one error (not also "*MODAL DAMPING belongs to a mode-based step")
+  const std::string e = error_text(std::string(kTrussModel) +
+                                   "*STEP\n*MODAL DYNAMIC\n0.1, 1.\n*MODAL DAMPING\n,,0.02\n"
+                                   "*END STEP\n");
+  EXPECT_CONTAINS(e, "*MODAL DYNAMIC: the procedure *MODAL DYNAMIC is not supported by gapfem");
+  EXPECT_EQ(e.find("mode-based"), std::string::npos) << e;
+}
+
 TEST(ReaderSyntax, AMisspeltKeywordOrParameterIsNamedWithWhatWasMeant) {
   // a misspelling of a keyword gapfem knows; its block's sub-options raise nothing more
   const std::string e = error_text(std::string(kTrussModel) + "*MATERAL, NAME=M2\n*ELASTIC\n1., "
