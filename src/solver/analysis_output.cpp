@@ -74,20 +74,29 @@ std::optional<Frame> Analysis::Impl::frame_due(const Step& step, const StepProbl
   return fr;
 }
 
+namespace {
+
+/// Every nodal vector of a frame sized for the model and zero (temperatures through shells too).
+void zero_node_results(const DofMap& dofs, NodeId nn, NodeResults& nr) {
+  nr.U.assign(nn, Vec3{});
+  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
+  nr.NT.assign(nn, 0.0);
+  nr.RFL = nr.CFL = nr.NT;
+  nr.temperature_points = std::max(1, dofs.max_temperature_points());
+  nr.NT_more.assign(static_cast<std::size_t>(nr.temperature_points - 1) * nn, 0.0);
+  nr.RFL_more = nr.CFL_more = nr.NT_more;
+}
+
+} // namespace
+
 /// The frame's nodal results: solution, reactions and loads per node (local systems at
 /// *TRANSFORM nodes), and the predefined temperature field of a stress analysis.
 void Analysis::Impl::frame_nodes(StepProblem& prob, Frame& fr) {
   const DofMap& dofs = disc.dofs();
   const NodeId nn = model.mesh.n_nodes();
   NodeResults& nr = fr.nodes;
-  nr.U.assign(nn, Vec3{});
-  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
-  nr.NT.assign(nn, 0.0);
-  nr.RFL = nr.CFL = nr.NT;
-  nr.temperature_points = std::max(1, dofs.max_temperature_points());
+  zero_node_results(dofs, nn, nr);
   const std::size_t more = static_cast<std::size_t>(nr.temperature_points - 1);
-  nr.NT_more.assign(more * static_cast<std::size_t>(nn), 0.0);
-  nr.RFL_more = nr.CFL_more = nr.NT_more;
   nr.dof_mask.resize(nn);
   // velocities and accelerations: the committed ones of a dynamic step, the increment's end values
   // (empty in other steps, which have none)
@@ -185,13 +194,7 @@ void Analysis::Impl::perturbation_nodes(std::span<const double> slots, Frame& fr
   const DofMap& dofs = disc.dofs();
   const NodeId nn = model.mesh.n_nodes();
   NodeResults& nr = fr.nodes;
-  nr.U.assign(nn, Vec3{});
-  nr.UR = nr.RF = nr.RM = nr.CF = nr.CM = nr.U;
-  nr.NT.assign(nn, 0.0);
-  nr.RFL = nr.CFL = nr.NT;
-  nr.temperature_points = std::max(1, dofs.max_temperature_points());
-  nr.NT_more.assign(static_cast<std::size_t>(nr.temperature_points - 1) * nn, 0.0);
-  nr.RFL_more = nr.CFL_more = nr.NT_more;
+  zero_node_results(dofs, nn, nr);
   nr.dof_mask.resize(nn);
   for (NodeId n = 0; n < nn; ++n) nr.dof_mask[n] = dofs.mask(n);
   for (LocalIndex s = 0; s < dofs.n_slots(); ++s) {
