@@ -46,6 +46,9 @@ struct PhysicalConstants;
 /// What every element evaluation in one assembly pass shares.
 struct StepContext {
   Procedure procedure = Procedure::Static;
+  /// a linear perturbation about the base state (*FREQUENCY, *BUCKLE, a static perturbation
+  /// step): contact status and friction frozen there (gap_response.cpp)
+  bool perturbation = false;
   bool nlgeom = false;
   bool transient = false; ///< transient heat transfer / coupled step
   double step_time = 0.0; ///< step time at the end of the increment being solved
@@ -260,6 +263,15 @@ class ElementKernel {
   virtual void initialize(const ElementInput& in) const {}
   /// Residual and tangent at the trial state; writes the trial history.
   virtual void evaluate(const ElementInput& in, ElementOutput& out) const = 0;
+  /// Eigenvalue buckling's differential stiffness (docs/theory/buckling.md): K (n_dofs x n_dofs,
+  /// row-major) += the initial-stress matrix of the NLGEOM tangent at in.u with the stress change
+  /// the local perturbation du makes (dS/du du) in place of the stress. False: the kernel does not
+  /// provide it, and the assembler differentiates the element's NLGEOM tangent along du instead
+  /// (which adds the initial-displacement matrix of du, of the order of the strain).
+  virtual bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                                std::span<double> K) const {
+    return false;
+  }
   /// Augmented Lagrange: at a converged state, update the element's multiplier estimate when its
   /// constraint is not yet met to its tolerance. Returns true when something changed (the Newton
   /// iteration then continues).

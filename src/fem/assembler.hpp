@@ -73,6 +73,12 @@ class Assembler {
   void assemble_loads(std::span<const ActiveLoad> loads, const FieldView& fields,
                       const StepContext& ctx, std::span<double> f_ext, MatrixInserter* K,
                       bool symmetrize = true);
+  /// Eigenvalue buckling's initial-stress matrix of the perturbation du (per slot) at the given
+  /// state into K over equations (zeroed first): each element's ElementKernel::stress_stiffness,
+  /// or the central difference of its NLGEOM tangent along du where it has none
+  /// (assembler_stress.cpp).
+  void stress_stiffness(const FieldView& fields, const StepContext& ctx, std::span<const double> du,
+                        MatrixInserter& K);
   /// Residual of one element at the given state (no tangent); out has n_dofs entries.
   void element_residual(ElemId e, const FieldView& fields, const StepContext& ctx,
                         std::vector<double>& out, std::vector<LocalIndex>& slots);

@@ -54,4 +54,16 @@ EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K,
                                   const ConstraintBlock& C, const EigenRequest& req,
                                   RunStatistics* stats = nullptr);
 
+/// The buckling eigenpairs of K0 x = lambda G x under C (linalg/buckling_solver.cpp): G = -K_Delta
+/// symmetric and indefinite, K0 positive definite where the rows leave the model free (compliant
+/// rows add their stiffness), lambda the multipliers of the perturbation load. Returned: the
+/// `count` eigenvalues of smallest magnitude in [lower, upper] (all in it when count is 0), by
+/// ascending magnitude, x^T K0 x = 1. Lanczos on G x = (1 / lambda) K0 x in the K0 inner product
+/// (Spectra's regular inverse mode over one factorisation of K0); small systems densely. Throws
+/// EigenProblemError (no load stiffness, K0 not positive definite, no convergence) or
+/// SingularSystem (K0 cannot be factorised).
+EigenPairs constrained_buckling_pairs(ConstrainedSolver& solver, const CsrMatrix& K0,
+                                      const CsrMatrix& G, const ConstraintBlock& C,
+                                      const EigenRequest& req, RunStatistics* stats = nullptr);
+
 } // namespace gapfem

@@ -36,6 +36,8 @@ struct NodalLoad {
   double value = 0.0;
   int amplitude = -1;
   bool propagated = false;
+  /// *CLOAD, IMAGINARY in a *STEADY STATE DYNAMICS step: the load's imaginary part
+  bool imaginary = false;
   SourceLocation loc;
 };
 

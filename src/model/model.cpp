@@ -22,6 +22,12 @@ std::string_view procedure_name(Procedure p) {
     return "FREQUENCY";
   case Procedure::ResponseSpectrum:
     return "RESPONSE SPECTRUM";
+  case Procedure::Buckle:
+    return "BUCKLE";
+  case Procedure::SteadyStateDynamics:
+    return "STEADY STATE DYNAMICS";
+  case Procedure::ModalDynamic:
+    return "MODAL DYNAMIC";
   }
   return "?";
 }

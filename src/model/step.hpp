@@ -22,15 +22,25 @@ enum class Procedure : std::uint8_t {
   SubstructureGenerate, ///< *SUBSTRUCTURE GENERATE: a linear reduction, no increments
   Dynamic,              ///< *DYNAMIC: implicit direct integration (HHT or backward Euler)
   Frequency,            ///< *FREQUENCY: natural frequencies about the base state (perturbation)
-  ResponseSpectrum      ///< *RESPONSE SPECTRUM: peak response from the modes of a *FREQUENCY step
+  ResponseSpectrum,     ///< *RESPONSE SPECTRUM: peak response from the modes of a *FREQUENCY step
+  Buckle,               ///< *BUCKLE: eigenvalue buckling about the base state (perturbation)
+  SteadyStateDynamics,  ///< *STEADY STATE DYNAMICS: harmonic response on the modes
+  ModalDynamic          ///< *MODAL DYNAMIC: transient response on the modes
 };
 std::string_view procedure_name(Procedure p);
 /// Does the procedure evaluate the elements as a linear perturbation about the base state (the
-/// end of the last general step), their status frozen there: the eigenfrequency extraction. The
-/// steps of every perturbation procedure (also *RESPONSE SPECTRUM, which only combines the modes)
-/// are marked Step::perturbation and leave the base state as it was for the next general step.
+/// end of the last general step), their status frozen there: the eigenfrequency extraction and
+/// eigenvalue buckling (a *STATIC step with *STEP, PERTURBATION is one too: Step::perturbation).
+/// The steps of every perturbation procedure (also the mode-based ones, which work on the modes
+/// alone) are marked Step::perturbation and leave the base state as it was for the next general
+/// step.
 constexpr bool is_perturbation(Procedure p) {
-  return p == Procedure::Frequency;
+  return p == Procedure::Frequency || p == Procedure::Buckle;
+}
+/// Does the procedure work on the modes of an earlier *FREQUENCY step (a mode-based procedure)?
+constexpr bool is_mode_based(Procedure p) {
+  return p == Procedure::ResponseSpectrum || p == Procedure::SteadyStateDynamics ||
+         p == Procedure::ModalDynamic;
 }
 /// Does the procedure use the elements' mass (dynamic response, eigenmodes)?
 constexpr bool uses_mass(Procedure p) {
@@ -116,6 +126,52 @@ struct FrequencySettings {
   SourceLocation loc;
 };
 
+/// *BUCKLE (eigenvalue buckling, docs/theory/buckling.md): what the data line and the parameters
+/// ask for. Eigenvalues are load multipliers of the step's perturbation loads.
+struct BuckleSettings {
+  enum class Solver : std::uint8_t { Subspace, Lanczos };
+  Solver solver = Solver::Subspace; ///< EIGENSOLVER= (both run gapfem's Lanczos)
+  int count = 0;                    ///< eigenvalues requested (0: all in the range, Lanczos)
+  std::optional<double> min_eigenvalue, max_eigenvalue; ///< the range of interest
+  int vectors = 0, iterations = 0; ///< SUBSPACE: vectors used and iterations (accepted, unused)
+  SourceLocation loc;
+};
+
+/// *STEADY STATE DYNAMICS (mode-based harmonic response, docs/theory/modal_dynamics.md): the
+/// frequency ranges of the data lines and how points are spread over them.
+struct SteadyStateSettings {
+  enum class Interval : std::uint8_t { Eigenfrequency, Range, Spread };
+  Interval interval = Interval::Eigenfrequency; ///< INTERVAL=
+  bool logarithmic = true;                      ///< FREQUENCY SCALE=LOGARITHMIC (else LINEAR)
+  struct Range {
+    double lower = 0.0, upper = 0.0; ///< cycles per time
+    int points = 20;                 ///< points per interval (Abaqus's default 20)
+    std::optional<double> bias;      ///< bias parameter (default 3, RANGE 1)
+    double scale = 1.0;              ///< frequency scale multiplier
+  };
+  std::vector<Range> ranges;
+  SourceLocation loc;
+};
+
+/// *MODAL DYNAMIC (mode-based transient response): fixed time increments over a period.
+struct ModalDynamicSettings {
+  double dt = 0.0, period = 0.0;
+  bool continue_previous = false; ///< CONTINUE=YES (refused: the initial modal state is zero)
+  SourceLocation loc;
+};
+
+/// *BASE MOTION in a mode-based step: the motion of the base (the nodes the base state's
+/// boundary conditions hold) along one DOF, by an amplitude.
+struct BaseMotion {
+  enum class Type : std::uint8_t { Acceleration, Velocity, Displacement };
+  Type type = Type::Acceleration;
+  DofType dof = DofType::U1;
+  int amplitude = -1; ///< index into Model::amplitudes (-1: constant 1)
+  double scale = 1.0;
+  bool imaginary = false; ///< *STEADY STATE DYNAMICS: the imaginary part
+  SourceLocation loc;
+};
+
 /// The summation rules of *RESPONSE SPECTRUM, SUM= (solver/modal_combination.hpp).
 enum class ModalSum { Abs, Srss, Cqc, Nrl, Tenp, Dsc, Grp };
 
@@ -192,6 +248,10 @@ struct Step {
   DynamicSettings dynamic;                   ///< *DYNAMIC steps
   FrequencySettings frequency;               ///< *FREQUENCY steps
   ResponseSpectrumSettings spectrum;         ///< *RESPONSE SPECTRUM steps
+  BuckleSettings buckle;                     ///< *BUCKLE steps
+  SteadyStateSettings steady_state;          ///< *STEADY STATE DYNAMICS steps
+  ModalDynamicSettings modal_dynamic;        ///< *MODAL DYNAMIC steps
+  std::vector<BaseMotion> base_motions;      ///< *BASE MOTION (mode-based steps)
   std::optional<ModalDamping> modal_damping; ///< *MODAL DAMPING of a mode-based step
   /// *SELECT EIGENMODES: the modes (1-based) a mode-based step uses; empty: all of them
   std::vector<int> selected_modes;

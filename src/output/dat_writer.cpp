@@ -310,6 +310,17 @@ void DatWriter::write_increment_header(const Model& model, int step_index, const
     return;
   }
   auto out = std::back_inserter(_out.buffer());
+  if (frame.harmonic) { // *STEADY STATE DYNAMICS: the frame is a frequency
+    const std::string heading =
+        model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));
+    fmt::format_to(out, "\n\n{:<66}STEP {:>4}  FREQUENCY POINT {:>4}\n\n", heading, frame.step,
+                   frame.increment);
+    fmt::format_to(out,
+                   " EXCITATION FREQUENCY {:>11.4E} CYCLES/TIME; THE NODE TABLES GIVE THE REAL "
+                   "PART, THEN THE IMAGINARY PART\n",
+                   frame.harmonic->frequency);
+    return;
+  }
   const std::string heading =
       model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));
   fmt::format_to(out, "\n\n{:<66}STEP {:>4}  INCREMENT {:>4}\n", heading, frame.step,
@@ -383,8 +394,24 @@ void DatWriter::frame(const Model& model, int step_index, const Frame& frame) {
           write_node_table(model, frame, step.node_prints[k], _node_lists[k], var);
         _printed_node[k] = true;
       }
+    if (frame.harmonic) write_imaginary_tables(model, step, frame, node_due);
   }
   _out.flush();
+}
+
+void DatWriter::write_imaginary_tables(const Model& model, const Step& step, const Frame& frame,
+                                       const std::vector<bool>& node_due) {
+  Frame im;
+  im.nodes = frame.nodes;
+  im.nodes.U = frame.harmonic->U;
+  im.nodes.UR = frame.harmonic->UR;
+  fmt::format_to(std::back_inserter(_out.buffer()), "\n\n{:>30}{}\n", "",
+                 output::spaced("IMAGINARY PART"));
+  for (std::size_t k = 0; k < step.node_prints.size(); ++k)
+    if (node_due[k])
+      for (NodeVar var : step.node_prints[k].vars)
+        if (var == NodeVar::U || var == NodeVar::UR)
+          write_node_table(model, im, step.node_prints[k], _node_lists[k], var);
 }
 
 void DatWriter::write_node_table(const Model& model, const Frame& frame,

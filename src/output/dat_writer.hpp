@@ -45,6 +45,9 @@ class DatWriter : public ResultWriter {
   void prepare_step(const Model& model, int step_index);
   void write_increment_header(const Model& model, int step_index, const Frame& frame,
                               bool repeated);
+  /// *STEADY STATE DYNAMICS: the due U and UR tables again with the frame's imaginary part.
+  void write_imaginary_tables(const Model& model, const Step& step, const Frame& frame,
+                              const std::vector<bool>& node_due);
   void write_node_table(const Model& model, const Frame& frame, const NodePrintRequest& request,
                         const std::vector<NodeId>& nodes, NodeVar var);
   void write_element_tables(const Model& model, const Frame& frame, const ElPrintRequest& request,

@@ -41,6 +41,49 @@ void DatWriter::write_perturbation_header(const Step& step) {
     fmt::format_to(out, "{:>10}THE NODE OUTPUT BELOW IS THE PEAK (NON-NEGATIVE) RESPONSE\n", "");
     return;
   }
+  if (step.procedure == Procedure::SteadyStateDynamics) {
+    const SteadyStateSettings& ss = step.steady_state;
+    fmt::format_to(out, "{:>10}STEADY STATE DYNAMICS: HARMONIC RESPONSE ON THE MODES\n", "");
+    fmt::format_to(out, "{:>10}FREQUENCY SCALE {}, POINTS SPREAD OVER {}\n", "",
+                   ss.logarithmic ? "LOGARITHMIC" : "LINEAR",
+                   ss.interval == SteadyStateSettings::Interval::Range
+                       ? "THE RANGE"
+                       : "THE INTERVALS BETWEEN EIGENFREQUENCIES");
+    return;
+  }
+  if (step.procedure == Procedure::ModalDynamic) {
+    fmt::format_to(out, "{:>10}MODAL DYNAMIC: TRANSIENT RESPONSE ON THE MODES FROM REST\n", "");
+    fmt::format_to(out, "{:>10}TIME INCREMENT {:>38.4E}\n", "", step.modal_dynamic.dt);
+    fmt::format_to(out, "{:>10}TIME PERIOD {:>41.4E}\n", "", step.modal_dynamic.period);
+    return;
+  }
+  if (step.procedure == Procedure::Static) {
+    fmt::format_to(out, "{:>10}STATIC LINEAR PERTURBATION ABOUT THE BASE STATE\n", "");
+    fmt::format_to(out, "{:>10}THE OUTPUT BELOW IS THE PERTURBATION RESPONSE ALONE\n", "");
+    return;
+  }
+  if (step.procedure == Procedure::Buckle) {
+    const BuckleSettings& b = step.buckle;
+    fmt::format_to(out,
+                   "{:>10}EIGENVALUE BUCKLING PREDICTION (LINEAR PERTURBATION ABOUT THE BASE "
+                   "STATE)\n",
+                   "");
+    fmt::format_to(out, "{:>10}EIGENSOLVER={} (LANCZOS)\n", "",
+                   b.solver == BuckleSettings::Solver::Lanczos ? "LANCZOS" : "SUBSPACE");
+    if (b.count > 0) fmt::format_to(out, "{:>10}NUMBER OF EIGENVALUES {:>31}\n", "", b.count);
+    if (b.min_eigenvalue)
+      fmt::format_to(out, "{:>10}MINIMUM EIGENVALUE OF INTEREST {:>22.4E}\n", "",
+                     *b.min_eigenvalue);
+    if (b.max_eigenvalue)
+      fmt::format_to(out, "{:>10}MAXIMUM EIGENVALUE OF INTEREST {:>22.4E}\n", "",
+                     *b.max_eigenvalue);
+    fmt::format_to(out, "{:>10}EIGENVECTORS NORMALIZED BY LARGEST DISPLACEMENT OR ROTATION\n", "");
+    fmt::format_to(out,
+                   "{:>10}BUCKLING LOADS ARE THE BASE STATE LOADS PLUS EIGENVALUE TIMES THE "
+                   "LOADS OF THIS STEP\n",
+                   "");
+    return;
+  }
   const FrequencySettings& f = step.frequency;
   const char* solver[] = {"LANCZOS", "SUBSPACE", "AMS"};
   fmt::format_to(out, "{:>10}EIGENVALUE EXTRACTION (LINEAR PERTURBATION ABOUT THE BASE STATE)\n",
@@ -66,6 +109,12 @@ void DatWriter::modes(const Model& model, int step_index, const EigenSummary& su
   auto& buf = _out.buffer();
   auto out = std::back_inserter(buf);
   fmt::format_to(out, "\n\n{:>30}{}\n\n", "", output::spaced("EIGENVALUE OUTPUT"));
+  if (sum.buckling) { // load multipliers: no frequencies, masses or participation
+    fmt::format_to(out, " MODE NO      EIGENVALUE\n\n");
+    for (const ModeInfo& m : sum.modes)
+      fmt::format_to(out, "{:>8}  {:>14}\n", m.mode, number(m.eigenvalue));
+    return;
+  }
   fmt::format_to(out, " MODE NO      EIGENVALUE              FREQUENCY         GENERALIZED MASS"
                       "   COMPOSITE MODAL DAMPING\n");
   fmt::format_to(out, "{:>32}(RAD/TIME)   (CYCLES/TIME)\n\n", "");
@@ -99,6 +148,10 @@ void DatWriter::write_mode_header(const Model& model, const Frame& frame) {
       model.heading.substr(0, std::min<std::size_t>(60, model.heading.find('\n')));
   const ModeInfo& m = *frame.mode;
   fmt::format_to(out, "\n\n{:<66}STEP {:>4}  MODE {:>4}\n\n", heading, frame.step, m.mode);
+  if (model.steps[static_cast<std::size_t>(frame.step - 1)].procedure == Procedure::Buckle) {
+    fmt::format_to(out, " EIGENVALUE (BUCKLING LOAD MULTIPLIER) {:>11.4E}\n", m.eigenvalue);
+    return;
+  }
   fmt::format_to(out,
                  " EIGENVALUE {:>11.4E},  FREQUENCY {:>11.4E} CYCLES/TIME,  GENERALIZED MASS "
                  "{:>11.4E}\n",

@@ -164,10 +164,15 @@ void FrdWriter::begin(const Model& model) {
 void FrdWriter::write_block(const Frame& frame, const Block& b, const std::vector<NodeId>& nodes) {
   auto out = fmt::appender(_out.buffer());
   fmt::format_to(out, "    1PSTEP{:26}{:12}{:12}\n", ++_datasets, frame.increment, frame.step);
-  // a mode (*FREQUENCY): its frequency as the value, analysis type 2 (frequency), its number
+  // a mode (*FREQUENCY): its frequency as the value, analysis type 2 (frequency), its number;
+  // a buckling mode (no generalized mass) its load multiplier
   if (frame.mode) fmt::format_to(out, "    1PMODE{:26}\n", frame.mode->mode);
   fmt::format_to(out, "  100CL{:5}", 100 + _frames);
-  append_value(_out.buffer(), frame.mode ? frame.mode->frequency() : frame.total_time);
+  const bool buckling = frame.mode && frame.mode->generalized_mass == 0.0;
+  append_value(_out.buffer(), buckling         ? frame.mode->eigenvalue
+                              : frame.mode     ? frame.mode->frequency()
+                              : frame.harmonic ? frame.harmonic->frequency
+                                               : frame.total_time);
   fmt::format_to(out, "{:12}{:20}{:2}{:5}{:10}{:2}\n", nodes.size(), "", frame.mode ? 2 : 0,
                  frame.mode ? frame.mode->mode : frame.step, "", 1);
   const int nc = static_cast<int>(b.components.size());

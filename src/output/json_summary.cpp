@@ -35,6 +35,16 @@ void label_or_null(fmt::memory_buffer& b, const Model& model, Label l) {
 void JsonWriter::modes(const Model&, int, const EigenSummary& sum) {
   fmt::memory_buffer b;
   b.append(std::string_view(",\"modes\":["));
+  if (sum.buckling) { // load multipliers
+    for (const ModeInfo& m : sum.modes) {
+      fmt::format_to(fmt::appender(b), "{}{{\"mode\":{}", m.mode > 1 ? "," : "", m.mode);
+      number_field(b, "eigenvalue", m.eigenvalue);
+      b.push_back('}');
+    }
+    b.append(std::string_view("],\"buckling\":true"));
+    _modes_json = fmt::to_string(b);
+    return;
+  }
   for (const ModeInfo& m : sum.modes) {
     fmt::format_to(fmt::appender(b), "{}{{\"mode\":{}", m.mode > 1 ? "," : "", m.mode);
     number_field(b, "eigenvalue", m.eigenvalue);

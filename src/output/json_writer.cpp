@@ -199,7 +199,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   const auto& mesh = model.mesh;
   _frame_nodes.clear();
   _frame_elems.clear();
-  if (frame.last_in_step || frame.mode) { // a mode's frame: its whole shape
+  if (frame.last_in_step || frame.mode || frame.harmonic) { // a mode's frame: its whole shape
     _frame_nodes = _all_nodes;
     for (const auto& res : frame.elements)
       if (res.elem >= 0 && res.elem < mesh.n_elements()) _frame_elems.push_back(&res);
@@ -228,7 +228,7 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
     for (const ElementResult* res : _frame_elems) _elem_mark[res->elem] = 0;
     if (!due) return;
   }
-  if (!frame.last_in_step && !frame.mode)
+  if (!frame.last_in_step && !frame.mode && !frame.harmonic)
     std::sort(_frame_nodes.begin(), _frame_nodes.end(),
               [&](NodeId a, NodeId c) { return mesh.node_labels[a] < mesh.node_labels[c]; });
   std::sort(_frame_elems.begin(), _frame_elems.end(),
@@ -255,12 +255,14 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   if (frame.mode) {
     fmt::format_to(fmt::appender(b), ",\"mode\":{}", frame.mode->mode);
     output::append_json_field(b, "eigenvalue", frame.mode->eigenvalue);
-    output::append_json_field(b, "frequency", frame.mode->frequency());
+    if (frame.mode->generalized_mass > 0.0) // not a buckling mode (a load multiplier)
+      output::append_json_field(b, "frequency", frame.mode->frequency());
   }
+  if (frame.harmonic) output::append_json_field(b, "frequency", frame.harmonic->frequency);
   b.append(std::string_view(",\"nodes\":{"));
   bool first = true;
   for (NodeId n : _frame_nodes) {
-    write_node(model, frame.nodes, n, first);
+    write_node(model, frame.nodes, n, first, frame.harmonic ? &*frame.harmonic : nullptr);
     _out.maybe_flush();
   }
   b.append(std::string_view("},\"elements\":{"));
@@ -273,7 +275,26 @@ void JsonWriter::frame(const Model& model, int step_index, const Frame& frame) {
   _out.maybe_flush();
 }
 
-void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, bool& first) {
+namespace {
+
+/// A steady-state vector: its imaginary part, amplitude |re + i im| and phase atan2(im, re) in
+/// degrees per component.
+void harmonic_fields(fmt::memory_buffer& b, Separator& sep, std::string_view name, const Vec3& re,
+                     const Vec3& im, int n, bool only_z) {
+  Vec3 amplitude{}, phase{};
+  for (int i = 0; i < 3; ++i) {
+    amplitude[i] = std::hypot(re[i], im[i]);
+    phase[i] = amplitude[i] > 0.0 ? std::atan2(im[i], re[i]) * 180.0 / 3.14159265358979323846 : 0.0;
+  }
+  vec_field(b, sep, fmt::format("{}_imaginary", name), im, n, only_z);
+  vec_field(b, sep, fmt::format("{}_amplitude", name), amplitude, n, only_z);
+  vec_field(b, sep, fmt::format("{}_phase", name), phase, n, only_z);
+}
+
+} // namespace
+
+void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, bool& first,
+                            const Frame::Harmonic* h) {
   const auto f = output::node_fields(r, n);
   auto& b = _out.buffer();
   if (!first) b.push_back(',');
@@ -290,6 +311,8 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
   };
   if (f.displacement) {
     if (idx < r.U.size()) vec_field(b, sep, "U", r.U[idx], nt, false);
+    if (h && idx < h->U.size() && idx < r.U.size())
+      harmonic_fields(b, sep, "U", r.U[idx], h->U[idx], nt, false);
     if (idx < r.RF.size()) vec_field(b, sep, "RF", r.RF[idx], nt, false);
     if (idx < r.CF.size() && nonzero(r.CF[idx])) vec_field(b, sep, "CF", r.CF[idx], nt, false);
     // velocity and acceleration: dynamic steps only (empty elsewhere)
@@ -298,6 +321,8 @@ void JsonWriter::write_node(const Model& model, const NodeResults& r, NodeId n, 
   }
   if (f.rotation) {
     if (idx < r.UR.size()) vec_field(b, sep, "UR", r.UR[idx], 3, planar);
+    if (h && idx < h->UR.size() && idx < r.UR.size())
+      harmonic_fields(b, sep, "UR", r.UR[idx], h->UR[idx], 3, planar);
     if (idx < r.RM.size()) vec_field(b, sep, "RM", r.RM[idx], 3, planar);
     if (idx < r.CM.size() && nonzero(r.CM[idx])) vec_field(b, sep, "CM", r.CM[idx], 3, planar);
     if (idx < r.VR.size()) vec_field(b, sep, "VR", r.VR[idx], 3, planar);

@@ -38,7 +38,10 @@ class JsonWriter : public ResultWriter {
               const ResumeFiles& from) override;
 
  private:
-  void write_node(const Model& model, const NodeResults& r, NodeId n, bool& first);
+  /// `h`: a steady-state frame's imaginary part (its U and UR then also as imaginary part,
+  /// amplitude and phase)
+  void write_node(const Model& model, const NodeResults& r, NodeId n, bool& first,
+                  const Frame::Harmonic* h = nullptr);
   void write_element(const Model& model, const ElementResult& res, bool& first);
   void close_step(const StepSummary* summary);
   /// Appends `]` closing the frames, then the step's status and checks (`unfinished`: the

@@ -160,6 +160,16 @@ void checks_table(fmt::memory_buffer& out, const std::vector<StepSummary>& steps
 /// in X, Y, Z as fractions of the free DOFs' mass.
 void modes_table(fmt::memory_buffer& out, int step, const EigenSummary& m) {
   auto o = fmt::appender(out);
+  if (m.buckling) {
+    fmt::format_to(o,
+                   "<h3>Step {} (buckling)</h3>\n<table><tr><th>mode</th><th>eigenvalue (load "
+                   "multiplier)</th></tr>\n",
+                   step);
+    for (const ModeInfo& mi : m.modes)
+      fmt::format_to(o, "<tr><td>{}</td><td>{:.6g}</td></tr>\n", mi.mode, mi.eigenvalue);
+    fmt::format_to(o, "</table>\n");
+    return;
+  }
   fmt::format_to(o,
                  "<h3>Step {}</h3>\n<table><tr><th>mode</th><th>eigenvalue</th><th>frequency "
                  "(cycles/time)</th><th>generalized mass</th><th>effective mass X</th><th>"

@@ -344,7 +344,10 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
                  "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
                  GAPFEM_VERSION, frame.step, frame.increment, frame.step_time, frame.total_time,
                  _type_legend, kByteOrder,
-                 frame.mode ? static_cast<double>(frame.mode->mode) : frame.total_time, nn, ne);
+                 frame.mode       ? static_cast<double>(frame.mode->mode)
+                 : frame.harmonic ? frame.harmonic->frequency
+                                  : frame.total_time,
+                 nn, ne);
   b.append(std::string_view(has_U ? "      <PointData Vectors=\"U\">\n" : "      <PointData>\n"));
   for (const auto& a : point_arrays) declare(b, a, offset);
   b.append(std::string_view("      </PointData>\n      <CellData Scalars=\"element_label\">\n"));
@@ -367,9 +370,11 @@ void VtuWriter::frame(const Model& model, int step_index, const Frame& frame) {
   out.write("\n  </AppendedData>\n</VTKFile>\n");
   out.close();
 
-  if (frame.mode) {
-    if (frame.mode->mode == 1) _mode_entries.clear();
-    _mode_entries.push_back(PvdEntry{static_cast<double>(frame.mode->mode), file});
+  if (frame.mode || frame.harmonic) { // the step's own series: modes, or frequencies (the real
+                                      // part of a steady-state response as U)
+    if (frame.increment == 1) _mode_entries.clear();
+    _mode_entries.push_back(PvdEntry{
+        frame.mode ? static_cast<double>(frame.mode->mode) : frame.harmonic->frequency, file});
     write_modes_pvd(frame.step);
     return;
   }

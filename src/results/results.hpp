@@ -167,8 +167,8 @@ struct ModeInfo {
   double frequency() const { return circular() / (2.0 * 3.14159265358979323846); }
 };
 
-/// The modes of a *FREQUENCY step, with the model's mass per direction (what the effective
-/// masses add up to when every mode is extracted) and how they were found.
+/// The modes of a *FREQUENCY (or *BUCKLE) step, with the model's mass per direction (what the
+/// effective masses add up to when every mode is extracted) and how they were found.
 struct EigenSummary {
   std::vector<ModeInfo> modes;
   std::array<double, 6> total_effective_mass{};
@@ -177,6 +177,8 @@ struct EigenSummary {
   bool mass_normalized = false;       ///< NORMALIZATION=MASS (else the largest entry is 1)
   double shift = 0.0;                 ///< the Lanczos shift, omega^2
   int rigid_body_modes = 0;           ///< eigenvalues near zero
+  /// *BUCKLE: the eigenvalues are load multipliers (no frequencies, masses or participation)
+  bool buckling = false;
 };
 
 struct Frame {
@@ -187,6 +189,14 @@ struct Frame {
   std::optional<Energies> energies; ///< dynamic steps: the whole-model energies at the frame
   /// *FREQUENCY steps: the mode this frame shows (its U, UR the mode shape; increment = mode)
   std::optional<ModeInfo> mode;
+  /// *STEADY STATE DYNAMICS steps: the excitation frequency (cycles per time) of this frame,
+  /// whose nodes.U and UR hold the real part of the harmonic response and these its imaginary
+  /// part (sized like nodes.U; the amplitude is |re + i im|, the phase atan2(im, re))
+  struct Harmonic {
+    double frequency = 0.0;
+    std::vector<Vec3> U, UR;
+  };
+  std::optional<Harmonic> harmonic;
   NodeResults nodes;
   /// Element output for the elements needed by the due requests (all elements at the last frame).
   std::vector<ElementResult> elements;

@@ -196,7 +196,7 @@ ModelCheck Analysis::check(bool time_factorization) {
   c.dofs = m.disc.dofs().n_slots();
   for (int i = 0; i < static_cast<int>(m.model.steps.size()); ++i) {
     const Step& step = m.model.steps[i];
-    make_procedure(step.procedure, m)->check(step);
+    make_procedure(step, m)->check(step);
     StepLoads loads(m.model, m.disc, i, m.history, m.st.u_start, m.st.total_time);
     m.solver_warnings.insert(m.solver_warnings.end(), loads.warnings().begin(),
                              loads.warnings().end());
@@ -292,7 +292,7 @@ StepSummary Analysis::Impl::run_step(int index) {
 
 void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
   const Step& step = *r.step;
-  r.proc = make_procedure(step.procedure, *this);
+  r.proc = make_procedure(step, *this);
   r.u_step_start = from ? from->u_step_start : st.u_start;
   r.loads =
       std::make_unique<StepLoads>(model, disc, r.index, history, r.u_step_start, st.total_time);
@@ -309,6 +309,7 @@ void Analysis::Impl::set_up_step(StepRun& r, PendingResume* from) {
 
   StepContext& base = r.base;
   base.procedure = step.procedure;
+  base.perturbation = step.perturbation;
   base.nlgeom = step.nlgeom;
   base.step_period = loads.period();
   base.space = model.space;

@@ -12,10 +12,11 @@ namespace gapfem {
 namespace {
 
 constexpr std::uint32_t kPayloadVersion =
-    7; // 3: the procedure's state last; 4: rates; 5: energies;
+    8; // 3: the procedure's state last; 4: rates; 5: energies;
 // 6: a UEL element keeps one more history value (the step in which its damping was found zero);
 // 7: the velocities of the damping forces after an impact (SolutionState::v_damp), ALLAE and the
-// gaps' contact damping work (ALLSE), a gap's damping work in its history
+// gaps' contact damping work (ALLSE), a gap's damping work in its history; 8: the modes a
+// *FREQUENCY step kept (ModalBasis)
 
 template <typename T>
 void read_sized(ArchiveReader& in, std::vector<T>& v, std::size_t expected, const char* what) {
@@ -102,6 +103,45 @@ std::uint64_t model_fingerprint(const Model& model, const Discretization& disc) 
   return fnv1a(a.data());
 }
 
+namespace {
+
+/// The modes a *FREQUENCY step kept for the mode-based steps after it (none: a 0).
+void save_modal_basis(ArchiveWriter& a, const ModalBasis* b) {
+  a.pod(static_cast<std::uint8_t>(b ? 1 : 0));
+  if (!b) return;
+  a.pod(b->step_number);
+  a.pod(b->n_slots);
+  a.vec(b->omega2);
+  a.vec(b->shapes);
+  std::vector<double> gamma;
+  for (const auto& g : b->participation) gamma.insert(gamma.end(), g.begin(), g.end());
+  a.vec(gamma);
+}
+
+std::shared_ptr<const ModalBasis> load_modal_basis(ArchiveReader& in, LocalIndex n_slots) {
+  if (in.get<std::uint8_t>() == 0) return nullptr;
+  auto b = std::make_shared<ModalBasis>();
+  in.pod(b->step_number);
+  in.pod(b->n_slots);
+  in.vec(b->omega2);
+  in.vec(b->shapes);
+  std::vector<double> gamma;
+  in.vec(gamma);
+  const std::size_t m = b->omega2.size();
+  if (b->n_slots != n_slots || b->shapes.size() != m * static_cast<std::size_t>(n_slots) ||
+      gamma.size() != 6 * m)
+    throw RestartDataError("the restart record's modes do not fit the model");
+  for (std::size_t k = 0; k < m; ++k) {
+    std::array<double, 6> g{};
+    std::copy(gamma.begin() + static_cast<std::ptrdiff_t>(6 * k),
+              gamma.begin() + static_cast<std::ptrdiff_t>(6 * k + 6), g.begin());
+    b->participation.push_back(g);
+  }
+  return b;
+}
+
+} // namespace
+
 void Analysis::Impl::open_restart_file() {
   if (options.restart_file.empty()) return;
   const bool wanted = std::any_of(model.steps.begin(), model.steps.end(),
@@ -187,6 +227,7 @@ void Analysis::Impl::begin_resume() {
   cs.mult_trial = cs.mult_committed;
   load_history(in, history);
   read_sized(in, resume->u_step_start, ns, "solution values");
+  modal_basis = load_modal_basis(in, static_cast<LocalIndex>(ns));
 }
 
 void Analysis::Impl::resume_writers(int index) {
@@ -288,6 +329,7 @@ void Analysis::Impl::write_restart(StepRun& r) {
   a.vec(disc.constraints().mult_committed);
   save_history(a, history);
   a.vec(r.u_step_start);
+  save_modal_basis(a, modal_basis.get());
 
   std::uint64_t keyed = 0;
   for (auto* w : writers) keyed += w->restart_key().empty() ? 0 : 1;

@@ -35,7 +35,8 @@ std::array<std::vector<double>, 6> rigid_body_vectors(const Mesh& mesh, const Do
   return T;
 }
 
-/// The index of the entry of largest magnitude among displacements and rotations.
+} // namespace
+
 std::size_t largest_entry(std::span<const double> phi, const DofMap& dofs, const EquationMap& eqm) {
   std::size_t best = 0;
   double big = -1.0;
@@ -48,8 +49,6 @@ std::size_t largest_entry(std::span<const double> phi, const DofMap& dofs, const
   }
   return best;
 }
-
-} // namespace
 
 EigenSummary modal_summary(const Mesh& mesh, const DofMap& dofs, const EquationMap& eqm,
                            const CsrMatrix& M, EigenPairs& pairs, bool mass_normalized) {

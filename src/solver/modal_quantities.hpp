@@ -13,6 +13,10 @@
 
 namespace gapfem {
 
+/// The index of the entry of largest magnitude among the displacements and rotations of the
+/// equation vector phi.
+std::size_t largest_entry(std::span<const double> phi, const DofMap& dofs, const EquationMap& eqm);
+
 /// Normalises pairs.vectors in place (largest entry +1, or unit generalized mass with its largest
 /// entry positive) and returns the modes' quantities.
 EigenSummary modal_summary(const Mesh& mesh, const DofMap& dofs, const EquationMap& eqm,

@@ -18,7 +18,10 @@ std::map<Procedure, ProcedureFactory> builtin_procedures() {
           {Procedure::SubstructureGenerate, make_substructure_generate_procedure},
           {Procedure::Dynamic, make_dynamic_procedure},
           {Procedure::Frequency, make_frequency_procedure},
-          {Procedure::ResponseSpectrum, make_response_spectrum_procedure}};
+          {Procedure::ResponseSpectrum, make_response_spectrum_procedure},
+          {Procedure::Buckle, make_buckle_procedure},
+          {Procedure::SteadyStateDynamics, make_steady_state_procedure},
+          {Procedure::ModalDynamic, make_modal_dynamic_procedure}};
 }
 
 /// The table, the built-in procedures in it before anything else is registered or made.
@@ -33,7 +36,10 @@ void register_procedure(Procedure p, ProcedureFactory make) {
   table()[p] = std::move(make);
 }
 
-std::unique_ptr<StepProcedure> make_procedure(Procedure p, Analysis::Impl& analysis) {
+std::unique_ptr<StepProcedure> make_procedure(const Step& step, Analysis::Impl& analysis) {
+  if (step.perturbation && step.procedure == Procedure::Static)
+    return make_static_perturbation_procedure(analysis);
+  const Procedure p = step.procedure;
   const auto it = table().find(p);
   if (it == table().end())
     throw std::logic_error(fmt::format("no class runs steps of procedure {}", procedure_name(p)));

@@ -90,7 +90,8 @@ using ProcedureFactory = std::function<std::unique_ptr<StepProcedure>(Analysis::
 
 /// Adds (or replaces) the class that runs steps of procedure `p`.
 void register_procedure(Procedure p, ProcedureFactory make);
-/// The procedure object of a step; std::logic_error when nothing is registered for it.
-std::unique_ptr<StepProcedure> make_procedure(Procedure p, Analysis::Impl& analysis);
+/// The procedure object of a step (a *STATIC step with *STEP, PERTURBATION runs as a linear
+/// static perturbation); std::logic_error when nothing is registered for it.
+std::unique_ptr<StepProcedure> make_procedure(const Step& step, Analysis::Impl& analysis);
 
 } // namespace gapfem

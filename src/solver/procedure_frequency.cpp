@@ -5,6 +5,7 @@
 #include "parallel/parallel.hpp"
 #include "solver/analysis_impl.hpp"
 #include "solver/modal_quantities.hpp"
+#include "solver/mode_frames.hpp"
 #include "solver/procedures.hpp"
 
 #include <cmath>
@@ -36,7 +37,6 @@ class FrequencyProcedure final : public StepProcedure {
  private:
   EigenPairs extract(StepRun& r, StepProblem::PerturbationOperators& ops);
   void report(const StepRun& r, const EigenSummary& sum) const;
-  void write_modes(StepRun& r, const EigenPairs& pairs, const EigenSummary& sum);
   void keep_basis(const StepRun& r, const EigenPairs& pairs, const EigenSummary& sum);
 };
 
@@ -78,7 +78,7 @@ void FrequencyProcedure::run(StepRun& r) {
   report(r, sum);
   log::progress("  Lanczos: {} factorisation(s), {} back-substitutions, {} restarts",
                 pairs.factorizations, pairs.operations, pairs.restarts);
-  write_modes(r, pairs, sum);
+  write_mode_frames(_a, r, pairs, sum, "FREQUENCY", "mode shapes");
   keep_basis(r, pairs, sum);
   r.sum.increments = static_cast<int>(sum.modes.size());
 }
@@ -100,34 +100,6 @@ void FrequencyProcedure::report(const StepRun& r, const EigenSummary& sum) const
         "step {}: negative eigenvalues: the base state is unstable there (its initial stresses "
         "make the stiffness indefinite), or the shift lies above some eigenvalues",
         r.step->number));
-}
-
-void FrequencyProcedure::write_modes(StepRun& r, const EigenPairs& pairs, const EigenSummary& sum) {
-  const Step& step = *r.step;
-  for (auto* w : _a.writers) w->modes(_a.model, r.index, sum);
-  const std::size_t n = static_cast<std::size_t>(r.prob->equations().n_eq());
-  bool elements_asked = false;
-  for (std::size_t k = 0; k < sum.modes.size(); ++k) {
-    bool field_elements = false;
-    std::optional<Frame> fr =
-        _a.frame_due(step, *r.prob, sum.modes[k].mode, true, 0.0, false, field_elements);
-    elements_asked |= field_elements || !step.el_prints.empty();
-    fr->last_in_step = k + 1 == sum.modes.size();
-    fr->mode = sum.modes[k];
-    fr->step_time = 0.0;
-    std::fill(fr->el_print_due.begin(), fr->el_print_due.end(), false);
-    std::vector<double> slots(static_cast<std::size_t>(_a.disc.dofs().n_slots()), 0.0);
-    const EquationMap& eqm = r.prob->equations();
-    for (std::size_t eq = 0; eq < n; ++eq) slots[eqm.eq_slot[eq]] = pairs.vectors[k * n + eq];
-    _a.perturbation_nodes(slots, *fr);
-    ScopedTimer timer(&_a.stats, TimeCategory::Output);
-    for (auto* w : _a.writers) w->frame(_a.model, r.index, *fr);
-  }
-  if (elements_asked)
-    _a.solver_warnings.push_back(
-        fmt::format("step {} (*FREQUENCY): element output of the mode shapes (stresses, strains, "
-                    "section forces) is not written by gapfem; the frames hold U and UR",
-                    step.number));
 }
 
 void FrequencyProcedure::keep_basis(const StepRun& r, const EigenPairs& pairs,

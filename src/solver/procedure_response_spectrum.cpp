@@ -5,6 +5,7 @@
 // or (COMP=ALGEBRAIC) the directions add up in each mode first.
 #include "solver/analysis_impl.hpp"
 #include "solver/modal_combination.hpp"
+#include "solver/modal_response.hpp"
 #include "solver/procedures.hpp"
 
 #include <cmath>
@@ -32,24 +33,10 @@ class ResponseSpectrumProcedure final : public StepProcedure {
 };
 
 void ResponseSpectrumProcedure::modes(const Step& step, const ModalBasis& b) {
-  const std::string what = fmt::format("step {}", step.number);
-  _modes.clear();
-  if (step.selected_modes.empty())
-    for (int k = 0; k < b.modes(); ++k) _modes.push_back(k);
-  for (int k : step.selected_modes) {
-    if (k > b.modes())
-      throw InputError(step.spectrum.loc, what,
-                       fmt::format("*SELECT EIGENMODES names mode {}, but the *FREQUENCY step {} "
-                                   "extracted {} modes",
-                                   k, b.step_number, b.modes()));
-    _modes.push_back(k - 1);
-  }
-  _omega.clear();
-  _zeta.clear();
-  for (int k : _modes) {
-    _omega.push_back(b.omega(k));
-    _zeta.push_back(step.modal_damping ? step.modal_damping->fraction(k + 1, b.omega(k)) : 0.0);
-  }
+  ModalSelection sel = select_modes(step, b, step.spectrum.loc);
+  _modes = std::move(sel.modes);
+  _omega = std::move(sel.omega);
+  _zeta = std::move(sel.zeta);
 }
 
 std::vector<std::vector<double>> ResponseSpectrumProcedure::modal_peaks(const Step& step,

@@ -18,7 +18,19 @@ std::unique_ptr<StepProcedure> make_substructure_generate_procedure(Analysis::Im
 std::unique_ptr<StepProcedure> make_dynamic_procedure(Analysis::Impl& a);
 /// *FREQUENCY: eigenmodes about the base state, no increments (procedure_frequency.cpp).
 std::unique_ptr<StepProcedure> make_frequency_procedure(Analysis::Impl& a);
-/// *RESPONSE SPECTRUM: peaks from the last *FREQUENCY step's modes (procedure_response_spectrum.cpp).
+/// *BUCKLE: eigenvalue buckling about the base state, no increments (procedure_buckle.cpp).
+std::unique_ptr<StepProcedure> make_buckle_procedure(Analysis::Impl& a);
+/// *STATIC in a *STEP, PERTURBATION: the linear response about the base state
+/// (procedure_static_perturbation.cpp).
+std::unique_ptr<StepProcedure> make_static_perturbation_procedure(Analysis::Impl& a);
+/// *STEADY STATE DYNAMICS (mode-based): harmonic response per frequency
+/// (procedure_steady_state.cpp).
+std::unique_ptr<StepProcedure> make_steady_state_procedure(Analysis::Impl& a);
+/// *MODAL DYNAMIC: transient response on the modes, exact per increment
+/// (procedure_modal_dynamic.cpp).
+std::unique_ptr<StepProcedure> make_modal_dynamic_procedure(Analysis::Impl& a);
+/// *RESPONSE SPECTRUM: peaks from the last *FREQUENCY step's modes
+/// (procedure_response_spectrum.cpp).
 std::unique_ptr<StepProcedure> make_response_spectrum_procedure(Analysis::Impl& a);
 
 } // namespace gapfem

@@ -136,7 +136,23 @@ class StepProblem final : public NonlinearProblem {
     CsrMatrix K, M;
     ConstraintBlock C;
   };
-  PerturbationOperators perturbation_operators();
+  PerturbationOperators perturbation_operators(bool with_mass = true);
+  /// The perturbation of a *BUCKLE or static perturbation step about the committed state: its
+  /// loads' change over the step (the given loads at their full value) and the change of its
+  /// prescribed values, as the right sides of K du = b, C du - E dl = -g with C the rows of
+  /// perturbation_operators(): per equation b (the forces, less the stiffness times the
+  /// prescribed perturbation), per row of `C` g, per slot the prescribed perturbation.
+  struct PerturbationLoad {
+    std::vector<double> b, g, prescribed;
+    bool any = false; ///< some load or prescribed value changes
+  };
+  PerturbationLoad perturbation_load(const ConstraintBlock& C);
+  /// The differential stiffness K_Delta of the perturbation du (per slot) about the committed
+  /// state (Abaqus's eigenvalue buckling, docs/theory/buckling.md): the change of the NLGEOM
+  /// tangent along du per unit of du (the initial stress of the perturbation's stresses; central
+  /// difference), plus, with `load_stiffness`, the load stiffness of the step's perturbation
+  /// loads. Same pattern as perturbation_operators().K.
+  CsrMatrix differential_stiffness(std::span<const double> du, bool load_stiffness);
 
   /// Automatic stabilization: the damping operator c M* (M* a unit-density lumped mass, per slot,
   /// on the free translational slots) with velocities by backward Euler in the step's time,

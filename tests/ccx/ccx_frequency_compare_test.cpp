@@ -68,44 +68,16 @@ constexpr double kLength = 6.0, kWidth = 1.0;
 constexpr int kModes = 10; ///< eigenvalues asked for (the square block: 11, below)
 constexpr const char* kDirection[6] = {"X", "Y", "Z", "RX", "RY", "RZ"};
 
-/// Node label of the point (i, j, k) of the (2 nx + 1) x (2 ny + 1) x (2 nz + 1) grid.
-int grid_node(int i, int j, int k) {
-  return 1 + i + (2 * kNx + 1) * (j + (2 * kNy + 1) * k);
-}
-
 /// The cantilever deck with a section of kWidth (y) x `height` (z); `frequency` is the keyword
 /// line of the step's procedure, `count` the number of eigenvalues asked for.
 std::string cantilever(double height, const std::string& frequency, int count = kModes) {
-  // corner and mid-side nodes of a 20-node brick in the grid's steps (Abaqus's numbering)
-  static constexpr int kCorner[20][3] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 2},
-                                         {2, 0, 2}, {2, 2, 2}, {0, 2, 2}, {1, 0, 0}, {2, 1, 0},
-                                         {1, 2, 0}, {0, 1, 0}, {1, 0, 2}, {2, 1, 2}, {1, 2, 2},
-                                         {0, 1, 2}, {0, 0, 1}, {2, 0, 1}, {2, 2, 1}, {0, 2, 1}};
-  std::map<int, std::array<int, 3>> used;
-  std::string elements = "*ELEMENT, TYPE=C3D20, ELSET=BLOCK\n";
-  int label = 0;
-  for (int c = 0; c < kNz; ++c)
-    for (int b = 0; b < kNy; ++b)
-      for (int a = 0; a < kNx; ++a) {
-        elements += fmt::format("{}", ++label);
-        for (int n = 0; n < 20; ++n) {
-          const std::array<int, 3> p{2 * a + kCorner[n][0], 2 * b + kCorner[n][1],
-                                     2 * c + kCorner[n][2]};
-          const int node = grid_node(p[0], p[1], p[2]);
-          used[node] = p;
-          elements += fmt::format(",{}{}", n == 15 ? "\n" : " ", node);
-        }
-        elements += "\n";
-      }
+  const Brick20Block block =
+      brick20_block(kNx, kNy, kNz, kLength, kWidth, height, "C3D20", "BLOCK");
   std::string d = "*HEADING\nC3D20 cantilever block, natural frequencies, compared with "
-                  "CalculiX\n*NODE\n";
-  std::string root = "*NSET, NSET=ROOT\n";
-  for (const auto& [node, p] : used) {
-    d += fmt::format("{}, {:.15g}, {:.15g}, {:.15g}\n", node, kLength * p[0] / (2 * kNx),
-                     kWidth * p[1] / (2 * kNy), height * p[2] / (2 * kNz));
-    if (p[0] == 0) root += fmt::format("{}\n", node);
-  }
-  d += elements + root;
+                  "CalculiX\n*NODE\n" +
+                  block.nodes + block.elements + "*NSET, NSET=ROOT\n";
+  for (const auto& [node, p] : block.used)
+    if (p[0] == 0) d += fmt::format("{}\n", node);
   d += "*MATERIAL, NAME=M\n*ELASTIC\n1e7, 0.3\n*DENSITY\n1.\n"
        "*SOLID SECTION, ELSET=BLOCK, MATERIAL=M\n*BOUNDARY\nROOT, 1, 3\n";
   d += "*STEP\n" + frequency + "\n" + std::to_string(count) + "\n*END STEP\n";

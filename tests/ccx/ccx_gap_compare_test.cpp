@@ -4,13 +4,11 @@
 #include "ccx_runner.hpp"
 #include "test_util.hpp"
 
-#include <fmt/format.h>
-#include <gtest/gtest.h>
-
-#include <map>
-
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <map>
 
 using namespace gapfem;
 using namespace gapfem::test;
@@ -19,8 +17,8 @@ namespace {
 
 std::filesystem::path generate(const std::string& args) {
   const auto deck = test_dir() / "block.inp";
-  const std::string cmd = "python3 '" + std::string(GAPFEM_SOURCE_DIR) + "/bench/gen_block.py' " + args +
-                          " -o '" + deck.string() + "' 2>/dev/null";
+  const std::string cmd = "python3 '" + std::string(GAPFEM_SOURCE_DIR) + "/bench/gen_block.py' " +
+                          args + " -o '" + deck.string() + "' 2>/dev/null";
   if (std::system(cmd.c_str()) != 0) throw std::runtime_error("deck generator failed: " + cmd);
   return deck;
 }
@@ -70,7 +68,8 @@ TEST(CcxCompare, GapuniPenaltyFoundationAgreesWithCalculix) {
   if (find_ccx().empty()) GTEST_SKIP() << "ccx (CalculiX) is not installed: comparison skipped";
   // Same penalty law in both codes (fields 6-7); graded clearances up to 1e-7 against gap
   // compressions F/k ~ 5e-8, so part of the foundation closes.
-  const Comparison c = compare("--nx 6 --nz 4 --penalty 1e7 --E 2e12 --dmax 1e-7 --pressure 10", 1e-2);
+  const Comparison c =
+      compare("--nx 6 --nz 4 --penalty 1e7 --E 2e12 --dmax 1e-7 --pressure 10", 1e-2);
   EXPECT_EQ(c.mismatched, 0);
   EXPECT_EQ(c.closed_gapfem, c.closed_ccx);
   EXPECT_GT(c.closed_ccx, 0);
@@ -112,8 +111,9 @@ std::string spring_grid(const std::string& penalty) {
   }
   for (const auto& [k, nodes] : level)
     d += fmt::format("*GAP, ELSET=G{}\n{}, 0., 0., -1.{}\n", k, 0.01 * k, penalty);
-  d += "*BOUNDARY\nGROUND, 1, 3\nGRID, 1, 2\n*STEP, NLGEOM\n*STATIC\n0.1, 1.\n*CLOAD\nGRID, 3, -1.\n"
-       "*NODE PRINT, NSET=GROUND\nRF\n*END STEP\n";
+  d +=
+      "*BOUNDARY\nGROUND, 1, 3\nGRID, 1, 2\n*STEP, NLGEOM\n*STATIC\n0.1, 1.\n*CLOAD\nGRID, 3, -1.\n"
+      "*NODE PRINT, NSET=GROUND\nRF\n*END STEP\n";
   return d;
 }
 } // namespace
@@ -151,8 +151,8 @@ TEST(CcxCompare, ExactContactAgreesWithCalculixStiffPenalty) {
 
 TEST(CcxCompare, ExactContactIsTheStiffPenaltyLimitOnTheC3D8Block) {
   // Same C3D8 block for both (no ccx needed): exact contact against gapfem's penalty mode with
-  // k = 1e11 (and open-gap tension 1e-9), whose closed gaps penetrate by F/k ~ 1e-11; the difference is of order
-  // (block stiffness at a node, ~2e4)/k ~ 2e-7 relative.
+  // k = 1e11 (and open-gap tension 1e-9), whose closed gaps penetrate by F/k ~ 1e-11; the
+  // difference is of order (block stiffness at a node, ~2e4)/k ~ 2e-7 relative.
   JobOptions o;
   o.write_files = false;
   o.quiet = true;

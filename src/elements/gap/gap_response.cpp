@@ -70,7 +70,7 @@ void MechanicalGapKernel::setup(const ElementInput& in, std::span<const double> 
   R.g = -(G.h + in.interference);
   L.previous = status_of(st[GapStateLayout::status]);
   L.was_closed = closed(L.previous);
-  L.perturbation = in.ctx && is_perturbation(in.ctx->procedure);
+  L.perturbation = in.ctx && in.ctx->perturbation;
   L.hint = in.stiffness_hint;
   L.dt = in.ctx ? in.ctx->dt : 0.0;
   L.iT1 = _per_node - 1;

@@ -266,6 +266,46 @@ class ContinuumKernel final : public ElementKernel {
     }
   }
 
+  /// The initial-stress matrix of the perturbation du: the geometric term at in.u (NLGEOM
+  /// kinematics) with the stress change dS = (S(u + h du) - S(u - h du)) / (2 h) in place of the
+  /// stress (exact for a law linear in the strain; B-bar's mean pressure alike).
+  bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                        std::span<double> Kout) const override {
+    if (Kout.size() != static_cast<std::size_t>(NDOF * NDOF) || du.size() != in.u.size())
+      return false;
+    double big = 0.0;
+    for (double v : du) big = std::max(big, std::abs(v));
+    if (!(big > 0.0)) return true;
+    StepContext nl = in.ctx ? *in.ctx : StepContext{};
+    nl.nlgeom = true;
+    ElementInput at = in;
+    at.ctx = &nl;
+    const double h = 1e-6 * std::max(nl.model_size, 1e-300) / big;
+    std::array<double, NDOF> up{}, um{};
+    for (int i = 0; i < NDOF; ++i) {
+      up[i] = in.u[i] + h * du[i];
+      um[i] = in.u[i] - h * du[i];
+    }
+    std::vector<double> trial(static_cast<std::size_t>(n_state()));
+    auto w0 = std::make_unique<Work>(), wp = std::make_unique<Work>(),
+         wm = std::make_unique<Work>();
+    compute(at, *w0, trial);
+    at.u = up;
+    compute(at, *wp, trial);
+    at.u = um;
+    compute(at, *wm, trial);
+    if constexpr (Tr::bbar) w0->p_bar = (wp->p_bar - wm->p_bar) / (2.0 * h);
+    auto K = std::make_unique<MatK>(MatK::Zero());
+    for (int q = 0; q < NIP; ++q) {
+      Ip p = w0->ip[q];
+      p.S = (wp->ip[q].S - wm->ip[q].S) / (2.0 * h);
+      add_geometric(p, *w0, q, *K);
+    }
+    Eigen::Map<MatK> out(Kout.data());
+    out += *K;
+    return true;
+  }
+
   /// Coupled temperature-displacement elements (coupled_continuum.hpp): the derivative of the
   /// residual with respect to the nodal temperatures in.temperature (thermal strain and
   /// temperature-dependent elasticity at each point), NDOF x NN row-major, overwritten. The strain

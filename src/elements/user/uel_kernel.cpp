@@ -30,7 +30,11 @@ int procedure_code(const StepContext& ctx) {
     return ctx.direct ? 12 : 11;
   case Procedure::Frequency: // the mass call of an eigenfrequency extraction
     return 41;
-  case Procedure::ResponseSpectrum: // combines modes: no element is called
+  case Procedure::Buckle: // the stiffness about the base state and its change (static calls)
+    return 1;
+  case Procedure::ResponseSpectrum: // mode-based: combine modes, no element is called
+  case Procedure::SteadyStateDynamics:
+  case Procedure::ModalDynamic:
     return 1;
   }
   return 1;

@@ -112,6 +112,12 @@ void handle_heat_transfer(BuildState& s, const Keyword& kw);
 void handle_dynamic(BuildState& s, const Keyword& kw);
 /// *FREQUENCY (handlers_frequency.cpp)
 void handle_frequency(BuildState& s, const Keyword& kw);
+/// *BUCKLE (handlers_buckle.cpp)
+void handle_buckle(BuildState& s, const Keyword& kw);
+/// *STEADY STATE DYNAMICS, *MODAL DYNAMIC, *BASE MOTION (handlers_modal_dynamics.cpp)
+void handle_steady_state_dynamics(BuildState& s, const Keyword& kw);
+void handle_modal_dynamic(BuildState& s, const Keyword& kw);
+void handle_base_motion(BuildState& s, const Keyword& kw);
 /// *SPECTRUM, *RESPONSE SPECTRUM, *MODAL DAMPING, *SELECT EIGENMODES (handlers_modal.cpp)
 void handle_spectrum(BuildState& s, const Keyword& kw);
 void handle_response_spectrum(BuildState& s, const Keyword& kw);

@@ -69,13 +69,15 @@ void handle_damping(BuildState& s, const Keyword& kw) {
   set_once(kw, m.name, "COMPOSITE", composite, 8u, d, d.composite);
   if (structural && *structural != 0.0)
     s.warn(kw.loc, fmt::format("*DAMPING, STRUCTURAL={} of material {}: structural damping "
-                               "acts only in frequency-domain procedures, which gapfem does not "
-                               "have; it is ignored (as Abaqus ignores it in *DYNAMIC)",
+                               "acts only in frequency-domain procedures, whose damping gapfem "
+                               "takes from *MODAL DAMPING alone; it is ignored (as Abaqus "
+                               "ignores it in *DYNAMIC)",
                                *structural, m.name));
   if (composite && *composite != 0.0)
     s.warn(kw.loc, fmt::format("*DAMPING, COMPOSITE={} of material {}: composite modal damping "
-                               "acts only in mode-based procedures, which gapfem does not have; "
-                               "it is ignored (as Abaqus ignores it in *DYNAMIC)",
+                               "acts only in mode-based procedures, whose damping gapfem takes "
+                               "from *MODAL DAMPING alone; it is ignored (as Abaqus ignores it "
+                               "in *DYNAMIC)",
                                *composite, m.name));
 }
 

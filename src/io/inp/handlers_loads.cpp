@@ -264,6 +264,7 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
 /// per keyword.
 static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
   const int amplitude = amplitude_param(s, kw);
+  const bool imaginary = !flux && kw.has("IMAGINARY"); // *STEADY STATE DYNAMICS's out-of-phase part
   std::vector<NodalLoad> entries;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
@@ -288,6 +289,7 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
       l.dof = dof;
       l.value = value;
       l.amplitude = amplitude;
+      l.imaginary = imaginary;
       l.loc = r.loc();
       entries.push_back(l);
     }
@@ -295,7 +297,7 @@ static void nodal_loads(BuildState& s, const Keyword& kw, bool flux) {
   merge(
       s.step.cloads, entries, op_new(kw),
       [flux](const NodalLoad& l) { return is_temperature(l.dof) == flux; },
-      [](const NodalLoad& l) { return std::pair(l.node, static_cast<int>(l.dof)); });
+      [](const NodalLoad& l) { return std::tuple(l.node, static_cast<int>(l.dof), l.imaginary); });
 }
 
 void handle_cload(BuildState& s, const Keyword& kw) {

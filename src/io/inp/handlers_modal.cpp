@@ -135,8 +135,9 @@ void handle_modal_damping(BuildState& s, const Keyword& kw) {
   ModalDamping md;
   md.loc = kw.loc;
   reject_param(kw, "STRUCTURAL",
-               "structural (hysteretic) modal damping belongs to steady-state "
-               "dynamics, which gapfem does not run");
+               "structural (hysteretic) modal damping is not supported by gapfem; give viscous "
+               "fractions of critical damping (at resonance a structural factor s acts as the "
+               "fraction s / 2)");
   const bool composite =
       (kw.has("MODAL") && enum_param(kw, "MODAL", {"DIRECT", "COMPOSITE"}, 0) == 1) ||
       (kw.has("VISCOUS") &&

@@ -425,9 +425,10 @@ void read_point_damping(BuildState& s, const Keyword& kw, const std::string& els
     (name[0] == 'A' ? alpha : composite) = v.value_or(0.0);
   }
   if (composite > 0.0)
-    s.warn(kw.loc, fmt::format("{}, ELSET={}: COMPOSITE is used by mode-based dynamics only, "
-                               "which gapfem does not have; it has no effect here (Abaqus "
-                               "ignores it in direct-integration dynamics too)",
+    s.warn(kw.loc, fmt::format("{}, ELSET={}: COMPOSITE is composite modal damping of mode-based "
+                               "dynamics, whose damping gapfem takes from *MODAL DAMPING alone; "
+                               "it has no effect (Abaqus ignores it in direct-integration "
+                               "dynamics too)",
                                kw.name, elset));
 }
 

@@ -90,29 +90,104 @@ void read_step_title(BuildState& s, const Keyword& kw) {
   }
 }
 
-/// A perturbation step (*FREQUENCY, *STEP, PERTURBATION): the procedure must be one, and the
-/// loads of an eigenvalue extraction are the base state's (those given in the step: a warning).
+/// The loads given in a perturbation step whose loads are the perturbation (*BUCKLE, a static
+/// perturbation): their full value at the step's end, whatever amplitude they name (Abaqus ignores
+/// amplitudes there), from zero.
+template <class List>
+void perturbation_values(List& list) {
+  for (auto& e : list)
+    if (!e.propagated) e.amplitude = -1;
+}
+
+/// A perturbation step (*FREQUENCY, *BUCKLE, *STEP, PERTURBATION): the procedure must be one;
+/// the loads of an eigenfrequency extraction are the base state's (those given in the step: a
+/// warning), those given in a buckling or static perturbation step its perturbation loads.
 void close_perturbation(BuildState& s) {
   Step& st = s.step;
-  // a linear perturbation procedure (an eigenfrequency extraction, whose elements are evaluated
-  // about the frozen base state, or a mode-based procedure on its modes)
-  const bool procedure =
-      is_perturbation(st.procedure) || st.procedure == Procedure::ResponseSpectrum;
+  // a linear perturbation procedure (an eigenvalue extraction, whose elements are evaluated about
+  // the frozen base state, or a mode-based procedure on its modes)
+  const bool procedure = is_perturbation(st.procedure) || is_mode_based(st.procedure);
   if (procedure)
     st.perturbation = true;
-  else if (st.perturbation)
+  else if (st.perturbation && st.procedure != Procedure::Static)
     s.error(st.loc, "PERTURBATION",
             fmt::format("*{} runs as a general step in gapfem, whose linear perturbation "
-                        "procedures are *FREQUENCY and *RESPONSE SPECTRUM: remove PERTURBATION "
-                        "from *STEP",
+                        "procedures are *STATIC, *FREQUENCY, *BUCKLE and the mode-based ones: "
+                        "remove PERTURBATION from *STEP",
                         procedure_name(st.procedure)));
-  if ((st.modal_damping || !st.selected_modes.empty()) &&
-      st.procedure != Procedure::ResponseSpectrum && !s.scratch.unknown_procedure)
+  if ((st.modal_damping || !st.selected_modes.empty()) && !is_mode_based(st.procedure) &&
+      !s.scratch.unknown_procedure)
     s.error(st.modal_damping ? st.modal_damping->loc : st.loc, "",
             fmt::format("*MODAL DAMPING and *SELECT EIGENMODES belong to a mode-based step "
-                        "(*RESPONSE SPECTRUM); this step is *{}",
+                        "(*RESPONSE SPECTRUM, *STEADY STATE DYNAMICS, *MODAL DYNAMIC); this step "
+                        "is *{}",
                         procedure_name(st.procedure)));
-  if (!procedure) return;
+  const bool harmonic = st.procedure == Procedure::SteadyStateDynamics;
+  const bool modal = harmonic || st.procedure == Procedure::ModalDynamic;
+  if (!st.base_motions.empty() && !modal)
+    s.error(st.base_motions.front().loc, "",
+            fmt::format("*BASE MOTION belongs to a mode-based dynamic step (*STEADY STATE "
+                        "DYNAMICS, *MODAL DYNAMIC); this step is *{}",
+                        procedure_name(st.procedure)));
+  for (const NodalLoad& l : st.cloads)
+    if (l.imaginary && !l.propagated && !harmonic) {
+      s.error(l.loc, "IMAGINARY",
+              "an imaginary (out-of-phase) load belongs to a *STEADY STATE DYNAMICS step");
+      break;
+    }
+  for (const BaseMotion& b : st.base_motions)
+    if (b.imaginary && !harmonic)
+      s.error(b.loc, "IMAGINARY",
+              "an imaginary (out-of-phase) base motion belongs to a *STEADY STATE DYNAMICS step");
+  if (!st.perturbation) return;
+  if (modal) { // the excitation: the loads given in the step, nothing of the base state's
+    std::erase_if(st.cloads, [](const NodalLoad& l) { return l.propagated; });
+    const auto given = [](const auto& e) { return !e.propagated; };
+    for (const BoundaryEntry& b : st.boundary)
+      if (given(b) && (b.value != 0.0 || b.type != BoundaryType::Displacement)) {
+        s.error(b.loc, "",
+                fmt::format("a prescribed motion in a *{} step is a base motion: give it with "
+                            "*BASE MOTION (the DOFs the *FREQUENCY step holds move together), "
+                            "not *BOUNDARY",
+                            procedure_name(st.procedure)));
+        break;
+      }
+    const auto d = std::find_if(st.dloads.begin(), st.dloads.end(), given);
+    const auto t = std::find_if(st.temperatures.begin(), st.temperatures.end(), given);
+    if (d != st.dloads.end() || t != st.temperatures.end())
+      s.error(d != st.dloads.end() ? d->loc : t->loc, "",
+              fmt::format("*{} is excited by concentrated loads (*CLOAD) and base motion (*BASE "
+                          "MOTION) in gapfem; distributed loads and temperatures given in it are "
+                          "not applied: give the excitation as *CLOAD",
+                          procedure_name(st.procedure)));
+    st.dloads.clear();
+    st.temperatures.clear();
+    st.interference.clear();
+    return;
+  }
+  const Step* base = nullptr; // the last general step (none: the initial state, no loads)
+  for (auto it = s.model.steps.rbegin(); it != s.model.steps.rend() && !base; ++it)
+    if (!it->perturbation) base = &*it;
+  if (st.procedure == Procedure::Buckle || st.procedure == Procedure::Static) {
+    perturbation_values(st.cloads);
+    perturbation_values(st.dloads);
+    // a concentrated load given where the base state has one replaced it (OP=MOD): the
+    // perturbation is the value given, on top of the base load
+    if (base)
+      for (NodalLoad& q : st.cloads)
+        if (!q.propagated)
+          for (const NodalLoad& p : base->cloads)
+            if (p.node == q.node && p.dof == q.dof && p.amplitude < 0) q.value += p.value;
+    if (base) // OP=NEW removed none of the base loads: they stay as they are
+      for (const NodalLoad& p : base->cloads)
+        if (std::none_of(st.cloads.begin(), st.cloads.end(),
+                         [&](const NodalLoad& q) { return q.node == p.node && q.dof == p.dof; })) {
+          st.cloads.push_back(p);
+          st.cloads.back().propagated = true;
+        }
+    return;
+  }
+  if (st.procedure != Procedure::Frequency && st.procedure != Procedure::ResponseSpectrum) return;
   const auto given = [](const auto& list) {
     return std::any_of(list.begin(), list.end(), [](const auto& e) { return !e.propagated; });
   };
@@ -121,9 +196,6 @@ void close_perturbation(BuildState& s) {
                                "ignored (as in Abaqus): the modes are those of the base state, "
                                "with its loads",
                                procedure_name(st.procedure)));
-  const Step* base = nullptr; // the last general step (none: the initial state, no loads)
-  for (auto it = s.model.steps.rbegin(); it != s.model.steps.rend() && !base; ++it)
-    if (!it->perturbation) base = &*it;
   st.cloads = base ? carried(base->cloads) : decltype(st.cloads){};
   st.dloads = base ? carried(base->dloads) : decltype(st.dloads){};
   st.temperatures = base ? carried(base->temperatures) : decltype(st.temperatures){};
@@ -214,8 +286,9 @@ void close_step(BuildState& s) {
   Step& st = s.step;
   if (!s.scratch.procedure_given)
     s.error(st.loc, fmt::format("step {}", st.number),
-            "the step has no procedure; add *STATIC, *DYNAMIC, *HEAT TRANSFER or *COUPLED "
-            "TEMPERATURE-DISPLACEMENT after *STEP");
+            "the step has no procedure; add one after *STEP: *STATIC, *DYNAMIC, *HEAT TRANSFER, "
+            "*COUPLED TEMPERATURE-DISPLACEMENT, *FREQUENCY, *BUCKLE, *STEADY STATE DYNAMICS, "
+            "*MODAL DYNAMIC or *RESPONSE SPECTRUM");
   // default variation of magnitudes: RAMP, except transient heat transfer / coupled steps (STEP)
   if (!s.scratch.amplitude_given) st.ramp_default = !s.scratch.transient;
   if (s.scratch.procedure_given) close_perturbation(s);

@@ -109,6 +109,10 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*SELECT EIGENMODES", handle_select_eigenmodes, W::History, "GENERATE|DEFINITION"},
   {"*SPECTRUM", handle_spectrum, W::Model, "NAME|TYPE|G|INPUT|CREATE"},
   {"*FREQUENCY", handle_frequency, W::History, "EIGENSOLVER|NORMALIZATION|ACOUSTIC COUPLING|PROPERTY EVALUATION|RESIDUAL MODES|SIM|DAMPING PROJECTION|STORAGE|GLOBAL|CYCMPC|SOLVER|MATRIX STORAGE"},
+  {"*BUCKLE", handle_buckle, W::History, "EIGENSOLVER|SIM|SOLVER"},
+  {"*STEADY STATE DYNAMICS", handle_steady_state_dynamics, W::History, "DIRECT|SUBSPACE PROJECTION|FREQUENCY SCALE|INTERVAL|REAL ONLY|HARMONIC"},
+  {"*MODAL DYNAMIC", handle_modal_dynamic, W::History, "CONTINUE|SOLVER|DIRECT|DELTMX"},
+  {"*BASE MOTION", handle_base_motion, W::History, "DOF|AMPLITUDE|SCALE|TYPE|IMAGINARY|REAL|BASE NAME|LOAD CASE"},
   {"*DYNAMIC", handle_dynamic, W::History, "ALPHA|BETA|GAMMA|APPLICATION|INITIAL|DIRECT|HAFTOL|NOHAF|TIME INTEGRATOR|IMPACT|SUBSPACE|EXPLICIT|ADIABATIC"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*SUBSTRUCTURE GENERATE", handle_substructure_generate, W::History, "TYPE|OVERWRITE|LIBRARY|MASS MATRIX|STRUCTURAL DAMPING MATRIX|VISCOUS DAMPING MATRIX|GRAVITY LOAD|RECOVERY MATRIX|NSET|ELSET|PROPERTY EVALUATION"},
@@ -117,7 +121,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*RESTART", handle_restart, W::Both, "WRITE|READ|FREQUENCY|NUMBER INTERVAL|OVERLAY|TIME MARKS|STEP|INC|END STEP"},
   {"*CHANGE FRICTION", handle_change_friction, W::History, "ELSET|INTERACTION", 0, P::ChangeFriction},
   // history: loads
-  {"*CLOAD", handle_cload, W::History, "OP|AMPLITUDE"},
+  {"*CLOAD", handle_cload, W::History, "OP|AMPLITUDE|REAL|IMAGINARY"},
   {"*CFLUX", handle_cflux, W::History, "OP|AMPLITUDE"},
   {"*DLOAD", handle_dload, W::History, "OP|AMPLITUDE"},
   {"*DSLOAD", handle_dsload, W::History, "OP|AMPLITUDE"},
@@ -222,10 +226,7 @@ bool output_keyword(const std::string& key) {
 
 /// Analysis procedures of Abaqus and CalculiX that gapfem does not run.
 bool procedure_keyword(const std::string& key) {
-  static const char* const kProcedures[] = {"MODALDYNAMIC",
-                                            "STEADYSTATEDYNAMICS",
-                                            "BUCKLE",
-                                            "VISCO",
+  static const char* const kProcedures[] = {"VISCO",
                                             "SOILS",
                                             "GEOSTATIC",
                                             "MASSDIFFUSION",

@@ -129,10 +129,16 @@ TEST(Procedure, EveryProcedureOfTheModelHasAClass) {
   // each value of the enum a deck can name is registered (a new procedure that forgets its
   // registration fails here, not in a user's run)
   for (Procedure p : {Procedure::Static, Procedure::HeatTransfer, Procedure::CoupledTempDisp,
-                      Procedure::SubstructureGenerate}) {
+                      Procedure::SubstructureGenerate, Procedure::Dynamic, Procedure::Frequency,
+                      Procedure::ResponseSpectrum, Procedure::Buckle,
+                      Procedure::SteadyStateDynamics, Procedure::ModalDynamic}) {
     Model m;
     std::vector<ResultWriter*> none;
     Analysis::Impl impl(m, none, AnalysisOptions{});
-    EXPECT_NE(make_procedure(p, impl), nullptr) << procedure_name(p);
+    Step step;
+    step.procedure = p;
+    EXPECT_NE(make_procedure(step, impl), nullptr) << procedure_name(p);
+    step.perturbation = true; // a static perturbation step has its own class
+    EXPECT_NE(make_procedure(step, impl), nullptr) << procedure_name(p);
   }
 }

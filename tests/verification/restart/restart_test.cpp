@@ -323,6 +323,70 @@ U
   EXPECT_EQ(steady_lines(dir / "new.dat"), steady_lines(again / "new.dat"));
 }
 
+// The modes a *FREQUENCY step kept travel in the restart records of the general steps after it:
+// a restart job's *STEADY STATE DYNAMICS step works on them as the uninterrupted run's does.
+TEST(Restart, ModesOfAFrequencyStepReachAModeBasedStepAfterARestart) {
+  const std::string model = R"(*HEADING
+SDOF
+*NODE
+1, 0., 0., 0.
+*ELEMENT, TYPE=SPRING1, ELSET=K
+1, 1
+*SPRING, ELSET=K
+1
+100.
+*ELEMENT, TYPE=MASS, ELSET=M
+2, 1
+*MASS, ELSET=M
+1.
+*BOUNDARY
+1, 2, 3
+*RESTART, WRITE, FREQUENCY=1
+*STEP
+*STATIC
+*CLOAD
+1, 1, 1.
+*END STEP
+*STEP
+*FREQUENCY
+1
+*END STEP
+*STEP
+*STATIC
+*CLOAD
+1, 1, 2.
+*END STEP
+)";
+  const std::string ssd = R"(*STEP
+*STEADY STATE DYNAMICS, INTERVAL=RANGE
+1., 2., 4
+*MODAL DAMPING
+1, 1, 0.05
+*CLOAD
+1, 1, 1.
+*END STEP
+)";
+  const fs::path dir = fresh_dir("modes");
+  std::ofstream(dir / "old.inp") << model;
+  ASSERT_EQ(gapfem_cli(dir, "old.inp").status, 0);
+  std::ofstream(dir / "new.inp") << "*HEADING\ncontinued\n*RESTART, READ, STEP=3, INC=1\n" + ssd;
+  const Cli r = gapfem_cli(dir, "new.inp --oldjob old");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path ref = fresh_dir("modes_reference");
+  std::ofstream(ref / "old.inp") << model + ssd;
+  ASSERT_EQ(gapfem_cli(ref, "old.inp").status, 0);
+  const nlohmann::json a = results(ref, "old"), b = results(dir, "new");
+  const auto& fa = a["steps"][3]["frames"];
+  const auto& fb = b["steps"][3]["frames"];
+  ASSERT_EQ(fa.size(), 4u);
+  ASSERT_EQ(fb.size(), fa.size());
+  for (std::size_t k = 0; k < fa.size(); ++k) {
+    EXPECT_EQ(fa[k]["frequency"], fb[k]["frequency"]);
+    EXPECT_EQ(fa[k]["nodes"]["1"]["U_imaginary"], fb[k]["nodes"]["1"]["U_imaginary"]);
+    EXPECT_NE(fb[k]["nodes"]["1"]["U_amplitude"][0].get<double>(), 0.0);
+  }
+}
+
 // END STEP: the old step ends at the restart point with its loads there. The oracle: step 1 of
 // period 0.5 with half the load (the same ramp: every increment sees the same load).
 TEST(Restart, EndStepEndsTheStepAtTheRestartPoint) {
