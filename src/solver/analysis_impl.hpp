@@ -128,6 +128,13 @@ struct Analysis::Impl {
   std::shared_ptr<const std::vector<std::string>> history_columns; ///< of history_step
   int history_step = -1;
   void frame_elements(const Step& step, StepProblem& prob, bool field_elements, Frame& fr);
+  /// A perturbation's element output (a mode shape, a static perturbation): per element needed,
+  /// the change of its recovered values (stress, strain, section forces) along du (per slot) at
+  /// the committed state, per unit of du (linear perturbation; no gap records or energies).
+  void perturbation_elements(const Step& step, StepProblem& prob, std::span<const double> du,
+                             bool field_elements, Frame& fr);
+  /// Per element: does a request due in this frame (or its being the step's last) need it.
+  std::vector<char> elements_needed(const Step& step, bool field_elements, const Frame& fr) const;
   /// The *MONITOR value after a converged increment, when due.
   std::optional<double> monitor_value(const Step& step, int increment, bool last) const;
   /// Nodal vectors at *TRANSFORM nodes in their local systems; reactions from the multipliers of

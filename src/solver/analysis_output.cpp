@@ -159,11 +159,10 @@ void Analysis::Impl::frame_nodes(StepProblem& prob, Frame& fr) {
 }
 
 /// The element results the frame's requests need (every element at the last frame).
-void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool field_elements,
-                                    Frame& fr) {
-  const bool last = fr.last_in_step;
+std::vector<char> Analysis::Impl::elements_needed(const Step& step, bool field_elements,
+                                                  const Frame& fr) const {
   const ElemId ne = model.mesh.n_elements();
-  std::vector<char> need(static_cast<std::size_t>(ne), last || field_elements ? 1 : 0);
+  std::vector<char> need(static_cast<std::size_t>(ne), fr.last_in_step || field_elements ? 1 : 0);
   for (std::size_t k = 0; k < step.el_prints.size(); ++k) {
     if (!fr.el_print_due[k]) continue;
     const auto& r = step.el_prints[k];
@@ -180,6 +179,13 @@ void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool fi
     else
       for (ElemId e : r.members) need[e] = 1;
   }
+  return need;
+}
+
+void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool field_elements,
+                                    Frame& fr) {
+  const std::vector<char> need = elements_needed(step, field_elements, fr);
+  const ElemId ne = model.mesh.n_elements();
   fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
   const FieldView fields = prob.fields();
   for (ElemId e = 0; e < ne; ++e) {
@@ -187,6 +193,42 @@ void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool fi
     fr.element_slot[e] = static_cast<std::int32_t>(fr.elements.size());
     fr.elements.push_back({e, {}});
     assembler.recover(e, fields, prob.context(), fr.elements.back().data);
+  }
+}
+
+void Analysis::Impl::perturbation_elements(const Step& step, StepProblem& prob,
+                                           std::span<const double> du, bool field_elements,
+                                           Frame& fr) {
+  const std::vector<char> need = elements_needed(step, field_elements, fr);
+  const ElemId ne = model.mesh.n_elements();
+  fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
+  FieldView base = prob.fields();
+  std::vector<double> moved(base.u_start.begin(), base.u_start.end());
+  double big = 0.0;
+  for (double v : du) big = std::max(big, std::abs(v));
+  const double eps = big > 0.0 ? 1e-6 * model.model_size() / big : 0.0;
+  for (std::size_t k = 0; k < moved.size(); ++k) moved[k] += eps * du[k];
+  base.u = base.u_start;
+  FieldView shifted = base;
+  shifted.u = moved;
+  ElementRecovery r0;
+  for (ElemId e = 0; e < ne; ++e) {
+    if (!need[e]) continue;
+    fr.element_slot[e] = static_cast<std::int32_t>(fr.elements.size());
+    fr.elements.push_back({e, {}});
+    ElementRecovery& r1 = fr.elements.back().data;
+    r0.clear();
+    assembler.recover(e, base, prob.context(), r0);
+    assembler.recover(e, shifted, prob.context(), r1);
+    // the perturbation's own values (a gap's record and the energies describe a state, not a
+    // change: left out)
+    r1.gap.reset();
+    r1.strain_energy.reset();
+    r1.artificial_energy.reset();
+    for (std::size_t b = 0; b < r1.blocks.size() && b < r0.blocks.size(); ++b)
+      for (std::size_t k = 0; k < r1.blocks[b].values.size(); ++k)
+        r1.blocks[b].values[k] =
+            eps > 0.0 ? (r1.blocks[b].values[k] - r0.blocks[b].values[k]) / eps : 0.0;
   }
 }
 

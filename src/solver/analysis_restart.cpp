@@ -99,7 +99,8 @@ std::uint64_t model_fingerprint(const Model& model, const Discretization& disc) 
     a.vec(b.elements);
   }
   a.pod(disc.constraints().n_rows());
-  a.pod(static_cast<std::uint64_t>(model.steps.size()));
+  // not the number of steps: a restart deck continues the old job with steps of its own
+  // (job.cpp checks that the restart point is one of its steps)
   return fnv1a(a.data());
 }
 

@@ -10,6 +10,26 @@
 
 namespace gapfem {
 
+void require_frequency_step(const Model& model, const Step& step, const SourceLocation& loc) {
+  for (const Step& s : model.steps) {
+    if (s.number >= step.number) break;
+    if (s.procedure == Procedure::Frequency) return;
+  }
+  throw InputError(loc, fmt::format("step {}", step.number),
+                   fmt::format("a mode-based *{} step works on the modes of a *FREQUENCY step, "
+                               "and no *FREQUENCY step comes before it; add one",
+                               procedure_name(step.procedure)));
+}
+
+const ModalBasis& basis_of(const std::shared_ptr<const ModalBasis>& b, const Step& step,
+                           const SourceLocation& loc) {
+  if (!b)
+    throw InputError(loc, fmt::format("step {}", step.number),
+                     "the modes of the *FREQUENCY step before this one are not at hand; run the "
+                     "analysis from that step on");
+  return *b;
+}
+
 ModalSelection select_modes(const Step& step, const ModalBasis& b, const SourceLocation& loc) {
   ModalSelection sel;
   if (step.selected_modes.empty())

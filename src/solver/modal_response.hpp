@@ -8,12 +8,22 @@
 #include "solver/modal_basis.hpp"
 
 #include <complex>
+#include <memory>
 #include <vector>
 
 namespace gapfem {
 
 class DofMap;
 class Discretization;
+
+/// A mode-based step needs a *FREQUENCY step before it: InputError at `loc` otherwise (the
+/// datacheck's and the run's message).
+void require_frequency_step(const Model& model, const Step& step, const SourceLocation& loc);
+
+/// The basis a mode-based step works on; InputError at `loc` when there is none (its *FREQUENCY
+/// step's modes were not kept).
+const ModalBasis& basis_of(const std::shared_ptr<const ModalBasis>& b, const Step& step,
+                           const SourceLocation& loc);
 
 /// The modes of the basis a step uses (*SELECT EIGENMODES, else all), 0-based, with their
 /// circular frequencies and fractions of critical damping (*MODAL DAMPING; none: 0).

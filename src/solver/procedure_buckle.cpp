@@ -102,15 +102,22 @@ void BuckleProcedure::check(const Step& step) const {
                      "*BOUNDARY values); give the load pattern there");
 }
 
-/// Largest displacement or rotation entry +1 (Abaqus's normalisation of buckling modes).
+/// The largest displacement entry +1, the largest rotation where no node moves (Abaqus's
+/// normalisation of buckling modes).
 EigenSummary BuckleProcedure::summary(const StepRun& r, EigenPairs& pairs) const {
   EigenSummary sum;
   sum.buckling = true;
   const EquationMap& eqm = r.prob->equations();
+  const DofMap& dofs = _a.disc.dofs();
   const auto n = static_cast<std::size_t>(eqm.n_eq());
   for (std::size_t k = 0; k < pairs.values.size(); ++k) {
     std::span<double> phi(pairs.vectors.data() + k * n, n);
-    const double big = phi[largest_entry(phi, _a.disc.dofs(), eqm)];
+    double big = 0.0;
+    for (std::size_t eq = 0; eq < n; ++eq)
+      if (static_cast<int>(dofs.slot_dof(eqm.eq_slot[eq])) < 3 &&
+          std::abs(phi[eq]) > std::abs(big) * (1.0 + 1e-12))
+        big = phi[eq];
+    if (big == 0.0) big = phi[largest_entry(phi, dofs, eqm)];
     if (big != 0.0)
       for (double& v : phi) v /= big;
     ModeInfo m;
@@ -143,7 +150,7 @@ void BuckleProcedure::run(StepRun& r) {
         "perturbation load reversed (give a minimum eigenvalue of 0 with EIGENSOLVER=LANCZOS "
         "to leave them out)",
         r.step->number));
-  write_mode_frames(_a, r, pairs, sum, "BUCKLE", "buckling modes");
+  write_mode_frames(_a, r, pairs, sum);
   r.sum.increments = static_cast<int>(sum.modes.size());
 }
 

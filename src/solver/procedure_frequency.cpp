@@ -78,7 +78,7 @@ void FrequencyProcedure::run(StepRun& r) {
   report(r, sum);
   log::progress("  Lanczos: {} factorisation(s), {} back-substitutions, {} restarts",
                 pairs.factorizations, pairs.operations, pairs.restarts);
-  write_mode_frames(_a, r, pairs, sum, "FREQUENCY", "mode shapes");
+  write_mode_frames(_a, r, pairs, sum);
   keep_basis(r, pairs, sum);
   r.sum.increments = static_cast<int>(sum.modes.size());
 }

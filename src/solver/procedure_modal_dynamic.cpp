@@ -35,6 +35,7 @@ class ModalDynamicProcedure final : public StepProcedure {
  public:
   using StepProcedure::StepProcedure;
   bool incremental() const override { return false; }
+  void check(const Step& step) const override;
   void run(StepRun& r) override;
 
  private:
@@ -83,14 +84,16 @@ void ModalDynamicProcedure::write_frame(StepRun& r, int increment, double t, dou
   for (auto* w : _a.writers) w->frame(_a.model, r.index, *fr);
 }
 
+void ModalDynamicProcedure::check(const Step& step) const {
+  require_frequency_step(_a.model, step, step.modal_dynamic.loc);
+}
+
 void ModalDynamicProcedure::run(StepRun& r) {
+  check(*r.step);
   const Step& step = *r.step;
   const ModalDynamicSettings& md = step.modal_dynamic;
   _b = _a.modal_basis;
-  if (!_b)
-    throw InputError(md.loc, fmt::format("step {}", step.number),
-                     "a *MODAL DYNAMIC step works on the modes of a *FREQUENCY step, and no "
-                     "*FREQUENCY step comes before it; add one");
+  basis_of(_b, step, md.loc);
   _sel = select_modes(step, *_b, md.loc);
   _terms = modal_excitation(_a.model, _a.disc.dofs(), step, *_b, _sel);
   if (std::string w = element_damping_warning(_a.disc, step); !w.empty())

@@ -18,6 +18,7 @@ class ResponseSpectrumProcedure final : public StepProcedure {
  public:
   using StepProcedure::StepProcedure;
   bool incremental() const override { return false; }
+  void check(const Step& step) const override;
   void run(StepRun& r) override;
 
  private:
@@ -102,13 +103,15 @@ ResponseSpectrumProcedure::combine(const Step& step, const ModalBasis& b,
   return peak;
 }
 
+void ResponseSpectrumProcedure::check(const Step& step) const {
+  require_frequency_step(_a.model, step, step.spectrum.loc);
+}
+
 void ResponseSpectrumProcedure::run(StepRun& r) {
+  check(*r.step);
   const Step& step = *r.step;
   const std::shared_ptr<const ModalBasis> b = _a.modal_basis;
-  if (!b)
-    throw InputError(step.spectrum.loc, fmt::format("step {}", step.number),
-                     "a *RESPONSE SPECTRUM step combines the modes of a *FREQUENCY step, and no "
-                     "*FREQUENCY step comes before it; add one");
+  basis_of(b, step, step.spectrum.loc);
   modes(step, *b);
   const auto q = modal_peaks(step, *b);
   log::progress("  {} modes of step {}, {} direction(s)", _modes.size(), b->step_number, q.size());

@@ -43,15 +43,10 @@ void StaticPerturbationProcedure::run(StepRun& r) {
   bool field_elements = false;
   std::optional<Frame> fr = _a.frame_due(step, *r.prob, 1, true, 0.0, false, field_elements);
   fr->step_time = 0.0;
-  std::fill(fr->el_print_due.begin(), fr->el_print_due.end(), false);
   _a.perturbation_nodes(resp.du, *fr);
+  _a.perturbation_elements(step, *r.prob, resp.du, field_elements, *fr);
   ScopedTimer timer(&_a.stats, TimeCategory::Output);
   for (auto* w : _a.writers) w->frame(_a.model, r.index, *fr);
-  if (field_elements || !step.el_prints.empty())
-    _a.solver_warnings.push_back(fmt::format(
-        "step {} (static perturbation): element output of the perturbation (stresses, strains, "
-        "section forces) is not written by gapfem; the frame holds U and UR",
-        step.number));
   r.sum.increments = 1;
 }
 

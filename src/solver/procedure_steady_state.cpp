@@ -23,6 +23,7 @@ class SteadyStateProcedure final : public StepProcedure {
  public:
   using StepProcedure::StepProcedure;
   bool incremental() const override { return false; }
+  void check(const Step& step) const override;
   void run(StepRun& r) override;
 
  private:
@@ -74,14 +75,16 @@ void SteadyStateProcedure::write_frame(StepRun& r, int index, double f,
   for (auto* w : _a.writers) w->frame(_a.model, r.index, *fr);
 }
 
+void SteadyStateProcedure::check(const Step& step) const {
+  require_frequency_step(_a.model, step, step.steady_state.loc);
+}
+
 void SteadyStateProcedure::run(StepRun& r) {
+  check(*r.step);
   const Step& step = *r.step;
   const SteadyStateSettings& ss = step.steady_state;
   _b = _a.modal_basis;
-  if (!_b)
-    throw InputError(ss.loc, fmt::format("step {}", step.number),
-                     "a mode-based *STEADY STATE DYNAMICS step works on the modes of a *FREQUENCY "
-                     "step, and no *FREQUENCY step comes before it; add one");
+  basis_of(_b, step, ss.loc);
   _sel = select_modes(step, *_b, ss.loc);
   _terms = modal_excitation(_a.model, _a.disc.dofs(), step, *_b, _sel);
   if (std::string w = element_damping_warning(_a.disc, step); !w.empty())
@@ -110,10 +113,11 @@ void SteadyStateProcedure::run(StepRun& r) {
   if (!step.el_prints.empty() ||
       std::any_of(step.field_outputs.begin(), step.field_outputs.end(),
                   [](const FieldOutputRequest& f) { return !f.elem_vars.empty(); }))
-    _a.solver_warnings.push_back(fmt::format(
-        "step {} (*STEADY STATE DYNAMICS): element output (stresses, strains, section forces) of the "
-        "mode-based response is not written by gapfem; the frames hold U and UR",
-        step.number));
+    _a.solver_warnings.push_back(
+        fmt::format("step {} (*STEADY STATE DYNAMICS): element output (stresses, strains, section "
+                    "forces) of the "
+                    "mode-based response is not written by gapfem; the frames hold U and UR",
+                    step.number));
   r.sum.increments = static_cast<int>(freqs.size());
 }
 

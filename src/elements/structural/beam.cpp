@@ -228,6 +228,42 @@ class BeamKernel final : public ElementKernel {
       add_beam_mass<NN, Planar>(in.X, _b.n1a, _b.added_damping, out.damping);
   }
 
+  /// The initial-stress matrix of the perturbation du (elastic sections): the Hessian at in.u of
+  /// sum_p w_p dR_p . e_p(v), e_p the geometrically exact strains and dR_p = D de_p the change of
+  /// the section forces along du (central difference of the strains). Integrated (fibre)
+  /// sections: not provided.
+  bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                        std::span<double> K) const override {
+    if (_b.law || K.size() != static_cast<std::size_t>(kN * kN)) return false;
+    double big = 0.0;
+    for (double v : du) big = std::max(big, std::abs(v));
+    if (!(big > 0.0)) return true;
+    const BeamGeometry g = beam_geometry<NN>(in.X, _b.n1a, 1.0, nullptr);
+    const SectionLaw law = section_law(_b, in, g.length, NN);
+    const double h = 1e-6 * (in.ctx ? in.ctx->model_size : 1.0) / big;
+    std::array<double, kN> up{}, um{};
+    for (int i = 0; i < kN; ++i) {
+      up[i] = in.u[i] + h * du[i];
+      um[i] = in.u[i] - h * du[i];
+    }
+    ElementInput moved = in;
+    moved.u = up;
+    const auto ep = point_strains(g, in.X, gather<double>(moved, true), true);
+    moved.u = um;
+    const auto em = point_strains(g, in.X, gather<double>(moved, true), true);
+    const auto e = point_strains(g, in.X, gather<J>(in, true), true);
+    J W(0.0);
+    for (int p = 0; p < g.n_points; ++p)
+      for (int i = 0; i < 6; ++i) {
+        double dR = 0.0;
+        for (int j = 0; j < 6; ++j) dR += law.D[6 * i + j] * (ep[p][j] - em[p][j]) / (2.0 * h);
+        W += g.pts[p].weight * dR * e[p][i];
+      }
+    for (int i = 0; i < kN; ++i)
+      for (int j = 0; j < kN; ++j) K[i * kN + j] += W.hess(i, j);
+    return true;
+  }
+
   /// With *DENSITY: the section's mass and exact rotary inertia about the node, lumped at the
   /// nodes of two-node elements, consistent for three (beam_mass.hpp); a pipe's is its wall's.
   /// *BEAM ADDED INERTIA adds its own (contents, insulation, equipment), and with ALPHA the

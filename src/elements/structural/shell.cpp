@@ -88,6 +88,58 @@ class ShellKernel final : public ElementKernel {
     write_rotations(in, nl);
   }
 
+  /// The initial-stress matrix of the perturbation du (homogeneous elastic sections): the
+  /// Hessian at in.u of sum_q dA dR_q . s_q(v), s_q the section strains (membrane, bending,
+  /// transverse shear; NLGEOM) and dR_q their section stiffness times the change of the strains
+  /// along du (central difference); the drilling penalty's share is left out. Sections integrated
+  /// at their points: not provided.
+  bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                        std::span<double> K) const override {
+    if (_points || K.size() != static_cast<std::size_t>(kN * kN)) return false;
+    double big = 0.0;
+    for (double v : du) big = std::max(big, std::abs(v));
+    if (!(big > 0.0)) return true;
+    const SectionLaw law = section_law(_d, in);
+    const double h = 1e-6 * (in.ctx ? in.ctx->model_size : 1.0) / big;
+    std::array<double, kN> up{}, um{};
+    for (int i = 0; i < kN; ++i) {
+      up[i] = in.u[i] + h * du[i];
+      um[i] = in.u[i] - h * du[i];
+    }
+    ElementInput plus = in, minus = in;
+    plus.u = up;
+    minus.u = um;
+    const auto np = gather<double>(plus, true), nm = gather<double>(minus, true);
+    const auto nv = gather<J>(in, true);
+    const Tying<double> tp = tying(plus, np, true), tm = tying(minus, nm, true);
+    const Tying<J> ty = tying(in, nv, true);
+    const auto D = directors(in);
+    const auto t = thickness(in);
+    J W(0.0);
+    const Rule q = rule();
+    for (int k = 0; k < q.n; ++k) {
+      SurfacePoint p;
+      if (!surface_point(in.X, D, t, q.pts[k][0], q.pts[k][1], q.pts[k][2], p)) continue;
+      const auto sp = flat(strains_at(p, np, true, tp)), sm = flat(strains_at(p, nm, true, tm));
+      const auto sv = flat(strains_at(p, nv, true, ty));
+      const std::array<double, 64> C = section_matrix(law, p.thickness);
+      for (int i = 0; i < 8; ++i) {
+        double dR = 0.0;
+        for (int j = 0; j < 8; ++j) dR += C[8 * i + j] * (sp[j] - sm[j]) / (2.0 * h);
+        W += p.dA * dR * sv[i];
+      }
+    }
+    for (int i = 0; i < kN; ++i)
+      for (int j = 0; j < kN; ++j) K[i * kN + j] += W.hess(i, j);
+    return true;
+  }
+
+  /// The eight section strains in section_matrix's order (eps, kappa, gamma).
+  template <class T>
+  static std::array<T, 8> flat(const SectionStrains<T>& s) {
+    return {s.eps[0], s.eps[1], s.eps[2], s.kap[0], s.kap[1], s.kap[2], s.gam[0], s.gam[1]};
+  }
+
   /// With *DENSITY, as Abaqus/Standard (Theory Guide, "Rotary inertia for five degree of freedom
   /// shell elements"; docs/theory/dynamics.md §8): the translational mass integral rho t N_a N_b dA
   /// and the rotary inertia integral rho t^3/12 N_a N_b dA on each of the three global rotations,

@@ -13,7 +13,10 @@ namespace {
 ///   LANCZOS:  count, minimum eigenvalue, maximum eigenvalue, block size, block steps
 /// CalculiX (SOLVER=): count, accuracy, Lanczos vectors, iterations.
 void read_buckle_line(const FieldReader& r, BuckleSettings& b, bool calculix) {
-  b.count = static_cast<int>(r.integer_or(0, 0, "number of eigenvalues", 0, 100000));
+  // SUBSPACE and CalculiX need the count; LANCZOS may leave it blank (every one in the range)
+  const bool required = calculix || b.solver == BuckleSettings::Solver::Subspace;
+  b.count = static_cast<int>(required ? r.integer(0, "number of eigenvalues", 1, 100000)
+                                      : r.integer_or(0, 0, "number of eigenvalues", 0, 100000));
   if (calculix) {
     r.at_most(4, "number of buckling factors, accuracy, Lanczos vectors, iterations");
     return;
@@ -23,9 +26,6 @@ void read_buckle_line(const FieldReader& r, BuckleSettings& b, bool calculix) {
     b.max_eigenvalue = r.opt_real(1, "maximum eigenvalue of interest");
     b.vectors = static_cast<int>(r.integer_or(2, 0, "number of vectors", 0, 100000));
     b.iterations = static_cast<int>(r.integer_or(3, 0, "maximum iterations", 0, 100000000));
-    if (b.count == 0)
-      r.fail("field 1 (number of eigenvalues)",
-             "the subspace solver needs the number of eigenvalues: give it in field 1");
     return;
   }
   r.at_most(5, "number of eigenvalues, minimum eigenvalue, maximum eigenvalue, block size, "

@@ -20,8 +20,8 @@ SteadyStateSettings::Range frequency_range(const FieldReader& r) {
   if (g.upper != 0.0 && g.upper < g.lower)
     r.fail("field 2 (upper frequency)",
            fmt::format("the upper frequency {} is below the lower frequency {}", g.upper, g.lower));
-  const long long n = r.integer_or(2, 20, "number of points", -100000, 100000);
-  g.points = n < 2 ? 20 : static_cast<int>(n); // fewer than 2: Abaqus's default 20
+  const long long n = r.integer_or(2, 20, "number of points", 0, 100000);
+  g.points = n < 2 ? 20 : static_cast<int>(n); // 0 or 1: Abaqus's default 20
   if (const auto b = r.opt_real(3, "bias parameter")) {
     if (!(*b > 0.0)) r.fail("field 4 (bias)", "the bias parameter must be positive");
     g.bias = *b;

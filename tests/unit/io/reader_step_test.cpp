@@ -120,7 +120,7 @@ TEST(ReaderStep, StructureErrors) {
       error_text(with("*STEP\n*STATIC\n*HEAT TRANSFER\n*END STEP\n")),
       "deck.inp:13: *HEAT TRANSFER: step 1: a step has exactly one procedure and this step "
       "already has *STATIC");
-  EXPECT_CONTAINS(error_text(with("*STEP, PERTURBATION\n*STATIC\n*END STEP\n")),
+  EXPECT_CONTAINS(error_text(with("*STEP, PERTURBATION\n*DYNAMIC\n0.1, 1.\n*END STEP\n")),
                   "deck.inp:11: *STEP: PERTURBATION");
   EXPECT_CONTAINS(error_text(with("*STEP\n*STATIC, RIKS\n*END STEP\n")),
                   "deck.inp:12: *STATIC: RIKS");

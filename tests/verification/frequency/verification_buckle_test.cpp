@@ -12,6 +12,8 @@
 //    Euler mode 4 pi^2 EI / L^2 = 6579.736, the next the half column pinned-clamped
 //    (tan(beta) = beta, beta = 4.4934: P = (2 beta)^2 EI / L^2 = 80.763 EI = 13460.5). With a
 //    clearance of 1e-2 the brace stays open and adds nothing: pi^2 EI / L^2 again.
+//    With half the Euler load applied first in an NLGEOM general step, the eigenvalues are what
+//    is left of each load (P + lambda Q buckles): P_E - P_E / 2.
 // 4. Static perturbation: a B31 cantilever (L = 1, 10 elements) under 10 along y, then a
 //    perturbation step with -4 along y and 2 along z at the tip: the response is the
 //    perturbation alone, c = L^3 / (3 EI) + L / (k G A) per unit load (B31 is exact for
@@ -67,6 +69,20 @@ TEST(VerificationBuckle, PinnedColumnGivesTheEulerLoads) {
   EXPECT_NEAR(std::abs(test::U(r, r.frames[0], 21)[1]), 1.0, 1e-9);
   EXPECT_NEAR(test::U(r, r.frames[0], 11)[1] / test::U(r, r.frames[0], 21)[1], std::sin(kPi / 4),
               1e-3);
+}
+
+TEST(VerificationBuckle, AnNlgeomPreloadIsPartOfTheBaseState) {
+  // half the Euler load applied in a general NLGEOM step: K0 holds its initial stress, and the
+  // perturbation load's multiplier is what is left, P_E - P (the buckling load is P + lambda Q)
+  const double pe = kPi * kPi * kEI, preload = 0.5 * pe;
+  const JobResult r = test::run_deck(
+      column(true, "",
+             fmt::format("*STEP, NLGEOM\n*STATIC\n*CLOAD\nTOP, 1, {:.17g}\n*END STEP\n{}", -preload,
+                         kBuckleStep)));
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const EigenSummary& m = modes_of(r, 1);
+  EXPECT_NEAR(m.modes[0].eigenvalue, pe - preload, 1e-3 * pe);
+  EXPECT_NEAR(m.modes[1].eigenvalue, 4 * pe - preload, 5e-3 * 4 * pe);
 }
 
 TEST(VerificationBuckle, CantileverGivesTheEffectiveLengthTwoL) {
@@ -147,6 +163,56 @@ TEST(VerificationBuckle, StaticPerturbationIsTheLinearResponseAlone) {
   EXPECT_NEAR(test::U(r, pert, 11)[2], 2 * c, 1e-9 * 2 * c);
   EXPECT_NEAR(test::U(r, after, 11)[1], 10 * c, 1e-9 * 10 * c);
   EXPECT_NEAR(test::U(r, after, 11)[2], 0.0, 1e-12);
+}
+
+TEST(VerificationBuckle, StaticPerturbationStressesAreThePerturbations) {
+  // a bar (A = 1e-4) pulled by 1000, then a perturbation of 10: S11 = 10 / A = 1e5 in the
+  // perturbation step, 1e7 again in the general step after it
+  const std::string deck = R"(*HEADING
+A bar
+*NODE
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 2., 0., 0.
+*ELEMENT, TYPE=T3D2, ELSET=BAR
+1, 1, 2
+2, 2, 3
+*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL
+1e-4
+*MATERIAL, NAME=STEEL
+*ELASTIC
+2e11, 0.3
+*BOUNDARY
+1, 1, 3
+2, 2, 3
+3, 2, 3
+*STEP
+*STATIC
+*CLOAD
+3, 1, 1000.
+*END STEP
+*STEP, PERTURBATION
+*STATIC
+*CLOAD
+3, 1, 10.
+*EL PRINT
+S
+*END STEP
+*STEP
+*STATIC
+*END STEP
+)";
+  const JobResult r = test::run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  const auto s11 = [&](int step) {
+    const Frame& f = test::last_frame(r, step);
+    const ElementResult* e = f.element(r.model->mesh.find_element(2));
+    const OutputBlock* b = e ? e->data.find(ElemVar::S) : nullptr;
+    return b ? b->values.at(0) : -1.0;
+  };
+  EXPECT_NEAR(s11(2), 1e5, 1e-6 * 1e5);
+  EXPECT_NEAR(s11(3), 1e7, 1e-9 * 1e7);
+  EXPECT_NEAR(test::U(r, test::last_frame(r, 2), 3)[0], 10.0 * 2.0 / (2e11 * 1e-4), 1e-15);
 }
 
 } // namespace

@@ -159,6 +159,25 @@ TEST(VerificationFrequency, LumpedBarIsTheExactChain) {
   }
 }
 
+TEST(VerificationFrequency, ModeShapesCarryTheirStresses) {
+  // *EL PRINT, S in a frequency step: each mode's element output is the stress of its shape,
+  // E (phi_b - phi_a) / h on every T3D2 of the chain
+  std::string deck = bar(20, "3");
+  deck.insert(deck.find("*END STEP"), "*EL PRINT\nS\n");
+  const JobResult r = test::run_deck(deck);
+  ASSERT_EQ(r.exit_code, 0) << r.error;
+  ASSERT_EQ(r.frames.size(), 3u);
+  for (const Frame& f : r.frames)
+    for (int e = 1; e <= 20; ++e) {
+      const ElementResult* res = f.element(r.model->mesh.find_element(e));
+      ASSERT_NE(res, nullptr);
+      const OutputBlock* s = res->data.find(ElemVar::S);
+      ASSERT_NE(s, nullptr);
+      const double want = 2e11 * (test::U(r, f, e + 1)[0] - test::U(r, f, e)[0]) / (1.0 / 20);
+      EXPECT_NEAR(s->values.at(0), want, 1e-6 * 2e11 * 20 + 1e-9 * std::abs(want)) << e;
+    }
+}
+
 TEST(VerificationFrequency, AMaximumFrequencyGetsEveryEigenvalueBelowIt) {
   const int n = 600;
   // between modes 5 and 6
