@@ -19,10 +19,10 @@ class StiffnessOp {
  public:
   using Scalar = double;
   StiffnessOp(ConstrainedSolver& solver, const CsrMatrix& K, const ConstraintBlock& C,
-              RunStatistics* stats, EigenPairs& out)
-      : _K(K), _C(C), _stats(stats), _out(out) {
-    _factor = solver.factorize(K, C, true, stats);
-    ++out.factorizations;
+              RunStatistics* stats, EigenPairs& out, std::unique_ptr<ConstrainedFactor> factor)
+      : _K(K), _C(C), _stats(stats), _out(out), _factor(std::move(factor)) {
+    ++out.factorizations; // the caller's, or one made here
+    if (!_factor) _factor = solver.factorize(K, C, true, stats);
   }
   Eigen::Index rows() const { return _K.n(); }
   Eigen::Index cols() const { return _K.n(); }
@@ -36,9 +36,15 @@ class StiffnessOp {
     _factor->solve({x, n * k}, _g, {y, n * k}, _l, k);
     _out.operations += k;
   }
-  /// y = (K0 + C_c^T E^-1 C_c) x, C_c the compliant rows.
+  /// y = (K0 + C_c^T E^-1 C_c) x, C_c the compliant rows. Spectra's K0-inner products multiply
+  /// the same vector again and again (its norm, then its products with each basis vector): the
+  /// last product is kept and handed back while the vector is the same one.
   void perform_op(const double* x, double* y) const {
     const std::size_t n = static_cast<std::size_t>(_K.n());
+    if (_x.size() == n && std::equal(x, x + n, _x.begin())) {
+      std::copy(_y.begin(), _y.end(), y);
+      return;
+    }
     _K.multiply({x, n}, {y, n});
     for (int r = 0; r < _C.n_rows(); ++r) {
       const double e = _C.row_compliance(r);
@@ -48,6 +54,8 @@ class StiffnessOp {
       for (LocalIndex k = _C.row_ptr[r]; k < _C.row_ptr[r + 1]; ++k)
         y[_C.col[k]] += _C.val[k] * cx / e;
     }
+    _x.assign(x, x + n);
+    _y.assign(y, y + n);
   }
 
  private:
@@ -57,6 +65,7 @@ class StiffnessOp {
   EigenPairs& _out;
   std::unique_ptr<ConstrainedFactor> _factor;
   mutable std::vector<double> _g, _l;
+  mutable std::vector<double> _x, _y; ///< the last vector and its product
 };
 
 /// G x (Spectra's OpType).
@@ -187,7 +196,8 @@ bool no_load_stiffness(const CsrMatrix& G) {
 
 EigenPairs constrained_buckling_pairs(ConstrainedSolver& solver, const CsrMatrix& K0,
                                       const CsrMatrix& G, const ConstraintBlock& C,
-                                      const EigenRequest& req, RunStatistics* stats) {
+                                      const EigenRequest& req, RunStatistics* stats,
+                                      std::unique_ptr<ConstrainedFactor> factor) {
   EigenPairs out;
   const LocalIndex n = K0.n();
   if (n == 0)
@@ -199,7 +209,7 @@ EigenPairs constrained_buckling_pairs(ConstrainedSolver& solver, const CsrMatrix
                             "check the loads of the *BUCKLE step");
   ConstraintBlock rows = C;
   std::fill(rows.g.begin(), rows.g.end(), 0.0);
-  StiffnessOp op(solver, K0, rows, stats, out);
+  StiffnessOp op(solver, K0, rows, stats, out, std::move(factor));
   if (n <= 400 || (req.count > 0 && 2 * req.count + 20 > n)) {
     dense_buckling(op, G, req, out);
     if (req.count > 0 && static_cast<int>(out.values.size()) < req.count && out.values.empty())

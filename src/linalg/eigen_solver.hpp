@@ -61,9 +61,11 @@ EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K,
 /// ascending magnitude, x^T K0 x = 1. Lanczos on G x = (1 / lambda) K0 x in the K0 inner product
 /// (Spectra's regular inverse mode over one factorisation of K0); small systems densely. Throws
 /// EigenProblemError (no load stiffness, K0 not positive definite, no convergence) or
-/// SingularSystem (K0 cannot be factorised).
+/// SingularSystem (K0 cannot be factorised). `factor`: a factorisation of (K0, C) the caller has
+/// already (the perturbation's static solve), used instead of a new one.
 EigenPairs constrained_buckling_pairs(ConstrainedSolver& solver, const CsrMatrix& K0,
                                       const CsrMatrix& G, const ConstraintBlock& C,
-                                      const EigenRequest& req, RunStatistics* stats = nullptr);
+                                      const EigenRequest& req, RunStatistics* stats = nullptr,
+                                      std::unique_ptr<ConstrainedFactor> factor = nullptr);
 
 } // namespace gapfem

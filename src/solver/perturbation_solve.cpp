@@ -13,11 +13,11 @@ PerturbationResponse solve_perturbation(ConstrainedSolver& solver, StepProblem& 
   const EquationMap& eqm = prob.equations();
   const auto n = static_cast<std::size_t>(eqm.n_eq());
   if (!p.any || n == 0) return out;
-  std::unique_ptr<ConstrainedFactor> f = solver.factorize(ops.K, ops.C, true, stats);
+  out.factor = solver.factorize(ops.K, ops.C, true, stats);
   std::vector<double> x(n, 0.0);
   {
     ScopedTimer timer(stats, TimeCategory::Solve);
-    f->solve(p.b, p.g, x, out.forces, 1);
+    out.factor->solve(p.b, p.g, x, out.forces, 1);
   }
   for (std::size_t eq = 0; eq < n; ++eq) out.du[eqm.eq_slot[eq]] = x[eq];
   return out;

@@ -12,6 +12,8 @@ struct PerturbationResponse {
   std::vector<double> du;     ///< per slot: the perturbation's displacements (prescribed ones too)
   std::vector<double> forces; ///< per row of the operators' C: the rows' forces (multipliers)
   bool any = false;           ///< the step has a perturbation (a load or a prescribed value)
+  /// the factorisation of (K0, C) the solve used (null when nothing was solved)
+  std::unique_ptr<ConstrainedFactor> factor;
 };
 
 /// Solves the step's perturbation with `ops` (StepProblem::perturbation_operators of `prob`).

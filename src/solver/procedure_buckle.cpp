@@ -62,7 +62,8 @@ EigenPairs BuckleProcedure::extract(StepRun& r, const StepProblem::PerturbationO
   for (double& v : G.values()) v = -v;
   EigenPairs pairs;
   try {
-    pairs = constrained_buckling_pairs(*_a.solver, ops.K, G, ops.C, request(b), &_a.stats);
+    pairs = constrained_buckling_pairs(*_a.solver, ops.K, G, ops.C, request(b), &_a.stats,
+                                       std::move(resp.factor));
   } catch (const EigenProblemError& e) {
     throw InputError(b.loc, what, e.what());
   } catch (const SingularSystem& e) {
