@@ -144,14 +144,8 @@ void dense_buckling(const StiffnessOp& op, const CsrMatrix& G, const EigenReques
 
 /// A start vector in the constrained space: K0^-1_C w.
 Eigen::VectorXd buckling_start(const StiffnessOp& op, Eigen::Index n) {
-  Eigen::VectorXd w(n), r(n);
-  std::uint64_t s = 0x9E3779B97F4A7C15ull; // fixed: the same modes in every run
-  for (Eigen::Index i = 0; i < n; ++i) {
-    s ^= s << 13;
-    s ^= s >> 7;
-    s ^= s << 17;
-    w(i) = 0.5 + static_cast<double>(s % 1000003) / 1000003.0;
-  }
+  const std::vector<double> w = fixed_start_vector(static_cast<std::size_t>(n));
+  Eigen::VectorXd r(n);
   op.solve(w.data(), r.data());
   return r;
 }

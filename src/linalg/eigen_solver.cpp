@@ -195,14 +195,8 @@ void dense_pairs(ShiftInvert& op, const CsrMatrix& M, const EigenRequest& req, E
 
 /// A start vector in the operator's range (no component the rows or massless DOFs hold).
 Eigen::VectorXd start_vector(ShiftInvert& op, const MassProduct& B, Eigen::Index n) {
-  Eigen::VectorXd w(n), Bw(n), r(n);
-  std::uint64_t s = 0x9E3779B97F4A7C15ull; // fixed: the same modes in every run
-  for (Eigen::Index i = 0; i < n; ++i) {
-    s ^= s << 13;
-    s ^= s >> 7;
-    s ^= s << 17;
-    w(i) = 0.5 + static_cast<double>(s % 1000003) / 1000003.0;
-  }
+  const std::vector<double> w = fixed_start_vector(static_cast<std::size_t>(n));
+  Eigen::VectorXd Bw(n), r(n);
   B.perform_op(w.data(), Bw.data());
   op.perform_op(Bw.data(), r.data());
   return r;
@@ -252,6 +246,18 @@ long finite_bound(const CsrMatrix& M, const ConstraintBlock& C) {
 }
 
 } // namespace
+
+std::vector<double> fixed_start_vector(std::size_t n) {
+  std::vector<double> w(n);
+  std::uint64_t s = 0x9E3779B97F4A7C15ull;
+  for (double& v : w) {
+    s ^= s << 13;
+    s ^= s >> 7;
+    s ^= s << 17;
+    v = 0.5 + static_cast<double>(s % 1000003) / 1000003.0;
+  }
+  return w;
+}
 
 EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K, const CsrMatrix& M,
                                   const ConstraintBlock& C, const EigenRequest& req,

@@ -47,6 +47,10 @@ class EigenProblemError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A fixed vector of n entries in [0.5, 1.5) (xorshift): the start of every Lanczos run, so a run
+/// finds the same modes each time.
+std::vector<double> fixed_start_vector(std::size_t n);
+
 /// The eigenpairs of (K, M) under C that `req` asks for. K and M share a pattern; C's right sides
 /// are ignored (the problem is homogeneous). Throws EigenProblemError, or SingularSystem when no
 /// shift makes K - sigma M factorisable.

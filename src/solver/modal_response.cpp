@@ -170,6 +170,19 @@ std::string element_damping_warning(const Discretization& disc, const Step& step
   return {};
 }
 
+ModalProblem modal_problem(const Model& model, const Discretization& disc,
+                           std::shared_ptr<const ModalBasis> basis, const Step& step,
+                           const SourceLocation& loc, std::vector<std::string>& warnings) {
+  ModalProblem p;
+  basis_of(basis, step, loc);
+  p.basis = std::move(basis);
+  p.sel = select_modes(step, *p.basis, loc);
+  p.terms = modal_excitation(model, disc.dofs(), step, *p.basis, p.sel);
+  if (std::string w = element_damping_warning(disc, step); !w.empty())
+    warnings.push_back(std::move(w));
+  return p;
+}
+
 std::vector<double> modal_superposition(const ModalBasis& b, const ModalSelection& sel,
                                         std::span<const double> q) {
   std::vector<double> u(static_cast<std::size_t>(b.n_slots), 0.0);

@@ -9,6 +9,7 @@
 
 #include <complex>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace gapfem {
@@ -63,6 +64,18 @@ std::vector<double> steady_state_frequencies(const SteadyStateSettings& ss,
 /// (dashpots, ALPHA, material Rayleigh damping): only *MODAL DAMPING damps the modes. Empty when
 /// none has.
 std::string element_damping_warning(const Discretization& disc, const Step& step);
+
+/// What a mode-based dynamic step works on: the basis, the modes it uses, its excitation.
+struct ModalProblem {
+  std::shared_ptr<const ModalBasis> basis;
+  ModalSelection sel;
+  std::vector<ModalTerm> terms;
+};
+/// The step's ModalProblem on `basis` (basis_of, select_modes, modal_excitation), with the
+/// element-damping warning added to `warnings` when it applies.
+ModalProblem modal_problem(const Model& model, const Discretization& disc,
+                           std::shared_ptr<const ModalBasis> basis, const Step& step,
+                           const SourceLocation& loc, std::vector<std::string>& warnings);
 
 /// The response per DOF slot of the modal coordinates q (per selected mode): sum_k phi_k q_k.
 std::vector<double> modal_superposition(const ModalBasis& b, const ModalSelection& sel,

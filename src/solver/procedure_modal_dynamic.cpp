@@ -92,12 +92,11 @@ void ModalDynamicProcedure::run(StepRun& r) {
   check(*r.step);
   const Step& step = *r.step;
   const ModalDynamicSettings& md = step.modal_dynamic;
-  _b = _a.modal_basis;
-  basis_of(_b, step, md.loc);
-  _sel = select_modes(step, *_b, md.loc);
-  _terms = modal_excitation(_a.model, _a.disc.dofs(), step, *_b, _sel);
-  if (std::string w = element_damping_warning(_a.disc, step); !w.empty())
-    _a.solver_warnings.push_back(std::move(w));
+  ModalProblem mp =
+      modal_problem(_a.model, _a.disc, _a.modal_basis, step, md.loc, _a.solver_warnings);
+  _b = std::move(mp.basis);
+  _sel = std::move(mp.sel);
+  _terms = std::move(mp.terms);
   _dt = md.dt;
   _start = r.prob->context().total_time - r.prob->context().step_time;
   const auto n = static_cast<int>(std::ceil(md.period / md.dt * (1.0 - 1e-12)));

@@ -83,12 +83,11 @@ void SteadyStateProcedure::run(StepRun& r) {
   check(*r.step);
   const Step& step = *r.step;
   const SteadyStateSettings& ss = step.steady_state;
-  _b = _a.modal_basis;
-  basis_of(_b, step, ss.loc);
-  _sel = select_modes(step, *_b, ss.loc);
-  _terms = modal_excitation(_a.model, _a.disc.dofs(), step, *_b, _sel);
-  if (std::string w = element_damping_warning(_a.disc, step); !w.empty())
-    _a.solver_warnings.push_back(std::move(w));
+  ModalProblem mp =
+      modal_problem(_a.model, _a.disc, _a.modal_basis, step, ss.loc, _a.solver_warnings);
+  _b = std::move(mp.basis);
+  _sel = std::move(mp.sel);
+  _terms = std::move(mp.terms);
   if (_terms.empty())
     _a.solver_warnings.push_back(fmt::format(
         "step {} (*STEADY STATE DYNAMICS): no *CLOAD and no *BASE MOTION excite the modes: the "

@@ -32,6 +32,7 @@
 //    stiffness mu N / gamma = 3000 on mass 1, K = [3100 -100; -100 100]: lambda =
 //    (3200 - sqrt(3200^2 - 4 x 300000)) / 2 = 96.67036.
 #include "test_util.hpp"
+#include "verification/frequency/two_masses.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -43,40 +44,15 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::string two_masses(const char* normalization) {
-  return fmt::format(R"(*HEADING
-Two masses on springs
-*NODE
-1, 0., 0., 0.
-2, 1., 0., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=K1
-1, 1
-*SPRING, ELSET=K1
-1
-1000.
-*ELEMENT, TYPE=SPRING2, ELSET=K2
-2, 1, 2
-*SPRING, ELSET=K2
-1, 1
-500.
-*ELEMENT, TYPE=MASS, ELSET=M1
-3, 1
-*MASS, ELSET=M1
-2.
-*ELEMENT, TYPE=MASS, ELSET=M2
-4, 2
-*MASS, ELSET=M2
-1.
-*BOUNDARY
-1, 2, 3
-2, 2, 3
-*STEP
+  return fmt::format("*HEADING\nTwo masses on springs\n{}"
+                     R"(*STEP
 *FREQUENCY{}
 2
 *NODE PRINT
 U
 *END STEP
 )",
-                     normalization);
+                     test::kTwoMassesModel, normalization);
 }
 
 const EigenSummary& modes_of(const JobResult& r, int step_index = 0) {

@@ -16,6 +16,7 @@
 //          - (1 - 2 zeta^2) / omega_d sin omega_d s);
 // the exact integration of a piecewise-linear load reproduces both to rounding (1e-8 F / k).
 #include "test_util.hpp"
+#include "verification/frequency/two_masses.hpp"
 
 #include <cmath>
 #include <complex>
@@ -88,33 +89,7 @@ TEST(VerificationModalDynamics, EigenfrequencyIntervalsHitTheResonance) {
 }
 
 TEST(VerificationModalDynamics, TwoMassesEqualTheDirectComplexSolve) {
-  const std::string deck = R"(*HEADING
-Two masses
-*NODE
-1, 0., 0., 0.
-2, 1., 0., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=K1
-1, 1
-*SPRING, ELSET=K1
-1
-1000.
-*ELEMENT, TYPE=SPRING2, ELSET=K2
-2, 1, 2
-*SPRING, ELSET=K2
-1, 1
-500.
-*ELEMENT, TYPE=MASS, ELSET=M1
-3, 1
-*MASS, ELSET=M1
-2.
-*ELEMENT, TYPE=MASS, ELSET=M2
-4, 2
-*MASS, ELSET=M2
-1.
-*BOUNDARY
-1, 2, 3
-2, 2, 3
-*STEP
+  const std::string deck = std::string("*HEADING\nTwo masses\n") + test::kTwoMassesModel + R"(*STEP
 *FREQUENCY
 2
 *END STEP

@@ -13,6 +13,7 @@
 //    along Y adds nothing to this X-only model (SRSS over the directions).
 // 4. Errors: no *FREQUENCY step before; a mode number beyond those extracted.
 #include "test_util.hpp"
+#include "verification/frequency/two_masses.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -24,40 +25,15 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::string deck(const std::string& spectrum, const std::string& step) {
-  return fmt::format(R"(*HEADING
-Two masses on springs, a response spectrum
-*NODE
-1, 0., 0., 0.
-2, 1., 0., 0.
-*ELEMENT, TYPE=SPRING1, ELSET=K1
-1, 1
-*SPRING, ELSET=K1
-1
-1000.
-*ELEMENT, TYPE=SPRING2, ELSET=K2
-2, 1, 2
-*SPRING, ELSET=K2
-1, 1
-500.
-*ELEMENT, TYPE=MASS, ELSET=M1
-3, 1
-*MASS, ELSET=M1
-2.
-*ELEMENT, TYPE=MASS, ELSET=M2
-4, 2
-*MASS, ELSET=M2
-1.
-*BOUNDARY
-1, 2, 3
-2, 2, 3
-{}*STEP
+  return fmt::format("*HEADING\nTwo masses on springs, a response spectrum\n{}"
+                     R"({}*STEP
 *FREQUENCY
 2
 *END STEP
 *STEP
 {}*END STEP
 )",
-                     spectrum, step);
+                     test::kTwoMassesModel, spectrum, step);
 }
 
 const char* kFlat = "*SPECTRUM, NAME=FLAT\n10., 0.1, 0.05\n10., 100., 0.05\n";
