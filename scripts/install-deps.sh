@@ -6,6 +6,7 @@ packages=(build-essential cmake ninja-build pkg-config
           libeigen3-dev libsuitesparse-dev libmetis-dev libopenblas-dev
           libspectra-dev  # Spectra (on Eigen): the Lanczos method of *FREQUENCY
           petsc-dev  # PETSc (MUMPS, hypre, OpenMPI): --solver mumps|iterative, mpirun -np N
+          slepc-dev  # SLEPc (on PETSc): *FREQUENCY and *BUCKLE on the PETSc backend, under mpirun
           libfmt-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
           calculix-ccx python3 time
           gfortran  # gapfem --user compiles Abaqus UEL sources (and the tests' UEL)

@@ -2,19 +2,20 @@
 // docs/theory/buckling.md): Lanczos on mu = 1 / lambda, whose largest magnitudes are the
 // buckling loads nearest zero, in the K0 inner product.
 #include "linalg/eigen_solver.hpp"
+#include "linalg/krylov_eigen.hpp"
 
 #include <Eigen/Dense>
-#include <Spectra/SymGEigsSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <limits>
 #include <numeric>
 
 namespace gapfem {
 namespace {
 
 /// K0 under the rows: its constrained inverse (the factor) and its product, compliant rows' C^T C /
-/// E included (Spectra's BOpType of the regular inverse mode).
+/// E included (the Lanczos run's inner product).
 class StiffnessOp {
  public:
   using Scalar = double;
@@ -36,9 +37,9 @@ class StiffnessOp {
     _factor->solve({x, n * k}, _g, {y, n * k}, _l, k);
     _out.operations += k;
   }
-  /// y = (K0 + C_c^T E^-1 C_c) x, C_c the compliant rows. Spectra's K0-inner products multiply
-  /// the same vector again and again (its norm, then its products with each basis vector): the
-  /// last product is kept and handed back while the vector is the same one.
+  /// y = (K0 + C_c^T E^-1 C_c) x, C_c the compliant rows. A Lanczos run's K0-inner products
+  /// multiply the same vector again and again (its norm, then its products with each basis vector):
+  /// the last product is kept and handed back while the vector is the same one.
   void perform_op(const double* x, double* y) const {
     const std::size_t n = static_cast<std::size_t>(_K.n());
     if (_x.size() == n && std::equal(x, x + n, _x.begin())) {
@@ -68,7 +69,7 @@ class StiffnessOp {
   mutable std::vector<double> _x, _y; ///< the last vector and its product
 };
 
-/// G x (Spectra's OpType).
+/// G x.
 struct GeometricOp {
   using Scalar = double;
   const CsrMatrix& G;
@@ -143,40 +144,49 @@ void dense_buckling(const StiffnessOp& op, const CsrMatrix& G, const EigenReques
 }
 
 /// A start vector in the constrained space: K0^-1_C w.
-Eigen::VectorXd buckling_start(const StiffnessOp& op, Eigen::Index n) {
+std::vector<double> buckling_start(const StiffnessOp& op, LocalIndex n) {
   const std::vector<double> w = fixed_start_vector(static_cast<std::size_t>(n));
-  Eigen::VectorXd r(n);
+  std::vector<double> r(w.size());
   op.solve(w.data(), r.data());
   return r;
 }
 
-/// Lanczos for `nev` values of mu (largest magnitude, or largest when only positive loads count).
-bool lanczos_buckling(StiffnessOp& op, const CsrMatrix& G, int nev, const EigenRequest& req,
-                      std::vector<double>& lam, Eigen::MatrixXd& X, EigenPairs& out) {
-  const Eigen::Index n = op.rows();
-  const auto ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * nev + 1, nev + 20));
-  GeometricOp g{G};
+/// Lanczos for `nev` values of mu = 1 / lambda, the eigenvalues of T = K0^-1_C G in the K0 inner
+/// product (largest magnitude, or largest when only positive loads count), by the backend's
+/// Krylov method.
+bool lanczos_buckling(ConstrainedSolver& solver, StiffnessOp& op, const CsrMatrix& G, int nev,
+                      const EigenRequest& req, std::vector<double>& lam, Eigen::MatrixXd& X,
+                      EigenPairs& out) {
+  const LocalIndex n = static_cast<LocalIndex>(op.rows());
+  const std::size_t size = static_cast<std::size_t>(n);
+  KrylovRequest kr;
+  kr.n = n;
+  kr.solve = [&](const double* x, double* y) { op.solve(x, y); };
+  kr.apply = [&](const double* x, double* y) { G.multiply({x, size}, {y, size}); };
+  kr.inner = [&](const double* x, double* y) { op.perform_op(x, y); };
+  kr.nev = nev;
+  kr.ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+  kr.tolerance = req.tolerance;
+  kr.largest_algebraic = req.lower >= 0.0;
+  kr.start = buckling_start(op, n);
+  KrylovResult r;
   try {
-    Spectra::SymGEigsSolver<GeometricOp, StiffnessOp, Spectra::GEigsMode::RegularInverse> eigs(
-        g, op, nev, ncv);
-    const Eigen::VectorXd r0 = buckling_start(op, n);
-    eigs.init(r0.data());
-    const auto rule =
-        req.lower >= 0.0 ? Spectra::SortRule::LargestAlge : Spectra::SortRule::LargestMagn;
-    const Eigen::Index nconv = eigs.compute(rule, 1000, req.tolerance, rule);
-    out.restarts += static_cast<int>(eigs.num_iterations());
-    if (eigs.info() != Spectra::CompInfo::Successful || nconv < nev) return false;
-    const Eigen::VectorXd mu = eigs.eigenvalues();
-    X = eigs.eigenvectors();
-    lam.clear();
-    const double mumax = mu.cwiseAbs().maxCoeff();
-    for (Eigen::Index j = 0; j < mu.size(); ++j)
-      lam.push_back(std::abs(mu(j)) > 1e-12 * mumax ? 1.0 / mu(j)
-                                                    : std::numeric_limits<double>::infinity());
-    return true;
+    const auto method = solver.krylov_eigen_solver();
+    out.method = method->name();
+    r = method->solve(kr);
   } catch (const std::invalid_argument& e) {
     throw EigenProblemError(fmt::format("the Lanczos iteration could not start ({})", e.what()));
   }
+  out.restarts += r.restarts;
+  if (!r.converged) return false;
+  double mumax = 0.0;
+  for (double mu : r.theta) mumax = std::max(mumax, std::abs(mu));
+  lam.clear();
+  for (double mu : r.theta)
+    lam.push_back(std::abs(mu) > 1e-12 * mumax ? 1.0 / mu
+                                               : std::numeric_limits<double>::infinity());
+  X = Eigen::Map<const Eigen::MatrixXd>(r.vectors.data(), n, static_cast<Eigen::Index>(lam.size()));
+  return true;
 }
 
 bool no_load_stiffness(const CsrMatrix& G) {
@@ -216,7 +226,7 @@ EigenPairs constrained_buckling_pairs(ConstrainedSolver& solver, const CsrMatrix
     nev = static_cast<int>(std::min<long>(nev, n - 1));
     std::vector<double> lam;
     Eigen::MatrixXd X;
-    if (!lanczos_buckling(op, G, nev, req, lam, X, out))
+    if (!lanczos_buckling(solver, op, G, nev, req, lam, X, out))
       throw EigenProblemError(fmt::format(
           "the Lanczos iteration did not converge to {} buckling eigenvalues; ask for fewer", nev));
     select_buckling(lam, X, req, out);

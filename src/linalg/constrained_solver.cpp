@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "linalg/kkt_solver.hpp"
+#include "linalg/krylov_eigen.hpp"
 #include "linalg/norms.hpp"
 
 #include <deque>
@@ -25,6 +26,10 @@ std::deque<SolverBackend>& registry() { // a deque: found entries stay where the
 std::mutex g_registry_mutex;
 
 } // namespace
+
+std::unique_ptr<KrylovEigenSolver> ConstrainedSolver::krylov_eigen_solver() const {
+  return make_spectra_krylov();
+}
 
 KktStatistics ConstrainedSolver::solve(CsrMatrix& K, std::span<const double> b,
                                        const ConstraintBlock& C, std::span<double> du,

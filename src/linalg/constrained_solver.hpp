@@ -26,6 +26,8 @@
 
 namespace gapfem {
 
+class KrylovEigenSolver; // linalg/krylov_eigen.hpp
+
 struct KktOptions {
   double augmentation = 100.0;       ///< R_i = augmentation x stiffness at the row's DOFs
   double constraint_tolerance = 0.0; ///< stop the multiplier iteration when |C du + g| below this
@@ -128,6 +130,10 @@ class ConstrainedSolver {
   /// a stiffness that has barely drifted): Newton then assembles the residual alone and solves
   /// with KktOptions::matrix_current = false.
   virtual bool matrix_optional() const { return false; }
+  /// The Krylov method the eigen solvers (*FREQUENCY, *BUCKLE) use with this backend's factors
+  /// (krylov_eigen.hpp): Spectra's Lanczos on one process by default; a distributed backend gives
+  /// one whose vectors live on its processes.
+  virtual std::unique_ptr<KrylovEigenSolver> krylov_eigen_solver() const;
   /// Newton's system; K may be modified in place. du has one entry per equation, dl one per
   /// constraint row. Throws SingularSystem when K (with the constraints) is singular, and
   /// AnalysisError when the factor cannot fit in memory. The default factorises (K, C) with

@@ -1,7 +1,8 @@
 #include "linalg/eigen_solver.hpp"
 
+#include "linalg/krylov_eigen.hpp"
+
 #include <Eigen/Dense>
-#include <Spectra/SymGEigsShiftSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -24,7 +25,7 @@ ConstraintBlock homogeneous(const ConstraintBlock& C) {
   return h;
 }
 
-/// (K - sigma M)^-1 under the rows: Spectra's OpType (shift-invert) and our dense route.
+/// (K - sigma M)^-1 under the rows: the shift-invert of the Lanczos runs and of the dense route.
 class ShiftInvert {
  public:
   using Scalar = double;
@@ -33,7 +34,7 @@ class ShiftInvert {
       : _solver(solver), _K(K), _M(M), _C(C), _stats(stats), _out(out) {}
   Eigen::Index rows() const { return _K.n(); }
   Eigen::Index cols() const { return _K.n(); }
-  /// Factorise K - sigma M (Spectra calls it once, with the solver's shift).
+  /// Factorise K - sigma M.
   void set_shift(double sigma) {
     CsrMatrix A = _K;
     const auto m = _M.values();
@@ -65,8 +66,8 @@ class ShiftInvert {
   mutable std::vector<double> _g, _l;
 };
 
-/// M x (Spectra's BOpType). Spectra's M-inner products multiply the same vector by M again and
-/// again (its norm, then its products with each basis vector): the last product is kept and
+/// M x (the inner product). A Lanczos run's M-inner products multiply the same vector by M again
+/// and again (its norm, then its products with each basis vector): the last product is kept and
 /// handed back while the vector is the same one (a comparison costs far less than the product).
 class MassProduct {
  public:
@@ -194,46 +195,43 @@ void dense_pairs(ShiftInvert& op, const CsrMatrix& M, const EigenRequest& req, E
 }
 
 /// A start vector in the operator's range (no component the rows or massless DOFs hold).
-Eigen::VectorXd start_vector(ShiftInvert& op, const MassProduct& B, Eigen::Index n) {
+std::vector<double> start_vector(ShiftInvert& op, const MassProduct& B, LocalIndex n) {
   const std::vector<double> w = fixed_start_vector(static_cast<std::size_t>(n));
-  Eigen::VectorXd Bw(n), r(n);
+  std::vector<double> Bw(static_cast<std::size_t>(n)), r(Bw.size());
   B.perform_op(w.data(), Bw.data());
   op.perform_op(Bw.data(), r.data());
   return r;
 }
 
-/// Lanczos for `nev` eigenvalues nearest the shift.
-bool lanczos_pairs(ShiftInvert& op, MassProduct& B, int nev, const EigenRequest& req,
-                   std::vector<double>& lam, Eigen::MatrixXd& X, EigenPairs& out) {
-  const Eigen::Index n = op.rows();
-  const auto ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(2 * nev + 1, nev + 20));
-  // the factor exists already: Spectra's set_shift would factorise again, so it gets an operator
-  // whose set_shift does nothing (the shift it applies to the Ritz values is out.shift)
-  struct Kept {
-    using Scalar = double;
-    ShiftInvert* op;
-    Eigen::Index rows() const { return op->rows(); }
-    Eigen::Index cols() const { return op->cols(); }
-    void set_shift(double) {}
-    void perform_op(const double* x, double* y) const { op->perform_op(x, y); }
-  };
-  Kept kept{&op};
+/// Lanczos for `nev` eigenvalues nearest the shift: those of T = (K - sigma M)^-1_C M largest in
+/// magnitude (nu = 1 / (lambda - sigma)), in the M inner product, by the backend's Krylov method.
+bool lanczos_pairs(ConstrainedSolver& solver, ShiftInvert& op, MassProduct& B, int nev,
+                   const EigenRequest& req, std::vector<double>& lam, Eigen::MatrixXd& X,
+                   EigenPairs& out) {
+  const LocalIndex n = static_cast<LocalIndex>(op.rows());
+  KrylovRequest kr;
+  kr.n = n;
+  kr.solve = [&](const double* x, double* y) { op.perform_op(x, y); };
+  kr.apply = [&](const double* x, double* y) { B.perform_op(x, y); };
+  kr.inner = kr.apply;
+  kr.nev = nev;
+  kr.ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+  kr.tolerance = req.tolerance;
+  kr.start = start_vector(op, B, n);
+  KrylovResult r;
   try {
-    Spectra::SymGEigsShiftSolver<Kept, MassProduct, Spectra::GEigsMode::ShiftInvert> eigs(
-        kept, B, nev, ncv, out.shift);
-    const Eigen::VectorXd r0 = start_vector(op, B, n);
-    eigs.init(r0.data());
-    const Eigen::Index nconv = eigs.compute(Spectra::SortRule::LargestMagn, 1000, req.tolerance,
-                                            Spectra::SortRule::LargestAlge);
-    out.restarts += static_cast<int>(eigs.num_iterations());
-    if (eigs.info() != Spectra::CompInfo::Successful || nconv < nev) return false;
-    const Eigen::VectorXd values = eigs.eigenvalues();
-    X = eigs.eigenvectors();
-    lam.assign(values.data(), values.data() + values.size());
-    return true;
-  } catch (const std::invalid_argument& e) { // Spectra's word on nev, ncv or the start vector
+    const auto method = solver.krylov_eigen_solver();
+    out.method = method->name();
+    r = method->solve(kr);
+  } catch (const std::invalid_argument& e) { // the method's word on nev, ncv or the start vector
     throw EigenProblemError(fmt::format("the Lanczos iteration could not start ({})", e.what()));
   }
+  out.restarts += r.restarts;
+  if (!r.converged) return false;
+  lam.clear();
+  for (double nu : r.theta) lam.push_back(out.shift + 1.0 / nu);
+  X = Eigen::Map<const Eigen::MatrixXd>(r.vectors.data(), n, static_cast<Eigen::Index>(lam.size()));
+  return true;
 }
 
 /// How many eigenvalues at most: free equations with mass less exact rows.
@@ -295,7 +293,7 @@ EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K,
     nev = static_cast<int>(std::min<long>(nev, std::min<long>(out.finite_modes, n - 1)));
     std::vector<double> lam;
     Eigen::MatrixXd X;
-    if (!lanczos_pairs(op, B, nev, req, lam, X, out))
+    if (!lanczos_pairs(solver, op, B, nev, req, lam, X, out))
       throw EigenProblemError(fmt::format(
           "the Lanczos iteration did not converge to {} eigenvalues; ask for fewer, or give a "
           "shift near the frequencies of interest",

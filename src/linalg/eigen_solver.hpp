@@ -4,11 +4,12 @@
 ///
 ///     K x = lambda M x,   C x = 0   (exact rows; compliant rows add their stiffness C^T C / E),
 ///
-/// by shift-invert Lanczos (Spectra) over a ConstrainedFactor of K - sigma M: the operator
+/// by shift-invert Lanczos over a ConstrainedFactor of K - sigma M: the operator
 /// x -> (K - sigma M)^-1_C M x, whose eigenvalues nu = 1 / (lambda - sigma) are largest for the
 /// eigenvalues nearest the shift (docs/theory/frequency.md). Small systems are solved densely
 /// through the same operator. Used by *FREQUENCY (solver/procedure_frequency.cpp); the backend
-/// is whatever ConstrainedSolver the run has.
+/// is whatever ConstrainedSolver the run has, and the Krylov method the one it gives
+/// (krylov_eigen.hpp: Spectra on one process, SLEPc on the PETSc backend).
 #include "linalg/constrained_solver.hpp"
 
 #include <limits>
@@ -39,6 +40,8 @@ struct EigenPairs {
   /// exact rows, or the dense solve's count); -1 when not known
   long finite_modes = -1;
   int factorizations = 0, operations = 0, restarts = 0;
+  /// How the pairs were found: the Krylov method's name, or "dense" (small systems)
+  std::string method = "dense";
 };
 
 /// What the extraction could not do (no mass, no convergence, too many modes asked for).
@@ -63,7 +66,7 @@ EigenPairs constrained_eigenpairs(ConstrainedSolver& solver, const CsrMatrix& K,
 /// rows add their stiffness), lambda the multipliers of the perturbation load. Returned: the
 /// `count` eigenvalues of smallest magnitude in [lower, upper] (all in it when count is 0), by
 /// ascending magnitude, x^T K0 x = 1. Lanczos on G x = (1 / lambda) K0 x in the K0 inner product
-/// (Spectra's regular inverse mode over one factorisation of K0); small systems densely. Throws
+/// (over one factorisation of K0, by the backend's Krylov method); small systems densely. Throws
 /// EigenProblemError (no load stiffness, K0 not positive definite, no convergence) or
 /// SingularSystem (K0 cannot be factorised). `factor`: a factorisation of (K0, C) the caller has
 /// already (the perturbation's static solve), used instead of a new one.

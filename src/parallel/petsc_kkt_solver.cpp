@@ -9,6 +9,7 @@
 #include "parallel/parallel.hpp"
 #include "parallel/petsc_detail.hpp"
 #include "parallel/petsc_runtime.hpp"
+#include "parallel/petsc_slepc_krylov.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -431,6 +432,10 @@ std::unique_ptr<ConstrainedFactor> PetscKktSolver::factorize(const CsrMatrix& K,
   FE_CHECK(_impl->pattern && K.n() == _impl->pattern->n,
            "PETSc solver not analysed for this pattern");
   return std::make_unique<Factor>(_impl->pattern, K, C, symmetric, stats);
+}
+
+std::unique_ptr<KrylovEigenSolver> PetscKktSolver::krylov_eigen_solver() const {
+  return parallel::make_slepc_krylov();
 }
 
 std::size_t PetscKktSolver::factor_bytes_estimate() {

@@ -53,6 +53,8 @@ class PetscKktSolver final : public ConstrainedSolver {
   std::unique_ptr<ConstrainedFactor> factorize(const CsrMatrix& K, const ConstraintBlock& C,
                                                bool symmetric,
                                                RunStatistics* stats = nullptr) override;
+  /// SLEPc's Krylov-Schur over the ranks (petsc_slepc_krylov.hpp).
+  std::unique_ptr<KrylovEigenSolver> krylov_eigen_solver() const override;
   /// The serial backend's symbolic estimate (CHOLMOD's), as the memory check uses it.
   std::size_t factor_bytes_estimate() override;
   KktStatistics solve(CsrMatrix& K, std::span<const double> b, const ConstraintBlock& C,

@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <fmt/format.h>
 #include <petscsys.h>
+#ifdef GAPFEM_HAVE_SLEPC
+#include <slepcsys.h>
+#endif
 #include <stdexcept>
 #include <thread>
 
@@ -46,7 +49,11 @@ int g_rank = 0, g_size = 1;
 MPI_Comm g_exit_comm = MPI_COMM_NULL;
 void finalize() {
   [[maybe_unused]] const MpiRuntimeAllocations runtime;
+#ifdef GAPFEM_HAVE_SLEPC
+  if (g_started) SlepcFinalize(); // and PETSc, which SlepcInitialize started
+#else
   if (g_started) PetscFinalize();
+#endif
   g_started = false;
 }
 } // namespace
@@ -77,8 +84,13 @@ void start(const std::vector<std::string>& petsc_options) {
   args.push_back(nullptr);
   int argc = static_cast<int>(words.size());
   char** argv = args.data();
+#ifdef GAPFEM_HAVE_SLEPC
+  if (SlepcInitialize(&argc, &argv, nullptr, nullptr) != 0) // SLEPc starts PETSc
+    throw std::runtime_error("PETSc could not be started (SlepcInitialize failed)");
+#else
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0)
     throw std::runtime_error("PETSc could not be started (PetscInitialize failed)");
+#endif
   // errors come back as codes, which petsc_check turns into exceptions with a sentence
   PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   g_started = true;

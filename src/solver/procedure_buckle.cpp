@@ -4,7 +4,6 @@
 // perturbation's static response du about the base state (perturbation_solve), K_Delta the
 // change of the tangent along it (StepProblem::differential_stiffness), then Lanczos on
 // K0 x = lambda (-K_Delta) x (linalg/buckling_solver.cpp). The writers get a frame per mode.
-#include "parallel/parallel.hpp"
 #include "solver/analysis_impl.hpp"
 #include "solver/modal_quantities.hpp"
 #include "solver/mode_frames.hpp"
@@ -131,10 +130,6 @@ EigenSummary BuckleProcedure::summary(const StepRun& r, EigenPairs& pairs) const
 
 void BuckleProcedure::run(StepRun& r) {
   check(*r.step);
-  if (parallel::size() > 1)
-    throw InputError(r.step->buckle.loc, fmt::format("step {}", r.step->number),
-                     "*BUCKLE extracts the buckling modes on one process in this version: run "
-                     "the job without mpirun (--solver mumps uses MUMPS's factor on one process)");
   const StepProblem::PerturbationOperators ops = r.prob->perturbation_operators(false);
   EigenPairs pairs = extract(r, ops);
   EigenSummary sum = summary(r, pairs);
@@ -142,8 +137,8 @@ void BuckleProcedure::run(StepRun& r) {
                 sum.modes.size());
   for (const ModeInfo& m : sum.modes)
     log::progress("  mode {:4d}  eigenvalue {:13.6e}", m.mode, m.eigenvalue);
-  log::progress("  Lanczos: {} factorisation(s), {} back-substitutions, {} restarts",
-                pairs.factorizations, pairs.operations, pairs.restarts);
+  log::progress("  eigensolver {}: {} factorisation(s), {} back-substitutions, {} restarts",
+                pairs.method, pairs.factorizations, pairs.operations, pairs.restarts);
   if (std::any_of(sum.modes.begin(), sum.modes.end(),
                   [](const ModeInfo& m) { return m.eigenvalue < 0.0; }))
     _a.solver_warnings.push_back(fmt::format(

@@ -2,7 +2,6 @@
 // shapes of the model about its base state (the end of the last general step), found by
 // shift-invert Lanczos over the run's solver (linalg/eigen_solver), with Abaqus's participation
 // factors and effective masses (modal_quantities); the writers get the table and a frame per mode.
-#include "parallel/parallel.hpp"
 #include "solver/analysis_impl.hpp"
 #include "solver/modal_quantities.hpp"
 #include "solver/mode_frames.hpp"
@@ -66,18 +65,14 @@ void FrequencyProcedure::check(const Step& step) const {
 
 void FrequencyProcedure::run(StepRun& r) {
   check(*r.step);
-  if (parallel::size() > 1) // Spectra's Lanczos works on one process's vectors
-    throw InputError(r.step->frequency.loc, fmt::format("step {}", r.step->number),
-                     "*FREQUENCY extracts the modes on one process in this version: run the job "
-                     "without mpirun (--solver mumps uses MUMPS's factor on one process)");
   StepProblem::PerturbationOperators ops = r.prob->perturbation_operators();
   EigenPairs pairs = extract(r, ops);
   const EquationMap& eqm = r.prob->equations();
   EigenSummary sum = modal_summary(_a.model.mesh, _a.disc.dofs(), eqm, ops.M, pairs,
                                    r.step->frequency.mass_normalized);
   report(r, sum);
-  log::progress("  Lanczos: {} factorisation(s), {} back-substitutions, {} restarts",
-                pairs.factorizations, pairs.operations, pairs.restarts);
+  log::progress("  eigensolver {}: {} factorisation(s), {} back-substitutions, {} restarts",
+                pairs.method, pairs.factorizations, pairs.operations, pairs.restarts);
   write_mode_frames(_a, r, pairs, sum);
   keep_basis(r, pairs, sum);
   r.sum.increments = static_cast<int>(sum.modes.size());
