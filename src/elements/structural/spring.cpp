@@ -114,6 +114,17 @@ void SpringKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
     for (int j = 0; j < n; ++j) out.tangent[i * n + j] += dF * _act.B[i] * _act.B[j];
 }
 
+bool SpringKernel::stress_stiffness(const ElementInput& in, std::span<const double> du,
+                                    std::span<double> K) const {
+  if (_type != ElementType::SPRINGA) return true;
+  const AxialKinematics kin = axial_kinematics(_ndim, in.X, in.u, true);
+  if (!(kin.l > 0.0)) return false;
+  double F = 0.0, dF = 0.0;
+  force(in, kin.delta, F, dF);
+  axial_stress_stiffness(kin, dF * axial_stretch(kin, du), K);
+  return true;
+}
+
 bool SpringKernel::supports_output(ElemVar var) const {
   return var == ElemVar::S || var == ElemVar::E;
 }

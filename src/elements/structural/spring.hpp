@@ -47,6 +47,10 @@ class SpringKernel final : public ElementKernel {
   bool uses_temperature_field() const override { return !_nonlinear && _stiffness.n_rows() > 1; }
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// SPRINGA: dF / l (I - n n^T), dF the force's change along du (its slope at the base state
+  /// times the stretch); SPRING1/SPRING2 act along fixed directions: nothing.
+  bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                        std::span<double> K) const override;
   /// Springs are massless and undamped (Abaqus's SPRING elements: *SPRING has no damping; a
   /// damped spring is a SPRING and a DASHPOT on the same nodes, a point mass is a MASS element).
   bool has_mass() const override { return false; }

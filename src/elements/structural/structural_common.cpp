@@ -101,6 +101,25 @@ void axial_assemble(const AxialKinematics& kin, bool nlgeom, double N, double dN
     }
 }
 
+void axial_stress_stiffness(const AxialKinematics& kin, double dN, std::span<double> K) {
+  const int nd = kin.ndim, n = 2 * nd;
+  const double geo = dN / kin.l;
+  for (int i = 0; i < nd; ++i)
+    for (int j = 0; j < nd; ++j) {
+      const double kij = geo * ((i == j ? 1.0 : 0.0) - kin.n[i] * kin.n[j]);
+      K[i * n + j] += kij;
+      K[i * n + nd + j] -= kij;
+      K[(nd + i) * n + j] -= kij;
+      K[(nd + i) * n + nd + j] += kij;
+    }
+}
+
+double axial_stretch(const AxialKinematics& kin, std::span<const double> du) {
+  double dl = 0.0;
+  for (int i = 0; i < kin.ndim; ++i) dl += kin.n[i] * (du[kin.ndim + i] - du[i]);
+  return dl;
+}
+
 OutputBlock& add_block(ElementRecovery& out, ElemVar var, std::span<const std::string_view> names,
                        int n_points) {
   OutputBlock& b = out.blocks.emplace_back();

@@ -106,6 +106,13 @@ AxialKinematics axial_kinematics(int ndim, std::span<const Vec3> X, std::span<co
 /// K = dN/dl [n n^T blocks] (+ N/l (I - n n^T) blocks with NLGEOM: the geometric stiffness).
 void axial_assemble(const AxialKinematics& kin, bool nlgeom, double N, double dN_dl,
                     ElementOutput& out);
+/// Eigenvalue buckling's initial-stress matrix of an axial member
+/// (ElementKernel::stress_stiffness): the geometric part of the NLGEOM tangent above with the axial
+/// force's change dN in place of N, K += dN / l (I - n n^T) blocks [+ -; - +] (K: 2 ndim square,
+/// row-major).
+void axial_stress_stiffness(const AxialKinematics& kin, double dN, std::span<double> K);
+/// The change of an axial member's length along du (2 ndim entries): n . (du_2 - du_1).
+double axial_stretch(const AxialKinematics& kin, std::span<const double> du);
 
 // ------------------------------------------------------------------------------ output names
 

@@ -79,6 +79,16 @@ void TrussKernel::evaluate(const ElementInput& in, ElementOutput& out) const {
   }
 }
 
+bool TrussKernel::stress_stiffness(const ElementInput& in, std::span<const double> du,
+                                   std::span<double> K) const {
+  const AxialKinematics kin = axial_kinematics(_ndim, in.X, in.u, true);
+  if (!(kin.l > 0.0)) return false;
+  double E = 0.0, nu = 0.0;
+  elastic_at(_material, average(in.temperature), E, nu);
+  axial_stress_stiffness(kin, E * _area / kin.l * axial_stretch(kin, du), K);
+  return true;
+}
+
 bool TrussKernel::supports_load(DistLoadKind kind, int face) const {
   return face == 0 && (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce);
 }

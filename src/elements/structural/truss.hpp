@@ -30,6 +30,10 @@ class TrussKernel final : public ElementKernel {
   bool uses_temperature_field() const override;
   std::string validate(const ElementInput& in) const override;
   void evaluate(const ElementInput& in, ElementOutput& out) const override;
+  /// dN / l (I - n n^T), dN = E A / l times the stretch along du (log strain, as the NLGEOM
+  /// tangent).
+  bool stress_stiffness(const ElementInput& in, std::span<const double> du,
+                        std::span<double> K) const override;
   bool has_mass() const override { return !_material.density.empty(); }
   bool has_damping() const override { return false; }
   bool supports_load(DistLoadKind kind, int face) const override;

@@ -20,6 +20,16 @@
 //    end-loaded members; k = 10 (1 + nu) / (12 + 11 nu) = 0.85 for a rectangle, Abaqus's
 //    table: c = 2.0001529411765e-3), and the next general step carries on from the base state,
 //    not from the perturbation.
+// 5. The von Mises truss: two T2D2 (EA = 1e4) from (-1, 0) and (1, 0), pinned, to the apex (0,
+// 0.2),
+//    load -1 along y at the apex. Each bar (n = (+-cos a, sin a), sin a = 0.2 / L, L = sqrt(1.04))
+//    carries N = -P / (2 sin a); K0 = EA / L diag(2 cos^2 a, 2 sin^2 a), and the initial-stress
+//    matrix of the NLGEOM tangent with N in place of the force, N / L (I - n n^T) per bar, sums to
+//    2 N / L diag(sin^2 a, cos^2 a): lambda_y = 2 EA sin^3 a / (P cos^2 a) = 156.8929 (the
+//    symmetric mode), lambda_x = 2 EA cos^2 a / (P sin a) = 98058.07. The same with SPRINGA of
+//    k = EA / L (in space: the nodes held along z). (The difference of the NLGEOM tangent along the
+//    perturbation, which the element would get without its own matrix, adds the bars' rotation
+//    terms EA / L (dn n^T + n dn^T): 3 times the stress term in y here.)
 #include "test_util.hpp"
 
 #include <cmath>
@@ -216,4 +226,32 @@ S
 }
 
 } // namespace
+TEST(VerificationBuckle, TheVonMisesTrussGivesItsBifurcationLoads) {
+  const double L = std::sqrt(1.04), sa = 0.2 / L, ca = 1.0 / L, EA = 1e4;
+  const double ly = 2 * EA * sa * sa * sa / (ca * ca), lx = 2 * EA * ca * ca / sa;
+  const std::string nodes = "*NODE\n1, -1., 0.\n2, 1., 0.\n3, 0., 0.2\n";
+  const std::string rest = "*BOUNDARY\n1, 1, 2\n2, 1, 2\n*STEP\n*BUCKLE\n2\n*CLOAD\n3, 2, "
+                           "-1.\n*END STEP\n";
+  const std::string in_plane = "*BOUNDARY\n1, 3, 3\n2, 3, 3\n3, 3, 3\n";
+  const std::string truss = nodes +
+                            "*ELEMENT, TYPE=T2D2, ELSET=BARS\n1, 1, 3\n2, 2, 3\n"
+                            "*SOLID SECTION, ELSET=BARS, MATERIAL=M\n1.\n*MATERIAL, "
+                            "NAME=M\n*ELASTIC\n1e4, 0.3\n" +
+                            rest;
+  const std::string springs = nodes +
+                              fmt::format("*ELEMENT, TYPE=SPRINGA, ELSET=BARS\n1, 1, 3\n"
+                                          "2, 2, 3\n*SPRING, ELSET=BARS\n\n{:.17g}\n",
+                                          EA / L) +
+                              in_plane + rest;
+  for (const std::string& deck : {truss, springs}) {
+    const JobResult r = test::run_deck(deck);
+    ASSERT_EQ(r.exit_code, 0) << r.error;
+    const EigenSummary& m = modes_of(r, 0);
+    ASSERT_EQ(m.modes.size(), 2u);
+    EXPECT_NEAR(m.modes[0].eigenvalue, ly, 1e-9 * ly);
+    EXPECT_NEAR(m.modes[1].eigenvalue, lx, 1e-9 * lx);
+    EXPECT_NEAR(std::abs(test::U(r, r.frames[0], 3)[1]), 1.0, 1e-12); // the apex drops
+  }
+}
+
 } // namespace gapfem
