@@ -5,7 +5,9 @@
 // state (q, q', f, f') advances by the exponential of its constant 4 x 4 system matrix. The
 // forcing sums the terms' generalized forces times their amplitudes at the step time (a base
 // motion's acceleration: the amplitude, its slope for a velocity, its second difference for a
-// displacement); the frames hold u = sum phi_k q_k (relative to the base) as U and UR.
+// displacement); the frames hold u = sum phi_k q_k (relative to the base) as U and UR, and the
+// elements' values of that response (the change of each element's values along u about the base
+// state: stresses, strains, section forces of the linear response).
 #include "solver/analysis_impl.hpp"
 #include "solver/modal_response.hpp"
 #include "solver/procedures.hpp"
@@ -78,8 +80,9 @@ void ModalDynamicProcedure::write_frame(StepRun& r, int increment, double t, dou
   if (!fr) return;
   fr->step_time = t;
   fr->total_time = _start + t;
-  std::fill(fr->el_print_due.begin(), fr->el_print_due.end(), false);
-  _a.perturbation_nodes(modal_superposition(*_b, _sel, _q), *fr);
+  const std::vector<double> u = modal_superposition(*_b, _sel, _q);
+  _a.perturbation_nodes(u, *fr);
+  _a.perturbation_elements(step, *r.prob, u, field_elements, *fr);
   ScopedTimer timer(&_a.stats, TimeCategory::Output);
   for (auto* w : _a.writers) w->frame(_a.model, r.index, *fr);
 }
@@ -122,13 +125,6 @@ void ModalDynamicProcedure::run(StepRun& r) {
     f0 = f1;
     write_frame(r, inc, t, h, inc == n);
   }
-  if (!step.el_prints.empty() ||
-      std::any_of(step.field_outputs.begin(), step.field_outputs.end(),
-                  [](const FieldOutputRequest& f) { return !f.elem_vars.empty(); }))
-    _a.solver_warnings.push_back(fmt::format(
-        "step {} (*MODAL DYNAMIC): element output (stresses, strains, section forces) of the "
-        "mode-based response is not written by gapfem; the frames hold U and UR",
-        step.number));
   r.sum.increments = n;
 }
 

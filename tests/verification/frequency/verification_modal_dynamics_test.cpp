@@ -14,7 +14,8 @@
 // a ramp F t / t_r to t_r = 0.5 then F: u = F / (k t_r) [R(t) - R(t - t_r)], R(s) = 0 for s <= 0,
 //   R(s) = s - 2 zeta / omega + e^{-zeta omega s} (2 zeta / omega cos omega_d s
 //          - (1 - 2 zeta^2) / omega_d sin omega_d s);
-// the exact integration of a piecewise-linear load reproduces both to rounding (1e-8 F / k).
+// the exact integration of a piecewise-linear load reproduces both to rounding (1e-8 F / k), and
+// the spring's force (*EL PRINT S: the element output of the response) is k u.
 #include "test_util.hpp"
 #include "verification/frequency/two_masses.hpp"
 
@@ -190,7 +191,8 @@ TEST(VerificationModalDynamics, StepAndRampLoadsAreIntegratedExactly) {
                                  : "*AMPLITUDE, NAME=A\n0., 1., 100., 1.\n";
     const JobResult r = test::run_deck(
         sdof(amp, "*STEP\n*MODAL DYNAMIC\n0.01, 2.\n*MODAL DAMPING\n1, 1, 0.05\n*CLOAD, "
-                  "AMPLITUDE=A\n1, 1, 1.\n*NODE PRINT, FREQUENCY=10\nU\n*END STEP\n"));
+                  "AMPLITUDE=A\n1, 1, 1.\n*NODE PRINT, FREQUENCY=10\nU\n*EL PRINT, "
+                  "ELSET=K, FREQUENCY=10\nS\n*END STEP\n"));
     ASSERT_EQ(r.exit_code, 0) << r.error;
     const auto fr = frames_of(r, 2);
     ASSERT_EQ(fr.size(), 20u);
@@ -198,7 +200,13 @@ TEST(VerificationModalDynamics, StepAndRampLoadsAreIntegratedExactly) {
       const double t = f->step_time;
       const double want = ramp ? ramp_u(t) : step_u(t);
       EXPECT_NEAR(test::U(r, *f, 1)[0], want, 1e-8 * 0.01) << "t " << t << (ramp ? " ramp" : "");
+      const ElementResult* e = f->element(r.model->mesh.find_element(1));
+      const OutputBlock* S = e ? e->data.find(ElemVar::S) : nullptr;
+      ASSERT_NE(S, nullptr) << "t " << t;
+      EXPECT_NEAR(S->values[0], 100.0 * want, 1e-6 * 1.0) << "t " << t;
     }
+    for (const std::string& w : r.run.warnings)
+      EXPECT_EQ(w.find("element output"), std::string::npos) << w;
   }
 }
 
