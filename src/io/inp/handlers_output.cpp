@@ -55,15 +55,15 @@ bool number_line(const DataLine& line) {
   return any;
 }
 
-/// Reads variable names from all data lines; unknown names are errors (`strict`) or warnings.
+/// Reads variable names from all data lines; unknown names are left out with a warning.
 /// A line of numbers is a list of section points: appended to `points` when given (each must be
 /// positive), otherwise reported by `points_note`.
-/// `failed` (when given) counts the lines in error, so that a request whose only variable was
-/// unknown gets no false "no output variables are listed" as well.
+/// `failed` (when given) counts the lines in error (a section point out of range), so that their
+/// request gets no false "writes nothing" as well.
 template <typename V, typename Parse>
-std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool strict,
-                         const char* known, std::vector<int>* points = nullptr,
-                         const char* points_note = nullptr, int* failed = nullptr) {
+std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, const char* known,
+                         std::vector<int>* points = nullptr, const char* points_note = nullptr,
+                         int* failed = nullptr) {
   std::vector<V> vars;
   const int n_failed = for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
@@ -91,7 +91,6 @@ std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool str
       const std::string msg = fmt::format("gapfem does not know the output variable {}; it knows "
                                           "{} (components such as U1 or S11 are accepted)",
                                           line.fields[i], known);
-      if (strict) r.fail(fmt::format("variable {}", line.fields[i]), msg);
       s.warn(r.loc(), msg + "; the variable was left out");
     }
   });
@@ -99,18 +98,20 @@ std::vector<V> read_vars(BuildState& s, const Keyword& kw, Parse parse, bool str
   return vars;
 }
 
-/// The variables of a print or file request: those of read_vars in strict mode; a request
-/// without any is an error, unless its lines were reported already (an unknown variable).
+/// The variables of a print or file request (docs/keywords.md, "Output requests never stop a
+/// run"): unknown names are left out with a warning (read_vars); a request without data lines
+/// asks for `defaults` (CalculiX's: U for nodes, S for elements); a request whose every name was
+/// unknown writes nothing (empty: the caller drops it, with a warning here).
 template <typename V, typename Parse>
 std::vector<V> request_vars(BuildState& s, const Keyword& kw, Parse parse, const char* known,
-                            const char* example, std::vector<int>* points = nullptr) {
+                            std::initializer_list<V> defaults, std::vector<int>* points = nullptr) {
   int failed = 0;
-  std::vector<V> vars = read_vars<V>(s, kw, parse, true, known, points, nullptr, &failed);
-  if (vars.empty() && failed == 0)
-    throw InputError(kw.loc, "",
-                     fmt::format("no output variables are listed; add a data line such as {} "
-                                 "(known: {})",
-                                 example, known));
+  std::vector<V> vars = read_vars<V>(s, kw, parse, known, points, nullptr, &failed);
+  if (!vars.empty() || failed > 0) return vars;
+  if (kw.data.empty()) return defaults;
+  s.warn(kw.loc, fmt::format("{} lists no output variable gapfem writes, so it writes nothing "
+                             "(known: {})",
+                             kw.name, known));
   return vars;
 }
 
@@ -147,7 +148,7 @@ void handle_node_print(BuildState& s, const Keyword& kw) {
                                       "define it with *NSET in the model data"));
     req.nodes = *set;
   }
-  req.vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, "U, RF");
+  req.vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, {NodeVar::U});
   if (req.vars.empty()) return; // its unknown variables were reported
   s.scratch.node_print_given = true;
   s.step.node_prints.push_back(std::move(req));
@@ -162,11 +163,17 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
   const bool global = yes_no_param(kw, "GLOBAL", false);
   req.summary = yes_no_param(kw, "SUMMARY", true);
   totals_param(kw, req);
-  const int pos =
-      enum_param(kw, "POSITION", {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES"}, 0);
-  req.position = pos == 0   ? ElPosition::IntegrationPoints
-                 : pos == 1 ? ElPosition::Centroidal
-                            : ElPosition::Averaged;
+  // INTEGRATION POINT: the singular spelling Abaqus also accepts; NODES (each element's values
+  // extrapolated to its nodes, not averaged): printed averaged, with a warning
+  const int pos = enum_param(
+      kw, "POSITION",
+      {"INTEGRATION POINTS", "CENTROIDAL", "AVERAGED AT NODES", "INTEGRATION POINT", "NODES"}, 0);
+  if (pos == 4)
+    s.warn(kw.loc, "POSITION=NODES: job.dat prints the element values extrapolated to the nodes "
+                   "and averaged there (POSITION=AVERAGED AT NODES), not element by element");
+  req.position = pos == 0 || pos == 3 ? ElPosition::IntegrationPoints
+                 : pos == 1           ? ElPosition::Centroidal
+                                      : ElPosition::Averaged;
   req.elset = set_param(s, kw, "ELSET", false);
   if (req.elset.empty()) {
     req.elements.resize(static_cast<std::size_t>(s.model.mesh.n_elements()));
@@ -193,7 +200,8 @@ void handle_el_print(BuildState& s, const Keyword& kw) {
                                    element_info(s.model.mesh.elem_types[e]).name));
         break;
       }
-  req.vars = request_vars<ElemVar>(s, kw, elem_var, kElemVarList, "S, E", &req.section_points);
+  req.vars =
+      request_vars<ElemVar>(s, kw, elem_var, kElemVarList, {ElemVar::S}, &req.section_points);
   std::sort(req.section_points.begin(), req.section_points.end());
   if (req.vars.empty()) return; // its unknown variables were reported
   s.scratch.el_print_given = true;
@@ -204,11 +212,16 @@ void handle_output(BuildState& s, const Keyword& kw) {
   s.current_field = -1;
   s.parent = Parent::HistoryOutput; // until known: sub-options of a failed
                                     // *OUTPUT are skipped
-  reject_param(kw, "NUMBER INTERVAL", "use FREQUENCY=n (every n-th increment)");
-  reject_param(kw, "TIME INTERVAL", "use FREQUENCY=n (every n-th increment)");
-  const bool field = kw.has("FIELD");
-  const bool history = kw.has("HISTORY");
-  if (field == history) throw InputError(kw.loc, "", "give either FIELD or HISTORY on *OUTPUT");
+  for (const char* p : {"NUMBER INTERVAL", "TIME INTERVAL", "TIME MARKS"})
+    if (const Parameter* given = kw.find(p))
+      s.warn(kw.loc, fmt::format("{} on *OUTPUT is not supported by gapfem: the request writes at "
+                                 "the increments FREQUENCY=n gives (every increment by default)",
+                                 given->name));
+  const bool history = kw.has("HISTORY") && !kw.has("FIELD");
+  if (kw.has("FIELD") == kw.has("HISTORY"))
+    s.warn(kw.loc, fmt::format("*OUTPUT needs FIELD or HISTORY (one of them); {}: it was read as "
+                               "a field output request",
+                               kw.has("FIELD") ? "both are given" : "neither is given"));
   const int variable = enum_param(kw, "VARIABLE", {"PRESELECT", "ALL"}, -1);
   s.current_history = -1;
   if (history) { // values over time (docs/results.md, "History output")
@@ -295,7 +308,7 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<true>(s, kw, failed);
   if (!failed && s.parent == Parent::HistoryOutput && s.current_history >= 0) {
-    add_history_vars(s, kw, read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList), set, "NSET",
+    add_history_vars(s, kw, read_vars<NodeVar>(s, kw, node_var, kNodeVarList), set, "NSET",
                      s.step.history_outputs[s.current_history].node_vars);
     return;
   }
@@ -304,7 +317,7 @@ void handle_node_output(BuildState& s, const Keyword& kw) {
     return;
   }
   auto& req = s.step.field_outputs[s.current_field];
-  add_field_vars(read_vars<NodeVar>(s, kw, node_var, false, kNodeVarList), set, req.node_vars,
+  add_field_vars(read_vars<NodeVar>(s, kw, node_var, kNodeVarList), set, req.node_vars,
                  req.node_vars_everywhere, req.node_sets);
 }
 
@@ -312,7 +325,7 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
   bool failed = false;
   const auto* set = output_set<false>(s, kw, failed);
   if (!failed && s.parent == Parent::HistoryOutput && s.current_history >= 0) {
-    add_history_vars(s, kw, read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList), set, "ELSET",
+    add_history_vars(s, kw, read_vars<ElemVar>(s, kw, elem_var, kElemVarList), set, "ELSET",
                      s.step.history_outputs[s.current_history].elem_vars);
     return;
   }
@@ -322,7 +335,7 @@ void handle_element_output(BuildState& s, const Keyword& kw) {
   }
   auto& req = s.step.field_outputs[s.current_field];
   std::vector<ElemVar> vars =
-      read_vars<ElemVar>(s, kw, elem_var, false, kElemVarList, nullptr,
+      read_vars<ElemVar>(s, kw, elem_var, kElemVarList, nullptr,
                          "a list of section points on *ELEMENT OUTPUT: the ParaView "
                          "frames hold each element's average over its points, a "
                          "shell's SNEG and SPOS sides (S_SNEG, S_SPOS) and a beam's "
@@ -382,37 +395,68 @@ void handle_node_file(BuildState& s, const Keyword& kw) {
     req.members = *set;
   }
   if (failed) return kw.mark_read(); // its set's definition failed (reported)
-  req.node_vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, "U, RF");
+  req.node_vars = request_vars<NodeVar>(s, kw, node_var, kNodeVarList, {NodeVar::U});
   if (req.node_vars.empty()) return; // its unknown variables were reported
   s.scratch.node_file_given = true;
   s.step.file_outputs.push_back(std::move(req));
 }
 
-void handle_el_file(BuildState& s, const Keyword& kw) {
-  FileOutputRequest req = file_request(s, kw, true);
-  const int pos = enum_param(kw, "POSITION",
-                             {"AVERAGED AT NODES", "NODES", "INTEGRATION POINTS", "CENTROIDAL"}, 0);
-  if (pos >= 2)
-    s.warn(kw.loc, fmt::format("POSITION={}: job.frd holds element output at the nodes only, so "
-                               "it is written extrapolated and averaged at the nodes (Abaqus's "
-                               "POSITION=AVERAGED AT NODES); *EL PRINT prints it at the points",
-                               pos == 2 ? "INTEGRATION POINTS" : "CENTROIDAL"));
+namespace {
+
+/// The elements of *EL FILE: ELSET=, or (CalculiX) NSET=: the elements with a node in that set,
+/// whose values job.frd holds at all their nodes (a warning says so). False when the set's
+/// definition failed (reported).
+bool el_file_members(BuildState& s, const Keyword& kw, FileOutputRequest& req) {
   bool failed = false;
   if (const auto* set = output_set<false>(s, kw, failed)) {
     req.set = set_param(s, kw, "ELSET", true);
     req.members = *set;
   }
-  if (failed) return kw.mark_read(); // its set's definition failed (reported)
-  req.elem_vars = request_vars<ElemVar>(s, kw, elem_var, "S, E, HFL", "S, E");
-  for (ElemVar v : req.elem_vars)
-    if (v == ElemVar::SF || v == ElemVar::NFORC)
-      throw InputError(kw.loc, fmt::format("variable {}", elem_var_name(v)),
-                       v == ElemVar::SF
-                           ? "section forces are not written to job.frd (it holds values at the "
-                             "nodes); print them with *EL PRINT or write them to ParaView with "
-                             "*ELEMENT OUTPUT"
-                           : "element nodal forces are not written to job.frd; print them with "
-                             "*EL PRINT (job.dat and job.results.json)");
+  if (failed || !kw.has("NSET")) return !failed;
+  const auto* nodes = output_set<true>(s, kw, failed);
+  if (failed || !nodes) return !failed;
+  if (!req.set.empty())
+    throw InputError(kw.loc, "NSET", "give ELSET= or NSET= on *EL FILE, not both");
+  req.set = set_param(s, kw, "NSET", true);
+  std::vector<char> in(static_cast<std::size_t>(s.model.mesh.n_nodes()), 0);
+  for (NodeId n : *nodes) in[n] = 1;
+  for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e)
+    for (NodeId n : s.model.mesh.element_nodes(e))
+      if (in[n]) {
+        req.members.push_back(e);
+        break;
+      }
+  s.warn(kw.loc, fmt::format("NSET={} on *EL FILE (CalculiX): job.frd holds the element values of "
+                             "the {} elements with a node in the set, at all their nodes",
+                             req.set, req.members.size()));
+  return true;
+}
+
+} // namespace
+
+void handle_el_file(BuildState& s, const Keyword& kw) {
+  FileOutputRequest req = file_request(s, kw, true);
+  const int pos = enum_param(
+      kw, "POSITION",
+      {"AVERAGED AT NODES", "NODES", "INTEGRATION POINTS", "CENTROIDAL", "INTEGRATION POINT"}, 0);
+  if (pos >= 2)
+    s.warn(kw.loc, fmt::format("POSITION={}: job.frd holds element output at the nodes only, so "
+                               "it is written extrapolated and averaged at the nodes (Abaqus's "
+                               "POSITION=AVERAGED AT NODES); *EL PRINT prints it at the points",
+                               pos == 3 ? "CENTROIDAL" : "INTEGRATION POINTS"));
+  if (!el_file_members(s, kw, req)) return kw.mark_read(); // its set failed (reported)
+  req.elem_vars = request_vars<ElemVar>(s, kw, elem_var, "S, E, HFL", {ElemVar::S});
+  for (ElemVar v : {ElemVar::SF, ElemVar::NFORC})
+    if (const auto it = std::find(req.elem_vars.begin(), req.elem_vars.end(), v);
+        it != req.elem_vars.end()) {
+      s.warn(kw.loc, v == ElemVar::SF
+                         ? "section forces (SF) are not written to job.frd (it holds values at "
+                           "the nodes) and were left out; print them with *EL PRINT or write them "
+                           "to ParaView with *ELEMENT OUTPUT"
+                         : "element nodal forces (NFORC) are not written to job.frd and were left "
+                           "out; print them with *EL PRINT (job.dat and job.results.json)");
+      req.elem_vars.erase(it);
+    }
   if (req.elem_vars.empty()) return; // its unknown variables were reported
   s.scratch.el_file_given = true;
   s.step.file_outputs.push_back(std::move(req));

@@ -134,7 +134,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   // history: output
   {"*NODE PRINT", handle_node_print, W::History, "NSET|FREQUENCY|FREQ|TOTALS|SUMMARY|GLOBAL|FREQUENCYF"},
   {"*EL PRINT", handle_el_print, W::History, "ELSET|FREQUENCY|FREQ|POSITION|TOTALS|SUMMARY|GLOBAL|FREQUENCYF"},
-  {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|FREQ|VARIABLE|NUMBER INTERVAL|TIME INTERVAL|FREQUENCYF"},
+  {"*OUTPUT", handle_output, W::History, "FIELD|HISTORY|FREQUENCY|FREQ|VARIABLE|NUMBER INTERVAL|TIME INTERVAL|TIME MARKS|FREQUENCYF"},
   {"*NODE OUTPUT", handle_node_output, W::History, "NSET", kOutput},
   {"*ELEMENT OUTPUT", handle_element_output, W::History, "ELSET|DIRECTIONS|POSITION", kOutput},
   {"*NODE FILE", handle_node_file, W::History, "NSET|FREQUENCY|FREQ|GLOBAL|FREQUENCYF|OUTPUT|TOTALS"},
@@ -152,7 +152,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*MONITOR", handle_monitor, W::Both, "NODE|DOF|FREQUENCY|FREQ"},
   {"*PRINT", handle_print_control, W::Both, "*"},
   {"*DIAGNOSTICS", handle_print_control, W::Both, "*"},
-  {"*EL FILE", handle_el_file, W::History, "ELSET|FREQUENCY|FREQ|POSITION|GLOBAL|FREQUENCYF|OUTPUT|TOTALS"},
+  {"*EL FILE", handle_el_file, W::History, "ELSET|NSET|FREQUENCY|FREQ|POSITION|GLOBAL|FREQUENCYF|OUTPUT|TOTALS"},
 }};
 // clang-format on
 
@@ -202,20 +202,25 @@ std::string parent_names(unsigned parents) {
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 
-/// Unknown keywords that change nothing gapfem computes, so --ignore-unknown may skip them:
-/// output controls, and named definitions only used through parameters gapfem rejects anyway.
+/// Unknown keywords that change nothing gapfem computes: output requests and controls (always
+/// skipped with a warning: an output request never stops a run), and named definitions only used
+/// through parameters gapfem rejects anyway.
 bool skippable_keyword(const std::string& key) {
   static const char* const kSkippable[] = {"INTEGRATEDOUTPUT",  "INTEGRATEDOUTPUTSECTION",
                                            "NODERESPONSE",      "ELEMENTRESPONSE",
                                            "RADIATIONPRINT",    "RADIATIONFILE",
                                            "MODALPRINT",        "MODALFILE",
-                                           "SUBSTRUCTUREPRINT", "EQUATIONPRINT"};
+                                           "MODALOUTPUT",       "USEROUTPUTVARIABLES",
+                                           "SUBSTRUCTUREPRINT", "EQUATIONPRINT",
+                                           "INTERACTIONPRINT",  "INTERACTIONFILE",
+                                           "INTERACTIONOUTPUT", "SURFACEOUTPUT",
+                                           "RADIATIONOUTPUT",   "SECTIONOUTPUT"};
   for (const char* k : kSkippable)
     if (key == k) return true;
   return false;
 }
 
-/// Keywords whose unknown parameters --ignore-unknown may skip: output requests only.
+/// Keywords whose unknown parameters are skipped with a warning: output requests only.
 bool output_keyword(const std::string& key) {
   static const char* const kOutputKeys[] = {"NODEPRINT",     "ELPRINT",  "OUTPUT", "NODEOUTPUT",
                                             "ELEMENTOUTPUT", "NODEFILE", "ELFILE", "PREPRINT"};
@@ -310,6 +315,11 @@ std::vector<std::string> spec_params(const KeywordSpec& spec) {
 void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
              const std::string& key, bool parameter, const std::string& sentence = {}) {
   const bool skippable = parameter ? output_keyword(key) : skippable_keyword(key);
+  if (skippable && sentence.empty()) { // output only: never a stop
+    s.warn(loc, what + " is not supported by gapfem and was ignored (it controls output only, "
+                       "not the model)");
+    return;
+  }
   if (!sentence.empty()) {
     if (s.opts.ignore_unknown && skippable)
       s.warn(loc, sentence + "; it was ignored (--ignore-unknown)");

@@ -104,14 +104,6 @@ TEST(ReaderDataLines, AKeywordLineInErrorKeepsTheStepsInPlace) {
   expect_one_error(d, "X: this parameter is given twice");
 }
 
-TEST(ReaderDataLines, AnUnknownOutputVariableIsTheOnlyError) {
-  for (const char* request :
-       {"*NODE PRINT\nXYZ\n", "*EL PRINT\nXYZ\n", "*NODE FILE\nXYZ\n", "*EL FILE\nXYZ\n"})
-    expect_one_error(deck("", request), "variable XYZ: gapfem does not know the output variable");
-  // a request without any line still says so
-  expect_one_error(deck("", "*NODE PRINT\n"), "no output variables are listed");
-}
-
 TEST(ReaderDataLines, ASetThatListsItselfIsSaidSo) {
   expect_one_error(deck("*NSET, NSET=ENDS\n1, ENDS\n"),
                    "*NSET: node set ENDS: the set lists itself; a set cannot be defined in terms "
