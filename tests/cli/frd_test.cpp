@@ -199,11 +199,16 @@ TEST(FrdFile, NotWrittenWithoutARequest) {
   EXPECT_FALSE(std::filesystem::exists(test::test_dir() / "job.frd"));
 }
 
-TEST(FrdFile, SectionForcesAreRefused) {
+TEST(FrdFile, SectionForcesAreLeftOutWithAWarning) {
+  // an output request never stops a run: SF is not a nodal value, so job.frd gets S alone
   const JobResult r = test::run_deck(tension_deck("*EL FILE\nS, SF\n"), true);
-  EXPECT_EQ(r.exit_code, kExitInputError);
-  EXPECT_NE(r.error.find("section forces are not written to job.frd"), std::string::npos)
-      << r.error;
+  ASSERT_EQ(r.exit_code, kExitOk) << r.error;
+  int warned = 0;
+  for (const std::string& w : r.run.warnings)
+    warned += w.find("section forces (SF) are not written to job.frd") != std::string::npos;
+  EXPECT_EQ(warned, 1);
+  const std::string frd = test::slurp(test::test_dir() / "job.frd");
+  EXPECT_NE(frd.find("STRESS"), std::string::npos);
 }
 
 TEST(ElPrintAveragedAtNodes, OneRowPerNodeWithTheExtrapolatedValues) {

@@ -51,13 +51,15 @@ void handle_elastic(BuildState& s, const Keyword& kw) {
   reject_param(kw, "MODULI", "give the instantaneous isotropic moduli E and nu");
   once(s, kw, current_material(s).elastic);
   current_material(s).elastic = read_property_table(
-      s, kw, kw.data, {"Young's modulus E", "Poisson's ratio nu"}, [](const auto& v) {
+      s, kw, kw.data, {"Young's modulus E", "Poisson's ratio nu"},
+      [](const auto& v) {
         if (v[0] <= 0) return fmt::format("Young's modulus must be positive, not {}", v[0]);
         if (v[1] <= -1.0 || v[1] >= 0.5)
           return fmt::format("Poisson's ratio must lie between -1 and 0.5 (exclusive), not {}",
                              v[1]);
         return std::string();
-      });
+      },
+      1); // a blank Poisson's ratio is 0, as Abaqus reads a blank field
   s.bad_material_options.erase({s.current_material, 0});
 }
 

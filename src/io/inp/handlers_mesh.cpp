@@ -212,8 +212,9 @@ void handle_heading(BuildState& s, const Keyword& kw) {
 }
 
 void handle_node(BuildState& s, const Keyword& kw) {
-  reject_param(kw, "SYSTEM",
-               "give the coordinates in the global rectangular system (SYSTEM=R is the default)");
+  if (enum_param(kw, "SYSTEM", {"R", "C", "S"}, 0) != 0)
+    reject_param(kw, "SYSTEM",
+                 "give the coordinates in the global rectangular system (SYSTEM=R, the default)");
   check_outside_parts(s, kw, "nodes");
   const std::string nset = set_param(s, kw, "NSET", false);
   Mesh& mesh = s.model.mesh;
@@ -223,7 +224,14 @@ void handle_node(BuildState& s, const Keyword& kw) {
     const long long label = read_label(s, r, "node number");
     const Label key = s.key(label);
     try {
-      r.at_most(4, "node number, x, y, z");
+      r.at_most(7, "node number, x, y, z, and the direction cosines of a normal");
+      // fields 5-7: the node's normal (shells, beams); zero or blank ones define none
+      for (std::size_t i = 4; i < 7; ++i)
+        if (r.real_or(i, 0.0, "direction cosine of the normal") != 0.0)
+          r.fail(fmt::format("field {}", i + 1),
+                 "normals given on *NODE (fields 5-7) are not supported by gapfem, which takes "
+                 "the normals of shells and beams from the elements (*SHELL SECTION, the beam "
+                 "section's n1 direction); remove them or leave them blank");
       const Vec3 x =
           s.place({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")});
       const NodeId old = mesh.find_node(key);

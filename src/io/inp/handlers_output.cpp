@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <fmt/format.h>
 
 namespace gapfem::inp {
@@ -43,13 +44,18 @@ void add_unique(std::vector<T>& list, T v) {
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL, V, VR, A, AR";
 constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC";
 
-/// A data line of whole numbers only (a list of section points, read by read_vars)?
+/// A data line of numbers only (a list of section points, read by read_vars, which says which are
+/// not whole numbers in range)?
 bool number_line(const DataLine& line) {
   bool any = false;
   for (const auto& f : line.fields) {
     if (f.empty()) continue;
     long long v = 0;
-    if (check_integer(f, 0, 0, v) == IntCheck::NotWhole) return false;
+    if (check_integer(f, 0, 0, v) == IntCheck::NotWhole) {
+      char* end = nullptr;
+      std::strtod(f.c_str(), &end); // a real number (1e20, 2.5) is a section point in error
+      if (end == f.c_str() || *end != '\0') return false;
+    }
     any = true;
   }
   return any;

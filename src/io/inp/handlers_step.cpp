@@ -236,6 +236,9 @@ void handle_step(BuildState& s, const Keyword& kw) {
   Step& st = s.step;
   st.number = static_cast<int>(s.model.steps.size()) + 1;
   st.loc = kw.loc;
+  if (kw.has("INCF")) // CalculiX: the increments of its fluid solver
+    s.warn(kw.loc, "INCF (CalculiX's maximum number of fluid increments) has no meaning in "
+                   "gapfem, which has no fluid procedure; it was ignored");
   st.name = kw.has("NAME") ? std::string(trim(param_value(kw, "NAME", true)))
                            : fmt::format("Step-{}", st.number);
   for (const Step& other : s.model.steps)
@@ -332,8 +335,22 @@ void handle_end_step(BuildState& s, const Keyword& kw) {
   close_step(s);
 }
 
+namespace {
+
+/// SOLVER= on a procedure (CalculiX: SPOOLES, PARDISO, ITERATIVE SCALING, …): its own choice of
+/// linear solver, with no meaning here.
+void calculix_solver(BuildState& s, const Keyword& kw) {
+  if (const Parameter* p = kw.find("SOLVER"))
+    s.warn(kw.loc, fmt::format("{}, SOLVER={}: CalculiX's choice of its linear solver; gapfem "
+                               "solves with its own (the command line's --solver) and ignored it",
+                               kw.name, p->value));
+}
+
+} // namespace
+
 void handle_static(BuildState& s, const Keyword& kw) {
   set_procedure(s, kw, Procedure::Static); // first: a rejected option is no "missing procedure"
+  calculix_solver(s, kw);
   reject_param(kw, "RIKS", "use load or displacement control in a general *STATIC step");
   s.step.inc.direct = kw.has("DIRECT");
   s.step.inc.steady_state = true;
@@ -406,6 +423,7 @@ void read_hht_parameters(const Keyword& kw, DynamicSettings& d) {
 
 void handle_dynamic(BuildState& s, const Keyword& kw) {
   set_procedure(s, kw, Procedure::Dynamic);
+  calculix_solver(s, kw);
   reject_param(kw, "EXPLICIT", "gapfem is an implicit code; use *DYNAMIC without EXPLICIT");
   reject_param(kw, "SUBSPACE", "use the implicit integration of *DYNAMIC (SUBSPACE omitted)");
   reject_param(kw, "ADIABATIC", "gapfem's materials are elastic: there is no plastic heating");
@@ -455,11 +473,13 @@ void handle_dynamic(BuildState& s, const Keyword& kw) {
 
 void handle_heat_transfer(BuildState& s, const Keyword& kw) {
   set_procedure(s, kw, Procedure::HeatTransfer);
+  calculix_solver(s, kw);
   read_thermal_procedure(s, kw);
 }
 
 void handle_coupled(BuildState& s, const Keyword& kw) {
   set_procedure(s, kw, Procedure::CoupledTempDisp);
+  calculix_solver(s, kw);
   enum_param(kw, "CREEP", {"NONE"},
              0); // written by Abaqus/CAE; creep is not modelled
   read_thermal_procedure(s, kw);

@@ -272,11 +272,17 @@ int enum_param(const Keyword& kw, std::string_view param,
   const Parameter* p = kw.find(param);
   if (!p) return def;
   const std::string v = canonical(p->value);
-  int i = 0;
+  int i = 0, prefix_of = -1, prefixes = 0;
   for (auto c : choices) {
     if (canonical(c) == v) return i;
+    if (v.size() >= 3 && canonical(c).starts_with(v)) {
+      prefix_of = i;
+      ++prefixes;
+    }
     ++i;
   }
+  // Abaqus reads a value from as many first letters as tell it apart (Input Syntax Rules)
+  if (prefixes == 1) return prefix_of;
   std::string list;
   for (auto c : choices) list += (list.empty() ? "" : ", ") + std::string(c);
   throw InputError(kw.loc, fmt::format("{}={}", p->name, p->value),
@@ -337,7 +343,8 @@ void reject_param(const Keyword& kw, std::string_view param, std::string_view wh
 }
 
 PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
-                                  std::vector<std::string_view> names, RowCheck check) {
+                                  std::vector<std::string_view> names, RowCheck check,
+                                  std::size_t required) {
   if (const auto dep = dependencies_param(kw); dep > 0)
     throw InputError(kw.loc, fmt::format("DEPENDENCIES={}", dep),
                      "field-variable dependencies are not supported by gapfem; tabulate the data "
@@ -357,7 +364,9 @@ PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<co
     const FieldReader r = s.reader(kw, line);
     r.at_most(nv + 1, layout);
     Row row;
-    for (int i = 0; i < nv; ++i) row.v.push_back(r.real(i, names[i]));
+    for (int i = 0; i < nv; ++i)
+      row.v.push_back(static_cast<std::size_t>(i) < required ? r.real(i, names[i])
+                                                             : r.real_or(i, 0.0, names[i]));
     row.t = r.real_or(nv, 0.0, "temperature");
     row.loc = r.loc();
     if (check) {

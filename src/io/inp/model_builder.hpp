@@ -253,8 +253,10 @@ int for_each_line(BuildState& s, const Keyword& kw, F&& f) {
 using RowCheck = std::string (*)(const std::vector<double>& values);
 /// Reads rows of `names.size()` values plus an optional temperature column (Abaqus material-data
 /// layout) from `lines` into a table sorted by temperature. DEPENDENCIES > 0 on `kw` is rejected.
+/// The values from index `required` on may be blank: 0, as Abaqus reads a blank field.
 PropertyTable read_property_table(BuildState& s, const Keyword& kw, std::span<const DataLine> lines,
-                                  std::vector<std::string_view> names, RowCheck check);
+                                  std::vector<std::string_view> names, RowCheck check,
+                                  std::size_t required = static_cast<std::size_t>(-1));
 
 // ---------------------------------------------------------------- numbers
 /// The sentence for a DOF number gapfem does not have, {} standing for the number as written.

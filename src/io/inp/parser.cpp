@@ -99,11 +99,11 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   // model or history
   {"*BOUNDARY", handle_boundary, W::Both, "OP|AMPLITUDE|FIXED|TYPE"},
   // history: steps and procedures
-  {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|AMPLITUDE|UNSYMM|PERTURBATION|EXTRAPOLATION"},
+  {"*STEP", handle_step, W::Both, "NAME|NLGEOM|INC|INCF|AMPLITUDE|UNSYMM|PERTURBATION|EXTRAPOLATION"},
   {"*END STEP", handle_end_step, W::Both, ""},
-  {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE"},
-  {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END"},
-  {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP"},
+  {"*STATIC", handle_static, W::History, "DIRECT|RIKS|STABILIZE|ALLSDTOL|FACTOR|CONTINUE|SOLVER"},
+  {"*HEAT TRANSFER", handle_heat_transfer, W::History, "STEADY STATE|DELTMX|END|SOLVER"},
+  {"*COUPLED TEMPERATURE-DISPLACEMENT", handle_coupled, W::History, "STEADY STATE|DELTMX|END|CREEP|SOLVER"},
   {"*RESPONSE SPECTRUM", handle_response_spectrum, W::History, "COMP|SUM|RIGID RESPONSE"},
   {"*MODAL DAMPING", handle_modal_damping, W::History, "MODAL|RAYLEIGH|VISCOUS|STRUCTURAL|DEFINITION"},
   {"*SELECT EIGENMODES", handle_select_eigenmodes, W::History, "GENERATE|DEFINITION"},
@@ -113,7 +113,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*STEADY STATE DYNAMICS", handle_steady_state_dynamics, W::History, "DIRECT|SUBSPACE PROJECTION|FREQUENCY SCALE|INTERVAL|REAL ONLY|HARMONIC"},
   {"*MODAL DYNAMIC", handle_modal_dynamic, W::History, "CONTINUE|SOLVER|DIRECT|DELTMX"},
   {"*BASE MOTION", handle_base_motion, W::History, "DOF|AMPLITUDE|SCALE|TYPE|IMAGINARY|REAL|BASE NAME|LOAD CASE"},
-  {"*DYNAMIC", handle_dynamic, W::History, "ALPHA|BETA|GAMMA|APPLICATION|INITIAL|DIRECT|HAFTOL|NOHAF|TIME INTEGRATOR|IMPACT|SUBSPACE|EXPLICIT|ADIABATIC"},
+  {"*DYNAMIC", handle_dynamic, W::History, "ALPHA|BETA|GAMMA|APPLICATION|INITIAL|DIRECT|HAFTOL|NOHAF|TIME INTEGRATOR|IMPACT|SUBSPACE|EXPLICIT|ADIABATIC|SOLVER"},
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*SUBSTRUCTURE GENERATE", handle_substructure_generate, W::History, "TYPE|OVERWRITE|LIBRARY|MASS MATRIX|STRUCTURAL DAMPING MATRIX|VISCOUS DAMPING MATRIX|GRAVITY LOAD|RECOVERY MATRIX|NSET|ELSET|PROPERTY EVALUATION"},
   {"*RETAINED NODAL DOFS", handle_retained_nodal_dofs, W::History, "SORTED"},
@@ -186,6 +186,29 @@ bool accepts(const KeywordSpec& spec, const std::string& param_key) {
   return false;
 }
 
+/// Abaqus reads a parameter from as many of its first letters as tell it apart from the keyword's
+/// other parameters ("NLGEO" for NLGEOM, "AMP" for AMPLITUDE: Input Syntax Rules): a key of three
+/// letters or more that begins exactly one parameter of `spec` becomes that parameter.
+bool expand_abbreviation(const KeywordSpec& spec, Parameter& p) {
+  if (spec.params == "*" || p.key.size() < 3) return false;
+  std::string_view list = spec.params, found;
+  int matches = 0;
+  while (!list.empty()) {
+    const auto bar = list.find('|');
+    const std::string_view name = list.substr(0, bar);
+    if (canonical(name).starts_with(p.key)) {
+      found = name;
+      ++matches;
+    }
+    if (bar == std::string_view::npos) break;
+    list = list.substr(bar + 1);
+  }
+  if (matches != 1) return false;
+  p.key = canonical(found);
+  p.name = std::string(found);
+  return true;
+}
+
 std::string parent_names(unsigned parents) {
   if (parents == kMaterial || parents == (kMaterial | kSection)) // the latter: *DAMPING
     return "*MATERIAL (it defines a property of the material above it)";
@@ -202,20 +225,26 @@ std::string parent_names(unsigned parents) {
   return "*GAP (model data) or *CHANGE FRICTION (inside a step)";
 }
 
-/// Unknown keywords that change nothing gapfem computes: output requests and controls (always
-/// skipped with a warning: an output request never stops a run), and named definitions only used
-/// through parameters gapfem rejects anyway.
-bool skippable_keyword(const std::string& key) {
-  static const char* const kSkippable[] = {"INTEGRATEDOUTPUT",  "INTEGRATEDOUTPUTSECTION",
-                                           "NODERESPONSE",      "ELEMENTRESPONSE",
-                                           "RADIATIONPRINT",    "RADIATIONFILE",
-                                           "MODALPRINT",        "MODALFILE",
-                                           "MODALOUTPUT",       "USEROUTPUTVARIABLES",
-                                           "SUBSTRUCTUREPRINT", "EQUATIONPRINT",
-                                           "INTERACTIONPRINT",  "INTERACTIONFILE",
-                                           "INTERACTIONOUTPUT", "SURFACEOUTPUT",
-                                           "RADIATIONOUTPUT",   "SECTIONOUTPUT"};
-  for (const char* k : kSkippable)
+/// Unknown keywords that change nothing gapfem computes: output requests and controls (`output`:
+/// always skipped with a warning, an output request never stops a run), and named definitions
+/// only used through parameters gapfem rejects anyway (skipped under --ignore-unknown).
+bool skippable_keyword(const std::string& key, bool* output = nullptr) {
+  static const char* const kOutput[] = {"INTEGRATEDOUTPUT",    "INTEGRATEDOUTPUTSECTION",
+                                        "RADIATIONPRINT",      "RADIATIONFILE",
+                                        "RADIATIONOUTPUT",     "MODALPRINT",
+                                        "MODALFILE",           "MODALOUTPUT",
+                                        "USEROUTPUTVARIABLES", "SUBSTRUCTUREPRINT",
+                                        "EQUATIONPRINT",       "INTERACTIONPRINT",
+                                        "INTERACTIONFILE",     "INTERACTIONOUTPUT",
+                                        "SURFACEOUTPUT",       "SECTIONOUTPUT"};
+  static const char* const kDefinitions[] = {"NODERESPONSE", "ELEMENTRESPONSE"};
+  if (output) *output = false;
+  for (const char* k : kOutput)
+    if (key == k) {
+      if (output) *output = true;
+      return true;
+    }
+  for (const char* k : kDefinitions)
     if (key == k) return true;
   return false;
 }
@@ -314,8 +343,9 @@ std::vector<std::string> spec_params(const KeywordSpec& spec) {
 /// warning under --ignore-unknown; everything else is an error.
 void unknown(BuildState& s, const SourceLocation& loc, const std::string& what,
              const std::string& key, bool parameter, const std::string& sentence = {}) {
-  const bool skippable = parameter ? output_keyword(key) : skippable_keyword(key);
-  if (skippable && sentence.empty()) { // output only: never a stop
+  bool output = parameter && output_keyword(key);
+  const bool skippable = parameter ? output : skippable_keyword(key, &output);
+  if (output && sentence.empty()) { // output only: never a stop
     s.warn(loc, what + " is not supported by gapfem and was ignored (it controls output only, "
                        "not the model)");
     return;
@@ -636,8 +666,9 @@ void dispatch(BuildState& s, Keyword& kw) {
     s.error(kw.loc, "", fmt::format("{} is model data; move it before the first *STEP", kw.name));
     return;
   }
-  for (const auto& p : kw.params)
-    if (!accepts(*spec, p.key)) unknown_parameter(s, kw, *spec, p);
+  for (auto& p : kw.params)
+    if (!accepts(*spec, p.key) && !expand_abbreviation(*spec, p))
+      unknown_parameter(s, kw, *spec, p);
   spec->handler(s, kw);
   report_unread_lines(s, kw);
   if (spec->handler == handle_end_instance) expand_instance(s);

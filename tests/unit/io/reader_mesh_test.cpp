@@ -53,7 +53,8 @@ TEST(ReaderMesh, NodeErrors) {
       "deck.inp:2: *NODE: field 1 (node number): 0 is out of range: node and element numbers run "
       "from 1 to 999999999");
   EXPECT_CONTAINS(error_text("*NODE\nA, 1.\n"), "field 1 (node number): 'A' is not a whole number");
-  EXPECT_CONTAINS(error_text("*NODE\n1, 1., 2., 3., 4.\n"), "at most 4 fields");
+  EXPECT_CONTAINS(error_text("*NODE\n1, 1., 2., 3., 4.\n"), "field 5: normals given on *NODE");
+  EXPECT_CONTAINS(error_text("*NODE\n1, 1., 2., 3., 0., 0., 1., 9.\n"), "at most 7 fields");
 }
 
 TEST(ReaderMesh, ElementWithoutDataLinesIsRemarked) {

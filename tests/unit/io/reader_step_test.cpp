@@ -114,8 +114,9 @@ TEST(ReaderStep, StructureErrors) {
       "deck.inp:13: *STEP: step 1: the step that starts at deck.inp:11 (*STEP) has no *END STEP");
   EXPECT_CONTAINS(error_text(with("*END STEP\n")),
                   "deck.inp:11: *END STEP: *END STEP without a matching *STEP");
-  EXPECT_CONTAINS(error_text(with("*STEP\n*END STEP\n")),
-                  "deck.inp:11: *STEP: step 1: the step has no procedure; add one after *STEP: *STATIC");
+  EXPECT_CONTAINS(
+      error_text(with("*STEP\n*END STEP\n")),
+      "deck.inp:11: *STEP: step 1: the step has no procedure; add one after *STEP: *STATIC");
   EXPECT_CONTAINS(
       error_text(with("*STEP\n*STATIC\n*HEAT TRANSFER\n*END STEP\n")),
       "deck.inp:13: *HEAT TRANSFER: step 1: a step has exactly one procedure and this step "
