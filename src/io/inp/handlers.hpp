@@ -12,6 +12,9 @@ namespace gapfem::inp {
 void handle_heading(BuildState& s, const Keyword& kw);
 void handle_node(BuildState& s, const Keyword& kw);
 void handle_element(BuildState& s, const Keyword& kw);
+void handle_ngen(BuildState& s, const Keyword& kw);
+void handle_nfill(BuildState& s, const Keyword& kw);
+void handle_elgen(BuildState& s, const Keyword& kw);
 void handle_nset(BuildState& s, const Keyword& kw);
 void handle_elset(BuildState& s, const Keyword& kw);
 void handle_surface(BuildState& s, const Keyword& kw);
