@@ -2,6 +2,7 @@
 
 #include "io/inp/diagnostics.hpp"
 #include "io/inp/lexer.hpp"
+#include "io/inp/parameters.hpp"
 #include "io/inp/parser.hpp"
 
 #include <algorithm>
@@ -70,6 +71,7 @@ Model build(inp::Deck deck, const ReadOptions& opts, inp::Diagnostics& diag) {
   inp::BuildState state(opts, diag);
   state.model.source_files = deck.files;
   try {
+    inp::substitute_parameters(deck, diag); // *PARAMETER and <name>, before anything reads
     inp::parse_deck(deck, state);
   } catch (const inp::TooManyErrors&) {
     // the collected errors are thrown below
