@@ -12,6 +12,7 @@ namespace gapfem::inp {
 void handle_heading(BuildState& s, const Keyword& kw);
 void handle_node(BuildState& s, const Keyword& kw);
 void handle_element(BuildState& s, const Keyword& kw);
+void handle_system(BuildState& s, const Keyword& kw);
 void handle_ngen(BuildState& s, const Keyword& kw);
 void handle_nfill(BuildState& s, const Keyword& kw);
 void handle_elgen(BuildState& s, const Keyword& kw);

@@ -17,6 +17,7 @@ namespace {
 /// Keywords a part may hold (canonical names). Others (materials, steps, …) belong to the model.
 bool part_keyword(const std::string& key) {
   static const char* const kAllowed[] = {"NODE",
+                                         "SYSTEM",
                                          "NGEN",
                                          "NFILL",
                                          "ELEMENT",

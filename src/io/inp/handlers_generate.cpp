@@ -1,4 +1,5 @@
-// Abaqus's mesh generators (docs/keywords.md, *NGEN, *NFILL, *ELGEN): *NGEN (nodes along a line,
+// Abaqus's mesh generators and *SYSTEM (docs/keywords.md): *SYSTEM (the local system later node
+// coordinates are given in), *NGEN (nodes along a line,
 // a circular arc or a parabola between two end nodes), *NFILL (lines of equally spaced nodes
 // between two bounding node sets) and *ELGEN (rows, layers and planes of elements copied from a
 // master element with node and element number increments). They create what *NODE and *ELEMENT
@@ -146,9 +147,9 @@ Vec3 extra_point(BuildState& s, const FieldReader& r, int system) {
   if (r.blank(4) && r.blank(5) && r.blank(6))
     r.fail("", "LINE=C and LINE=P need an extra point: its node number in field 4, or its "
                "coordinates in fields 5-7");
-  return s.place(rectangular(system, {r.real_or(4, 0.0, "first coordinate of the extra point"),
-                                      r.real_or(5, 0.0, "second coordinate"),
-                                      r.real_or(6, 0.0, "third coordinate")}));
+  return s.place(s.from_system(rectangular(
+      system, {r.real_or(4, 0.0, "first coordinate of the extra point"),
+               r.real_or(5, 0.0, "second coordinate"), r.real_or(6, 0.0, "third coordinate")})));
 }
 
 /// The normal of an arc of 180 degrees or more (fields 8-10), when given.
@@ -171,6 +172,57 @@ long long intervals(const FieldReader& r, long long first, long long last, long 
 }
 
 } // namespace
+
+void handle_system(BuildState& s, const Keyword& kw) {
+  BuildState::Scope& sc = s.scope;
+  sc.local_system = false; // without data lines: back to the global system
+  std::vector<const DataLine*> lines;
+  for (const DataLine& d : kw.data)
+    if (!d.empty()) lines.push_back(&d);
+  if (lines.empty()) return kw.mark_read();
+  if (lines.size() > 2) s.reader(kw, *lines[2]).fail("", "*SYSTEM takes at most two data lines");
+  const FieldReader r = s.reader(kw, *lines[0]);
+  r.at_most(6, "origin Xa, Ya, Za, a point on the local X1-axis Xb, Yb, Zb");
+  const Vec3 a{r.real_or(0, 0.0, "Xa"), r.real_or(1, 0.0, "Ya"), r.real_or(2, 0.0, "Za")};
+  std::array<double, 9> axes{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  if (!r.blank(3) || !r.blank(4) || !r.blank(5)) {
+    Vec3 x1{r.real_or(3, 0.0, "Xb") - a[0], r.real_or(4, 0.0, "Yb") - a[1],
+            r.real_or(5, 0.0, "Zb") - a[2]};
+    Vec3 z{0.0, 0.0, 1.0};
+    double scale = 1.0;      // |z| below 1e-12 of it: the points are in line
+    if (lines.size() == 2) { // the X1-Y1 plane through point c, on the side of +Y1
+      const FieldReader r2 = s.reader(kw, *lines[1]);
+      r2.at_most(3, "a point in the local X1-Y1 plane Xc, Yc, Zc");
+      const Vec3 c{r2.real_or(0, 0.0, "Xc") - a[0], r2.real_or(1, 0.0, "Yc") - a[1],
+                   r2.real_or(2, 0.0, "Zc") - a[2]};
+      z = cross(x1, c);
+      scale = norm(x1) * norm(c);
+    } else { // Z unchanged, X1 projected onto the X-Y plane
+      x1[2] = 0.0;
+    }
+    const double lx = norm(x1), lz = norm(z);
+    if (!(lx > 0.0) || !(lz > 1e-12 * scale))
+      r.fail("", "the points do not define the local axes: point b must lie off the origin (and, "
+                 "without a second line, off the global Z-axis through it), and point c off the "
+                 "X1-axis");
+    x1 = {x1[0] / lx, x1[1] / lx, x1[2] / lx};
+    z = {z[0] / lz, z[1] / lz, z[2] / lz};
+    const Vec3 y1 = cross(z, x1);
+    for (int i = 0; i < 3; ++i) {
+      axes[3 * i] = x1[i];
+      axes[3 * i + 1] = y1[i];
+      axes[3 * i + 2] = z[i];
+    }
+  } else if (lines.size() == 2) {
+    s.reader(kw, *lines[1])
+        .fail("", "a point in the X1-Y1 plane needs the point on the X1-axis "
+                  "(fields 4-6 of the first line)");
+  }
+  for (const DataLine* d : lines) d->read = true;
+  sc.local_system = true;
+  sc.system_origin = a;
+  sc.system_axes = axes;
+}
 
 void handle_ngen(BuildState& s, const Keyword& kw) {
   const int line_kind = enum_param(kw, "LINE", {"L", "C", "P"}, 0);

@@ -232,8 +232,8 @@ void handle_node(BuildState& s, const Keyword& kw) {
                  "normals given on *NODE (fields 5-7) are not supported by gapfem, which takes "
                  "the normals of shells and beams from the elements (*SHELL SECTION, the beam "
                  "section's n1 direction); remove them or leave them blank");
-      const Vec3 x =
-          s.place({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")});
+      const Vec3 x = s.place(
+          s.from_system({r.real_or(1, 0.0, "x"), r.real_or(2, 0.0, "y"), r.real_or(3, 0.0, "z")}));
       const NodeId old = mesh.find_node(key);
       if (old >= 0 && s.awaiting.erase(old)) { // named by an *ELEMENT or *NSET above
         mesh.coords[old] = x;

@@ -10,6 +10,15 @@ namespace gapfem::inp {
 
 // ---------------------------------------------------------------- scope
 
+Vec3 BuildState::from_system(const Vec3& x) const {
+  if (!scope.local_system) return x;
+  const auto& A = scope.system_axes;
+  Vec3 out{};
+  for (int i = 0; i < 3; ++i)
+    out[i] = scope.system_origin[i] + A[3 * i] * x[0] + A[3 * i + 1] * x[1] + A[3 * i + 2] * x[2];
+  return out;
+}
+
 Vec3 BuildState::place(const Vec3& x) const {
   if (!scope.placed) return x;
   // translation first, then the rotation about the axis through axis_point (Abaqus *INSTANCE)

@@ -170,6 +170,11 @@ struct BuildState {
     bool placed = false;
     Vec3 translation{}, axis_point{};
     std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1}; ///< row-major
+    /// *SYSTEM: the local system later *NODE coordinates are given in (origin, then its axes as
+    /// the columns of a row-major rotation); none: global
+    bool local_system = false;
+    Vec3 system_origin{};
+    std::array<double, 9> system_axes{1, 0, 0, 0, 1, 0, 0, 0, 1};
   };
   Scope scope;
   /// A *PART ... *END PART block: its keywords, read again for every instance.
@@ -207,6 +212,8 @@ struct BuildState {
   std::string set_name(const std::string& upper) const { return scope.prefix + upper; }
   /// Reference coordinates of a node read in the current scope (placed by its instance).
   Vec3 place(const Vec3& x) const;
+  /// Coordinates entered in the current *SYSTEM (none: as they are), before place().
+  Vec3 from_system(const Vec3& x) const;
 
   // ---------------------------------------------------------------- helpers
   /// Location of a data line of `kw`.

@@ -38,6 +38,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*INSTANCE", handle_instance, W::Model, "NAME|PART"},
   {"*END INSTANCE", handle_end_instance, W::Model, ""},
   {"*NODE", handle_node, W::Model, "NSET|INPUT|SYSTEM"},
+  {"*SYSTEM", handle_system, W::Model, ""},
   {"*NGEN", handle_ngen, W::Model, "LINE|NSET|SYSTEM"},
   {"*NFILL", handle_nfill, W::Model, "NSET|BIAS|SINGULAR|TWO STEP"},
   {"*ELGEN", handle_elgen, W::Model, "ELSET"},
@@ -239,7 +240,8 @@ bool skippable_keyword(const std::string& key, bool* output = nullptr) {
                                         "USEROUTPUTVARIABLES", "SUBSTRUCTUREPRINT",
                                         "EQUATIONPRINT",       "INTERACTIONPRINT",
                                         "INTERACTIONFILE",     "INTERACTIONOUTPUT",
-                                        "SURFACEOUTPUT",       "SECTIONOUTPUT"};
+                                        "SURFACEOUTPUT",       "SECTIONOUTPUT",
+                                        "TIMEPOINTS"};
   static const char* const kDefinitions[] = {"NODERESPONSE", "ELEMENTRESPONSE"};
   if (output) *output = false;
   for (const char* k : kOutput)

@@ -1,4 +1,5 @@
-// Abaqus's mesh generators *NGEN, *NFILL and *ELGEN (io/inp/handlers_generate.cpp) against the
+// Abaqus's mesh generators *NGEN, *NFILL and *ELGEN and the local system *SYSTEM
+// (io/inp/handlers_generate.cpp) against the
 // nodes and elements written out by hand: straight lines, circular arcs (under and over 180
 // degrees), parabolas, biased fills, rows/layers/planes of elements, and a whole analysis of a
 // generated block against its expanded twin (the same displacements at every node).
@@ -160,6 +161,29 @@ TEST(ReaderGenerate, AGeneratedBlockGivesItsExpandedTwinsAnswer) {
           EXPECT_NEAR(test::U(a, *fa, n)[c], test::U(w, *fw, n)[c], 1e-12) << "node " << n;
       }
   EXPECT_LT(test::U(a, *fa, 14)[2], -1e-3); // it bends
+}
+
+TEST(ReaderGenerate, SystemGivesTheLaterNodesLocalCoordinates) {
+  // a translation; then X1 toward (0, 1, 5) projected onto X-Y (Z kept): X1 = Y, Y1 = -X; then
+  // X1 = Z through (1, 1, 1) with c on +X: Z1 = X1 x (c - a) = Y, Y1 = X; then global again
+  const Model m = read("*SYSTEM\n10., 0., 0.\n*NODE\n1, 1., 2., 3.\n*SYSTEM\n0., 0., 0., 0., "
+                       "1., 5.\n*NODE\n2, 1., 2., 3.\n*SYSTEM\n1., 1., 1., 1., 1., 2.\n2., 1., "
+                       "1.\n*NODE\n3, 1., 2., 3.\n*SYSTEM\n*NODE\n4, 1., 2., 3.\n");
+  expect_at(m, 1, {11.0, 2.0, 3.0});
+  expect_at(m, 2, {-2.0, 1.0, 3.0});
+  expect_at(m, 3, {3.0, 4.0, 2.0});
+  expect_at(m, 4, {1.0, 2.0, 3.0});
+  // an *NGEN extra point given by coordinates is entered in the system too
+  const Model p = read("*SYSTEM\n0., 0., 1.\n*NODE\n1, 0., 0., -1.\n3, 2., 0., -1.\n"
+                       "*NGEN, LINE=P\n1, 3, 1, , 1., 1., -1.\n");
+  expect_at(p, 2, {1.0, 1.0, 0.0});
+  EXPECT_CONTAINS(error_text("*SYSTEM\n0., 0., 0., 0., 0., 7.\n"),
+                  "the points do not define the local axes");
+}
+
+TEST(ReaderGenerate, TimePointsAreAnOutputDefinition) {
+  const Model m = read("*NODE\n1, 0., 0., 0.\n*TIME POINTS, NAME=T1\n0.1, 0.5, 1.\n");
+  EXPECT_EQ(test::count_warnings(m, "*TIME POINTS is not supported by gapfem and was ignored"), 1);
 }
 
 TEST(ReaderGenerate, BadGeneratorLinesAreOneClearErrorEach) {
