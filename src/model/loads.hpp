@@ -54,6 +54,10 @@ enum class DistLoadKind : std::uint8_t {
   /// PIPE31/PIPE32: PI (face 1, internal) or PE (face 2, external) pressure, closed-end condition;
   /// HPI/HPE (`hydrostatic`) the same with a pressure varying linearly with height
   PipePressure,
+  /// CENTRIF: magnitude omega^2 (angular velocity squared); the axis runs through `point` along
+  /// `direction` (unit); force rho omega^2 r per volume, r the distance vector from the axis at
+  /// the current position (NLGEOM, with its load stiffness) or the reference one
+  Centrifugal,
 };
 
 /// *DLOAD / *DSLOAD / *DFLUX / *DSFLUX / *FILM / *SFILM entry, per element (and face).
@@ -62,7 +66,8 @@ struct DistributedLoad {
   DistLoadKind kind = DistLoadKind::Pressure;
   int face = 0;           ///< 1-based face (Pn, Sn, Fn, surface faces), 0: body or whole element
   double magnitude = 0.0; ///< pressure, g, body force, flux, film coefficient
-  Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV and BX/BY/BZ direction (unit vector)
+  Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV, BX/BY/BZ direction, CENTRIF axis (unit vector)
+  Vec3 point{0.0, 0.0, 0.0};     ///< CENTRIF: a point of the rotation axis
   double sink_temperature = 0.0; ///< Film
   double diameter = 0.0;         ///< PI/PE: effective diameter (0: the section's)
   /// HPI/HPE: p = magnitude (z0 - z) / (z0 - z1) at height z (global Z; Y in planar models),

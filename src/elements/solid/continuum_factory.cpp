@@ -19,22 +19,23 @@ std::string first_entity(const KernelContext& ctx) {
                               : fmt::format("element {}", ctx.model.element_label(ctx.elements[0]));
 }
 
-/// GRAV needs a density: report the first GRAV load on an element of this block.
+/// GRAV and CENTRIF need a density: report the first such load on an element of this block.
 void check_gravity_density(const KernelContext& ctx, const Material& mat) {
   if (!mat.density.empty()) return;
   std::vector<ElemId> sorted;
   for (const Step& step : ctx.model.steps)
     for (const DistributedLoad& ld : step.dloads) {
-      if (ld.kind != DistLoadKind::Gravity) continue;
+      if (ld.kind != DistLoadKind::Gravity && ld.kind != DistLoadKind::Centrifugal) continue;
       if (sorted.empty()) {
         sorted.assign(ctx.elements.begin(), ctx.elements.end());
         std::sort(sorted.begin(), sorted.end());
       }
       if (!std::binary_search(sorted.begin(), sorted.end(), ld.elem)) continue;
       const EntityLabel label = ctx.model.element_label(ld.elem);
-      throw InputError(
-          ld.loc, fmt::format("element {}", label),
-          fmt::format("GRAV on element {} needs *DENSITY in material {}", label, mat.name));
+      throw InputError(ld.loc, fmt::format("element {}", label),
+                       fmt::format("{} on element {} needs *DENSITY in material {}",
+                                   ld.kind == DistLoadKind::Gravity ? "GRAV" : "CENTRIF", label,
+                                   mat.name));
     }
 }
 

@@ -328,7 +328,9 @@ class ContinuumKernel final : public ElementKernel {
   bool supports_load(DistLoadKind kind, int face) const override {
     if (kind == DistLoadKind::Pressure)
       return face >= 1 && face <= static_cast<int>(element_faces(Tr::shape).size());
-    return (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce) && face == 0;
+    return (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce ||
+            kind == DistLoadKind::Centrifugal) &&
+           face == 0;
   }
 
   void load(const ElementInput& in, const DistributedLoad& ld, double magnitude, double,

@@ -125,36 +125,98 @@ void continuum_face_pressure(const LoadGeometry& g, int face, double p, bool fol
   }
 }
 
-void continuum_body_force(const LoadGeometry& g, const Vec3& b, std::span<double> f) {
+namespace {
+
+/// The reference volume per quadrature weight at a point of the element's body (shape values N,
+/// derivatives dN): det J, times 2 pi r for axisymmetric elements and the thickness for plane ones.
+double reference_volume_factor(const LoadGeometry& g, const double* N, const double* dN) {
   const int n = shape_n_nodes(g.cell);
   const int dim = shape_dim(g.cell);
+  double J[3][3] = {};
+  for (int a = 0; a < n; ++a)
+    for (int i = 0; i < dim; ++i)
+      for (int k = 0; k < dim; ++k) J[i][k] += g.X[a][i] * dN[dim * a + k];
+  if (dim == 3)
+    return J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
+           J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+           J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+  const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+  if (g.kin != Kinematics::Axisymmetric) return det * g.thickness;
+  double r = 0.0; // (the reference radius: the ring's mass)
+  for (int a = 0; a < n; ++a) r += N[a] * g.X[a][0];
+  return det * 2.0 * std::numbers::pi * r;
+}
+
+} // namespace
+
+void continuum_body_force(const LoadGeometry& g, const Vec3& b, std::span<double> f) {
+  const int n = shape_n_nodes(g.cell);
   const int nd = displacement_dofs(g.kin);
   std::array<double, kMaxNodes> N{};
   std::array<double, 3 * kMaxNodes> dN{};
   for (const QuadraturePoint& q : body_rule(g.cell)) {
     shape_eval(g.cell, q.xi, N, dN);
-    double J[3][3] = {};
-    for (int a = 0; a < n; ++a)
-      for (int i = 0; i < dim; ++i)
-        for (int k = 0; k < dim; ++k) J[i][k] += g.X[a][i] * dN[dim * a + k];
-    double det = 0.0, weight = 1.0;
-    if (dim == 3) {
-      det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) -
-            J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-            J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-    } else {
-      det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-      if (g.kin == Kinematics::Axisymmetric) {
-        double r = 0.0;
-        for (int a = 0; a < n; ++a) r += N[a] * g.X[a][0];
-        weight = 2.0 * std::numbers::pi * r;
-      } else {
-        weight = g.thickness;
-      }
-    }
-    const double dV = q.weight * det * weight;
+    const double dV = q.weight * reference_volume_factor(g, N.data(), dN.data());
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < nd; ++i) f[a * g.dofs_per_node + i] += N[a] * b[i] * dV;
+  }
+}
+
+namespace {
+
+/// The axis a plane or axisymmetric element's CENTRIF can use (an InputError otherwise).
+void check_centrifugal_axis(const LoadGeometry& g, const Vec3& point, const Vec3& axis,
+                            const SourceLocation& loc, const std::string& label) {
+  if (g.kin == Kinematics::ThreeD) return;
+  const double tol = 1e-9;
+  if (g.kin == Kinematics::Axisymmetric) {
+    if (std::abs(std::abs(axis[1]) - 1.0) > tol || std::abs(point[0]) > tol)
+      throw InputError(loc, label,
+                       "CENTRIF on an axisymmetric element turns about the symmetry axis: give "
+                       "the axis through (0, 0, 0) along (0, 1, 0)");
+    return;
+  }
+  if (std::abs(std::abs(axis[2]) - 1.0) > tol)
+    throw InputError(loc, label,
+                     "CENTRIF on a plane element needs the rotation axis normal to the model's "
+                     "plane, along (0, 0, 1)");
+}
+
+} // namespace
+
+void continuum_centrifugal(const LoadGeometry& g, double rho_omega2, const Vec3& point,
+                           const Vec3& axis, bool follower, std::span<double> f,
+                           std::span<double> tangent, const SourceLocation& loc,
+                           const std::string& label) {
+  check_centrifugal_axis(g, point, axis, loc, label);
+  const int n = shape_n_nodes(g.cell);
+  const int dim = shape_dim(g.cell);
+  const int nd = displacement_dofs(g.kin);
+  const int stride = g.dofs_per_node, n_dofs = n * stride;
+  std::array<double, kMaxNodes> N{};
+  std::array<double, 3 * kMaxNodes> dN{};
+  for (const QuadraturePoint& q : body_rule(g.cell)) {
+    shape_eval(g.cell, q.xi, N, dN);
+    Vec3 x{0.0, 0.0, 0.0};
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < dim; ++i)
+        x[i] += N[a] * (g.X[a][i] + (follower ? g.u[a * stride + i] : 0.0));
+    const double dV = q.weight * reference_volume_factor(g, N.data(), dN.data());
+    // r = (x - p) - ((x - p) . a) a
+    const Vec3 d{x[0] - point[0], x[1] - point[1], x[2] - point[2]};
+    const double along = d[0] * axis[0] + d[1] * axis[1] + d[2] * axis[2];
+    const Vec3 r{d[0] - along * axis[0], d[1] - along * axis[1], d[2] - along * axis[2]};
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < nd; ++i) f[a * stride + i] += N[a] * rho_omega2 * r[i] * dV;
+    if (!follower || tangent.empty()) continue;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        for (int i = 0; i < nd; ++i)
+          for (int j = 0; j < nd; ++j) {
+            const double P = (i == j ? 1.0 : 0.0) - axis[i] * axis[j];
+            tangent[static_cast<std::size_t>((a * stride + i) * n_dofs + b * stride + j)] -=
+                N[a] * N[b] * rho_omega2 * P * dV;
+          }
   }
 }
 
@@ -170,6 +232,23 @@ double continuum_reference_volume(const LoadGeometry& g) {
   return v;
 }
 
+namespace {
+
+/// The density of the element's material at its mean temperature (GRAV and CENTRIF need one).
+double load_density(const ElementInput& in, const DistributedLoad& ld, const Material& mat,
+                    const char* label) {
+  if (mat.density.empty())
+    throw InputError(
+        ld.loc, fmt::format("element {}", in.label),
+        fmt::format("{} on element {} needs *DENSITY in material {}", label, in.label, mat.name));
+  const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
+  double mean = 0.0;
+  for (double t : T) mean += t / static_cast<double>(T.size());
+  return mat.density.value(mean);
+}
+
+} // namespace
+
 void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
                                 const DistributedLoad& ld, double magnitude, const Material& mat,
                                 std::span<double> f, std::span<double> tangent) {
@@ -179,14 +258,7 @@ void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
     continuum_face_pressure(g, ld.face, magnitude, nlgeom, f, tangent);
     return;
   case DistLoadKind::Gravity: {
-    if (mat.density.empty())
-      throw InputError(
-          ld.loc, fmt::format("element {}", in.label),
-          fmt::format("GRAV on element {} needs *DENSITY in material {}", in.label, mat.name));
-    const auto& T = in.temperature.empty() ? in.initial_temperature : in.temperature;
-    double mean = 0.0;
-    for (double t : T) mean += t / static_cast<double>(T.size());
-    const double rho = mat.density.value(mean);
+    const double rho = load_density(in, ld, mat, "GRAV");
     continuum_body_force(g,
                          {rho * magnitude * ld.direction[0], rho * magnitude * ld.direction[1],
                           rho * magnitude * ld.direction[2]},
@@ -197,6 +269,11 @@ void continuum_distributed_load(const LoadGeometry& g, const ElementInput& in,
     continuum_body_force(
         g, {magnitude * ld.direction[0], magnitude * ld.direction[1], magnitude * ld.direction[2]},
         f);
+    return;
+  case DistLoadKind::Centrifugal:
+    continuum_centrifugal(g, load_density(in, ld, mat, "CENTRIF") * magnitude, ld.point,
+                          ld.direction, nlgeom, f, tangent, ld.loc,
+                          fmt::format("element {}", in.label));
     return;
   default:
     return;

@@ -23,6 +23,16 @@ struct LoadGeometry {
   double thickness = 1.0;    ///< plane elements
 };
 
+/// CENTRIF: the body force rho omega^2 r per reference volume, r the distance vector from the
+/// axis (through `point` along unit `axis`) of the current position X + u (`follower`, NLGEOM:
+/// -df/du = -rho omega^2 (I - a a^T) N_a N_b dV is added to `tangent`) or of X. Plane elements
+/// need the axis normal to their plane, axisymmetric ones the symmetry axis (InputError
+/// otherwise, naming `label`).
+void continuum_centrifugal(const LoadGeometry& g, double rho_omega2, const Vec3& point,
+                           const Vec3& axis, bool follower, std::span<double> f,
+                           std::span<double> tangent, const SourceLocation& loc,
+                           const std::string& label);
+
 /// Pressure p on face `face` (1-based, Abaqus numbering); positive pressure pushes into the
 /// element. With `follower` the load acts on the current face (X + u) and -df/du is added to
 /// `tangent` (row-major, n_dofs x n_dofs); otherwise the reference face carries it and tangent is

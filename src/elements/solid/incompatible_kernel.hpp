@@ -126,7 +126,9 @@ class IncompatibleKernel final : public ElementKernel {
   bool supports_load(DistLoadKind kind, int face) const override {
     if (kind == DistLoadKind::Pressure)
       return face >= 1 && face <= static_cast<int>(element_faces(Cell).size());
-    return (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce) && face == 0;
+    return (kind == DistLoadKind::Gravity || kind == DistLoadKind::BodyForce ||
+            kind == DistLoadKind::Centrifugal) &&
+           face == 0;
   }
   void load(const ElementInput& in, const DistributedLoad& ld, double magnitude, double,
             std::span<double> f_ext, std::span<double> tangent) const override {

@@ -339,6 +339,19 @@ void read_dload_label(const FieldReader& r, const std::string& label, Distribute
       r.fail("fields 4-6 (direction)", "GRAV needs a non-zero direction vector, e.g. 0, 0, -1");
     d.kind = DistLoadKind::Gravity;
     d.direction = {v[0] / len, v[1] / len, v[2] / len};
+  } else if (label == "CENTRIF") {
+    r.at_most(9, "element or element set, CENTRIF, omega^2, a point of the axis x, y, z, the "
+                 "axis direction x, y, z");
+    const Vec3 a{r.real_or(6, 0.0, "axis direction x"), r.real_or(7, 0.0, "axis direction y"),
+                 r.real_or(8, 0.0, "axis direction z")};
+    const double len = std::hypot(a[0], a[1], a[2]);
+    if (len == 0.0)
+      r.fail("fields 7-9 (axis direction)",
+             "CENTRIF needs the direction of the rotation axis, e.g. 0, 0, 1");
+    d.kind = DistLoadKind::Centrifugal;
+    d.point = {r.real_or(3, 0.0, "axis point x"), r.real_or(4, 0.0, "axis point y"),
+               r.real_or(5, 0.0, "axis point z")};
+    d.direction = {a[0] / len, a[1] / len, a[2] / len};
   } else if (label == "BX" || label == "BY" || label == "BZ") {
     r.at_most(3, "element or element set, BX/BY/BZ, magnitude");
     d.kind = DistLoadKind::BodyForce;
@@ -428,6 +441,14 @@ void add_element_dload(BuildState& s, const FieldReader& r, ElemId e, Distribute
     if (single || info.family == ElementFamily::Beam) pipe_label_on_other(s, r, e, label);
     return;
   }
+  if (d.kind == DistLoadKind::Centrifugal && info.family != ElementFamily::Continuum &&
+      info.displacement && info.family != ElementFamily::Spring &&
+      info.family != ElementFamily::Gap)
+    r.fail(elem_entity(s, e), fmt::format("CENTRIF is available on continuum elements; this {} "
+                                          "would turn without its centrifugal force: model the "
+                                          "rotating part with continuum elements, or apply the "
+                                          "force as *CLOAD",
+                                          info.name));
   if (info.family == ElementFamily::Beam) {
     loads.push_back(beam_dload(s, r, e, d, label));
     return;
@@ -484,10 +505,10 @@ void handle_dload(BuildState& s, const Keyword& kw) {
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
     const std::string label = canonical(r.text(1));
-    if (label == "CENTRIF" || label == "ROTA" || label == "CORIO")
+    if (label == "ROTA" || label == "CORIO")
       r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "rotational body forces (CENTRIF, ROTA, CORIO) are not available in gapfem; apply "
-             "the centrifugal force as *CLOAD at the nodes or as BX/BY/BZ body forces");
+             "rotary acceleration (ROTA) and Coriolis (CORIO) loads are not available in gapfem "
+             "(CENTRIF is); apply them as *CLOAD at the nodes or as BX/BY/BZ body forces");
     DistributedLoad d;
     d.magnitude = r.real(2, "magnitude");
     d.amplitude = amplitude;
