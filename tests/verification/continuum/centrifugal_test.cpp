@@ -13,8 +13,9 @@
 // 2. A unit C3D8 cube (rho = 1: m = 1) from x = 1 to 2 on eight SPRING1 of 0.25 (k = 2 in all)
 //    along x, held in y and z, spun about z with omega^2 = 1: the centroid (r = 1.5) moves out by
 //    u with k u = m omega^2 (1.5 + u) under NLGEOM (the force at the current radius): u = 1.5, and
-//    by m omega^2 1.5 / k = 0.75 without; the stiff cube (E = 1e6) stretches by 4e-8. The NLGEOM
-//    problem is linear in u, so the load stiffness -m omega^2 makes each increment one iteration.
+//    by m omega^2 1.5 / k = 0.75 without (the mean of the nodes' x-displacements is the mass
+//    average, so the cube's own stretch, 4e-8 with E = 1e6, does not enter). The NLGEOM problem is
+//    linear in u, so with the load stiffness -m omega^2 Newton's first iteration solves it.
 #include "test_util.hpp"
 
 #include <cmath>
@@ -120,7 +121,10 @@ TEST(VerificationCentrifugal, NlgeomPushesAtTheCurrentRadius) {
     double mean = 0.0;
     for (Label n = 1; n <= 8; ++n) mean += test::U(r, *f, n)[0] / 8.0;
     EXPECT_NEAR(mean, nlgeom ? 1.5 : 0.75, 1e-9);
-    for (const IncrementInfo& inc : r.increments) EXPECT_EQ(inc.iterations, 1);
+    // the exact load stiffness: Newton's first iteration solves the increment; the stiff cube's
+    // round-off may ask for one or two more (clang's build), where a tangent without the load
+    // stiffness (-m omega^2 against k = 2) would converge by halves, some 30 iterations
+    for (const IncrementInfo& inc : r.increments) EXPECT_LE(inc.iterations, nlgeom ? 3 : 1);
   }
 }
 
