@@ -1,5 +1,6 @@
 #include "app/job.hpp"
 
+#include "app/abaqus_utilities.hpp"
 #include "app/check.hpp"
 #include "app/environment.hpp"
 #include "app/job_files.hpp"
@@ -236,6 +237,7 @@ void set_up(JobSetup& s) {
   if (!o.user_code.empty()) {
     const std::string rank =
         parallel::rank() > 0 ? fmt::format(".rank{}", parallel::rank()) : std::string();
+    set_abaqus_job(s.job, s.dir); // what GETJOBNAME and GETOUTDIR return
     s.model->user_code = load_user_code(o.user_code, s.dir / (s.job + ".scratch" + rank));
   }
 }

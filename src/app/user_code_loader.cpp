@@ -115,7 +115,8 @@ fs::path compile(const fs::path& source, Language lang, const fs::path& scratch)
   // a name of its own: dlopen would hand back a library already loaded under the same name
   static int count = 0;
   const fs::path lib = scratch / fmt::format("libuser-{}-{}.so", getpid(), ++count);
-  std::string flags = "-O2 -fPIC -shared";
+  // -fexceptions: XIT and STDB_ABQERR end the analysis with an exception through the user's frames
+  std::string flags = "-O2 -fPIC -shared -fexceptions";
   if (lang == Language::Fixed) flags += " -ffixed-form";
   if (lang == Language::Free) flags += " -ffree-form";
   if (lang == Language::Cpp) flags += " -std=c++20";
