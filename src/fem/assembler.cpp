@@ -5,6 +5,7 @@
 #include "model/model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -411,6 +412,15 @@ void Assembler::recover(ElemId e, const FieldView& fields, const StepContext& ct
   ElementInput& in = _scratch[0].gather(_disc, block, static_cast<std::size_t>(idx), fields, &ctx);
   out.clear();
   block.kernel->recover(in, out);
+  if (out.strain_energy) { // ELSE, the element's elastic strain energy, for every kernel with one
+    static constexpr std::array<std::string_view, 1> kElse{"ELSE"};
+    OutputBlock b;
+    b.var = ElemVar::ELSE;
+    b.names = kElse;
+    b.n_points = 1;
+    b.values = {*out.strain_energy};
+    out.blocks.push_back(std::move(b));
+  }
 }
 
 } // namespace gapfem

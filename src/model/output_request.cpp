@@ -21,14 +21,20 @@ constexpr std::array<std::pair<std::string_view, NodeVar>, kNumNodeVars> kNodeVa
     {"AR", NodeVar::AR},
 }};
 // SM (section moments) reads as SF: gapfem's SF table of beams and shells holds the section
-// forces and the moments (SM1…) side by side
-constexpr std::array<std::pair<std::string_view, ElemVar>, 6> kElemVars = {{
+// forces and the moments (SM1…) side by side; SENER (the strain energy density) is ENER's
+// component gapfem has
+constexpr std::array<std::pair<std::string_view, ElemVar>, 11> kElemVars = {{
     {"S", ElemVar::S},
     {"E", ElemVar::E},
     {"SF", ElemVar::SF},
     {"HFL", ElemVar::HFL},
     {"SM", ElemVar::SF},
     {"NFORC", ElemVar::NFORC},
+    {"ENER", ElemVar::ENER},
+    {"SENER", ElemVar::ENER},
+    {"ELSE", ElemVar::ELSE},
+    {"EVOL", ElemVar::EVOL},
+    {"COORD", ElemVar::COORD},
 }};
 } // namespace
 

@@ -27,8 +27,16 @@ enum class ElemVar : std::uint8_t {
   /// element nodal forces (user elements, substructures): per element node, the force the element
   /// exerts on it (its internal force vector), one component per DOF (NFORC1 … NFORC6, NFORC11 …)
   NFORC,
+  ENER,  ///< energy densities at the integration points (SENER: the elastic strain energy density)
+  ELSE,  ///< the element's elastic strain energy (whole element)
+  EVOL,  ///< the element's volume, current under NLGEOM (whole element)
+  COORD, ///< the coordinates of the integration points, current under NLGEOM
 };
-inline constexpr std::size_t kNumElemVars = 5;
+inline constexpr std::size_t kNumElemVars = 9;
+/// A whole-element variable: one value per element, printed without a point number.
+constexpr bool is_whole_element_var(ElemVar v) {
+  return v == ElemVar::ELSE || v == ElemVar::EVOL;
+}
 
 std::optional<NodeVar> node_var_from_name(std::string_view name);
 std::optional<ElemVar> elem_var_from_name(std::string_view name);

@@ -1,5 +1,6 @@
 #include "output/dat_writer.hpp"
 
+#include "common/log.hpp"
 #include "model/model.hpp"
 
 #include <algorithm>
@@ -560,6 +561,18 @@ void DatWriter::write_section_rows(const OutputBlock& block, const ElPrintReques
   }
 }
 
+void DatWriter::warn_unavailable(const ElPrintRequest& request, ElemVar var,
+                                 std::string_view type_name) {
+  if (!_unavailable.emplace(request.loc.str(), static_cast<int>(var), std::string(type_name))
+           .second)
+    return;
+  log::warning("{}: {} is not available for element type {}{}; those elements are left out of "
+               "its table",
+               request.loc.str().empty() ? std::string("*EL PRINT") : request.loc.str(),
+               elem_var_name(var), type_name,
+               request.elset.empty() ? std::string() : fmt::format(" (set {})", request.elset));
+}
+
 void DatWriter::write_element_table(const Model& model, const Frame& frame,
                                     const ElPrintRequest& request, std::span<const ElemId> group,
                                     ElemVar var) {
@@ -569,13 +582,17 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
     const ElementResult* res = frame.element(e);
     if (res && (first = res->data.find(var))) break;
   }
-  if (!first || first->names.empty()) return;
-  const std::size_t nc = first->names.size();
-  const bool at_points = request.position == ElPosition::IntegrationPoints;
-  const ElementTypeInfo& info = element_info(model.mesh.elem_types[group[0]]);
   const std::string_view type_name = model.element_type_name(group[0]);
+  if (!first || first->names.empty()) {
+    warn_unavailable(request, var, type_name);
+    return;
+  }
+  const std::size_t nc = first->names.size();
+  const bool whole = is_whole_element_var(var);
+  const bool at_points = request.position == ElPosition::IntegrationPoints && !whole;
+  const ElementTypeInfo& info = element_info(model.mesh.elem_types[group[0]]);
   const bool nodal =
-      request.position == ElPosition::Averaged && var != ElemVar::SF && info.cell &&
+      request.position == ElPosition::Averaged && var != ElemVar::SF && !whole && info.cell &&
       (info.family == ElementFamily::Continuum || info.family == ElementFamily::HeatTransfer);
   if (nodal) return write_nodal_table(model, frame, request, group, var, *first);
 
@@ -586,13 +603,14 @@ void DatWriter::write_element_table(const Model& model, const Frame& frame,
                    "\n\n THE FOLLOWING TABLE IS PRINTED {} FOR ELEMENT TYPE {} "
                    "AND ELEMENT "
                    "SET {}\n",
-                   position_text(request.position), type_name, upper(request.elset));
+                   whole ? "FOR THE WHOLE ELEMENT" : position_text(request.position), type_name,
+                   upper(request.elset));
   else
     fmt::format_to(out,
                    "\n\n THE FOLLOWING TABLE IS PRINTED FOR ALL ELEMENTS WITH "
                    "TYPE {} {}\n",
-                   type_name, position_text(request.position));
-  if (request.position == ElPosition::Averaged)
+                   type_name, whole ? "FOR THE WHOLE ELEMENT" : position_text(request.position));
+  if (request.position == ElPosition::Averaged && !whole)
     fmt::format_to(out, " (VALUES AT THE NODES ARE AVERAGED FOR CONTINUUM AND HEAT TRANSFER "
                         "ELEMENTS ONLY: ELEMENT CENTROID VALUES ARE PRINTED)\n");
   const bool sections = first->section_points > 1;

@@ -8,6 +8,9 @@
 #include "results/results.hpp"
 
 #include <filesystem>
+#include <set>
+#include <string>
+#include <tuple>
 #include <vector>
 
 namespace gapfem {
@@ -52,6 +55,8 @@ class DatWriter : public ResultWriter {
                         const std::vector<NodeId>& nodes, NodeVar var);
   void write_element_tables(const Model& model, const Frame& frame, const ElPrintRequest& request,
                             const std::vector<ElemId>& elements);
+  /// One warning per request, variable and element type that has no value for it.
+  void warn_unavailable(const ElPrintRequest& request, ElemVar var, std::string_view type_name);
   void write_element_table(const Model& model, const Frame& frame, const ElPrintRequest& request,
                            std::span<const ElemId> group, ElemVar var);
   /// POSITION=AVERAGED AT NODES on continuum and heat-transfer elements: one row per node of the
@@ -76,6 +81,9 @@ class DatWriter : public ResultWriter {
   int _printed_increment = -1;
   double _printed_dt = 0.0;
   std::vector<bool> _printed_node, _printed_el;
+  /// (request location, variable, element type name) already warned about: a variable those
+  /// elements do not have is one warning per run, not one per increment
+  std::set<std::tuple<std::string, int, std::string>> _unavailable;
   std::vector<double> _avg;               ///< scratch: point averages
   std::vector<double> _max, _min, _total; ///< scratch: column summaries
   std::vector<Label> _max_at, _min_at;

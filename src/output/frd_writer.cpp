@@ -284,6 +284,7 @@ void FrdWriter::element_blocks(const Model& model, const Frame& frame,
     if (v == ElemVar::S) b = {"STRESS", 4, {"SXX", "SYY", "SZZ", "SXY", "SYZ", "SZX"}, {}};
     if (v == ElemVar::E) b = {"TOSTRAIN", 4, {"EXX", "EYY", "EZZ", "EXY", "EYZ", "EZX"}, {}};
     if (v == ElemVar::HFL) b = {"FLUX", 2, {"F1", "F2", "F3"}, {}};
+    if (v == ElemVar::ENER) b = {"ENER", 1, {"ENER"}, {}}; // CalculiX's strain energy density
     // slots of the averaged field (11 22 33 12 13 23) in cgx's order (xx yy zz xy yz zx); strains
     // as tensor components (half the engineering shears), as CalculiX writes them
     static constexpr std::array<int, 6> kOrder{0, 1, 2, 3, 5, 4};

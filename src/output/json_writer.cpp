@@ -185,6 +185,13 @@ void JsonWriter::begin_step(const Model& model, int step_index) {
   append_json_string(b, procedure_name(step.procedure));
   b.append(std::string_view(",\"frames\":["));
   prepare_step(model, step_index);
+  _requested.fill(false);
+  for (const ElPrintRequest& r : step.el_prints)
+    for (ElemVar v : r.vars) _requested[static_cast<std::size_t>(v)] = true;
+  for (const FieldOutputRequest& r : step.field_outputs)
+    for (ElemVar v : r.elem_vars) _requested[static_cast<std::size_t>(v)] = true;
+  for (const HistoryOutputRequest& r : step.history_outputs)
+    for (const auto& [v, set] : r.elem_vars) _requested[static_cast<std::size_t>(v)] = true;
   _step_open = true;
   _first_frame = true;
   _energy_history.clear();
@@ -378,6 +385,9 @@ void JsonWriter::write_element(const Model& model, const ElementResult& res, boo
   const bool shell = element_info(type).family == ElementFamily::Shell;
   const bool beam = element_info(type).family == ElementFamily::Beam;
   for (const OutputBlock& block : res.data.blocks) {
+    const bool on_request = block.var == ElemVar::ENER || block.var == ElemVar::ELSE ||
+                            block.var == ElemVar::EVOL || block.var == ElemVar::COORD;
+    if (on_request && !_requested[static_cast<std::size_t>(block.var)]) continue;
     auto& names = tc.names[static_cast<std::size_t>(block.var)];
     if (names.empty())
       for (auto nm : block.names) names.emplace_back(nm);

@@ -98,6 +98,8 @@ class JsonWriter : public ResultWriter {
   std::vector<NodeId> _frame_nodes;               ///< scratch: nodes in the frame, by label
   std::vector<const ElementResult*> _frame_elems; ///< scratch: elements in the frame, by label
   std::vector<std::uint8_t> _elem_mark;
+  /// ENER, ELSE, EVOL, COORD: written only in steps that request them (S, E, SF, … always)
+  std::array<bool, kNumElemVars> _requested{};
   std::vector<double> _avg; ///< scratch: point averages
 
   /// Component names seen per element type and variable (for "element_types").

@@ -45,6 +45,7 @@ Eigen::RowVectorXd corner_values(Shape corner, const std::array<double, 3>& xi) 
 
 int nodal_slot(std::string_view name, int width) {
   if (width == 6) return voigt_slot(name);
+  if (width == 1) return 0; // a scalar (ENER's SENER)
   const char last = name.empty() ? '\0' : name.back();
   const bool one_digit =
       name.size() < 2 || !std::isdigit(static_cast<unsigned char>(name[name.size() - 2]));
@@ -84,7 +85,7 @@ const std::vector<double>& NodalAverager::matrix(Shape shape, int n_points) {
 NodalField NodalAverager::average(const Model& model, const Frame& frame, ElemVar var,
                                   const std::vector<char>* mask) {
   NodalField f;
-  f.width = var == ElemVar::HFL ? 3 : 6;
+  f.width = var == ElemVar::HFL || var == ElemVar::COORD ? 3 : var == ElemVar::ENER ? 1 : 6;
   const auto nn = static_cast<std::size_t>(model.mesh.n_nodes());
   f.values.assign(nn * static_cast<std::size_t>(f.width), 0.0);
   f.count.assign(nn, 0);

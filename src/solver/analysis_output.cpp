@@ -2,6 +2,7 @@
 #include "solver/finite_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace gapfem {
@@ -182,9 +183,33 @@ std::vector<char> Analysis::Impl::elements_needed(const Step& step, bool field_e
   return need;
 }
 
+namespace {
+/// Energies, volumes and coordinates describe a state (a perturbation has no change of them);
+/// kernels report them always, frames keep them where the step asks for them.
+bool is_state_var(ElemVar v) {
+  return v == ElemVar::ENER || v == ElemVar::ELSE || v == ElemVar::EVOL || v == ElemVar::COORD;
+}
+
+/// The element variables some output request of the step names.
+std::array<bool, kNumElemVars> requested_elem_vars(const Step& step) {
+  std::array<bool, kNumElemVars> want{};
+  auto add = [&](ElemVar v) { want[static_cast<std::size_t>(v)] = true; };
+  for (const ElPrintRequest& r : step.el_prints)
+    for (ElemVar v : r.vars) add(v);
+  for (const FieldOutputRequest& r : step.field_outputs)
+    for (ElemVar v : r.elem_vars) add(v);
+  for (const HistoryOutputRequest& r : step.history_outputs)
+    for (const auto& [v, set] : r.elem_vars) add(v);
+  for (const FileOutputRequest& r : step.file_outputs)
+    for (ElemVar v : r.elem_vars) add(v);
+  return want;
+}
+} // namespace
+
 void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool field_elements,
                                     Frame& fr) {
   const std::vector<char> need = elements_needed(step, field_elements, fr);
+  const std::array<bool, kNumElemVars> want = requested_elem_vars(step);
   const ElemId ne = model.mesh.n_elements();
   fr.element_slot.assign(static_cast<std::size_t>(ne), -1);
   const FieldView fields = prob.fields();
@@ -193,6 +218,9 @@ void Analysis::Impl::frame_elements(const Step& step, StepProblem& prob, bool fi
     fr.element_slot[e] = static_cast<std::int32_t>(fr.elements.size());
     fr.elements.push_back({e, {}});
     assembler.recover(e, fields, prob.context(), fr.elements.back().data);
+    std::erase_if(fr.elements.back().data.blocks, [&](const OutputBlock& b) {
+      return is_state_var(b.var) && !want[static_cast<std::size_t>(b.var)];
+    });
   }
 }
 
@@ -229,6 +257,7 @@ void Analysis::Impl::perturbation_elements(const Step& step, StepProblem& prob,
       for (std::size_t k = 0; k < r1.blocks[b].values.size(); ++k)
         r1.blocks[b].values[k] =
             eps > 0.0 ? (r1.blocks[b].values[k] - r0.blocks[b].values[k]) / eps : 0.0;
+    std::erase_if(r1.blocks, [](const OutputBlock& b) { return is_state_var(b.var); });
   }
 }
 

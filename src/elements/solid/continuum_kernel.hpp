@@ -154,6 +154,73 @@ VecS cauchy_stress(const VecS& S, const MatF& Fin, double F33, double thickness_
   return out;
 }
 
+/// det F of a point (1 without NLGEOM): its current volume over its reference volume; plane
+/// stress with the thickness stretch of the law's thickness strain E33, CPE/CAX with F33.
+template <Kinematics K, class MatF>
+double volume_ratio(const MatF& Fin, double F33, double thickness_strain, bool nlgeom) {
+  if (!nlgeom) return 1.0;
+  double j = Fin.determinant();
+  if constexpr (K == Kinematics::PlaneStress)
+    j *= std::sqrt(std::max(1.0 + 2.0 * thickness_strain, 0.0));
+  else if constexpr (K != Kinematics::ThreeD)
+    j *= F33;
+  return j;
+}
+
+inline constexpr std::array<std::string_view, 1> kSener{"SENER"};
+inline constexpr std::array<std::string_view, 1> kEvol{"EVOL"};
+inline constexpr std::array<std::string_view, 3> kCoord{"COORD1", "COORD2", "COORD3"};
+
+/// ENER (the strain energy density SENER), COORD and EVOL of a continuum element, gathered point
+/// by point in recover().
+class PointExtras {
+ public:
+  PointExtras(int n_points, int nd) : _nd(nd) {
+    _sener.var = ElemVar::ENER;
+    _sener.names = kSener;
+    _sener.n_points = _coord.n_points = n_points;
+    _sener.values.resize(static_cast<std::size_t>(n_points));
+    _coord.var = ElemVar::COORD;
+    _coord.names = std::span<const std::string_view>(kCoord.data(), static_cast<std::size_t>(nd));
+    _coord.values.resize(static_cast<std::size_t>(n_points * nd));
+  }
+  /// Point q: its energy density, its volume (current under NLGEOM) and its coordinates, the
+  /// interpolation sum_a N_a (X_a + u_a) (u only under NLGEOM).
+  template <class Weights>
+  void add(const ElementInput& in, int q, double sener, double volume, const Weights& N, int nn,
+           bool nlgeom) {
+    _sener.values[static_cast<std::size_t>(q)] = sener;
+    _volume += volume;
+    for (int i = 0; i < _nd; ++i) {
+      double x = 0.0;
+      for (int a = 0; a < nn; ++a)
+        x += N(a) * (in.X[a][i] + (nlgeom ? in.u[static_cast<std::size_t>(a * _nd + i)] : 0.0));
+      _coord.values[static_cast<std::size_t>(q * _nd + i)] = x;
+    }
+  }
+  void append_to(ElementRecovery& out) {
+    OutputBlock evol;
+    evol.var = ElemVar::EVOL;
+    evol.names = kEvol;
+    evol.n_points = 1;
+    evol.values = {_volume};
+    out.blocks.push_back(std::move(_sener));
+    out.blocks.push_back(std::move(_coord));
+    out.blocks.push_back(std::move(evol));
+  }
+
+ private:
+  int _nd;
+  double _volume = 0.0;
+  OutputBlock _sener, _coord;
+};
+
+/// The variables every continuum kernel reports (ELSE from the strain energy: fem/assembler).
+constexpr bool continuum_output(ElemVar var) {
+  return var == ElemVar::S || var == ElemVar::E || var == ElemVar::ENER || var == ElemVar::ELSE ||
+         var == ElemVar::EVOL || var == ElemVar::COORD;
+}
+
 } // namespace continuum_detail
 
 template <class Tr>
@@ -340,7 +407,7 @@ class ContinuumKernel final : public ElementKernel {
   }
 
   bool supports_output(ElemVar var) const override {
-    return var == ElemVar::S || var == ElemVar::E;
+    return continuum_detail::continuum_output(var);
   }
 
   void recover(const ElementInput& in, ElementRecovery& out) const override {
@@ -350,10 +417,15 @@ class ContinuumKernel final : public ElementKernel {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<kKin>(NIP, sb, eb);
+    continuum_detail::PointExtras extras(NIP, ND);
     double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       const Ip& p = w.ip[q];
       energy += p.dV * p.law.energy;
+      extras.add(
+          in, q, p.law.energy,
+          p.dV * continuum_detail::volume_ratio<kKin>(p.F, p.F33, p.law.thickness_strain, nlgeom),
+          [&](int a) { return _N[q](a); }, NN, nlgeom);
       VecS sig = p.S;
       if (nlgeom)
         sig = continuum_detail::cauchy_stress<kKin>(p.S, p.F, p.F33, p.law.thickness_strain);
@@ -364,6 +436,7 @@ class ContinuumKernel final : public ElementKernel {
     }
     out.blocks.push_back(std::move(sb));
     out.blocks.push_back(std::move(eb));
+    extras.append_to(out);
     out.strain_energy = energy;
   }
 

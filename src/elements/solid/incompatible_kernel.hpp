@@ -137,7 +137,7 @@ class IncompatibleKernel final : public ElementKernel {
   }
 
   bool supports_output(ElemVar var) const override {
-    return var == ElemVar::S || var == ElemVar::E;
+    return continuum_detail::continuum_output(var);
   }
   void recover(const ElementInput& in, ElementRecovery& out) const override {
     const bool nlgeom = in.ctx && in.ctx->nlgeom;
@@ -147,11 +147,16 @@ class IncompatibleKernel final : public ElementKernel {
     condense(in, nlgeom, trial, x, r, Kx);
     OutputBlock sb, eb;
     continuum_detail::stress_strain_blocks<K>(NIP, sb, eb);
+    continuum_detail::PointExtras extras(NIP, ND);
     double energy = 0.0;
     for (int q = 0; q < NIP; ++q) {
       Point p;
       point(in, q, nlgeom, x, trial, p, {.recovery = true});
       energy += p.g.dV * p.law.energy;
+      extras.add(
+          in, q, p.law.energy,
+          p.g.dV * continuum_detail::volume_ratio<K>(p.F, p.F33, p.law.thickness_strain, nlgeom),
+          [&](int a) { return _N[q](a); }, NN, nlgeom);
       const VecS sig =
           nlgeom ? continuum_detail::cauchy_stress<K>(p.S, p.F, p.F33, p.law.thickness_strain)
                  : p.S;
@@ -162,6 +167,7 @@ class IncompatibleKernel final : public ElementKernel {
     }
     out.blocks.push_back(std::move(sb));
     out.blocks.push_back(std::move(eb));
+    extras.append_to(out);
     out.strain_energy = energy;
   }
 

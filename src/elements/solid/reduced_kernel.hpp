@@ -137,7 +137,7 @@ class ReducedKernel final : public ElementKernel {
   }
 
   bool supports_output(ElemVar var) const override {
-    return var == ElemVar::S || var == ElemVar::E;
+    return continuum_detail::continuum_output(var);
   }
   void recover(const ElementInput& in, ElementRecovery& out) const override {
     Work w;
@@ -155,6 +155,14 @@ class ReducedKernel final : public ElementKernel {
     }
     out.blocks.push_back(std::move(sb));
     out.blocks.push_back(std::move(eb));
+    // the single point at the cell's centre, where every node's weight is 1 / NN
+    const bool nlgeom = in.ctx && in.ctx->nlgeom;
+    continuum_detail::PointExtras extras(1, ND);
+    extras.add(
+        in, 0, w.law.energy,
+        w.g.V * continuum_detail::volume_ratio<K>(w.F, w.F33, w.law.thickness_strain, nlgeom),
+        [](int) { return 1.0 / NN; }, NN, nlgeom);
+    extras.append_to(out);
     const Eigen::Map<const VecD> u(in.u.data());
     out.artificial_energy = 0.5 * u.dot(w.Khg * u);
     out.strain_energy = w.g.V * w.law.energy;

@@ -42,7 +42,7 @@ void add_unique(std::vector<T>& list, T v) {
 }
 
 constexpr const char* kNodeVarList = "U, UR, RF, RM, CF, CM, NT, RFL, CFL, V, VR, A, AR";
-constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC";
+constexpr const char* kElemVarList = "S, E, SF (with SM), HFL, NFORC, ENER, ELSE, EVOL, COORD";
 
 /// A data line of numbers only (a list of section points, read by read_vars, which says which are
 /// not whole numbers in range)?
@@ -440,6 +440,26 @@ bool el_file_members(BuildState& s, const Keyword& kw, FileOutputRequest& req) {
 
 } // namespace
 
+namespace {
+/// Why *EL FILE leaves an element variable out of job.frd.
+std::string el_file_left_out(ElemVar v) {
+  switch (v) {
+  case ElemVar::SF:
+    return "section forces (SF) are not written to job.frd (it holds values at the nodes) and "
+           "were left out; print them with *EL PRINT or write them to ParaView with *ELEMENT "
+           "OUTPUT";
+  case ElemVar::NFORC:
+    return "element nodal forces (NFORC) are not written to job.frd and were left out; print "
+           "them with *EL PRINT (job.dat and job.results.json)";
+  default:
+    return fmt::format("{} (one value per element or per integration point, not a field at the "
+                       "nodes) is not written to job.frd and was left out; print it with *EL "
+                       "PRINT (job.dat and job.results.json)",
+                       elem_var_name(v));
+  }
+}
+} // namespace
+
 void handle_el_file(BuildState& s, const Keyword& kw) {
   FileOutputRequest req = file_request(s, kw, true);
   const int pos = enum_param(
@@ -451,16 +471,11 @@ void handle_el_file(BuildState& s, const Keyword& kw) {
                                "POSITION=AVERAGED AT NODES); *EL PRINT prints it at the points",
                                pos == 3 ? "CENTROIDAL" : "INTEGRATION POINTS"));
   if (!el_file_members(s, kw, req)) return kw.mark_read(); // its set failed (reported)
-  req.elem_vars = request_vars<ElemVar>(s, kw, elem_var, "S, E, HFL", {ElemVar::S});
-  for (ElemVar v : {ElemVar::SF, ElemVar::NFORC})
+  req.elem_vars = request_vars<ElemVar>(s, kw, elem_var, "S, E, HFL, ENER", {ElemVar::S});
+  for (ElemVar v : {ElemVar::SF, ElemVar::NFORC, ElemVar::ELSE, ElemVar::EVOL, ElemVar::COORD})
     if (const auto it = std::find(req.elem_vars.begin(), req.elem_vars.end(), v);
         it != req.elem_vars.end()) {
-      s.warn(kw.loc, v == ElemVar::SF
-                         ? "section forces (SF) are not written to job.frd (it holds values at "
-                           "the nodes) and were left out; print them with *EL PRINT or write them "
-                           "to ParaView with *ELEMENT OUTPUT"
-                         : "element nodal forces (NFORC) are not written to job.frd and were left "
-                           "out; print them with *EL PRINT (job.dat and job.results.json)");
+      s.warn(kw.loc, el_file_left_out(v));
       req.elem_vars.erase(it);
     }
   if (req.elem_vars.empty()) return; // its unknown variables were reported

@@ -99,7 +99,7 @@ TEST(ReaderOutput, NodeAndElementOutput) {
   EXPECT_EQ(f.node_vars, (std::vector<NodeVar>{NodeVar::U, NodeVar::RF}));
   EXPECT_EQ(f.elem_vars, (std::vector<ElemVar>{ElemVar::S}));
   // unknown variables in field output only drive ParaView files: warnings with their location
-  EXPECT_EQ(test::count_warnings(m, "COORD"), 1);
+  EXPECT_EQ(test::count_warnings(m, "output variable COORD"), 1);
   EXPECT_EQ(test::count_warnings(m, "deck.inp:17: *ELEMENT OUTPUT"), 1);
 }
 
@@ -145,7 +145,7 @@ TEST(ReaderOutput, ResultsFileRequestsForTheFrdFile) {
 // docs/keywords.md, "Output requests never stop a run": what gapfem cannot write is a warning and
 // the rest of the request is honoured
 TEST(ReaderOutput, UnknownVariablesAreLeftOutWithAWarning) {
-  const Model m = read(step("*NODE PRINT\nU, COORD\n*EL PRINT\nS, ELSE, EVOL\n*NODE FILE\nU, "
+  const Model m = read(step("*NODE PRINT\nU, COORD\n*EL PRINT\nS, PEEQ, CENT\n*NODE FILE\nU, "
                             "SXX\n*EL FILE\nS, SF, NFORC\n*EL PRINT\nXYZ\n"));
   const Step& st = m.steps[0];
   ASSERT_EQ(st.node_prints.size(), 1u);
@@ -158,8 +158,8 @@ TEST(ReaderOutput, UnknownVariablesAreLeftOutWithAWarning) {
   EXPECT_EQ(test::count_warnings(m, "deck.inp:14: *NODE PRINT: gapfem does not know the output "
                                     "variable COORD"),
             1);
-  EXPECT_EQ(test::count_warnings(m, "output variable ELSE"), 1);
-  EXPECT_EQ(test::count_warnings(m, "output variable EVOL"), 1);
+  EXPECT_EQ(test::count_warnings(m, "output variable PEEQ"), 1);
+  EXPECT_EQ(test::count_warnings(m, "output variable CENT"), 1);
   EXPECT_EQ(test::count_warnings(m, "output variable SXX"), 1);
   EXPECT_EQ(test::count_warnings(m, "section forces (SF) are not written to job.frd"), 1);
   EXPECT_EQ(test::count_warnings(m, "element nodal forces (NFORC) are not written to job.frd"), 1);
