@@ -13,7 +13,15 @@ For each deck it runs `gapfem --check`-like: the real solver with a time limit, 
 
 and prints the counts, the blocking keywords and element types by frequency, the agreement of the
 displacements with the deck's .dat.ref for every deck that ran, and (with --list) every deck with
-its outcome. Example:
+its outcome.
+
+Decks of CalculiX's own physics, which gapfem does not set out to have, are out of scope and
+counted apart (scope_of): fluid networks and CFD, design sensitivity and optimisation (with its
+Green functions and robust design), mesh refinement, crack propagation and fatigue, and
+electromagnetics. Every in-scope deck that stops on an input error gets its first blocker's
+class (kind_of): a physics construct of a later issue (procedure, material, contact, element)
+or "not physics" (a reader convenience, an output request, a model feature this project still
+owes). Example:
 
   python3 bench/ccx_suite.py /path/to/CalculiX/test --gapfem build/release/gapfem --timeout 20
 """
@@ -44,6 +52,79 @@ def classify(message):
     if m:
         return "other " + m.group(1).strip() + ": " + re.sub(r"(?<![A-Za-z])[-+]?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?", "#", m.group(2))[:70]
     return "other"
+
+
+# CalculiX's physics outside gapfem's scope: (class, keywords that mark it, element types)
+OUT_OF_SCOPE = [
+    ("fluid networks and CFD",
+     {"*FLUID SECTION", "*FLUID SECTIONS", "*FLUID CONSTANTS", "*CFD", "*NETWORK MPC",
+      "*SPECIFIC GAS CONSTANT", "*VALUES AT INFINITY"}, r"^(D|F[23]D\d+)$"),
+    ("design sensitivity and optimisation",
+     {"*SENSITIVITY", "*DESIGNVARIABLES", "*DESIGN VARIABLES", "*DESIGN RESPONSE", "*OBJECTIVE",
+      "*FEASIBLE DIRECTION", "*FILTER", "*CONSTRAINT", "*ROBUST DESIGN", "*CORRELATION LENGTH",
+      "*GEOMETRIC TOLERANCES", "*GREEN"}, None),
+    ("mesh refinement", {"*REFINE MESH", "*USE REFINED MESH"}, None),
+    ("crack propagation and fatigue", {"*CRACK PROPAGATION", "*HCF"}, None),
+    ("electromagnetics", {"*ELECTROMAGNETICS", "*MAGNETIC PERMEABILITY",
+                          "*ELECTRICAL CONDUCTIVITY"}, None),
+]
+
+# The first blocker's class for an in-scope deck: constructs of the later issues by keyword
+PHYSICS = {
+    "material": {"*PLASTIC", "*CREEP", "*USER MATERIAL", "*DEPVAR", "*HYPERELASTIC", "*HYPERFOAM",
+                 "*DEFORMATION PLASTICITY", "*MOHR COULOMB", "*MOHR COULOMB HARDENING",
+                 "*RATE DEPENDENT", "*CYCLIC HARDENING", "*DAMAGE INITIATION", "*CHANGE PLASTIC",
+                 "*CHANGE MATERIAL", "*VISCOELASTIC", "*ORIENTATION", "*USER SECTION",
+                 "*INITIAL STRAIN INCREASE"},
+    "contact": {"*CONTACT PAIR", "*SURFACE INTERACTION", "*SURFACE BEHAVIOR", "*CONTACT DAMPING",
+                "*CLEARANCE", "*PRE-TENSION SECTION", "*CHANGE FRICTION", "*CHANGE CONTACT TYPE",
+                "*CHANGE SURFACE BEHAVIOR", "*GAP CONDUCTANCE", "*GAP HEAT GENERATION",
+                "*CONTACT PRINT", "*CONTACT FILE", "*CONTACT OUTPUT", "*CONTACT CONTROLS",
+                "*CONTACT INTERFERENCE"},
+    "procedure": {"*VISCO", "*COMPLEX FREQUENCY", "*SELECT CYCLIC SYMMETRY MODES",
+                  "*UNCOUPLED TEMPERATURE-DISPLACEMENT"},
+}
+
+
+def deck_keywords(path):
+    """The keywords (upper case, without parameters) and element types a deck uses."""
+    keywords, types = set(), set()
+    with open(path, errors="replace") as f:
+        for line in f:
+            if not line.startswith("*") or line.startswith("**"):
+                continue
+            kw = line.split(",")[0].strip().upper()
+            keywords.add(re.sub(r"\s+", " ", kw))
+            m = re.search(r"TYPE\s*=\s*([A-Za-z0-9]+)", line)
+            if kw == "*ELEMENT" and m:
+                types.add(m.group(1).upper())
+    return keywords, types
+
+
+def scope_of(path):
+    """None for an in-scope deck, else the class of CalculiX physics outside gapfem's scope."""
+    keywords, types = deck_keywords(path)
+    for name, marks, element in OUT_OF_SCOPE:
+        if keywords & marks or (element and any(re.match(element, t) for t in types)):
+            return name
+    return None
+
+
+def kind_of(blocker):
+    """physics (procedure, material, contact, element) or not physics, for a blocker of
+    classify()."""
+    if blocker.startswith("element "):
+        return "physics: element"
+    if blocker.startswith("procedure "):
+        return "physics: procedure"
+    m = re.match(r"(?:keyword|parameter|other) (\*[A-Z][A-Z0-9 _-]*)", blocker)
+    kw = m.group(1).strip() if m else ""
+    for kind, marks in PHYSICS.items():
+        if kw in marks:
+            return "physics: " + kind
+    if kw == "*FRICTION" or (kw == "*ELASTIC" and "TYPE" in blocker):
+        return "physics: " + ("contact" if kw == "*FRICTION" else "material")
+    return "not physics"
 
 
 def blockers_of(lines):
@@ -137,6 +218,7 @@ def main():
     ap.add_argument("--list", action="store_true", help="print every deck's outcome")
     args = ap.parse_args()
     decks = sorted(f for f in os.listdir(args.suite) if f.endswith(".inp"))
+    scope = {d: scope_of(os.path.join(args.suite, d)) for d in decks}
     outcome = {}
     per_deck = {}
     compared = {}
@@ -168,6 +250,20 @@ def main():
                 outcome[deck] = f"crash (exit {code})"
     counts = collections.Counter(outcome.values())
     print(f"{len(decks)} decks: " + ", ".join(f"{k} {v}" for k, v in counts.most_common()))
+    out_of_scope = collections.Counter(v for v in scope.values() if v)
+    inside = [d for d in decks if not scope[d]]
+    print(f"out of scope (CalculiX's own physics): {sum(out_of_scope.values())}: " +
+          ", ".join(f"{k} {v}" for k, v in out_of_scope.most_common()))
+    in_counts = collections.Counter(outcome[d] for d in inside)
+    print(f"in scope: {len(inside)}: " + ", ".join(f"{k} {v}" for k, v in in_counts.most_common()))
+    kinds = collections.Counter(kind_of(per_deck[d][0]) for d in inside
+                                if outcome[d] == "input" and per_deck.get(d))
+    print("first blocker of the in-scope decks that stop on input: " +
+          ", ".join(f"{k} {v}" for k, v in kinds.most_common()))
+    print("in-scope decks whose first blocker is not physics:")
+    for d in inside:
+        if outcome[d] == "input" and per_deck.get(d) and kind_of(per_deck[d][0]) == "not physics":
+            print(f"  {d:28s} {per_deck[d][0]}")
     appears = collections.Counter(b for bs in per_deck.values() for b in bs)
     alone = collections.Counter(bs[0] for bs in per_deck.values() if len(bs) == 1)
     print("constructs that stop decks (decks naming it / decks it alone stops):")
@@ -181,7 +277,10 @@ def main():
     if args.list:
         for deck in decks:
             extra = "; ".join(per_deck.get(deck, []))
-            print(f"{deck}: {outcome[deck]}" + (f"  [{extra}]" if extra else ""))
+            where = f"out of scope ({scope[deck]})" if scope[deck] else "in scope"
+            first = (f" first blocker: {kind_of(per_deck[deck][0])}" if per_deck.get(deck)
+                     else "")
+            print(f"{deck}: {where}: {outcome[deck]}{first}" + (f"  [{extra}]" if extra else ""))
     return 0
 
 

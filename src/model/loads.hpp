@@ -48,6 +48,9 @@ enum class DistLoadKind : std::uint8_t {
   BodyFlux,    ///< BF: heat per unit volume per time
   SurfaceFlux, ///< Sn / DSFLUX S: heat flux into face n per area
   Film,        ///< Fn / SFILM F: film coefficient h (magnitude), sink temperature
+  /// Rn / SRADIATE R: emissivity (magnitude), sink temperature; the flux into the face is
+  /// eps sigma ((T_sink - Z)^4 - (T - Z)^4) with *PHYSICAL CONSTANTS' sigma and Z
+  Radiation,
   /// beams: force per unit reference length; face 1/2: P1/P2 along the section's n1/n2, face 0:
   /// PX/PY/PZ along the global axis in `direction`
   LineLoad,
@@ -68,7 +71,9 @@ struct DistributedLoad {
   double magnitude = 0.0; ///< pressure, g, body force, flux, film coefficient
   Vec3 direction{0.0, 0.0, 0.0}; ///< GRAV, BX/BY/BZ direction, CENTRIF axis (unit vector)
   Vec3 point{0.0, 0.0, 0.0};     ///< CENTRIF: a point of the rotation axis
-  double sink_temperature = 0.0; ///< Film
+  double sink_temperature = 0.0; ///< Film, Radiation
+  double stefan_boltzmann = 0.0; ///< Radiation: *PHYSICAL CONSTANTS, STEFAN BOLTZMANN=
+  double absolute_zero = 0.0;    ///< Radiation: *PHYSICAL CONSTANTS, ABSOLUTE ZERO=
   double diameter = 0.0;         ///< PI/PE: effective diameter (0: the section's)
   /// HPI/HPE: p = magnitude (z0 - z) / (z0 - z1) at height z (global Z; Y in planar models),
   /// zero beyond the zero-pressure height z0 (on the side away from z1)

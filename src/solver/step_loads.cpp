@@ -210,6 +210,19 @@ void StepLoads::set_released_reactions(const DofMap& dofs, const LoadHistory& hi
   }
 }
 
+namespace {
+/// A film's coefficient follows FILM AMPLITUDE=, an emissivity none (AMPLITUDE= of both is the
+/// sink temperature's), every other load its AMPLITUDE=.
+int magnitude_amplitude(const DistributedLoad& l) {
+  return l.kind == DistLoadKind::Film        ? l.film_amplitude
+         : l.kind == DistLoadKind::Radiation ? -1
+                                             : l.amplitude;
+}
+bool is_face_exchange(DistLoadKind k) {
+  return k == DistLoadKind::Film || k == DistLoadKind::Radiation;
+}
+} // namespace
+
 // Distributed loads, including those of the previous step this one removes (to zero).
 void StepLoads::set_distributed_loads(const LoadHistory& history, const Step* prev) {
   std::set<std::tuple<ElemId, int, int>> dseen;
@@ -217,12 +230,10 @@ void StepLoads::set_distributed_loads(const LoadHistory& history, const Step* pr
     const auto key = std::make_tuple(l.elem, static_cast<int>(l.kind), l.face);
     auto it = history.distributed.find(key);
     Dist d{&l, {}, {}, {}};
-    d.magnitude =
-        Scalar{it == history.distributed.end() ? 0.0 : it->second.first, l.magnitude,
-               l.kind == DistLoadKind::Film ? l.film_amplitude : l.amplitude, l.propagated};
-    d.sink =
-        Scalar{it == history.distributed.end() ? l.sink_temperature : it->second.second,
-               l.sink_temperature, l.kind == DistLoadKind::Film ? l.amplitude : -1, l.propagated};
+    d.magnitude = Scalar{it == history.distributed.end() ? 0.0 : it->second.first, l.magnitude,
+                         magnitude_amplitude(l), l.propagated};
+    d.sink = Scalar{it == history.distributed.end() ? l.sink_temperature : it->second.second,
+                    l.sink_temperature, is_face_exchange(l.kind) ? l.amplitude : -1, l.propagated};
     _dist.push_back(d);
     dseen.insert(key);
   }

@@ -27,6 +27,7 @@
 /// dV carries the cross-section area (DC1D2, trusses), the thickness (planar) or 2 pi r
 /// (axisymmetric). Everything is allocation-free; the object is immutable and thread-safe.
 #include "elements/element_kernel.hpp"
+#include "elements/heat/face_exchange.hpp"
 #include "elements/heat/heat_material.hpp"
 #include "elements/reference_scale.hpp"
 #include "fe/element_faces.hpp"
@@ -339,39 +340,41 @@ class HeatCore {
 
   bool supports_load(DistLoadKind kind, int face) const {
     if (kind == DistLoadKind::BodyFlux) return face == 0;
-    if (kind == DistLoadKind::SurfaceFlux || kind == DistLoadKind::Film)
+    if (kind == DistLoadKind::SurfaceFlux || is_face_exchange(kind))
       return face >= 1 && face <= n_faces();
     return false;
   }
 
-  /// Thermal loads: adds f_ext (and for films -d f_ext / dT to K when not empty).
-  void add_load(std::span<const Vec3> X, const Temps& T, DistLoadKind kind, int face,
+  /// Thermal loads: adds f_ext (and for films and radiation -d f_ext / dT to K when not empty).
+  void add_load(std::span<const Vec3> X, const Temps& T, const DistributedLoad& ld,
                 double magnitude, double sink, const HeatLayout& L, std::span<double> f,
                 std::span<double> K) const {
     auto Kat = [&](int a, int b) -> double& { return K[L.index(a) * L.n_dofs + L.index(b)]; };
-    if (kind == DistLoadKind::BodyFlux) {
+    if (ld.kind == DistLoadKind::BodyFlux) {
       const Temps V = nodal_volumes(X);
       for (int a = 0; a < NN; ++a) f[L.index(a)] += magnitude * V[a];
       return;
     }
-    if (kind != DistLoadKind::SurfaceFlux && kind != DistLoadKind::Film) return;
-    FE_CHECK(face >= 1 && face <= n_faces(), "heat load: face out of range");
+    if (ld.kind != DistLoadKind::SurfaceFlux && !is_face_exchange(ld.kind)) return;
+    FE_CHECK(ld.face >= 1 && ld.face <= n_faces(), "heat load: face out of range");
     Face fc;
-    face_matrix(X, face, fc);
+    face_matrix(X, ld.face, fc);
     for (int i = 0; i < fc.n; ++i) {
       const int a = fc.node[i];
-      if (kind == DistLoadKind::SurfaceFlux) {
+      if (ld.kind == DistLoadKind::SurfaceFlux) {
         f[L.index(a)] += magnitude * fc.area[i];
         continue;
       }
       if constexpr (kLumped) {
-        f[L.index(a)] += magnitude * fc.area[i] * (sink - T[a]);
-        if (!K.empty()) Kat(a, a) += magnitude * fc.area[i];
+        const FaceExchange x = face_exchange(ld, magnitude, sink, T[a]);
+        f[L.index(a)] += fc.area[i] * x.q;
+        if (!K.empty()) Kat(a, a) -= fc.area[i] * x.dq_dT;
       } else {
         for (int j = 0; j < fc.n; ++j) {
           const int b = fc.node[j];
-          f[L.index(a)] += magnitude * fc.M[i][j] * (sink - T[b]);
-          if (!K.empty()) Kat(a, b) += magnitude * fc.M[i][j];
+          const FaceExchange x = face_exchange(ld, magnitude, sink, T[b]);
+          f[L.index(a)] += fc.M[i][j] * x.q;
+          if (!K.empty()) Kat(a, b) -= fc.M[i][j] * x.dq_dT;
         }
       }
     }

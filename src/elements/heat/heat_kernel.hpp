@@ -58,7 +58,7 @@ class HeatKernel final : public ElementKernel {
             std::span<double> f_ext, std::span<double> tangent) const override {
     typename Core::Temps T, T0;
     gather(in, T, T0);
-    _core.add_load(in.X, T, ld.kind, ld.face, magnitude, sink, layout(), f_ext,
+    _core.add_load(in.X, T, ld, magnitude, sink, layout(), f_ext,
                    tangent.size() == NN * NN ? tangent : std::span<double>{});
   }
 

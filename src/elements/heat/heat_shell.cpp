@@ -2,6 +2,7 @@
 // thickness (heat_shell.hpp; theory in docs/theory/thermal.md §7).
 #include "elements/heat/heat_shell.hpp"
 
+#include "elements/heat/face_exchange.hpp"
 #include "elements/heat/heat_kernel.hpp"
 #include "elements/structural/shell_geometry.hpp"
 #include "elements/structural/shell_section.hpp"
@@ -168,7 +169,7 @@ class HeatShellKernel final : public ElementKernel {
 
   bool supports_load(DistLoadKind kind, int face) const override {
     if (kind == DistLoadKind::BodyFlux) return face == 0;
-    return (kind == DistLoadKind::SurfaceFlux || kind == DistLoadKind::Film) &&
+    return (kind == DistLoadKind::SurfaceFlux || is_face_exchange(kind)) &&
            (face == 1 || face == 2);
   }
 
@@ -198,12 +199,14 @@ class HeatShellKernel final : public ElementKernel {
       if (ld.kind == DistLoadKind::SurfaceFlux) {
         f[idx(a, k)] += magnitude * A[a];
       } else if (lumped()) {
-        f[idx(a, k)] += magnitude * A[a] * (sink - in.u[idx(a, k)]);
-        if (!K.empty()) K[idx(a, k) * n + idx(a, k)] += magnitude * A[a];
+        const FaceExchange x = face_exchange(ld, magnitude, sink, in.u[idx(a, k)]);
+        f[idx(a, k)] += A[a] * x.q;
+        if (!K.empty()) K[idx(a, k) * n + idx(a, k)] -= A[a] * x.dq_dT;
       } else {
         for (int b = 0; b < _nn; ++b) {
-          f[idx(a, k)] += magnitude * M[a][b] * (sink - in.u[idx(b, k)]);
-          if (!K.empty()) K[idx(a, k) * n + idx(b, k)] += magnitude * M[a][b];
+          const FaceExchange x = face_exchange(ld, magnitude, sink, in.u[idx(b, k)]);
+          f[idx(a, k)] += M[a][b] * x.q;
+          if (!K.empty()) K[idx(a, k) * n + idx(b, k)] -= M[a][b] * x.dq_dT;
         }
       }
     }

@@ -143,7 +143,7 @@ class CoupledContinuumKernel final : public ElementKernel {
     split(in, l);
     const bool with_K = tangent.size() == NDOF * NDOF;
     if (_heat.supports_load(ld.kind, ld.face)) {
-      _heat.add_load(in.X, l.T, ld.kind, ld.face, magnitude, sink, layout(), f_ext,
+      _heat.add_load(in.X, l.T, ld, magnitude, sink, layout(), f_ext,
                      with_K ? tangent : std::span<double>{});
       return;
     }

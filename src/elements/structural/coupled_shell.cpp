@@ -149,7 +149,8 @@ class CoupledShellKernel final : public ElementKernel {
 
  private:
   static bool thermal(DistLoadKind k) {
-    return k == DistLoadKind::BodyFlux || k == DistLoadKind::SurfaceFlux || k == DistLoadKind::Film;
+    return k == DistLoadKind::BodyFlux || k == DistLoadKind::SurfaceFlux ||
+           k == DistLoadKind::Film || k == DistLoadKind::Radiation;
   }
   int per() const { return 6 + _P; }
   int mdof(int a, int i) const { return a * per() + i; }

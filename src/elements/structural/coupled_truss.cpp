@@ -124,7 +124,7 @@ void CoupledTrussKernel::load(const ElementInput& in, const DistributedLoad& ld,
   const int nd = 2 * (_ndim + 1);
   const bool with_K = tangent.size() == static_cast<std::size_t>(nd * nd);
   if (_heat.supports_load(ld.kind, ld.face)) {
-    _heat.add_load(in.X, l.T, ld.kind, ld.face, magnitude, sink, layout(), f_ext,
+    _heat.add_load(in.X, l.T, ld, magnitude, sink, layout(), f_ext,
                    with_K ? tangent : std::span<double>{});
     return;
   }

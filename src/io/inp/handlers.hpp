@@ -148,6 +148,20 @@ void handle_dflux(BuildState& s, const Keyword& kw);
 void handle_dsflux(BuildState& s, const Keyword& kw);
 void handle_film(BuildState& s, const Keyword& kw);
 void handle_sfilm(BuildState& s, const Keyword& kw);
+void handle_radiate(BuildState& s, const Keyword& kw);
+void handle_cyclic_symmetry_model(BuildState& s, const Keyword& kw);
+/// *TIE, CYCLIC SYMMETRY (handlers_cyclic.cpp), built at the end of the model data.
+struct CyclicTie {
+  std::string name, slave, master;
+  SourceLocation loc;
+  std::optional<double> tolerance;
+  bool adjust = true;
+};
+void build_cyclic_tie(BuildState& s, const CyclicTie& t);
+/// After the deck: the cyclic model's TIE= names a cyclic tie, no step needs other nodal
+/// diameters.
+void check_cyclic_symmetry(BuildState& s);
+void handle_sradiate(BuildState& s, const Keyword& kw);
 void handle_temperature(BuildState& s, const Keyword& kw);
 /// At the end of a *HEAT TRANSFER or *COUPLED TEMPERATURE-DISPLACEMENT step: *TEMPERATURE on a
 /// node with the temperature DOF 11 is an input error (use *BOUNDARY on DOF 11; Abaqus rule).

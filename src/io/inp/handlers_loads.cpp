@@ -207,8 +207,8 @@ void handle_boundary(BuildState& s, const Keyword& kw) {
     std::vector<int> dofs;
     double value = 0.0;
     if (!r.blank(1) && !is_label(r, 1)) {
-      const std::string type = canonical(r.text(1));
-      if (!bc_type_dofs(type, dofs))
+      const std::string named = canonical(r.text(1));
+      if (!bc_type_dofs(named, dofs))
         r.fail(fmt::format("field 2 ({})", r.text(1)),
                "write a DOF number or one of ENCASTRE, PINNED, XSYMM, YSYMM, ZSYMM, XASYMM, "
                "YASYMM, ZASYMM");
@@ -660,6 +660,79 @@ void handle_film(BuildState& s, const Keyword& kw) {
 }
 void handle_sfilm(BuildState& s, const Keyword& kw) {
   film(s, kw, true);
+}
+
+/// *RADIATE (element faces Rn; RNEG/RPOS on heat-transfer shells) and *SRADIATE (surface, R):
+/// radiation to the surroundings, eps sigma ((T_sink - Z)^4 - (T - Z)^4) into the face, with
+/// sigma and Z of *PHYSICAL CONSTANTS.
+static void radiate(BuildState& s, const Keyword& kw, bool surface) {
+  const int sink_amplitude = amplitude_param(s, kw);
+  const PhysicalConstants& pc = s.model.constants;
+  if (!pc.stefan_boltzmann) {
+    s.error(kw.loc, "",
+            "radiation needs the Stefan-Boltzmann constant in the model's units: add "
+            "*PHYSICAL CONSTANTS, STEFAN BOLTZMANN=<sigma> (and ABSOLUTE ZERO=<Z> when "
+            "temperatures are not absolute) before the first *STEP");
+    return kw.mark_read();
+  }
+  std::vector<DistributedLoad> loads;
+  for_each_line(s, kw, [&](const DataLine& line) {
+    const FieldReader r = s.reader(kw, line);
+    r.at_most(4, surface ? "surface, R, sink temperature, emissivity"
+                         : "element or element set, Rn, sink temperature, emissivity");
+    const std::string label = canonical(r.text(1));
+    DistributedLoad d;
+    d.kind = DistLoadKind::Radiation;
+    d.sink_temperature = r.real(2, "sink temperature");
+    d.magnitude = r.real(3, "emissivity");
+    if (d.magnitude < 0.0 || d.magnitude > 1.0)
+      r.fail("field 4 (emissivity)", "the emissivity must lie between 0 and 1");
+    d.stefan_boltzmann = *pc.stefan_boltzmann;
+    d.absolute_zero = pc.absolute_zero.value_or(0.0);
+    d.amplitude = sink_amplitude;
+    d.loc = r.loc();
+    if (label.find("CR") != std::string::npos)
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "cavity radiation (CalculiX's RnCR with *VIEWFACTOR) is not available; radiation "
+             "to the surroundings is Rn");
+    if (label.find("NU") != std::string::npos)
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "a non-uniform radiation (RnNU) needs the user subroutine RADIATION, which gapfem "
+             "does not call; give the sink temperature and the emissivity on the line (Rn)");
+    if (surface) {
+      if (label != "R")
+        r.fail(fmt::format("field 2 ({})", r.text(1)), "*SRADIATE supports the label R only");
+      for (const auto& f : find_surface(s, r).faces) {
+        require_temperature(s, r, f.elem);
+        check_face(s, r, f.elem, f.face, FaceUse::Thermal);
+        d.elem = f.elem;
+        d.face = f.face;
+        loads.push_back(d);
+      }
+      return;
+    }
+    const bool side = label == "RNEG" || label == "RPOS"; // the sides of heat-transfer shells
+    d.face = side ? (label == "RNEG" ? 1 : 2) : face_of(label, "R");
+    if (d.face <= 0)
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             "write the radiation label as Rn (n = face number) or, on heat-transfer shells, "
+             "RNEG or RPOS");
+    for (ElemId e : resolve_elements(s, r, 0)) {
+      require_temperature(s, r, e);
+      if (side) require_shell_side(s, r, e, label);
+      check_face(s, r, e, d.face, FaceUse::Thermal);
+      d.elem = e;
+      loads.push_back(d);
+    }
+  });
+  merge_dloads(s, kw, loads);
+}
+
+void handle_radiate(BuildState& s, const Keyword& kw) {
+  radiate(s, kw, false);
+}
+void handle_sradiate(BuildState& s, const Keyword& kw) {
+  radiate(s, kw, true);
 }
 
 } // namespace gapfem::inp

@@ -176,8 +176,6 @@ void handle_tie(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, param_text(kw, "POSITION TOLERANCE"),
                      "the position tolerance must not be negative");
   t.adjust = yes_no_param(kw, "ADJUST", true);
-  if (kw.has("CYCLIC SYMMETRY"))
-    reject_param(kw, "CYCLIC SYMMETRY", "cyclic-symmetry ties are not available");
   const int type = enum_param(kw, "TYPE", {"SURFACE TO SURFACE", "NODE TO SURFACE"}, 0);
   bool read = false;
   for_each_line(s, kw, [&](const DataLine& line) {
@@ -201,6 +199,12 @@ void handle_tie(BuildState& s, const Keyword& kw) {
                      "the tie needs a data line: slave surface, master surface");
   if (t.slave.empty()) return; // the data line was reported
   t.surface_to_surface = type == 0;
+  if (kw.has("CYCLIC SYMMETRY")) { // the sector's sides: handlers_cyclic.cpp
+    const CyclicTie c{t.name, t.slave, t.master, t.loc, t.tolerance, t.adjust};
+    s.cyclic_ties.emplace_back(t.name, t.loc);
+    s.deferred_constraints.push_back({0, [c](BuildState& st) { build_cyclic_tie(st, c); }});
+    return;
+  }
   s.deferred_constraints.push_back({0, [t](BuildState& st) { build_tie(st, t); }});
 }
 

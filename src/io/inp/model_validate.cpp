@@ -588,6 +588,7 @@ void finish_deck(BuildState& s) {
   if (s.diag.n_errors() > 0) return;
   finish_model_data(s);
   check_constraints(s);
+  check_cyclic_symmetry(s);
 }
 
 } // namespace gapfem::inp

@@ -96,6 +96,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*ORIENTATION", handle_orientation, W::Model, "NAME|SYSTEM|DEFINITION"},
   {"*MPC", handle_mpc, W::Model, "MODE|USER"},
   {"*TIE", handle_tie, W::Model, "NAME|POSITION TOLERANCE|ADJUST|TYPE|NO ROTATION|NO THICKNESS|CYCLIC SYMMETRY"},
+  {"*CYCLIC SYMMETRY MODEL", handle_cyclic_symmetry_model, W::Model, "N|TIE|NGRAPH|ELSET|CHECK"},
   {"*KINEMATIC COUPLING", handle_kinematic_coupling, W::Model, "REF NODE"},
   {"*COUPLING", handle_coupling, W::Model, "CONSTRAINT NAME|REF NODE|SURFACE|INFLUENCE RADIUS|ORIENTATION", 0, P::Coupling},
   {"*KINEMATIC", handle_kinematic, W::Model, "", kCoupling},
@@ -133,6 +134,8 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*DSFLUX", handle_dsflux, W::History, "OP|AMPLITUDE"},
   {"*FILM", handle_film, W::History, "OP|AMPLITUDE|FILM AMPLITUDE"},
   {"*SFILM", handle_sfilm, W::History, "OP|AMPLITUDE|FILM AMPLITUDE"},
+  {"*RADIATE", handle_radiate, W::History, "OP|AMPLITUDE"},
+  {"*SRADIATE", handle_sradiate, W::History, "OP|AMPLITUDE"},
   {"*TEMPERATURE", handle_temperature, W::History, "OP|AMPLITUDE|FILE"},
   {"*CONTACT INTERFERENCE", handle_contact_interference, W::History, "TYPE|SHRINK|AMPLITUDE|OP"},
   // history: output

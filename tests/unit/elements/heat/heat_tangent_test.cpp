@@ -4,6 +4,7 @@
 // coupled elements, films), revert-then-evaluate, and rigid motions.
 #include "heat_fixture.hpp"
 
+#include <cmath>
 #include <fmt/format.h>
 
 namespace gapfem::test::heat {
@@ -121,6 +122,39 @@ std::vector<ElementType> film_types() {
 }
 
 INSTANTIATE_TEST_SUITE_P(Heat, HeatFilmTangent, ::testing::ValuesIn(film_types()),
+                         [](const auto& info) {
+                           return std::string(element_info(info.param).name);
+                         });
+
+class HeatRadiationTangent : public ::testing::TestWithParam<ElementType> {};
+
+// Radiation on face 1 (eps = 0.7, sigma = 5.67e-8, absolute zero -273.15): f_ext is quartic in
+// the temperatures; the kernel returns -d f_ext / dT. At the sink temperature it carries no heat,
+// and at a uniform T the face's total is eps sigma ((Ts - Z)^4 - (T - Z)^4) times its area, the
+// film's total with h = 1 times that flux over (Ts - T).
+TEST_P(HeatRadiationTangent, MatchesCentralDifferencesAndTheUniformFlux) {
+  const ElementType t = GetParam();
+  Harness h(t, nodes_of(t), {}, 0.8);
+  randomize(h, 40.0, 160.0, 0.0, 7u);
+  DistributedLoad ld = distributed_load(DistLoadKind::Radiation, 1, 0.7, 80.0);
+  ld.stefan_boltzmann = 5.67e-8;
+  ld.absolute_zero = -273.15;
+  const FdReport fd = expect_fd_load_stiffness(h, ld, 0.7, 80.0);
+  EXPECT_GT(*std::max_element(fd.fd.begin(), fd.fd.end()), 0.0);
+  for (int a = 0; a < static_cast<int>(h.X.size()); ++a) h.u[h.nt(a)] = 80.0;
+  for (double v : h.load(ld, 0.7, 80.0, nullptr)) EXPECT_NEAR(v, 0.0, 1e-12);
+  const double T = 150.0, Ts = 80.0;
+  for (int a = 0; a < static_cast<int>(h.X.size()); ++a) h.u[h.nt(a)] = T;
+  double radiated = 0.0, film = 0.0;
+  for (double v : h.load(ld, 0.7, Ts, nullptr)) radiated += v;
+  std::vector<double> f;
+  h.load(DistLoadKind::Film, 1, 1.0, Ts, f);
+  for (double v : f) film += v; // = (Ts - T) x area
+  const double q = 0.7 * 5.67e-8 * (std::pow(Ts + 273.15, 4) - std::pow(T + 273.15, 4));
+  EXPECT_NEAR(radiated, film / (Ts - T) * q, 1e-12 * std::abs(film / (Ts - T) * q));
+}
+
+INSTANTIATE_TEST_SUITE_P(Heat, HeatRadiationTangent, ::testing::ValuesIn(film_types()),
                          [](const auto& info) {
                            return std::string(element_info(info.param).name);
                          });
