@@ -6,6 +6,8 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
+#include <string>
 
 namespace gapfem::inp {
 namespace {
@@ -393,7 +395,53 @@ void check_user_types(BuildState& s) {
 }
 
 /// Material options needed by the elements that use each material.
+/// The heat-transfer twin of a continuum stress element (C3D20R -> DC3D20, CPE4 -> DC2D4, …).
+std::optional<ElementType> heat_twin(ElementType t) {
+  const ElementTypeInfo& info = element_info(t);
+  if (info.family != ElementFamily::Continuum || info.temperature || !info.cell)
+    return std::nullopt;
+  const std::string prefix = info.plane == PlaneKind::Axisymmetric ? "DCAX"
+                             : info.plane != PlaneKind::None       ? "DC2D"
+                                                                   : "DC3D";
+  return element_type_from_name(prefix + std::to_string(shape_n_nodes(*info.cell)));
+}
+
+/// CalculiX runs heat transfer on stress elements (C3D8, C3D20R, CAX8, …): an element whose
+/// material has *CONDUCTIVITY but no *ELASTIC is read as its heat-transfer twin, one warning per
+/// type (docs/keywords.md, "CalculiX dialect").
+void heat_elements_of_stress_types(BuildState& s) {
+  Model& m = s.model;
+  struct Change {
+    ElementType to;
+    int count = 0;
+    SourceLocation first; ///< the first such element's definition
+  };
+  std::map<ElementType, Change> changed;
+  for (ElemId e = 0; e < m.mesh.n_elements(); ++e) {
+    const PropertyRef ref = m.element_property[e];
+    if (ref.kind != Kind::Solid) continue;
+    const int mi = m.solid_sections[ref.index].material;
+    if (mi < 0) continue;
+    const Material& mat = m.materials[mi];
+    if (mat.has_elastic() || mat.conductivity.empty()) continue;
+    const ElementType t = m.mesh.elem_types[e];
+    const auto twin = heat_twin(t);
+    if (!twin) continue;
+    Change& c = changed.try_emplace(t, Change{*twin, 0, m.element_location(e)}).first->second;
+    ++c.count;
+    m.mesh.elem_types[e] = *twin;
+  }
+  for (const auto& [from, c] : changed)
+    s.warn(
+        c.first,
+        fmt::format("{} {} element(s) have a material with *CONDUCTIVITY and no *ELASTIC: they "
+                    "are read as {} heat-transfer elements (CalculiX's use of stress elements in "
+                    "heat transfer); a step that needs their displacements is an error",
+                    c.count, element_info(from).name, element_info(c.to).name));
+}
+
 void check_materials(BuildState& s) {
+  heat_elements_of_stress_types(s);
   std::map<std::pair<int, int>, bool> reported; // (material, 0 elastic / 1 conductivity)
   for (ElemId e = 0; e < s.model.mesh.n_elements(); ++e) {
     const PropertyRef ref = s.model.element_property[e];
