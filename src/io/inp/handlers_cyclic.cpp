@@ -47,14 +47,27 @@ std::vector<NodeId> surface_nodes(const Model& m, const Surface& s) {
   return {nodes.begin(), nodes.end()};
 }
 
-/// The master surface's facets with their bounding boxes, for the closest-point search.
+/// The master surface's facets with their bounding boxes, for the closest-point search. A
+/// node-based master (CalculiX's cyclic decks) has one-node facets: its nodes, which the turned
+/// slave nodes must meet.
 struct MasterSearch {
   std::vector<SurfaceFacet> facets;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> boxes;
-  double mean_size = 0.0;
+  double mean_size = 0.0; ///< facets: their mean size; nodes: the mean nearest-node distance
   std::set<NodeId> nodes;
 
-  MasterSearch(const Model& m, const Surface& master) : facets(surface_facets(m, master)) {
+  MasterSearch(const Model& m, const Surface& master) {
+    if (master.node_based) {
+      for (const auto& wn : master.nodes) nodes.insert(wn.node);
+      for (NodeId n : nodes) {
+        SurfaceFacet f;
+        f.n_nodes = 1;
+        f.nodes[0] = n;
+        facets.push_back(f);
+      }
+    } else {
+      facets = surface_facets(m, master);
+    }
     for (const SurfaceFacet& f : facets) {
       Eigen::Vector3d lo = vec(m.mesh.coords[f.nodes[0]]), hi = lo;
       for (int a = 0; a < f.n_nodes; ++a) {
@@ -63,9 +76,27 @@ struct MasterSearch {
         hi = hi.cwiseMax(vec(m.mesh.coords[f.nodes[a]]));
       }
       boxes.emplace_back(lo, hi);
-      mean_size += facet_size(m, f) / static_cast<double>(facets.size());
+      if (!master.node_based) mean_size += facet_size(m, f) / static_cast<double>(facets.size());
     }
+    if (master.node_based) mean_size = mean_node_spacing(m);
   }
+
+  /// The mean distance from each master node to its nearest neighbour (all pairs: a sector's
+  /// side has a few thousand nodes at most).
+  double mean_node_spacing(const Model& m) const {
+    if (facets.size() < 2) return 0.0;
+    double sum = 0.0;
+    for (const SurfaceFacet& a : facets) {
+      double best = std::numeric_limits<double>::infinity();
+      for (const SurfaceFacet& b : facets)
+        if (a.nodes[0] != b.nodes[0])
+          best = std::min(best,
+                          (vec(m.mesh.coords[a.nodes[0]]) - vec(m.mesh.coords[b.nodes[0]])).norm());
+      sum += best;
+    }
+    return sum / static_cast<double>(facets.size());
+  }
+
   /// The closest point of the surface to x and its facet.
   std::pair<FacetPoint, std::size_t> closest(const Model& m, const Eigen::Vector3d& x) const {
     FacetPoint best;
@@ -75,13 +106,22 @@ struct MasterSearch {
       const Eigen::Vector3d d =
           (boxes[k].first - x).cwiseMax(Eigen::Vector3d::Zero()).cwiseMax(x - boxes[k].second);
       if (d.norm() >= best.distance) continue;
-      const FacetPoint p = closest_point(m, facets[k], {x.x(), x.y(), x.z()});
+      const FacetPoint p = point_of(m, facets[k], x);
       if (p.distance < best.distance) {
         best = p;
         at = k;
       }
     }
     return {best, at};
+  }
+
+  static FacetPoint point_of(const Model& m, const SurfaceFacet& f, const Eigen::Vector3d& x) {
+    if (f.n_nodes > 1) return closest_point(m, f, {x.x(), x.y(), x.z()});
+    FacetPoint p; // a node of a node-based master
+    p.N[0] = 1.0;
+    p.point = m.mesh.coords[f.nodes[0]];
+    p.distance = (vec(p.point) - x).norm();
+    return p;
   }
 };
 
@@ -212,7 +252,7 @@ void build_cyclic_tie(BuildState& st, const CyclicTie& t) {
   if (ms.facets.empty() && st.incomplete_surfaces.count(t.master)) return;
   if (ms.facets.empty())
     throw InputError(t.loc, entity,
-                     fmt::format("the master surface {} has no element faces", t.master));
+                     fmt::format("the master surface {} has no element faces or nodes", t.master));
   const double tol = t.tolerance.value_or(0.05 * ms.mean_size);
   const Eigen::Vector3d a = vec(cm.a), e = (vec(cm.b) - a).normalized();
   const double alpha = 2 * std::numbers::pi / cm.n;

@@ -187,7 +187,7 @@ void handle_tie(BuildState& s, const Keyword& kw) {
     read = true;
     const Surface& slave = tie_surface(s, r, 0, "slave");
     const Surface& master = tie_surface(s, r, 1, "master");
-    if (master.node_based)
+    if (master.node_based && !kw.has("CYCLIC SYMMETRY")) // a cyclic master's nodes are met
       r.fail(fmt::format("surface {}", master.name),
              "the master surface of a tie must be element-based (its faces interpolate the slave "
              "nodes)");

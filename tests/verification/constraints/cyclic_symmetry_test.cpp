@@ -1,7 +1,8 @@
 // Cyclic symmetry (*CYCLIC SYMMETRY MODEL + *TIE, CYCLIC SYMMETRY): a sector of a ring with a
 // wavy, lopsided outer edge (r_out = 2 (1 + 0.15 cos N theta + 0.05 sin 2 N theta): no mirror
 // plane inside the sector), spun (CENTRIF) and pressed on its outer face, gives the displacements
-// of the whole ring meshed in full, node for node, whichever side is the slave and under NLGEOM.
+// of the whole ring meshed in full, node for node, whichever side is the slave, with a node-based
+// master side (CalculiX's layout) and under NLGEOM.
 // The ring's rigid rotation is held by its inner nodes' mean tangential displacement (see ring()),
 // so the whole ring's answer is cyclic symmetric (checked too).
 #include "test_util.hpp"
@@ -35,7 +36,8 @@ std::array<double, 3> position(int i, int j, int k) {
 
 /// The whole ring (sectors = kN, the last column joined to the first) or one sector with its two
 /// sides tied; `slave_first`: the theta = 0 side is the slave.
-std::string ring(bool sector, bool slave_first, bool nlgeom, int n_param = kN) {
+std::string ring(bool sector, bool slave_first, bool nlgeom, int n_param = kN,
+                 bool node_master = false) {
   const int cells = sector ? kNt : kN * kNt;
   const int columns = sector ? kNt + 1 : kN * kNt;
   std::string d = "*HEADING\ncyclic ring\n*NODE, NSET=ALLN\n";
@@ -65,9 +67,16 @@ std::string ring(bool sector, bool slave_first, bool nlgeom, int n_param = kN) {
     d += "*ELSET, ELSET=FIRST, GENERATE\n1, 2, 1\n";
     d += fmt::format("*ELSET, ELSET=LAST, GENERATE\n{}, {}, 1\n", e - 2, e - 1);
     d += "*SURFACE, NAME=SIDE0\nFIRST, S3\n*SURFACE, NAME=SIDE1\nLAST, S5\n";
+    if (node_master) { // CalculiX's layout: the master side as a node-based surface
+      d += "*NSET, NSET=COL0\n";
+      for (int k = 0; k <= 1; ++k)
+        for (int i = 0; i <= kNr; ++i) d += fmt::format("{}\n", node_id(i, 0, k, columns));
+      d += "*SURFACE, NAME=SIDE0N, TYPE=NODE\nCOL0\n";
+    }
     d += fmt::format("*CYCLIC SYMMETRY MODEL, N={}\n0., 0., 0., 0., 0., 1.\n", n_param);
-    d += slave_first ? "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE0, SIDE1\n"
-                     : "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE1, SIDE0\n";
+    d += slave_first   ? "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE0, SIDE1\n"
+         : node_master ? "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE1, SIDE0N\n"
+                       : "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE1, SIDE0\n";
   }
   // The rigid rotation about z: the mean tangential displacement of the inner bottom nodes is
   // zero (all of them in the whole ring; the sector's own, its slave column left out, in the
@@ -132,9 +141,11 @@ TEST(CyclicSymmetry, SectorGivesTheWholeRing) {
                    R * displacement(full, node_id(i, j, 1, kN * kNt)))
                       .norm(),
                   1e-8 * scale);
-    for (bool slave_first : {false, true}) {
-      SCOPED_TRACE(fmt::format("NLGEOM {}, slave first {}", nlgeom, slave_first));
-      const JobResult sec = run_deck(ring(true, slave_first, nlgeom), true, "sector");
+    for (int variant : {0, 1, 2}) { // slave last, slave first, a node-based master
+      const bool slave_first = variant == 1;
+      SCOPED_TRACE(fmt::format("NLGEOM {}, variant {}", nlgeom, variant));
+      const JobResult sec =
+          run_deck(ring(true, slave_first, nlgeom, kN, variant == 2), true, "sector");
       ASSERT_EQ(sec.exit_code, 0) << sec.error;
       for (int k = 0; k <= 1; ++k)
         for (int j = 0; j <= kNt; ++j)
