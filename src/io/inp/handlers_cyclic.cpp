@@ -202,11 +202,12 @@ void handle_cyclic_symmetry_model(BuildState& s, const Keyword& kw) {
                                *n, 360.0 / *n));
   def.n = *n;
   def.tie = name_param(kw, "TIE", false);
-  if (s.cyclic_model)
-    throw InputError(kw.loc, "",
-                     fmt::format("the model has a *CYCLIC SYMMETRY MODEL already ({}); "
-                                 "a model has one",
-                                 s.cyclic_model->loc.str()));
+  for (const BuildState::CyclicModelDef& other : s.cyclic_models)
+    if (other.tie == def.tie)
+      throw InputError(kw.loc, def.tie.empty() ? "" : param_text(kw, "TIE"),
+                       fmt::format("{} has a *CYCLIC SYMMETRY MODEL already ({}); give each "
+                                   "sector's its TIE= (one model per cyclic tie)",
+                                   def.tie.empty() ? "the model" : "this tie", other.loc.str()));
   for (const char* p : {"NGRAPH", "ELSET"})
     if (kw.has(p))
       s.warn(kw.loc, fmt::format("{}= (CalculiX's expansion of the results to further sectors): "
@@ -218,6 +219,12 @@ void handle_cyclic_symmetry_model(BuildState& s, const Keyword& kw) {
   bool read = false;
   for_each_line(s, kw, [&](const DataLine& line) {
     const FieldReader r = s.reader(kw, line);
+    if (read && r.size() == 1 && !r.blank(0) && !parse_real(r.text(0))) {
+      s.warn(r.loc(), fmt::format("{}: a set name after the axis (older CalculiX decks) is not "
+                                  "used",
+                                  r.text(0)));
+      return;
+    }
     r.at_most(6, "the axis: x, y, z of point a, x, y, z of point b");
     if (read) r.fail("data", "the axis takes one data line: two points, a and b");
     read = true;
@@ -232,18 +239,25 @@ void handle_cyclic_symmetry_model(BuildState& s, const Keyword& kw) {
     throw InputError(kw.loc, "",
                      "give the symmetry axis on a data line: x, y, z of point a, "
                      "x, y, z of point b");
-  s.cyclic_model = def;
+  s.cyclic_models.push_back(def);
 }
 
 void build_cyclic_tie(BuildState& st, const CyclicTie& t) {
   Model& m = st.model;
   const std::string entity = "tie " + t.name;
-  if (!st.cyclic_model)
+  // its model: the one naming it (TIE=), else the one naming no tie
+  const BuildState::CyclicModelDef* model = nullptr;
+  for (const BuildState::CyclicModelDef& c : st.cyclic_models)
+    if (c.tie == t.name || (c.tie.empty() && !model)) model = &c;
+  if (!model)
     throw InputError(t.loc, entity,
-                     "a tie with CYCLIC SYMMETRY needs *CYCLIC SYMMETRY MODEL, N=<sectors> with "
-                     "the symmetry axis in the model data");
-  const BuildState::CyclicModelDef& cm = *st.cyclic_model;
-  if (!cm.tie.empty() && cm.tie != t.name) return; // check_cyclic_symmetry reports it
+                     st.cyclic_models.empty()
+                         ? "a tie with CYCLIC SYMMETRY needs *CYCLIC SYMMETRY MODEL, N=<sectors> "
+                           "with the symmetry axis in the model data"
+                         : fmt::format("no *CYCLIC SYMMETRY MODEL belongs to this tie: every one "
+                                       "names another TIE=; give this sector's with TIE={}",
+                                       t.name));
+  const BuildState::CyclicModelDef& cm = *model;
   if (m.space != ModelSpace::ThreeD)
     throw InputError(t.loc, entity, "cyclic symmetry needs a three-dimensional model");
   const Surface& slave = m.surfaces.at(t.slave);
@@ -310,17 +324,17 @@ void build_cyclic_tie(BuildState& st, const CyclicTie& t) {
 
 void check_cyclic_symmetry(BuildState& s) {
   if (s.cyclic_ties.empty()) {
-    if (s.cyclic_model)
-      s.warn(s.cyclic_model->loc, "*CYCLIC SYMMETRY MODEL without a *TIE, CYCLIC SYMMETRY: the "
-                                  "model is analysed as it is, without cyclic constraints");
+    if (!s.cyclic_models.empty())
+      s.warn(s.cyclic_models.front().loc, "*CYCLIC SYMMETRY MODEL without a *TIE, CYCLIC "
+                                          "SYMMETRY: the model is analysed as it is, without "
+                                          "cyclic constraints");
     return;
   }
-  const auto& cm = s.cyclic_model;
-  if (cm && !cm->tie.empty() &&
-      std::none_of(s.cyclic_ties.begin(), s.cyclic_ties.end(),
-                   [&](const auto& t) { return t.first == cm->tie; }))
-    s.error(cm->loc, fmt::format("TIE={}", cm->tie),
-            "no *TIE, CYCLIC SYMMETRY has this name; name the cyclic tie of the sector");
+  for (const BuildState::CyclicModelDef& cm : s.cyclic_models)
+    if (!cm.tie.empty() && std::none_of(s.cyclic_ties.begin(), s.cyclic_ties.end(),
+                                        [&](const auto& t) { return t.first == cm.tie; }))
+      s.error(cm.loc, fmt::format("TIE={}", cm.tie),
+              "no *TIE, CYCLIC SYMMETRY has this name; name the cyclic tie of the sector");
   for (const Step& step : s.model.steps)
     if (is_perturbation(step.procedure) || is_mode_based(step.procedure))
       s.error(step.loc, fmt::format("step {}", step.number),

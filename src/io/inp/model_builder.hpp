@@ -136,14 +136,14 @@ struct BuildState {
   };
   std::vector<DeferredConstraint> deferred_constraints;
   /// *CYCLIC SYMMETRY MODEL: the number of sectors in 360 degrees and the axis from a to b (the
-  /// ties with CYCLIC SYMMETRY use it); `tie` CalculiX's TIE= (empty: the model's cyclic tie).
+  /// ties with CYCLIC SYMMETRY use it); `tie` CalculiX's TIE= (empty: every cyclic tie's).
   struct CyclicModelDef {
     double n = 0.0;
     Vec3 a{}, b{};
     std::string tie;
     SourceLocation loc;
   };
-  std::optional<CyclicModelDef> cyclic_model;
+  std::vector<CyclicModelDef> cyclic_models; ///< one, or one per TIE= (CalculiX)
   std::vector<std::pair<std::string, SourceLocation>> cyclic_ties; ///< *TIE, CYCLIC SYMMETRY
   /// The *COUPLING being read (its *KINEMATIC / *DISTRIBUTING follow it).
   struct CouplingDef {

@@ -236,18 +236,18 @@ std::string parent_names(unsigned parents) {
 /// always skipped with a warning, an output request never stops a run), and named definitions
 /// only used through parameters gapfem rejects anyway (skipped under --ignore-unknown).
 bool skippable_keyword(const std::string& key, bool* output = nullptr) {
-  static const char* const kOutput[] = {"INTEGRATEDOUTPUT",    "INTEGRATEDOUTPUTSECTION",
-                                        "RADIATIONPRINT",      "RADIATIONFILE",
-                                        "RADIATIONOUTPUT",     "MODALPRINT",
-                                        "MODALFILE",           "MODALOUTPUT",
-                                        "USEROUTPUTVARIABLES", "SUBSTRUCTUREPRINT",
-                                        "EQUATIONPRINT",       "INTERACTIONPRINT",
-                                        "INTERACTIONFILE",     "INTERACTIONOUTPUT",
-                                        "SURFACEOUTPUT",       "SECTIONOUTPUT",
-                                        "TIMEPOINTS"};
+  static const char* const kOutputKeywords[] = {"INTEGRATEDOUTPUT",    "INTEGRATEDOUTPUTSECTION",
+                                                "RADIATIONPRINT",      "RADIATIONFILE",
+                                                "RADIATIONOUTPUT",     "MODALPRINT",
+                                                "MODALFILE",           "MODALOUTPUT",
+                                                "USEROUTPUTVARIABLES", "SUBSTRUCTUREPRINT",
+                                                "EQUATIONPRINT",       "INTERACTIONPRINT",
+                                                "INTERACTIONFILE",     "INTERACTIONOUTPUT",
+                                                "SURFACEOUTPUT",       "SECTIONOUTPUT",
+                                                "TIMEPOINTS"};
   static const char* const kDefinitions[] = {"NODERESPONSE", "ELEMENTRESPONSE"};
   if (output) *output = false;
-  for (const char* k : kOutput)
+  for (const char* k : kOutputKeywords)
     if (key == k) {
       if (output) *output = true;
       return true;

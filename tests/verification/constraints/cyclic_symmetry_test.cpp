@@ -73,7 +73,9 @@ std::string ring(bool sector, bool slave_first, bool nlgeom, int n_param = kN,
         for (int i = 0; i <= kNr; ++i) d += fmt::format("{}\n", node_id(i, 0, k, columns));
       d += "*SURFACE, NAME=SIDE0N, TYPE=NODE\nCOL0\n";
     }
-    d += fmt::format("*CYCLIC SYMMETRY MODEL, N={}\n0., 0., 0., 0., 0., 1.\n", n_param);
+    d += fmt::format("*CYCLIC SYMMETRY MODEL, N={}{}\n0., 0., 0., 0., 0., 1.\n{}", n_param,
+                     node_master ? ", TIE=CYC, NGRAPH=1" : "",
+                     node_master ? "ALLN\n" : ""); // CalculiX's: a named tie, a set line
     d += slave_first   ? "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE0, SIDE1\n"
          : node_master ? "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE1, SIDE0N\n"
                        : "*TIE, NAME=CYC, CYCLIC SYMMETRY\nSIDE1, SIDE0\n";
