@@ -95,12 +95,7 @@ Discretization::Discretization(const Model& model, const KernelOptions& options)
   std::vector<double> zero(static_cast<std::size_t>(_dofs.n_slots()), 0.0);
   std::vector<double> t0 = model.initial_temperature;
   t0.resize(static_cast<std::size_t>(mesh.n_nodes()), 0.0);
-  FieldView fields;
-  fields.u = zero;
-  fields.u_start = zero;
-  fields.temperature = t0;
-  fields.temperature_start = t0;
-  fields.initial_temperature = t0;
+  FieldView fields{zero, zero, t0, t0, t0, {}, {}, {}, {}, {}, {}};
   StepContext ctx;
   ctx.space = model.space;
   ctx.model_size = model.model_size();
