@@ -41,11 +41,94 @@ bool contains(const std::vector<int>& v, int x) {
   return std::find(v.begin(), v.end(), x) != v.end();
 }
 
+/// The local axes (rows e1, e2, e3) of a coupling's ORIENTATION= at x; the identity without one;
+/// nullopt for a point on a cylindrical system's axis when `on_axis_ok` (else an error).
+std::optional<Eigen::Matrix3d> coupling_axes(const BuildState& s, const RowOrigin& o,
+                                             const std::string& orientation, const Vec3& x,
+                                             bool on_axis_ok = false) {
+  if (orientation.empty()) return Eigen::Matrix3d::Identity();
+  const auto it = s.orientations.find(orientation);
+  if (it == s.orientations.end())
+    throw InputError(o.loc, o.name,
+                     fmt::format("ORIENTATION={}: no *ORIENTATION of this name is defined; define "
+                                 "it or correct the name",
+                                 orientation));
+  if (s.model.space != ModelSpace::ThreeD)
+    throw InputError(o.loc, o.name,
+                     fmt::format("ORIENTATION={}: a coupling in a local system needs a "
+                                 "three-dimensional model",
+                                 orientation));
+  std::string why;
+  bool on_axis = false;
+  const auto axes = orientation_axes_at(s, it->second, x, why, &on_axis);
+  if (!axes && on_axis && on_axis_ok) return std::nullopt;
+  if (!axes) throw InputError(o.loc, o.name, fmt::format("ORIENTATION={}: {}", orientation, why));
+  Eigen::Matrix3d A;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) A(i, j) = (*axes)[static_cast<std::size_t>(i)][j];
+  return A;
+}
+
+/// e . (field of node a) - e . (field of node b) [- (d x e) . theta(b)]: one row along the local
+/// direction e, the largest component of a's the dependent DOF; `first` the field's first DOF
+/// (1 translations, 4 rotations); `d` given: a's translation follows b's rigid motion.
+LinearConstraint local_row(const RowOrigin& o, NodeId a, NodeId b, int first,
+                           const Eigen::Vector3d& e, const Eigen::Vector3d* d) {
+  LinearConstraint c = new_row(o);
+  int big = 0;
+  e.cwiseAbs().maxCoeff(&big);
+  c.terms.push_back({a, dof_of(first + big), e[big], false});
+  for (int j = 0; j < 3; ++j)
+    if (j != big && std::abs(e[j]) > 1e-14) c.terms.push_back({a, dof_of(first + j), e[j], false});
+  for (int j = 0; j < 3; ++j)
+    if (std::abs(e[j]) > 1e-14) c.terms.push_back({b, dof_of(first + j), -e[j], true});
+  if (d) { // e . (theta x d) = theta . (d x e)
+    const Eigen::Vector3d m = d->cross(e);
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(m[k]) > 1e-14 * std::max(1.0, d->norm())) {
+        c.terms.push_back({b, dof_of(4 + k), -m[k], true});
+        c.small_rotation = true;
+      }
+  }
+  return c;
+}
+
 // ------------------------------------------------------------------ kinematic coupling rows
 /// Coupling nodes follow the rigid motion of the reference node in the selected DOFs:
-/// translations through rigid links, rotations equal (only at nodes that carry rotations).
+/// translations through rigid links, rotations equal (only at nodes that carry rotations); with
+/// ORIENTATION= the DOFs are those of its local axes at each coupling node.
 void kinematic_rows(BuildState& s, const RowOrigin& o, NodeId ref, const std::vector<NodeId>& nodes,
-                    const std::vector<int>& dofs) {
+                    const std::vector<int>& dofs, const std::string& orientation = {}) {
+  if (!orientation.empty()) {
+    const Vec3& XR = s.model.mesh.coords[ref];
+    int on_axis = 0;
+    for (NodeId n : nodes) {
+      if (n == ref) continue;
+      const auto axes = coupling_axes(s, o, orientation, s.model.mesh.coords[n], true);
+      if (!axes) { // no radial or tangential direction there: the node takes no part
+        ++on_axis;
+        continue;
+      }
+      const Eigen::Matrix3d& A = *axes;
+      const Vec3 dv = sub(s.model.mesh.coords[n], XR);
+      const Eigen::Vector3d d(dv[0], dv[1], dv[2]);
+      for (int i = 1; i <= 3; ++i)
+        if (contains(dofs, i))
+          s.model.constraints.push_back(local_row(o, n, ref, 1, A.row(i - 1).transpose(), &d));
+      for (int i = 4; i <= 6; ++i)
+        if (contains(dofs, i)) {
+          LinearConstraint c = local_row(o, n, ref, 4, A.row(i - 4).transpose(), nullptr);
+          c.drop_if_missing = true;
+          s.model.constraints.push_back(std::move(c));
+        }
+    }
+    if (on_axis > 0)
+      s.warn(o.loc, fmt::format("{}: {} coupling node(s) lie on the axis of the cylindrical "
+                                "ORIENTATION={}, where its local directions are undefined; they "
+                                "are left out of the coupling",
+                                o.name, on_axis, orientation));
+    return;
+  }
   const SpaceDofs sd = space_dofs(s.model.space);
   const Vec3& XR = s.model.mesh.coords[ref];
   for (NodeId n : nodes) {
@@ -164,15 +247,25 @@ void distributing_rows(BuildState& s, const RowOrigin& o, const BuildState::Coup
     }
     s.model.constraints.push_back(std::move(row));
   }
+  // rotation rows along the global axes, or the local ones of ORIENTATION= at the reference node:
+  // e . theta_R - e . (sum_n G_n u_n) = 0
+  const Eigen::Matrix3d A = *coupling_axes(s, o, c.orientation, XR);
   for (int i : sd.rotations) {
     if (!contains(dofs, i)) continue;
+    const Eigen::Vector3d e =
+        three_d ? Eigen::Vector3d(A.row(i - 4).transpose()) : Eigen::Vector3d::Unit(i - 4);
     LinearConstraint row = new_row(o);
     row.eliminates = false;
-    row.terms.push_back({c.ref, dof_of(i), 1.0, true});
+    int big = 0;
+    e.cwiseAbs().maxCoeff(&big);
+    row.terms.push_back({c.ref, dof_of(4 + big), e[big], true});
+    for (int j = 0; j < 3; ++j)
+      if (j != big && std::abs(e[j]) > 1e-14)
+        row.terms.push_back({c.ref, dof_of(4 + j), e[j], true});
     for (const auto& [n, wn] : w) {
-      const Eigen::Matrix3d Gn = G(sub(mesh.coords[n], xbar), wn);
+      const Eigen::RowVector3d g = e.transpose() * G(sub(mesh.coords[n], xbar), wn);
       for (int j : sd.translations) {
-        const double a = Gn(i - 4, j - 1);
+        const double a = g[j - 1];
         if (std::abs(a) > 1e-14) row.terms.push_back({n, dof_of(j), -a, false});
       }
     }
@@ -296,10 +389,9 @@ void handle_coupling(BuildState& s, const Keyword& kw) {
   // skipped without a second message
   s.couplings.emplace_back();
   s.couplings.back().failed = true;
-  if (kw.has("ORIENTATION"))
-    reject_param(kw, "ORIENTATION", "couplings in a local coordinate system are not available");
   BuildState::CouplingDef c;
   c.name = name_param(kw, "CONSTRAINT NAME", true);
+  c.orientation = name_param(kw, "ORIENTATION", false);
   c.loc = kw.loc;
   c.ref = param_node(s, kw, "REF NODE");
   const std::string surf = set_param(s, kw, "SURFACE", true);
@@ -369,8 +461,10 @@ void handle_kinematic(BuildState& s, const Keyword& kw) {
   std::vector<NodeId> nodes;
   for (const auto& [n, a] : c.nodes) nodes.push_back(n);
   const NodeId ref = c.ref;
-  s.deferred_constraints.push_back(
-      {1, [o, ref, nodes, dofs](BuildState& st) { kinematic_rows(st, o, ref, nodes, dofs); }});
+  const std::string orientation = c.orientation;
+  s.deferred_constraints.push_back({1, [o, ref, nodes, dofs, orientation](BuildState& st) {
+                                      kinematic_rows(st, o, ref, nodes, dofs, orientation);
+                                    }});
 }
 
 void handle_distributing(BuildState& s, const Keyword& kw) {

@@ -152,8 +152,9 @@ struct BuildState {
     NodeId ref = -1;
     std::vector<std::pair<NodeId, double>> nodes; ///< coupling nodes and tributary areas
     double radius = 0.0;                          ///< INFLUENCE RADIUS (0: none)
-    bool defined = false;                         ///< a *KINEMATIC or *DISTRIBUTING was given
-    bool failed = false; ///< the *COUPLING line had an error (its sub-options are skipped)
+    std::string orientation; ///< ORIENTATION=: the DOFs of its *KINEMATIC / *DISTRIBUTING are local
+    bool defined = false;    ///< a *KINEMATIC or *DISTRIBUTING was given
+    bool failed = false;     ///< the *COUPLING line had an error (its sub-options are skipped)
   };
   std::vector<CouplingDef> couplings;
 

@@ -162,6 +162,45 @@ std::optional<std::array<Vec3, 3>> spring_axes(const BuildState& s, const Orient
 
 } // namespace
 
+std::optional<std::array<Vec3, 3>> orientation_axes_at(const BuildState& s, const OrientationDef& o,
+                                                       const Vec3& x, std::string& why,
+                                                       bool* on_axis) {
+  if (o.system != OrientationDef::System::Cylindrical) return spring_axes(s, o, why);
+  using D = OrientationDef::Definition;
+  if (o.definition == D::OffsetToNodes) {
+    why = "DEFINITION=OFFSET TO NODES is not available here; give the axis points' coordinates "
+          "or global node numbers";
+    return std::nullopt;
+  }
+  std::array<Vec3, 2> p{o.points[0], o.points[1]};
+  if (o.definition == D::Nodes)
+    for (int i = 0; i < 2; ++i) {
+      const NodeId n = s.model.mesh.find_node(o.nodes[i]);
+      if (n < 0) {
+        why = fmt::format("node {} of its first data line is not defined", o.labels[i]);
+        return std::nullopt;
+      }
+      p[i] = s.model.mesh.coords[n];
+    }
+  const Vec3 axis = minus(p[1], p[0]);
+  if (norm(axis) == 0.0) {
+    why = "its points a and b coincide, so they define no axis";
+    return std::nullopt;
+  }
+  const Vec3 e3 = scaled(axis, 1.0 / norm(axis));
+  const Vec3 ax = minus(x, p[0]);
+  const double along = ax[0] * e3[0] + ax[1] * e3[1] + ax[2] * e3[2];
+  const Vec3 r = minus(ax, scaled(e3, along));
+  if (!(norm(r) > 1e-12 * std::max(norm(axis), norm(ax)))) {
+    why = "a point it is used at lies on the cylindrical system's axis, where the radial "
+          "direction is undefined";
+    if (on_axis) *on_axis = true;
+    return std::nullopt;
+  }
+  const Vec3 e1 = scaled(r, 1.0 / norm(r));
+  return std::array<Vec3, 3>{e1, cross(e3, e1), e3};
+}
+
 void resolve_spring_orientation(BuildState& s, SpringSection& sec, ElementType type) {
   if (sec.orientation.empty()) return;
   const char* keyword = sec.dashpot ? "*DASHPOT" : "*SPRING";

@@ -4,9 +4,9 @@
 /// https://abaqus-docs.mit.edu/2017/English/SIMACAEKEYRefMap/simakey-r-orientation.htm): kept by
 /// name while the deck is read and turned into axes where something refers to it. Today *SPRING
 /// and *DASHPOT, ORIENTATION= use it (SPRING1/2, DASHPOT1/2: the DOFs of the data line are then
-/// local) and *ROTARY INERTIA (its tensor in the local axes); the other keywords that take
-/// ORIENTATION= still refuse the parameter. An
-/// orientation nothing refers to changes nothing and is only read.
+/// local), *ROTARY INERTIA (its tensor in the local axes) and *COUPLING (its DOFs local); the other
+/// keywords that take ORIENTATION= still refuse the parameter. An orientation nothing refers to
+/// changes nothing and is only read.
 #include "common/error.hpp"
 #include "common/types.hpp"
 #include "model/section.hpp"
@@ -49,6 +49,15 @@ std::optional<std::array<Vec3, 3>> rectangular_axes(const Vec3& a, const Vec3& b
 /// Keywords Reference gives ORIENTATION for those only), that it is defined and rectangular, and
 /// sets `sec.axes`; reports what is wrong through `s` (one error) and leaves `axes` empty then.
 void resolve_spring_orientation(BuildState& s, SpringSection& sec, ElementType type);
+
+/// The local axes (e1, e2, e3) of an orientation at the point x: a rectangular system's are the
+/// same everywhere; a cylindrical system's are radial, tangential and axial about the axis from
+/// its point a to its point b (Abaqus, *ORIENTATION, SYSTEM=CYLINDRICAL). No value, with the
+/// sentence in `why`, for the other systems, OFFSET TO NODES, undefined nodes, points that span no
+/// plane, or x on a cylindrical system's axis (then `on_axis`, when given, is set).
+std::optional<std::array<Vec3, 3>> orientation_axes_at(const BuildState& s, const OrientationDef& o,
+                                                       const Vec3& x, std::string& why,
+                                                       bool* on_axis = nullptr);
 
 /// *ROTARY INERTIA, ORIENTATION=: the tensors given in the orientation's axes turned to global
 /// ones, I_global = R I R^T (R's columns the local axes); one error per orientation that is missing
