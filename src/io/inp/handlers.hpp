@@ -55,6 +55,7 @@ void handle_matrix_input(BuildState& s, const Keyword& kw);
 void handle_matrix_assemble(BuildState& s, const Keyword& kw);
 void handle_substructure_generate(BuildState& s, const Keyword& kw);
 void handle_retained_nodal_dofs(BuildState& s, const Keyword& kw);
+void handle_substructure_matrix_output(BuildState& s, const Keyword& kw);
 void handle_substructure_property(BuildState& s, const Keyword& kw);
 void handle_substructure_path(BuildState& s, const Keyword& kw);
 /// The substructure type TYPE=Zn of an *ELEMENT keyword: its library (FILE=, or the one library

@@ -183,7 +183,9 @@ void handle_substructure_generate(BuildState& s, const Keyword& kw) {
   set_procedure(s, kw, Procedure::SubstructureGenerate);
   SubstructureGeneration g;
   g.loc = kw.loc;
-  g.type = to_upper(trim(param_value(kw, "TYPE", true)));
+  if (!kw.has("TYPE")) // CalculiX's *SUBSTRUCTURE GENERATE has no TYPE=
+    s.warn(kw.loc, "TYPE= is missing (CalculiX's layout): the substructure is generated as Z1");
+  g.type = kw.has("TYPE") ? to_upper(trim(param_value(kw, "TYPE", true))) : std::string("Z1");
   const auto number = g.type.size() > 1 && g.type[0] == 'Z'
                           ? parse_integer(std::string_view(g.type).substr(1))
                           : std::nullopt;
@@ -206,6 +208,25 @@ void handle_substructure_generate(BuildState& s, const Keyword& kw) {
                                  "recovery data of the whole substructure",
                                  p));
   s.step.generation = std::move(g);
+}
+
+/// *SUBSTRUCTURE MATRIX OUTPUT: an output request (the reduced matrices written to a results or
+/// text file); gapfem writes them to the substructure library only, so it is a warning.
+void handle_substructure_matrix_output(BuildState& s, const Keyword& kw) {
+  kw.mark_read();
+  if (!s.step.generation) {
+    s.warn(kw.loc, "*SUBSTRUCTURE MATRIX OUTPUT outside a *SUBSTRUCTURE GENERATE step writes "
+                   "nothing");
+    return;
+  }
+  const SubstructureGeneration& g = *s.step.generation;
+  s.warn(kw.loc,
+         fmt::format("the reduced matrices are written to the substructure library {}_{}"
+                     ".sub (gapfem's format, read back by *ELEMENT, TYPE={}, FILE=), not "
+                     "to a separate matrix file{}",
+                     g.library.empty() ? std::string("<job>") : g.library, g.type, g.type,
+                     kw.has("FILE NAME") ? fmt::format(" ({})", param_value(kw, "FILE NAME", false))
+                                         : std::string()));
 }
 
 void handle_retained_nodal_dofs(BuildState& s, const Keyword& kw) {

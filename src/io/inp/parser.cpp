@@ -122,6 +122,7 @@ constexpr std::array<KeywordSpec, 123> kTable = {{
   {"*CONTROLS", handle_controls, W::History, "PARAMETERS|FIELD|RESET|ANALYSIS"},
   {"*SUBSTRUCTURE GENERATE", handle_substructure_generate, W::History, "TYPE|OVERWRITE|LIBRARY|MASS MATRIX|STRUCTURAL DAMPING MATRIX|VISCOUS DAMPING MATRIX|GRAVITY LOAD|RECOVERY MATRIX|NSET|ELSET|PROPERTY EVALUATION"},
   {"*RETAINED NODAL DOFS", handle_retained_nodal_dofs, W::History, "SORTED"},
+  {"*SUBSTRUCTURE MATRIX OUTPUT", handle_substructure_matrix_output, W::History, "*"},
   {"*SUBSTRUCTURE PATH", handle_substructure_path, W::History, ""},
   {"*RESTART", handle_restart, W::Both, "WRITE|READ|FREQUENCY|NUMBER INTERVAL|OVERLAY|TIME MARKS|STEP|INC|END STEP"},
   {"*CHANGE FRICTION", handle_change_friction, W::History, "ELSET|INTERACTION", 0, P::ChangeFriction},

@@ -445,3 +445,28 @@ TEST(Substructure, BadSubstructuresAreInputErrors) {
   EXPECT_EQ(r.exit_code, kExitInputError);
   EXPECT_NE(r.error.find("gap elements respond nonlinearly"), std::string::npos) << r.error;
 }
+
+// CalculiX's layout: *SUBSTRUCTURE GENERATE without TYPE= (generated as Z1, a warning) and
+// *SUBSTRUCTURE MATRIX OUTPUT (an output request: the matrices go to the library, a warning); the
+// library is the one TYPE=Z1 writes (the same size: only the deck's name in its header differs).
+TEST(Substructure, CalculixGenerationLayout) {
+  const fs::path dir = test_dir();
+  const Block b;
+  std::string ccx = b.generation();
+  ccx.replace(ccx.find(", TYPE=Z1"), 9, "");
+  ccx.replace(ccx.find("*END STEP"), 0,
+              "*SUBSTRUCTURE MATRIX OUTPUT, STIFFNESS=YES, OUTPUT FILE=USER DEFINED, FILE "
+              "NAME=mine\n");
+  const JobResult c = run_in(dir, "ccx", ccx);
+  ASSERT_EQ(c.exit_code, 0) << c.error;
+  int warned = 0;
+  for (const std::string& w : c.model->warnings)
+    warned += w.find("TYPE= is missing") != std::string::npos ||
+              w.find("written to the substructure library") != std::string::npos;
+  EXPECT_EQ(warned, 2);
+  const JobResult g = run_in(dir, "abq", b.generation());
+  ASSERT_EQ(g.exit_code, 0) << g.error;
+  const std::string mine = slurp(dir / "ccx_Z1.sub"), theirs = slurp(dir / "abq_Z1.sub");
+  ASSERT_FALSE(mine.empty());
+  EXPECT_EQ(mine.size(), theirs.size());
+}
