@@ -1,6 +1,9 @@
 #include "io/inp/constraint_rows.hpp"
 
+#include "fem/surface_geometry.hpp"
+
 #include <cmath>
+#include <set>
 
 namespace gapfem::inp {
 
@@ -49,6 +52,16 @@ LinearConstraint rigid_row(const RowOrigin& o, ModelSpace space, NodeId a, NodeI
   add(4 + j, -d[k]);
   add(4 + k, d[j]);
   return c;
+}
+
+std::vector<NodeId> surface_nodes(const Model& m, const Surface& s) {
+  std::set<NodeId> nodes;
+  if (s.node_based)
+    for (const auto& wn : s.nodes) nodes.insert(wn.node);
+  else
+    for (const SurfaceFacet& f : surface_facets(m, s))
+      for (int a = 0; a < f.n_nodes; ++a) nodes.insert(f.nodes[a]);
+  return {nodes.begin(), nodes.end()};
 }
 
 int dominant_translation(ModelSpace space, const Vec3& v) {

@@ -38,6 +38,9 @@ LinearConstraint equal_row(const RowOrigin& o, NodeId a, NodeId b, int dof, bool
 LinearConstraint rigid_row(const RowOrigin& o, ModelSpace space, NodeId a, NodeId b, int dof,
                            const Vec3& d, bool activate_a);
 
+/// The nodes of a surface (node-based: its nodes; element-based: those of its faces), ascending.
+std::vector<NodeId> surface_nodes(const Model& m, const Surface& s);
+
 /// Largest-magnitude component of v among the model space's translations (1-based DOF).
 int dominant_translation(ModelSpace space, const Vec3& v);
 

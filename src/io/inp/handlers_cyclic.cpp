@@ -37,16 +37,6 @@ Eigen::Matrix3d rotation(const Eigen::Vector3d& e, double angle) {
          (1 - std::cos(angle)) * e * e.transpose();
 }
 
-std::vector<NodeId> surface_nodes(const Model& m, const Surface& s) {
-  std::set<NodeId> nodes;
-  if (s.node_based)
-    for (const auto& wn : s.nodes) nodes.insert(wn.node);
-  else
-    for (const SurfaceFacet& f : surface_facets(m, s))
-      for (int a = 0; a < f.n_nodes; ++a) nodes.insert(f.nodes[a]);
-  return {nodes.begin(), nodes.end()};
-}
-
 /// The master surface's facets with their bounding boxes, for the closest-point search. A
 /// node-based master (CalculiX's cyclic decks) has one-node facets: its nodes, which the turned
 /// slave nodes must meet.

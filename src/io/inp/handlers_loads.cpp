@@ -608,6 +608,43 @@ void handle_dsflux(BuildState& s, const Keyword& kw) {
   merge_dloads(s, kw, loads);
 }
 
+/// Places a face exchange (film F, radiation R) given on one data line: on the faces of a surface
+/// (the label `letter` alone), or on face n of elements (`letter`n; on heat-transfer shells
+/// `letter`NEG / `letter`POS, their sides); `d` carries everything but element and face.
+static void place_face_exchange(BuildState& s, const FieldReader& r, bool surface, char letter,
+                                const char* keyword, DistributedLoad d,
+                                std::vector<DistributedLoad>& loads) {
+  const std::string label = canonical(r.text(1));
+  const std::string L(1, letter);
+  if (surface) {
+    if (label != L)
+      r.fail(fmt::format("field 2 ({})", r.text(1)),
+             fmt::format("{} supports the label {} only", keyword, L));
+    for (const auto& f : find_surface(s, r).faces) {
+      require_temperature(s, r, f.elem);
+      check_face(s, r, f.elem, f.face, FaceUse::Thermal);
+      d.elem = f.elem;
+      d.face = f.face;
+      loads.push_back(d);
+    }
+    return;
+  }
+  const bool side = label == L + "NEG" || label == L + "POS"; // the sides of heat-transfer shells
+  d.face = side ? (label == L + "NEG" ? 1 : 2) : face_of(label, L);
+  if (d.face <= 0)
+    r.fail(fmt::format("field 2 ({})", r.text(1)),
+           fmt::format("write the label as {0}n (n = face number) or, on heat-transfer shells, "
+                       "{0}NEG or {0}POS",
+                       L));
+  for (ElemId e : resolve_elements(s, r, 0)) {
+    require_temperature(s, r, e);
+    if (side) require_shell_side(s, r, e, label);
+    check_face(s, r, e, d.face, FaceUse::Thermal);
+    d.elem = e;
+    loads.push_back(d);
+  }
+}
+
 /// *FILM (element faces Fn) and *SFILM (surface, F): sink temperature and film
 /// coefficient.
 static void film(BuildState& s, const Keyword& kw, bool surface) {
@@ -618,7 +655,6 @@ static void film(BuildState& s, const Keyword& kw, bool surface) {
     const FieldReader r = s.reader(kw, line);
     r.at_most(4, surface ? "surface, F, sink temperature, film coefficient"
                          : "element or element set, Fn, sink temperature, film coefficient");
-    const std::string label = canonical(r.text(1));
     DistributedLoad d;
     d.kind = DistLoadKind::Film;
     d.sink_temperature = r.real(2, "sink temperature");
@@ -626,31 +662,7 @@ static void film(BuildState& s, const Keyword& kw, bool surface) {
     d.amplitude = sink_amplitude;
     d.film_amplitude = film_amplitude;
     d.loc = r.loc();
-    if (surface) {
-      if (label != "F")
-        r.fail(fmt::format("field 2 ({})", r.text(1)), "*SFILM supports the label F only");
-      for (const auto& f : find_surface(s, r).faces) {
-        require_temperature(s, r, f.elem);
-        check_face(s, r, f.elem, f.face, FaceUse::Thermal);
-        d.elem = f.elem;
-        d.face = f.face;
-        loads.push_back(d);
-      }
-      return;
-    }
-    const bool side = label == "FNEG" || label == "FPOS"; // the sides of heat-transfer shells
-    d.face = side ? (label == "FNEG" ? 1 : 2) : face_of(label, "F");
-    if (d.face <= 0)
-      r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "write the film label as Fn (n = face number) or, on heat-transfer shells, FNEG or "
-             "FPOS");
-    for (ElemId e : resolve_elements(s, r, 0)) {
-      require_temperature(s, r, e);
-      if (side) require_shell_side(s, r, e, label);
-      check_face(s, r, e, d.face, FaceUse::Thermal);
-      d.elem = e;
-      loads.push_back(d);
-    }
+    place_face_exchange(s, r, surface, 'F', surface ? "*SFILM" : "*FILM", d, loads);
   });
   merge_dloads(s, kw, loads);
 }
@@ -699,31 +711,7 @@ static void radiate(BuildState& s, const Keyword& kw, bool surface) {
       r.fail(fmt::format("field 2 ({})", r.text(1)),
              "a non-uniform radiation (RnNU) needs the user subroutine RADIATION, which gapfem "
              "does not call; give the sink temperature and the emissivity on the line (Rn)");
-    if (surface) {
-      if (label != "R")
-        r.fail(fmt::format("field 2 ({})", r.text(1)), "*SRADIATE supports the label R only");
-      for (const auto& f : find_surface(s, r).faces) {
-        require_temperature(s, r, f.elem);
-        check_face(s, r, f.elem, f.face, FaceUse::Thermal);
-        d.elem = f.elem;
-        d.face = f.face;
-        loads.push_back(d);
-      }
-      return;
-    }
-    const bool side = label == "RNEG" || label == "RPOS"; // the sides of heat-transfer shells
-    d.face = side ? (label == "RNEG" ? 1 : 2) : face_of(label, "R");
-    if (d.face <= 0)
-      r.fail(fmt::format("field 2 ({})", r.text(1)),
-             "write the radiation label as Rn (n = face number) or, on heat-transfer shells, "
-             "RNEG or RPOS");
-    for (ElemId e : resolve_elements(s, r, 0)) {
-      require_temperature(s, r, e);
-      if (side) require_shell_side(s, r, e, label);
-      check_face(s, r, e, d.face, FaceUse::Thermal);
-      d.elem = e;
-      loads.push_back(d);
-    }
+    place_face_exchange(s, r, surface, 'R', surface ? "*SRADIATE" : "*RADIATE", d, loads);
   });
   merge_dloads(s, kw, loads);
 }

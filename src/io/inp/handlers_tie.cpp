@@ -44,16 +44,6 @@ struct Box {
   }
 };
 
-std::vector<NodeId> slave_nodes(const Model& m, const Surface& s) {
-  std::set<NodeId> nodes;
-  if (s.node_based)
-    for (const auto& wn : s.nodes) nodes.insert(wn.node);
-  else
-    for (const SurfaceFacet& f : surface_facets(m, s))
-      for (int a = 0; a < f.n_nodes; ++a) nodes.insert(f.nodes[a]);
-  return {nodes.begin(), nodes.end()};
-}
-
 /// One row per DOF: u(s) + sum_k c_k u(k) = 0 for the terms (node, c), s first with c = 1.
 void add_rows(Model& m, const RowOrigin& o, const std::vector<int>& dofs,
               const std::vector<std::pair<NodeId, double>>& terms) {
@@ -98,7 +88,7 @@ void build_tie(BuildState& st, const TieDef& t) {
   int outside = 0;
   NodeId first_out = -1;
   double first_distance = 0.0;
-  for (NodeId n : slave_nodes(m, slave)) {
+  for (NodeId n : surface_nodes(m, slave)) {
     if (master_nodes.count(n)) continue; // on both surfaces: already one node
     const Vec3 x = m.mesh.coords[n];
     double best = std::numeric_limits<double>::infinity();
